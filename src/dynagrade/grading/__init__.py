@@ -1,0 +1,1 @@
+"""Grading: a safe expression parser and the comparison of answers with references."""
