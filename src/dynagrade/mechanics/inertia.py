@@ -1,0 +1,110 @@
+"""Moment of inertia tensors (Section 3.2.3).
+
+Tensors are 3x3 arrays in SI (kg m^2) about the centre of mass, in the body's axes of
+symmetry: the symmetry axis (rod, disk, cylinder, hoop, tube) is e3.
+I = integral rho (|r|^2 1 - r (x) r) dV.
+"""
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.linalg import eigh
+
+
+def inertia_tensor_point_mass(mass, r):
+    """Inertia tensor of a point mass at r about the origin, m (|r|^2 1 - r (x) r)
+    (Section 3.2.3)."""
+    r = np.asarray(r, dtype=float)
+    return mass * (np.dot(r, r) * np.eye(3) - np.outer(r, r))
+
+
+def inertia_tensor_rod(mass, length):
+    """Slender rod of length L along e3 about its centre: diag(mL^2/12, mL^2/12, 0)
+    (Section 3.2.3)."""
+    transverse = mass * length**2 / 12.0
+    return np.diag([transverse, transverse, 0.0])
+
+
+def inertia_tensor_box(mass, a, b, c):
+    """Solid cuboid with edges a, b, c along e1, e2, e3 about its centre:
+    diag(m(b^2+c^2)/12, m(a^2+c^2)/12, m(a^2+b^2)/12) (Section 3.2.3)."""
+    return mass / 12.0 * np.diag([b**2 + c**2, a**2 + c**2, a**2 + b**2])
+
+
+def inertia_tensor_cylinder(mass, radius, height):
+    """Solid circular cylinder of radius R and height h, axis e3, about its centre:
+    diag(m(3R^2+h^2)/12, m(3R^2+h^2)/12, mR^2/2) (Section 3.2.3)."""
+    transverse = mass * (3.0 * radius**2 + height**2) / 12.0
+    return np.diag([transverse, transverse, 0.5 * mass * radius**2])
+
+
+def inertia_tensor_disk(mass, radius):
+    """Thin circular disk, normal e3: diag(mR^2/4, mR^2/4, mR^2/2), the cylinder with
+    h -> 0 (Section 3.2.3)."""
+    return inertia_tensor_cylinder(mass, radius, 0.0)
+
+
+def inertia_tensor_cylindrical_shell(mass, radius, height):
+    """Thin-walled open tube of radius R and length h, axis e3, about its centre:
+    diag(mR^2/2 + mh^2/12, mR^2/2 + mh^2/12, mR^2) (Section 3.2.3)."""
+    transverse = mass * radius**2 / 2.0 + mass * height**2 / 12.0
+    return np.diag([transverse, transverse, mass * radius**2])
+
+
+def inertia_tensor_hoop(mass, radius):
+    """Thin ring (hoop) of radius R, normal e3: diag(mR^2/2, mR^2/2, mR^2), the tube with
+    h -> 0 (Section 3.2.3)."""
+    return inertia_tensor_cylindrical_shell(mass, radius, 0.0)
+
+
+def inertia_tensor_sphere(mass, radius):
+    """Solid homogeneous sphere about its centre: (2/5) m R^2 1 (Section 3.2.3)."""
+    return 0.4 * mass * radius**2 * np.eye(3)
+
+
+def inertia_tensor_spherical_shell(mass, radius):
+    """Thin spherical shell about its centre: (2/3) m R^2 1 (Section 3.2.3)."""
+    return 2.0 / 3.0 * mass * radius**2 * np.eye(3)
+
+
+def parallel_axis_inertia_tensor(inertia_centre, mass, r_pc):
+    """Inertia tensor about a point P from the one about the centre of mass C,
+    I_P = I_C + m (|r_PC|^2 1 - r_PC (x) r_PC) (parallel-axis theorem, Section 3.2.3)."""
+    return np.asarray(inertia_centre, dtype=float) + inertia_tensor_point_mass(mass, r_pc)
+
+
+def parallel_axis_moment(moment_centre, mass, distance):
+    """Moment of inertia about an axis at distance d from the parallel axis through the
+    centre of mass, I = I_C + m d^2 (Steiner, Section 3.2.3)."""
+    return moment_centre + mass * distance**2
+
+
+def rotated_inertia_tensor(inertia, rotation):
+    """Components of the inertia tensor of a body rotated by R (or, equivalently, of the
+    same body in a frame rotated by R^T): I' = R I R^T (Section 3.2.3)."""
+    rotation = np.asarray(rotation, dtype=float)
+    return rotation @ np.asarray(inertia, dtype=float) @ rotation.T
+
+
+def moment_of_inertia_about_axis(inertia, axis):
+    """Moment of inertia about the axis n through the reference point, I_n = n . I n
+    (Section 3.2.3)."""
+    n = np.asarray(axis, dtype=float)
+    n = n / np.linalg.norm(n)
+    return float(n @ np.asarray(inertia, dtype=float) @ n)
+
+
+@dataclass(frozen=True)
+class PrincipalAxes:
+    """Principal moments (ascending) and the matching principal axes as columns."""
+
+    moments: np.ndarray
+    axes: np.ndarray
+
+
+def principal_axes(inertia):
+    """Principal moments of inertia and principal axes: eigenvalues and orthonormal
+    eigenvectors of the symmetric tensor I (Section 3.2.3)."""
+    moments, axes = eigh(np.asarray(inertia, dtype=float))
+    if np.linalg.det(axes) < 0:
+        axes[:, -1] = -axes[:, -1]
+    return PrincipalAxes(moments=moments, axes=axes)

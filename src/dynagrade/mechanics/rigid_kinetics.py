@@ -1,0 +1,87 @@
+"""Kinetics of rigid bodies: momentum, angular momentum and energy (Sections 3.2.1-3.2.5).
+
+Inertia tensors are 3x3 arrays (see `inertia`), angular velocities 3-vectors; the
+planar helpers take scalar moments of inertia about the axis normal to the plane.
+"""
+import numpy as np
+
+from dynagrade.mechanics.systems import angular_momentum_transfer
+
+
+def linear_momentum(mass, v_c):
+    """Linear momentum of a rigid body, P = m v_C (Section 3.2.1)."""
+    return mass * np.asarray(v_c, dtype=float)
+
+
+def angular_momentum(inertia, omega):
+    """Angular momentum about the centre of mass, or about a fixed point of the body when
+    I is taken about that point: H = I omega (Section 3.2.2)."""
+    return np.asarray(inertia, dtype=float) @ np.asarray(omega, dtype=float)
+
+
+def angular_momentum_about_point(inertia_centre, omega, mass, r_bc, v_c):
+    """Angular momentum of a rigid body about an arbitrary point B,
+    H_B = I_C omega + r_BC x m v_C (angular momentum transfer formula, Section 3.2.4)."""
+    return angular_momentum_transfer(angular_momentum(inertia_centre, omega), mass, r_bc, v_c)
+
+
+def angular_acceleration_about_fixed_axis(moment, moment_of_inertia):
+    """Angular acceleration of a body rotating about a fixed axis, omega_dot = M / I with
+    M and I about that axis (balance of angular momentum, Section 3.2.2)."""
+    return moment / moment_of_inertia
+
+
+def rotational_kinetic_energy(inertia, omega):
+    """Kinetic energy of the rotation, 1/2 omega . I omega (Section 3.2.5)."""
+    omega = np.asarray(omega, dtype=float)
+    return float(0.5 * omega @ np.asarray(inertia, dtype=float) @ omega)
+
+
+def kinetic_energy(mass, v_c, inertia_centre, omega):
+    """Kinetic energy of a rigid body, T = 1/2 m |v_C|^2 + 1/2 omega . I_C omega
+    (translation of the centre of mass plus rotation about it, Section 3.2.5)."""
+    v_c = np.asarray(v_c, dtype=float)
+    return 0.5 * mass * float(v_c @ v_c) + rotational_kinetic_energy(inertia_centre, omega)
+
+
+def rolling_acceleration_on_incline(alpha, g, mass, radius, moment_centre):
+    """Acceleration of the centre of a round body rolling without slipping down an incline
+    of angle alpha: a = g sin(alpha) / (1 + I_C / (m R^2)) (linear and angular momentum
+    balance, Sections 3.2.1-3.2.2)."""
+    return g * np.sin(alpha) / (1.0 + moment_centre / (mass * radius**2))
+
+
+def rolling_speed_after_drop(height, g, mass, radius, moment_centre):
+    """Speed of the centre of a body rolling without slipping after descending a height h
+    from rest: m g h = 1/2 m v^2 + 1/2 I_C (v/R)^2 (work-energy balance, Section 3.2.5)."""
+    return np.sqrt(2.0 * g * height / (1.0 + moment_centre / (mass * radius**2)))
+
+
+def friction_for_rolling_on_incline(alpha, g, mass, radius, moment_centre):
+    """Static friction force on a body rolling without slipping down an incline,
+    F = I_C a / R^2 (angular momentum balance about the centre, Section 3.2.2)."""
+    a = rolling_acceleration_on_incline(alpha, g, mass, radius, moment_centre)
+    return moment_centre * a / radius**2
+
+
+def minimum_friction_coefficient_for_rolling(alpha, g, mass, radius, moment_centre):
+    """Smallest static friction coefficient that allows rolling without slipping down an
+    incline, mu_min = F / (m g cos(alpha)) (Sections 3.2.1-3.2.2)."""
+    friction = friction_for_rolling_on_incline(alpha, g, mass, radius, moment_centre)
+    return friction / (mass * g * np.cos(alpha))
+
+
+def pendulum_angular_acceleration(angle, g, mass, pivot_distance, moment_pivot):
+    """Angular acceleration of a compound (physical) pendulum about its fixed pivot,
+    phi_ddot = -m g d sin(phi) / I_O (Section 3.2.2)."""
+    return angular_acceleration_about_fixed_axis(-mass * g * pivot_distance * np.sin(angle),
+                                                 moment_pivot)
+
+
+def angular_speed_of_pendulum_from_energy(angle_from, angle_to, g, mass, pivot_distance,
+                                          moment_pivot, initial_rate=0.0):
+    """Angular speed of a compound pendulum at angle phi2 after swinging from phi1 with
+    rate phi1_dot: 1/2 I_O phi_dot^2 - m g d cos(phi) is conserved (Section 3.2.5)."""
+    energy = 0.5 * moment_pivot * initial_rate**2 + mass * g * pivot_distance * (
+        np.cos(angle_to) - np.cos(angle_from))
+    return np.sqrt(2.0 * energy / moment_pivot)

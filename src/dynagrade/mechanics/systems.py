@@ -1,0 +1,114 @@
+"""Systems of particles: centre of mass, momentum, energy and angular momentum (Sections 2.1-2.2).
+
+Masses are given as a sequence of length N, positions and velocities as arrays of
+shape (N, d) with d = 2 or 3. All quantities in SI units.
+"""
+import numpy as np
+
+
+def _as_masses(masses):
+    return np.asarray(masses, dtype=float)
+
+
+def _as_vectors(vectors, n):
+    arr = np.asarray(vectors, dtype=float)
+    if arr.ndim == 1:
+        arr = arr.reshape(n, -1)
+    return arr
+
+
+def _cross3(a, b):
+    """Cross product with planar (2-component) vectors taken in the e1-e2 plane."""
+    a = np.asarray(a, dtype=float)
+    b = np.asarray(b, dtype=float)
+    if a.shape[-1] == 2:
+        a = np.concatenate([a, np.zeros(a.shape[:-1] + (1,))], axis=-1)
+    if b.shape[-1] == 2:
+        b = np.concatenate([b, np.zeros(b.shape[:-1] + (1,))], axis=-1)
+    return np.cross(a, b)
+
+
+def total_mass(masses):
+    """Total mass M = sum of m_i of a system of particles (Section 2.1)."""
+    return float(np.sum(_as_masses(masses)))
+
+
+def centre_of_mass(masses, positions):
+    """Position of the centre of mass r_C = (1/M) sum m_i r_i (Section 2.1)."""
+    m = _as_masses(masses)
+    r = _as_vectors(positions, m.size)
+    return (m[:, None] * r).sum(axis=0) / m.sum()
+
+
+def total_momentum(masses, velocities):
+    """Total linear momentum P = sum m_i v_i = M v_C of a system (Section 2.2.1)."""
+    m = _as_masses(masses)
+    v = _as_vectors(velocities, m.size)
+    return (m[:, None] * v).sum(axis=0)
+
+
+def centre_of_mass_acceleration(total_external_force, mass):
+    """Acceleration of the centre of mass a_C = F_ext / M: the centre of mass moves like a
+    particle of the total mass under the total external force; internal forces cancel
+    pairwise (balance of linear momentum of a system, Section 2.2.1)."""
+    return np.asarray(total_external_force, dtype=float) / mass
+
+
+def kinetic_energy(masses, velocities):
+    """Kinetic energy T = sum 1/2 m_i |v_i|^2 of a system of particles (Section 2.2.2)."""
+    m = _as_masses(masses)
+    v = _as_vectors(velocities, m.size)
+    return float(0.5 * np.sum(m * np.sum(v * v, axis=1)))
+
+
+def kinetic_energy_relative_to_centre_of_mass(masses, velocities):
+    """Kinetic energy of the motion relative to the centre of mass,
+    T' = sum 1/2 m_i |v_i - v_C|^2, so that T = 1/2 M |v_C|^2 + T' (Section 2.2.2)."""
+    m = _as_masses(masses)
+    v = _as_vectors(velocities, m.size)
+    v_c = total_momentum(m, v) / m.sum()
+    return kinetic_energy(m, v - v_c)
+
+
+def reduced_mass(m1, m2):
+    """Reduced mass mu = m1 m2 / (m1 + m2) of two particles (Sections 2.2.2 and 2.3.1)."""
+    return m1 * m2 / (m1 + m2)
+
+
+def relative_kinetic_energy(m1, m2, relative_speed):
+    """Kinetic energy of the relative motion of two particles, 1/2 mu v_rel^2: the part
+    of T that internal forces between the two can change (Section 2.2.2)."""
+    return 0.5 * reduced_mass(m1, m2) * relative_speed**2
+
+
+def relative_speed_from_internal_work(m1, m2, internal_work, initial_relative_speed=0.0):
+    """Relative speed of two particles after internal forces did the work W_int on them
+    (e.g. a compressed spring between two carts released): 1/2 mu v_rel^2 grows by W_int
+    while the centre-of-mass motion is unchanged (work-energy balance, Section 2.2.2)."""
+    t_rel = relative_kinetic_energy(m1, m2, initial_relative_speed) + internal_work
+    return np.sqrt(2.0 * t_rel / reduced_mass(m1, m2))
+
+
+def angular_momentum_about_point(masses, positions, velocities, point):
+    """Angular momentum of a system about a fixed point B,
+    H_B = sum (r_i - r_B) x m_i v_i (Section 2.2.3). Planar input returns a 3-vector."""
+    m = _as_masses(masses)
+    r = _as_vectors(positions, m.size) - np.asarray(point, dtype=float)
+    v = _as_vectors(velocities, m.size)
+    return (m[:, None] * _cross3(r, v)).sum(axis=0)
+
+
+def angular_momentum_about_centre_of_mass(masses, positions, velocities):
+    """Angular momentum about the centre of mass, H_C = sum (r_i - r_C) x m_i (v_i - v_C)
+    (relative and absolute velocities give the same H_C; Section 2.2.3)."""
+    m = _as_masses(masses)
+    r = _as_vectors(positions, m.size)
+    v = _as_vectors(velocities, m.size)
+    v_c = total_momentum(m, v) / m.sum()
+    return angular_momentum_about_point(m, r, v - v_c, centre_of_mass(m, r))
+
+
+def angular_momentum_transfer(h_c, mass, r_bc, v_c):
+    """Angular momentum about a point B from that about the centre of mass,
+    H_B = H_C + r_BC x M v_C (Section 2.2.3; for rigid bodies Section 3.2.4)."""
+    return np.asarray(h_c, dtype=float) + mass * _cross3(r_bc, v_c)

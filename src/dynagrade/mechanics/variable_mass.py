@@ -1,0 +1,63 @@
+"""Particles of variable mass: rockets (mass loss) and mass accretion (Section 2.3.2).
+
+Balance of linear momentum of a body that gains or loses mass at rate m_dot with the
+gained/lost mass moving at velocity w:  m dv/dt = F + m_dot (w - v).  For a rocket the
+exhaust leaves at relative speed u backwards, so the thrust is u |m_dot|.
+"""
+import numpy as np
+
+
+def thrust(exhaust_speed, mass_flow_rate):
+    """Thrust of a rocket, F = u q with exhaust speed u relative to the rocket and the
+    burned mass per time q = -dm/dt > 0 (Section 2.3.2)."""
+    return exhaust_speed * mass_flow_rate
+
+
+def rocket_speed_gain(exhaust_speed, initial_mass, final_mass):
+    """Speed gained by a rocket without external forces, Delta v = u ln(m0 / m)
+    (rocket equation, Section 2.3.2)."""
+    return exhaust_speed * np.log(initial_mass / final_mass)
+
+
+def vertical_rocket_speed(t, v0, exhaust_speed, initial_mass, mass_flow_rate, g):
+    """Upward speed of a rocket launched vertically in uniform gravity with a constant
+    burn rate q: v(t) = v0 + u ln(m0 / (m0 - q t)) - g t, valid while fuel is left
+    (Section 2.3.2)."""
+    mass = initial_mass - mass_flow_rate * t
+    return v0 + rocket_speed_gain(exhaust_speed, initial_mass, mass) - g * t
+
+
+def vertical_rocket_height(t, v0, exhaust_speed, initial_mass, mass_flow_rate, g):
+    """Height of a vertically launched rocket with constant burn rate q, from integrating
+    v(t): h(t) = v0 t + u [t - (m/q) ln(m0/m)] - 1/2 g t^2 with m = m0 - q t
+    (Section 2.3.2)."""
+    mass = initial_mass - mass_flow_rate * t
+    log_term = (mass / mass_flow_rate) * np.log(initial_mass / mass)
+    return v0 * t + exhaust_speed * (t - log_term) - 0.5 * g * t**2
+
+
+def burn_time(fuel_mass, mass_flow_rate):
+    """Duration of the burn, t_b = m_fuel / q at constant burn rate (Section 2.3.2)."""
+    return fuel_mass / mass_flow_rate
+
+
+def speed_after_accretion(initial_mass, initial_speed, mass):
+    """Speed of a body that collects mass arriving with no velocity component along its
+    motion and no external force in that direction (cart collecting load falling
+    vertically): m v = m0 v0, so v = m0 v0 / m (Section 2.3.2)."""
+    return initial_mass * initial_speed / mass
+
+
+def force_to_keep_speed_while_accreting(mass_rate, relative_speed):
+    """Force needed to keep a body at constant speed while it collects mass at rate
+    m_dot that arrives with relative speed v - w: F = m_dot (v - w) (Section 2.3.2)."""
+    return mass_rate * relative_speed
+
+
+def chain_on_scale_force(mass_per_length, fallen_length, g):
+    """Reading of a scale onto which a chain falls freely from rest (hanging vertically
+    and released): the weight of the piled part lambda g x plus the momentum flux of the
+    arriving links lambda v^2 = 2 lambda g x, in total F = 3 lambda g x (Section 2.3.2)."""
+    speed = np.sqrt(2.0 * g * fallen_length)
+    momentum_flux = force_to_keep_speed_while_accreting(mass_per_length * speed, speed)
+    return mass_per_length * g * fallen_length + momentum_flux
