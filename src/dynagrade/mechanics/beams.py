@@ -1,0 +1,95 @@
+"""Flexural waves and vibrations of Euler-Bernoulli beams, Section 5.3.3 of the notes.
+
+The deflection w(x, t) obeys E I w_xxxx + rho A w_tt = 0.  Harmonic waves
+w = exp(i (k x - omega t)) satisfy the dispersion relation omega = k^2 sqrt(EI/(rho A)),
+so flexural waves are dispersive: the phase speed grows with frequency and the group
+speed is twice the phase speed.  Standing waves w = W(x) cos(omega t) on a beam of
+length L, W = a cos(beta x) + b sin(beta x) + c cosh(beta x) + d sinh(beta x), have
+natural frequencies omega_j = (beta_j L)^2 / L^2 sqrt(EI / (rho A)) where beta_j L are
+the positive roots of the characteristic equation of the supports.
+"""
+import numpy as np
+from scipy.optimize import brentq
+
+SUPPORTS = ("simply supported", "cantilever", "clamped-clamped", "free-free", "clamped-pinned")
+
+
+def bending_wave_parameter(EI, rhoA):
+    """Beam constant a = sqrt(E I / (rho A)) (in m^2/s) of the dispersion relation, Section 5.3.3."""
+    return np.sqrt(EI / rhoA)
+
+
+def flexural_frequency(k, EI, rhoA):
+    """Angular frequency omega = k^2 sqrt(EI / (rho A)) of a flexural wave of wavenumber k, Section 5.3.3."""
+    return k**2 * bending_wave_parameter(EI, rhoA)
+
+
+def flexural_wavenumber(omega, EI, rhoA):
+    """Wavenumber k = sqrt(omega / sqrt(EI / (rho A))) of a flexural wave, Section 5.3.3."""
+    return np.sqrt(omega / bending_wave_parameter(EI, rhoA))
+
+
+def flexural_phase_speed(omega, EI, rhoA):
+    """Phase speed c_p = omega / k = sqrt(omega) (EI / (rho A))^(1/4) of flexural waves, Section 5.3.3."""
+    return omega / flexural_wavenumber(omega, EI, rhoA)
+
+
+def flexural_group_speed(omega, EI, rhoA):
+    """Group speed c_g = d omega / d k = 2 c_p of flexural waves, Section 5.3.3."""
+    return 2.0 * bending_wave_parameter(EI, rhoA) * flexural_wavenumber(omega, EI, rhoA)
+
+
+def characteristic_function(beta_L, support):
+    """Characteristic equation of the beam's supports, scaled by 1/cosh(beta L), Section 5.3.3.
+
+    simply supported: sin(bL) = 0; cantilever: cos(bL) cosh(bL) + 1 = 0;
+    clamped-clamped and free-free: cos(bL) cosh(bL) - 1 = 0;
+    clamped-pinned: tan(bL) - tanh(bL) = 0 (as sin(bL) - cos(bL) tanh(bL) = 0).
+    The scaling keeps the values finite without moving the roots.
+    """
+    x = np.asarray(beta_L, dtype=float)
+    if support == "simply supported":
+        return np.sin(x)
+    if support == "cantilever":
+        return np.cos(x) + 1.0 / np.cosh(x)
+    if support in ("clamped-clamped", "free-free"):
+        return np.cos(x) - 1.0 / np.cosh(x)
+    if support == "clamped-pinned":
+        return np.sin(x) - np.cos(x) * np.tanh(x)
+    raise ValueError(f"support must be one of {SUPPORTS}")
+
+
+def beam_eigenvalues(support, n):
+    """First n positive roots beta_j L of the characteristic equation, Section 5.3.3.
+
+    Found by brentq, the j-th root bracketed in [j pi, (j + 1) pi] except for the
+    cantilever ([(j - 1) pi, j pi]) and the simply supported beam (exactly j pi).
+    """
+    j = np.arange(1, n + 1)
+    if support == "simply supported":
+        return j * np.pi
+    shift = -1 if support == "cantilever" else 0
+    roots = []
+    for jj in j:
+        a, b = (jj + shift) * np.pi, (jj + shift + 1) * np.pi
+        if support == "cantilever" and jj == 1:
+            a = 0.0
+        roots.append(brentq(characteristic_function, a, b, args=(support,), xtol=1e-14))
+    return np.array(roots)
+
+
+def beam_natural_frequencies(EI, rhoA, L, support, n):
+    """First n natural angular frequencies omega_j = (beta_j L)^2 sqrt(EI/(rho A)) / L^2, Section 5.3.3."""
+    return beam_eigenvalues(support, n) ** 2 / L**2 * bending_wave_parameter(EI, rhoA)
+
+
+def cantilever_mode_shape(x, L, j):
+    """Mode shape W_j(x) of the j-th mode of a cantilever clamped at x = 0 (W_j(L) = 2 (-1)^(j+1)), Section 5.3.3.
+
+    W = cosh(bx) - cos(bx) - s (sinh(bx) - sin(bx)), s = (cos bL + cosh bL)/(sin bL + sinh bL).
+    """
+    bL = beam_eigenvalues("cantilever", j)[-1]
+    b = bL / L
+    s = (np.cos(bL) + np.cosh(bL)) / (np.sin(bL) + np.sinh(bL))
+    x = np.asarray(x, dtype=float)
+    return np.cosh(b * x) - np.cos(b * x) - s * (np.sinh(b * x) - np.sin(b * x))

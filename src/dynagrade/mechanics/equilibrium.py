@@ -1,0 +1,122 @@
+"""Mechanical equilibrium, stability and linearization, Section 4.2 of the notes.
+
+Equilibria of a conservative system are the stationary points of its potential V(q)
+(grad V = 0); an equilibrium is stable when the Hessian of V there (the stiffness
+matrix of the linearized system) is positive definite (Lagrange-Dirichlet).
+Linearizing about an equilibrium q* gives M(q*) dq'' + K dq = 0 with the mass
+matrix of Section 4.1 and K = Hessian of V at q*.
+
+Coordinates are sympy functions of t or plain symbols (as in :mod:`lagrange`).
+"""
+import numpy as np
+import sympy as sp
+from scipy.optimize import brentq
+
+from dynagrade.mechanics import lagrange, vibrations
+
+
+def _plain(q):
+    """Dummy symbols standing for the coordinates q, and the substitution to them."""
+    dummies = [sp.Dummy(f"q{i}", real=True) for i in range(len(q))]
+    return dummies, dict(zip(q, dummies))
+
+
+def equilibrium_conditions(V, q):
+    """Equilibrium conditions dV/dq_i = 0 as the list of the derivatives dV/dq_i, Section 4.2."""
+    return [sp.diff(V, qi) for qi in q]
+
+
+def equilibrium_positions(V, q):
+    """All equilibrium positions sympy finds from dV/dq = 0, as dicts {q_i: value}, Section 4.2."""
+    dummies, to_dummy = _plain(q)
+    conditions = [c.subs(to_dummy) for c in equilibrium_conditions(V, q)]
+    solutions = sp.solve(conditions, dummies, dict=True)
+    back = dict(zip(dummies, q))
+    return [{back[d]: value for d, value in sol.items()} for sol in solutions]
+
+
+def equilibrium_positions_in_interval(dV_dq, a, b, samples=2001):
+    """Roots of a 1-DOF equilibrium condition dV/dq (a callable) on [a, b], Section 4.2.
+
+    Bracketed by sign changes on ``samples`` grid points and refined with brentq.
+    """
+    grid = np.linspace(a, b, samples)
+    values = np.array([dV_dq(x) for x in grid])
+    roots = [float(x) for x, v in zip(grid, values) if v == 0.0]
+    for x0, x1, v0, v1 in zip(grid[:-1], grid[1:], values[:-1], values[1:]):
+        if v0 * v1 < 0.0:
+            roots.append(brentq(dV_dq, x0, x1, xtol=1e-14))
+    return sorted(roots)
+
+
+def stiffness_matrix(V, q, q_eq):
+    """Stiffness matrix K_ij = d^2 V / (dq_i dq_j) at the equilibrium q_eq (dict), Section 4.2."""
+    dummies, to_dummy = _plain(q)
+    Vd = V.subs(to_dummy)
+    H = sp.hessian(Vd, dummies)
+    return sp.simplify(H.subs({to_dummy[k]: v for k, v in q_eq.items()}))
+
+
+def linearized_mass_matrix(T, q, t, q_eq):
+    """Mass matrix M(q_eq) of the equations linearized about the equilibrium q_eq, Section 4.2."""
+    M = lagrange.mass_matrix(T, q, t)
+    return sp.simplify(M.subs(q_eq))
+
+
+def stability(K, tol=1e-12):
+    """Stability of an equilibrium from its (numeric) stiffness matrix K, Section 4.2.
+
+    "stable" if K is positive definite, "unstable" if it has a negative eigenvalue,
+    "undecided" if its smallest eigenvalue vanishes (higher derivatives decide).
+    """
+    K = np.atleast_2d(np.asarray(K, dtype=float))
+    eig = np.linalg.eigvalsh(0.5 * (K + K.T))
+    scale = max(1.0, float(np.max(np.abs(eig))))
+    if np.min(eig) > tol * scale:
+        return "stable"
+    if np.min(eig) < -tol * scale:
+        return "unstable"
+    return "undecided"
+
+
+def linearized_frequency_squared(T, V, q, t, q_eq):
+    """Square omega^2 = K/M of the small-oscillation frequency of a 1-DOF system about q_eq, Section 4.2."""
+    K = stiffness_matrix(V, q, q_eq)[0, 0]
+    M = linearized_mass_matrix(T, q, t, q_eq)[0, 0]
+    return sp.simplify(K / M)
+
+
+# --- the bead on a rotating hoop (Section 4.2) ----------------------------------------
+# A bead of mass m slides without friction on a hoop of radius R that spins at the
+# constant rate Omega about its vertical diameter; theta is measured from the lowest
+# point.  T = m R^2 (theta'^2 + Omega^2 sin^2 theta) / 2, V = -m g R cos theta.
+
+def hoop_critical_spin_rate(R, g):
+    """Spin rate Omega_c = sqrt(g/R) above which the lowest point of the hoop is unstable, Section 4.2."""
+    return np.sqrt(g / R)
+
+
+def hoop_equilibrium_angle(R, Omega, g):
+    """Off-axis equilibrium angle theta* = arccos(g / (R Omega^2)) for Omega > sqrt(g/R), Section 4.2.
+
+    Returns nan when the spin is too slow for an off-axis equilibrium to exist.
+    """
+    ratio = g / (R * Omega**2)
+    return np.arccos(ratio) if ratio <= 1.0 else np.nan
+
+
+def hoop_potential_curvature(theta, m, R, Omega, g):
+    """Second derivative d^2 V*/d theta^2 = m R (g cos theta - R Omega^2 cos 2 theta) of the
+    effective potential of the bead at angle theta, Section 4.2."""
+    return m * R * (g * np.cos(theta) - R * Omega**2 * np.cos(2.0 * theta))
+
+
+def hoop_oscillation_frequency(R, Omega, g):
+    """Angular frequency of small oscillations of the bead about its stable equilibrium, Section 4.2.
+
+    sqrt(g/R - Omega^2) about the lowest point for Omega < sqrt(g/R); Omega sin(theta*)
+    about the off-axis equilibrium otherwise.
+    """
+    theta = 0.0 if Omega**2 <= g / R else hoop_equilibrium_angle(R, Omega, g)
+    # k_eq = V*''(theta), m_eq = m R^2 (unit mass: the frequency does not depend on m)
+    return vibrations.natural_frequency(hoop_potential_curvature(theta, 1.0, R, Omega, g), R**2)

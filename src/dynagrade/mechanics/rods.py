@@ -1,0 +1,116 @@
+"""Longitudinal and torsional waves and vibrations of slender rods, Sections 5.3.1-5.3.2.
+
+Both motions obey the wave equation u_tt = c^2 u_xx, with c = sqrt(E/rho) for the
+axial displacement u (Section 5.3.1) and c = sqrt(G/rho) for the twist angle
+(Section 5.3.2).  Its general solution is d'Alembert's u = f(x - c t) + g(x + c t);
+on a rod of length L the standing waves u = U(x) cos(omega t) give the natural
+frequencies from the end conditions (fixed: u = 0; free: u_x = 0).
+"""
+import numpy as np
+from scipy.optimize import brentq
+
+from dynagrade.mechanics import multi_dof
+
+END_CONDITIONS = ("fixed-fixed", "free-free", "fixed-free")
+
+
+def longitudinal_wave_speed(E, rho):
+    """Speed c = sqrt(E / rho) of longitudinal waves in a slender rod, Section 5.3.1."""
+    return np.sqrt(E / rho)
+
+
+def torsional_wave_speed(G, rho):
+    """Speed c_T = sqrt(G / rho) of torsional waves in a rod of circular section, Section 5.3.2."""
+    return np.sqrt(G / rho)
+
+
+def travel_time(L, c):
+    """Time t = L / c a wave front needs to cross a distance L, Section 5.3.1."""
+    return L / c
+
+
+def dalembert_displacement(x, t, c, f, g):
+    """d'Alembert solution u(x, t) = f(x - c t) + g(x + c t) of the wave equation, Section 5.3.1.
+
+    ``f`` (travelling towards +x) and ``g`` (towards -x) are callables.
+    """
+    return f(np.asarray(x) - c * t) + g(np.asarray(x) + c * t)
+
+
+def impact_stress(rho, c, v):
+    """Stress sigma = rho c v carried by a wave whose particle velocity is v, Section 5.3.1.
+
+    Compressive when the rod end is pushed into the rod at speed v (for a step in velocity).
+    """
+    return rho * c * v
+
+
+def particle_velocity(sigma, rho, c):
+    """Particle velocity v = sigma / (rho c) behind a wave front of stress sigma, Section 5.3.1."""
+    return sigma / (rho * c)
+
+
+def rod_wavenumbers(L, n, ends):
+    """Wavenumbers k_j = omega_j / c of the first n natural modes of a rod, Section 5.3.1.
+
+    fixed-fixed and free-free: k_j = j pi / L (free-free without its rigid-body mode);
+    fixed-free: k_j = (2 j - 1) pi / (2 L).
+    """
+    j = np.arange(1, n + 1)
+    if ends in ("fixed-fixed", "free-free"):
+        return j * np.pi / L
+    if ends == "fixed-free":
+        return (2 * j - 1) * np.pi / (2.0 * L)
+    raise ValueError(f"ends must be one of {END_CONDITIONS}")
+
+
+def rod_natural_frequencies(c, L, n, ends):
+    """First n natural angular frequencies omega_j = c k_j of a rod, Sections 5.3.1-5.3.2."""
+    return c * rod_wavenumbers(L, n, ends)
+
+
+def rod_mode_shape(x, L, j, ends):
+    """Mode shape U_j(x) of the j-th natural mode of a rod (maximum 1), Section 5.3.1."""
+    k = rod_wavenumbers(L, j, ends)[-1]
+    x = np.asarray(x, dtype=float)
+    return np.cos(k * x) if ends == "free-free" else np.sin(k * x)
+
+
+def tip_mass_wavenumber_equation(kL, mass_ratio):
+    """Frequency equation kL tan(kL) - m_rod/m_tip of a fixed-free rod with a tip mass, Section 5.3.1.
+
+    Written as kL sin(kL) - ratio cos(kL), which is free of the poles of tan.
+    """
+    return kL * np.sin(kL) - mass_ratio * np.cos(kL)
+
+
+def tip_mass_fundamental_frequency(c, L, m_rod, m_tip):
+    """Lowest natural frequency omega_1 = c k_1 of a fixed-free rod carrying a tip mass, Section 5.3.1.
+
+    k_1 L is the root in (0, pi/2) of kL tan(kL) = m_rod / m_tip.
+    """
+    ratio = m_rod / m_tip
+    kL = brentq(tip_mass_wavenumber_equation, 1e-12, np.pi / 2.0, args=(ratio,), xtol=1e-14)
+    return c * kL / L
+
+
+def lumped_rod_matrices(E, A, rho, L, N, ends="fixed-free"):
+    """(K, M) of a rod cut into N equal elements, each a spring E A N / L with its mass
+    rho A L / N split onto its two end nodes, Sections 4.4.1 and 5.3.1.
+
+    Fixed nodes are removed.  The chain's lowest frequencies approach the rod's as N grows.
+    """
+    h = L / N
+    k = E * A / h
+    m_node = np.full(N + 1, rho * A * h)
+    m_node[0] = m_node[-1] = 0.5 * rho * A * h
+    springs = np.full(N, k)
+    if ends == "fixed-free":
+        return multi_dof.chain_stiffness_matrix(springs), multi_dof.lumped_mass_matrix(m_node[1:])
+    if ends == "fixed-fixed":
+        return (multi_dof.chain_stiffness_matrix(springs, right_wall=True),
+                multi_dof.lumped_mass_matrix(m_node[1:-1]))
+    if ends == "free-free":
+        return (multi_dof.chain_stiffness_matrix(np.concatenate([[0.0], springs])),
+                multi_dof.lumped_mass_matrix(m_node))
+    raise ValueError(f"ends must be one of {END_CONDITIONS}")

@@ -1,0 +1,240 @@
+"""Single-degree-of-freedom vibrations, Section 4.3 of the notes.
+
+The system is m x'' + c x' + k x = F(t) (Section 4.3.1).  Free vibrations
+(Section 4.3.2) are described by the natural frequency omega_n = sqrt(k/m) and the
+damping ratio zeta = c / (2 sqrt(k m)); harmonic forcing F(t) = F0 cos(Omega t)
+(Section 4.3.3) by the frequency ratio eta = Omega / omega_n.  Angular frequencies
+are in rad/s, frequencies in Hz, angles in rad.  Functions accept floats or numpy
+arrays that broadcast together.
+"""
+import numpy as np
+
+
+# --- Section 4.3.1: definitions, equivalent mass and stiffness -------------------
+
+def natural_frequency(k, m):
+    """Undamped natural (angular) frequency omega_n = sqrt(k/m) in rad/s, Section 4.3.1."""
+    return np.sqrt(k / m)
+
+
+def frequency_in_hertz(omega):
+    """Frequency f = omega / (2 pi) in Hz of an angular frequency omega, Section 4.3.1."""
+    return omega / (2.0 * np.pi)
+
+
+def period(omega):
+    """Period T = 2 pi / omega of a vibration with angular frequency omega, Section 4.3.1."""
+    return 2.0 * np.pi / omega
+
+
+def static_deflection(m, k, g):
+    """Static deflection delta_st = m g / k of a mass hanging on a spring, Section 4.3.1."""
+    return m * g / k
+
+
+def natural_frequency_from_static_deflection(delta_st, g):
+    """Natural frequency omega_n = sqrt(g / delta_st) from the static deflection, Section 4.3.1."""
+    return np.sqrt(g / delta_st)
+
+
+def equivalent_mass(inertias, ratios):
+    """Equivalent mass m_eq = sum_i m_i (d u_i / d q)^2 of a 1-DOF system, Section 4.3.1.
+
+    ``inertias`` are the masses (or mass moments of inertia) of the bodies, ``ratios``
+    the kinematic transmission ratios d u_i/d q (or d phi_i/d q) of their velocities to
+    the generalized velocity q', so that T = m_eq q'^2 / 2.
+    """
+    inertias = np.asarray(inertias, dtype=float)
+    ratios = np.asarray(ratios, dtype=float)
+    return float(np.sum(inertias * ratios**2))
+
+
+def equivalent_stiffness(stiffnesses, ratios):
+    """Equivalent stiffness k_eq = sum_i k_i (d u_i / d q)^2 of a 1-DOF system, Section 4.3.1.
+
+    ``ratios`` are the elongations of the springs per unit generalized coordinate, so that
+    V = k_eq q^2 / 2.
+    """
+    stiffnesses = np.asarray(stiffnesses, dtype=float)
+    ratios = np.asarray(ratios, dtype=float)
+    return float(np.sum(stiffnesses * ratios**2))
+
+
+def mechanical_energy(x, v, k, m):
+    """Total mechanical energy E = m v^2/2 + k x^2/2 of the oscillator, Section 4.3.1."""
+    return 0.5 * m * np.asarray(v) ** 2 + 0.5 * k * np.asarray(x) ** 2
+
+
+# --- Section 4.3.2: free vibrations ------------------------------------------------
+
+def critical_damping(k, m):
+    """Critical damping coefficient c_cr = 2 sqrt(k m), Section 4.3.2."""
+    return 2.0 * np.sqrt(k * m)
+
+
+def damping_ratio(c, k, m):
+    """Damping ratio (Lehr's damping) zeta = c / (2 sqrt(k m)), Section 4.3.2."""
+    return c / critical_damping(k, m)
+
+
+def damping_coefficient(zeta, k, m):
+    """Viscous damping coefficient c = 2 zeta sqrt(k m) for a damping ratio zeta, Section 4.3.2."""
+    return zeta * critical_damping(k, m)
+
+
+def damped_frequency(omega_n, zeta):
+    """Damped natural frequency omega_d = omega_n sqrt(1 - zeta^2) (zeta < 1), Section 4.3.2."""
+    return omega_n * np.sqrt(1.0 - zeta**2)
+
+
+def damping_regime(zeta, tol=1e-9):
+    """Name of the free-vibration regime for a damping ratio zeta, Section 4.3.2.
+
+    One of "undamped", "underdamped", "critically damped", "overdamped".
+    """
+    if zeta < 0:
+        raise ValueError("the damping ratio must be non-negative")
+    if zeta <= tol:
+        return "undamped"
+    if abs(zeta - 1.0) <= tol:
+        return "critically damped"
+    return "underdamped" if zeta < 1.0 else "overdamped"
+
+
+def logarithmic_decrement(zeta):
+    """Logarithmic decrement delta = ln(x_i / x_{i+1}) = 2 pi zeta / sqrt(1 - zeta^2), Section 4.3.2."""
+    return 2.0 * np.pi * zeta / np.sqrt(1.0 - zeta**2)
+
+
+def logarithmic_decrement_from_amplitudes(x_first, x_later, cycles):
+    """Logarithmic decrement delta = ln(x_0 / x_n) / n from two peaks n cycles apart, Section 4.3.2."""
+    return np.log(x_first / x_later) / cycles
+
+
+def damping_ratio_from_decrement(delta):
+    """Damping ratio zeta = delta / sqrt(4 pi^2 + delta^2) from the logarithmic decrement, Section 4.3.2."""
+    return delta / np.sqrt(4.0 * np.pi**2 + delta**2)
+
+
+def _free_response_state(t, x0, v0, omega_n, zeta):
+    """Displacement and velocity of the free response (helper of the two public relations)."""
+    t = np.asarray(t, dtype=float)
+    w = omega_n
+    regime = damping_regime(zeta, tol=1e-7)
+    if regime == "undamped":
+        x = x0 * np.cos(w * t) + v0 / w * np.sin(w * t)
+        v = -x0 * w * np.sin(w * t) + v0 * np.cos(w * t)
+    elif regime == "underdamped":
+        wd = damped_frequency(w, zeta)
+        s = zeta * w
+        a, b = x0, (v0 + s * x0) / wd
+        e = np.exp(-s * t)
+        c, sn = np.cos(wd * t), np.sin(wd * t)
+        x = e * (a * c + b * sn)
+        v = e * ((b * wd - s * a) * c - (a * wd + s * b) * sn)
+    elif regime == "critically damped":
+        b = v0 + w * x0
+        e = np.exp(-w * t)
+        x = (x0 + b * t) * e
+        v = (b - w * (x0 + b * t)) * e
+    else:
+        r = w * np.sqrt(zeta**2 - 1.0)
+        lam1, lam2 = -zeta * w + r, -zeta * w - r
+        a1 = (v0 - lam2 * x0) / (lam1 - lam2)
+        a2 = (lam1 * x0 - v0) / (lam1 - lam2)
+        x = a1 * np.exp(lam1 * t) + a2 * np.exp(lam2 * t)
+        v = a1 * lam1 * np.exp(lam1 * t) + a2 * lam2 * np.exp(lam2 * t)
+    return x, v
+
+
+def free_response(t, x0, v0, omega_n, zeta):
+    """Displacement x(t) of the free vibration with x(0) = x0, x'(0) = v0, Section 4.3.2.
+
+    Covers the undamped (zeta = 0), underdamped (0 < zeta < 1), critically damped
+    (zeta = 1) and overdamped (zeta > 1) cases.
+    """
+    return _free_response_state(t, x0, v0, omega_n, zeta)[0]
+
+
+def free_response_velocity(t, x0, v0, omega_n, zeta):
+    """Velocity x'(t) of the free vibration with x(0) = x0, x'(0) = v0, Section 4.3.2."""
+    return _free_response_state(t, x0, v0, omega_n, zeta)[1]
+
+
+# --- Section 4.3.3: forced vibrations ----------------------------------------------
+
+def frequency_ratio(Omega, omega_n):
+    """Frequency ratio eta = Omega / omega_n of excitation and natural frequency, Section 4.3.3."""
+    return Omega / omega_n
+
+
+def amplification_factor(eta, zeta):
+    """Dynamic amplification V = 1 / sqrt((1 - eta^2)^2 + (2 zeta eta)^2), Section 4.3.3.
+
+    Ratio of the steady-state amplitude to the static deflection F0/k under a harmonic force.
+    """
+    return 1.0 / np.sqrt((1.0 - eta**2) ** 2 + (2.0 * zeta * eta) ** 2)
+
+
+def phase_lag(eta, zeta):
+    """Phase lag phi in [0, pi] of the steady-state response behind the force, Section 4.3.3.
+
+    tan(phi) = 2 zeta eta / (1 - eta^2); x(t) = X cos(Omega t - phi).
+    """
+    return np.arctan2(2.0 * zeta * eta, 1.0 - eta**2)
+
+
+def steady_state_amplitude(F0, k, eta, zeta):
+    """Steady-state amplitude X = (F0/k) V(eta, zeta) under F0 cos(Omega t), Section 4.3.3."""
+    return F0 / k * amplification_factor(eta, zeta)
+
+
+def steady_state_response(t, F0, k, m, c, Omega):
+    """Steady-state displacement x_p(t) = X cos(Omega t - phi) under F0 cos(Omega t), Section 4.3.3."""
+    w = natural_frequency(k, m)
+    zeta = damping_ratio(c, k, m)
+    eta = frequency_ratio(Omega, w)
+    X = steady_state_amplitude(F0, k, eta, zeta)
+    return X * np.cos(Omega * np.asarray(t, dtype=float) - phase_lag(eta, zeta))
+
+
+def resonance_frequency_ratio(zeta):
+    """Frequency ratio eta_res = sqrt(1 - 2 zeta^2) of the amplitude peak (zeta < 1/sqrt 2), Section 4.3.3."""
+    return np.sqrt(1.0 - 2.0 * zeta**2)
+
+
+def peak_amplification(zeta):
+    """Largest dynamic amplification V_max = 1 / (2 zeta sqrt(1 - zeta^2)) (zeta < 1/sqrt 2), Section 4.3.3."""
+    return 1.0 / (2.0 * zeta * np.sqrt(1.0 - zeta**2))
+
+
+def transmissibility(eta, zeta):
+    """Transmissibility TR = sqrt(1 + (2 zeta eta)^2) V(eta, zeta), Section 4.3.3.
+
+    Ratio of the absolute amplitude of a base-excited mass to the base amplitude, and
+    equally of the force transmitted to the foundation to the applied force amplitude.
+    """
+    return np.sqrt(1.0 + (2.0 * zeta * eta) ** 2) * amplification_factor(eta, zeta)
+
+
+def base_excitation_amplitude(Y, eta, zeta):
+    """Absolute steady-state amplitude X = Y TR of a mass whose base moves as Y cos(Omega t), Section 4.3.3."""
+    return Y * transmissibility(eta, zeta)
+
+
+def relative_base_excitation_amplitude(Y, eta, zeta):
+    """Amplitude Z = Y eta^2 V of the spring deflection under base motion Y cos(Omega t), Section 4.3.3."""
+    return Y * eta**2 * amplification_factor(eta, zeta)
+
+
+def unbalance_amplitude(m_u, e, M, eta, zeta):
+    """Steady-state amplitude X = (m_u e / M) eta^2 V of a machine with rotating unbalance, Section 4.3.3.
+
+    ``M`` is the total vibrating mass (including the unbalance mass m_u at eccentricity e).
+    """
+    return m_u * e / M * eta**2 * amplification_factor(eta, zeta)
+
+
+def transmitted_force_amplitude(X, k, c, Omega):
+    """Amplitude F_T = X sqrt(k^2 + (c Omega)^2) of the force spring and damper pass to the ground, Section 4.3.3."""
+    return X * np.sqrt(k**2 + (c * Omega) ** 2)
