@@ -1,0 +1,74 @@
+"""A block slides up a rough slope until it stops (Example 1.15)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symbolic, Uniform,
+                                Variable)
+from dynagrade.mechanics import incline
+
+
+def solve(p):
+    return {
+        "delta_x": incline.distance_up_slope(p.v0, p.alpha, p.mu, p.g),
+        "a_up": incline.deceleration_up_slope(p.alpha, p.mu, p.g),
+        "t_stop": incline.time_up_slope(p.v0, p.alpha, p.mu, p.g),
+    }
+
+
+EXERCISE = Exercise(
+    id="sliding-up-a-slope",
+    title="Frictional sliding up a slope",
+    source="Example 1.15",
+    topics=("work-energy balance", "Coulomb friction", "inclined plane"),
+    params=(
+        Uniform("m", 0.5, 5.0, step=0.1, unit="kg", symbol="m"),
+        Uniform("v0", 2.0, 12.0, step=0.5, unit="m/s", symbol="v_0"),
+        Uniform("alpha", 10, 50, step=1, unit="deg", symbol=r"\alpha"),
+        Uniform("mu", 0.1, 0.6, step=0.05, symbol=r"\mu"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    statement="""
+A block of mass $m$ = {{ m }} is pushed up a slope inclined at $\\alpha$ = {{ alpha }}
+and leaves your hand with speed $v_0$ = {{ v0 }}. The coefficient of kinetic friction
+between block and slope is $\\mu$ = {{ mu }}; $g$ = {{ g }}.
+
+1. How far up the slope does the block slide before it comes to rest?
+2. What is the magnitude of its deceleration while it slides up?
+3. How long does it slide up?
+4. Write the distance as a formula in $v_0$, $\\alpha$, $\\mu$ and $g$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("delta_x", "distance up the slope", unit="m", points=2,
+                misconceptions=(
+                    Misconception("friction ignored",
+                                  lambda p: p.v0**2 / (2 * p.g * np.sin(p.alpha)),
+                                  "Friction also takes energy: W = -µ m g cos α Δx, "
+                                  "eq. (1.127)."),
+                    Misconception("friction helps",
+                                  lambda p: p.v0**2 / (2 * p.g * (np.sin(p.alpha)
+                                                                   - p.mu * np.cos(p.alpha))),
+                                  "Friction opposes the motion up the slope: both gravity and "
+                                  "friction slow the block, eq. (1.128)."),
+                    Misconception("normal force taken as m g",
+                                  lambda p: p.v0**2 / (2 * p.g * (np.sin(p.alpha) + p.mu)),
+                                  "On a slope the normal force is m g cos α, not m g."),
+                )),
+        Numeric("a_up", "deceleration", unit="m/s^2", points=1,
+                misconceptions=(
+                    Misconception("friction ignored", lambda p: p.g * np.sin(p.alpha),
+                                  "Friction µ m g cos α adds to the pull of gravity down the "
+                                  "slope."),
+                )),
+        Numeric("t_stop", "time to stop", unit="s", points=1),
+        Symbolic("delta_x_formula", "distance as a formula", points=1,
+                 expected="v0^2/(2*g*(sin(alpha) + mu*cos(alpha)))",
+                 variables={"v0": Variable(1, 20, "m/s"), "alpha": Variable(0.05, 1.5, "rad"),
+                            "mu": Variable(0.05, 1.0), "g": Variable(1, 20, "m/s^2")},
+                 equals="delta_x",
+                 misconceptions=(
+                     Misconception("friction ignored", "v0^2/(2*g*sin(alpha))",
+                                   "Friction also does work on the way up."),
+                 )),
+    ),
+)

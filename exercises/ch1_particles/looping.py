@@ -1,0 +1,94 @@
+"""A car coasting through a circular looping (Example 1.13)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
+                                Symbolic, Uniform, Variable)
+from dynagrade.mechanics import looping
+
+
+def solve(p):
+    reactions = looping.support_reactions(p.phi, p.m, p.v0, p.R, p.g)
+    return {
+        "v_min_entry": looping.minimum_entry_speed(p.R, p.g),
+        "N_max": looping.maximum_normal_force(p.m, p.v0, p.R, p.g),
+        "v_phi": looping.speed(p.phi, p.v0, p.R, p.g),
+        "N_phi": looping.normal_force(p.phi, p.m, p.v0, p.R, p.g),
+        "M_A": reactions.MA,
+    }
+
+
+EXERCISE = Exercise(
+    id="car-in-a-looping",
+    title="Car in a looping",
+    source="Example 1.13",
+    topics=("work-energy balance", "normal force", "circular motion", "support reactions"),
+    params=(
+        Uniform("m", 600, 1500, step=50, unit="kg", symbol="m"),
+        Uniform("R", 3.0, 10.0, step=0.5, unit="m", symbol="R"),
+        Uniform("v0", 12.0, 30.0, step=0.5, unit="m/s", symbol="v_0"),
+        Uniform("phi", 20, 160, step=5, unit="deg", symbol=r"\varphi"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        Constraint("the car stays on the track (v0 > sqrt(5 g R))",
+                   lambda p: p.v0 > 1.05 * looping.minimum_entry_speed(p.R, p.g)),
+        Constraint("the angle is clear of 90 degrees, where cos(phi) vanishes",
+                   lambda p: abs(p.phi - np.pi / 2) > np.radians(10)),
+    ),
+    statement="""
+A car of mass $m$ = {{ m }} coasts with its engine off into a circular looping of radius
+$R$ = {{ R }}, entering at the bottom with speed $v_0$ = {{ v0 }}. Neglect friction and
+treat the car as a particle; $g$ = {{ g }}. The looping is clamped to the ground at its
+lowest point A.
+
+1. What is the smallest entry speed for which the car does not lose contact anywhere?
+2. What is the largest normal force on the car during the looping?
+3. What is the car's speed after it has travelled the angle $\\varphi$ = {{ phi }} around the looping?
+4. What is the normal force there?
+5. What is the magnitude of the clamping moment at A at that instant?
+6. Write the smallest entry speed as a formula in $g$ and $R$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("v_min_entry", "smallest entry speed", unit="m/s", points=2,
+                misconceptions=(
+                    Misconception("only reaching the top",
+                                  lambda p: looping.speed_to_reach_top(p.R, p.g),
+                                  "v0 > 2√(gR) only gets the car to the top, eq. (1.112); "
+                                  "it must also keep N ≥ 0 there, which needs √(5gR), "
+                                  "eq. (1.118)."),
+                )),
+        Numeric("N_max", "largest normal force", unit="N", points=1,
+                misconceptions=(
+                    Misconception("weight forgotten", lambda p: p.m * p.v0**2 / p.R,
+                                  "At the bottom the track carries the weight as well as "
+                                  "providing the centripetal force."),
+                )),
+        Numeric("v_phi", "speed at phi", unit="m/s", points=1),
+        Numeric("N_phi", "normal force at phi", unit="N", points=1,
+                misconceptions=(
+                    Misconception("energy loss of the height ignored",
+                                  lambda p: p.m * p.v0**2 / p.R + p.m * p.g * np.cos(p.phi),
+                                  "The car is slower at height R(1 − cos φ): use v(φ) from "
+                                  "the energy balance, eq. (1.116)."),
+                )),
+        Numeric("M_A", "clamping moment at A", unit="N*m", points=1,
+                misconceptions=(
+                    Misconception("static moment",
+                                  lambda p: looping.static_support_reactions(
+                                      p.phi, p.m, p.R, p.g).MA,
+                                  "That is the moment of the car at rest; in motion the track "
+                                  "pushes with N(φ), eq. (1.122)."),
+                )),
+        Symbolic("v_min_formula", "smallest entry speed as a formula", points=1,
+                 expected="sqrt(5*g*R)",
+                 variables={"g": Variable(1, 20, "m/s^2"), "R": Variable(0.5, 20, "m")},
+                 equals="v_min_entry",
+                 misconceptions=(
+                     Misconception("only reaching the top", "2*sqrt(g*R)",
+                                   "That only gets the car to the top; it must also keep "
+                                   "contact there."),
+                 )),
+    ),
+)

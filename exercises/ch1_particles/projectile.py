@@ -1,0 +1,80 @@
+"""Throwing a ball from level ground: range, peak height and flight time (Example 1.9)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
+                                Symbolic, Uniform, Variable)
+from dynagrade.mechanics import projectile
+
+
+def solve(p):
+    return {
+        "x_max": projectile.horizontal_range(p.v0, p.alpha, p.g),
+        "h_max": projectile.peak_height(p.v0, p.alpha, p.g),
+        "t_flight": projectile.flight_time(p.v0, p.alpha, p.g),
+    }
+
+
+_LAUNCH = {"v0": Variable(1, 50, "m/s"), "alpha": Variable(0.1, 1.4, "rad"),
+           "g": Variable(1, 20, "m/s^2")}
+
+EXERCISE = Exercise(
+    id="projectile-range",
+    title="Throwing a ball: range, peak height and flight time",
+    source="Example 1.9",
+    topics=("projectile motion", "linear momentum balance", "kinematics"),
+    params=(
+        Uniform("v0", 5.0, 30.0, step=0.5, unit="m/s", symbol="v_0"),
+        Uniform("alpha", 15, 75, step=1, unit="deg", symbol=r"\alpha"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        # At 45 degrees sin(2a) = 1 and the range equals v0^2/g: the sin(a) slip is
+        # then the only misconception to catch, and near 45 it is caught weakly.
+        Constraint("the angle is at least 5 degrees away from 45 degrees",
+                   lambda p: abs(p.alpha - np.pi / 4) >= np.radians(5) - 1e-9),
+    ),
+    statement="""
+A ball is thrown from level ground with speed $v_0$ = {{ v0 }} at an angle
+$\\alpha$ = {{ alpha }} above the horizontal. Gravity is $g$ = {{ g }}; neglect air drag.
+
+1. How far from the launch point does the ball land?
+2. How high above the ground does it rise?
+3. How long is it in the air?
+4. Write the landing distance as a formula in $v_0$, $\\alpha$ and $g$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("x_max", "landing distance", unit="m", points=2,
+                misconceptions=(
+                    Misconception("sin(alpha) for sin(2 alpha)",
+                                  lambda p: p.v0**2 * np.sin(p.alpha) / p.g,
+                                  "The range is 2 v0² sin α cos α / g = v0² sin 2α / g, "
+                                  "eq. (1.80): check the double angle."),
+                    Misconception("half the range",
+                                  lambda p: projectile.horizontal_range(p.v0, p.alpha, p.g) / 2,
+                                  "That is where the ball is highest: it lands after twice "
+                                  "the time to the peak."),
+                )),
+        Numeric("h_max", "peak height", unit="m", points=1,
+                misconceptions=(
+                    Misconception("sin instead of sin squared",
+                                  lambda p: p.v0**2 * np.sin(p.alpha) / (2 * p.g),
+                                  "Only the vertical component v0 sin α is lost to gravity: "
+                                  "h = (v0 sin α)² / (2g), eq. (1.82)."),
+                )),
+        Numeric("t_flight", "flight time", unit="s", points=1,
+                misconceptions=(
+                    Misconception("time to the peak",
+                                  lambda p: projectile.peak_time(p.v0, p.alpha, p.g),
+                                  "That is the time to the peak; the ball needs as long "
+                                  "again to come down, eq. (1.79)."),
+                )),
+        Symbolic("x_max_formula", "landing distance as a formula", points=1,
+                 expected="v0^2*sin(2*alpha)/g", variables=_LAUNCH, equals="x_max",
+                 misconceptions=(
+                     Misconception("sin(alpha) for sin(2 alpha)", "v0^2*sin(alpha)/g",
+                                   "Check the double angle: 2 sin α cos α = sin 2α."),
+                 )),
+    ),
+)

@@ -1,0 +1,287 @@
+"""The ``dynagrade`` and ``grade`` commands.
+
+Usage::
+
+    dynagrade list
+    dynagrade show projectile-range --student s1 --answers
+    dynagrade sheet projectile-range --student s1 -o exercise.py
+    grade exercise.py
+    dynagrade verify --variants 200
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+import click
+
+from .exercise import loader
+
+
+class _Context:
+    """What every subcommand shares: where exercises are looked for."""
+
+    def __init__(self, folders: tuple[str, ...]):
+        self.folders = folders
+        self._bank = None
+
+    @property
+    def bank(self):
+        if self._bank is None:
+            try:
+                self._bank = loader.open_bank(self.folders)
+            except loader.ExerciseFileError as error:
+                raise click.ClickException(str(error)) from None
+        return self._bank
+
+    def exercise(self, exercise_id: str):
+        try:
+            return self.bank.get(exercise_id)
+        except KeyError as error:
+            raise click.ClickException(error.args[0]) from None
+        except loader.ExerciseFileError as error:
+            raise click.ClickException(str(error)) from None
+
+
+_exercises_option = click.option(
+    "--exercises", "folders", multiple=True, type=click.Path(file_okay=False),
+    help=f"A folder of exercise files, searched before the shipped bank (repeatable; "
+         f"also ${loader.ENVIRONMENT_VARIABLE}).")
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@_exercises_option
+@click.version_option(package_name="dynagrade")
+@click.pass_context
+def main(ctx, folders):
+    """Randomized Dynamics exercises and exams, graded with units and feedback."""
+    ctx.obj = _Context(folders)
+
+
+# -- exercises ---------------------------------------------------------------------------
+
+
+@main.command("list")
+@click.option("--json", "as_json", is_flag=True, help="Print a JSON array.")
+@click.pass_obj
+def list_command(context, as_json):
+    """List the exercises in the bank."""
+    exercises = _load_all(context)
+    if as_json:
+        click.echo(json.dumps([e.summary() for e in exercises], indent=2, ensure_ascii=False))
+        return
+    from .render.terminal import exercise_table
+
+    exercise_table(exercises)
+
+
+@main.command()
+@click.argument("exercise_id")
+@click.option("--seed", type=int, help="The variant's seed (default 0).")
+@click.option("--student", help="Show this student's variant (seed from the student id).")
+@click.option("--set", "settings", multiple=True, metavar="NAME=VALUE",
+              help="Fix a parameter, in its unit or with one (alpha=30 or 'alpha=0.5 rad').")
+@click.option("--answers", is_flag=True, help="Show the reference answers too.")
+@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@click.pass_obj
+def show(context, exercise_id, seed, student, settings, answers, as_json):
+    """Show an exercise's variant: its statement, and on request its answers."""
+    exercise = context.exercise(exercise_id)
+    variant = _variant(exercise, seed, student, settings)
+    if as_json:
+        data = variant.to_json()
+        if not answers:
+            data.pop("answers")
+        click.echo(json.dumps(data, indent=2, ensure_ascii=False))
+        return
+    from .render.terminal import variant_panel
+
+    variant_panel(exercise, variant, with_answers=answers)
+
+
+@main.command()
+@click.argument("exercise_id")
+@click.option("--seed", type=int, default=0, show_default=True,
+              help="Seed for the parameters not set.")
+@click.option("--set", "settings", multiple=True, metavar="NAME=VALUE",
+              help="Fix a parameter, in its unit or with one.")
+@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@click.pass_obj
+def solve(context, exercise_id, seed, settings, as_json):
+    """Solve an exercise for given parameters; the others are drawn from --seed."""
+    exercise = context.exercise(exercise_id)
+    variant = _variant(exercise, seed, None, settings)
+    data = variant.to_json()
+    result = {"params": data["params"], "answers": data["answers"]}
+    if as_json:
+        click.echo(json.dumps(result, indent=2, ensure_ascii=False))
+        return
+    from .render.terminal import answers_table
+
+    answers_table(exercise, variant)
+
+
+@main.command()
+@click.argument("exercise_id")
+@click.option("--student", required=True, help="The student's id.")
+@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
+              help="Where to write the file (default: print it).")
+@click.pass_obj
+def sheet(context, exercise_id, student, output):
+    """Write a student's fill-in file for an exercise."""
+    from .exercise.seeds import student_seed
+    from .exercise.sheet import write_sheet
+
+    exercise = context.exercise(exercise_id)
+    variant = exercise.variant(student_seed(exercise.id, student))
+    filename = Path(output).name if output else "exercise.py"
+    text = write_sheet(exercise, variant, student, filename)
+    if output:
+        Path(output).write_text(text, encoding="utf-8")
+        click.echo(f"wrote {output}: {exercise.title}, variant of {student}", err=True)
+    else:
+        click.echo(text)
+
+
+@main.command()
+@click.argument("exercise_ids", nargs=-1)
+@click.option("--variants", type=click.IntRange(1), default=50, show_default=True,
+              help="Seeds to check per exercise (0 .. N-1).")
+@click.pass_obj
+def verify(context, exercise_ids, variants):
+    """Check exercises for variants that cannot tell right from wrong."""
+    from .exercise.verify import verify_exercise
+    from .render.terminal import verify_progress
+
+    exercises = ([context.exercise(i) for i in exercise_ids] if exercise_ids
+                 else _load_all(context))
+    reports = verify_progress(exercises, lambda e: verify_exercise(e, range(variants)))
+    if any(not r.ok for r in reports):
+        sys.exit(1)
+
+
+@main.command()
+@click.argument("source", type=click.File("r", encoding="utf-8"), default="-")
+@click.pass_obj
+def compare(context, source):
+    """Grade JSON lines of (expected, answer, spec) records; one JSON line out per line in."""
+    from .grading.compare import compare_lines
+
+    for line in compare_lines(source):
+        click.echo(line)
+
+
+@main.command("grade")
+@click.argument("files", nargs=-1, required=True,
+                type=click.Path(exists=True, dir_okay=False))
+@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@click.pass_obj
+def grade_command(context, files, as_json):
+    """Grade filled-in exercise files (never executing them)."""
+    _grade_files(context, files, as_json)
+
+
+# -- grade exercise.py -------------------------------------------------------------------
+
+
+@click.command(context_settings={"help_option_names": ["-h", "--help"]})
+@click.argument("file", type=click.Path(exists=True, dir_okay=False))
+@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@_exercises_option
+def grade_main(file, as_json, folders):
+    """Grade one filled-in exercise file and print feedback per part.
+
+    The file is read, never run: each answer must be a number, a quoted string, a list
+    of numbers or None.
+    """
+    _grade_files(_Context(folders), (file,), as_json)
+
+
+def _grade_files(context, files, as_json):
+    from .exercise.scoring import grade_variant
+    from .exercise.seeds import student_seed
+    from .exercise.sheet import SheetError, read_sheet
+
+    results = []
+    for file in files:
+        try:
+            sheet = read_sheet(file)
+        except SheetError as error:
+            raise click.ClickException(str(error)) from None
+        exercise = context.exercise(sheet.exercise_id)
+        notes = [f"{file}: no part named {name!r} in {exercise.id}; it was ignored"
+                 for name in sheet.answers if name not in {p.name for p in exercise.parts}]
+        if sheet.student and sheet.seed != student_seed(exercise.id, sheet.student):
+            notes.append(f"{file}: SEED {sheet.seed} is not the variant of student "
+                         f"{sheet.student!r}; graded the variant of SEED {sheet.seed}")
+        for note in notes:
+            click.echo(f"warning: {note}", err=True)
+        variant = exercise.variant(sheet.seed)
+        result = grade_variant(exercise, variant, sheet.answers, sheet.problems)
+        results.append((exercise, result))
+    if as_json:
+        data = [r.to_json() for _, r in results]
+        click.echo(json.dumps(data[0] if len(data) == 1 else data, indent=2,
+                              ensure_ascii=False))
+        return
+    from .render.terminal import result_table
+
+    for exercise, result in results:
+        result_table(exercise, result)
+
+
+# -- helpers -----------------------------------------------------------------------------
+
+
+def _load_all(context):
+    try:
+        return context.bank.all()
+    except loader.ExerciseFileError as error:
+        raise click.ClickException(str(error)) from None
+
+
+def _variant(exercise, seed, student, settings):
+    from .exercise.model import ConstraintError
+    from .exercise.seeds import student_seed
+
+    if seed is not None and student is not None:
+        raise click.UsageError("give --seed or --student, not both")
+    if student is not None:
+        seed = student_seed(exercise.id, student)
+    overrides = _parse_settings(exercise, settings)
+    try:
+        variant = exercise.variant(seed or 0, overrides, strict=not overrides)
+    except ConstraintError as error:
+        raise click.ClickException(str(error)) from None
+    for warning in variant.warnings:
+        click.echo(f"warning: the values set break the constraint '{warning}'", err=True)
+    return variant
+
+
+def _parse_settings(exercise, settings) -> dict[str, float]:
+    """``NAME=VALUE`` pairs as values in each parameter's unit."""
+    from .exercise.units import convert
+
+    overrides = {}
+    for setting in settings:
+        name, sep, text = setting.partition("=")
+        if not sep:
+            raise click.BadParameter(f"{setting!r} is not NAME=VALUE", param_hint="--set")
+        try:
+            parameter = exercise.parameter(name.strip())
+        except KeyError as error:
+            raise click.BadParameter(error.args[0], param_hint="--set") from None
+        number, _, unit = text.strip().partition(" ")
+        try:
+            value = float(number)
+            overrides[parameter.name] = (convert(value, unit.strip(), parameter.unit)
+                                         if unit.strip() else value)
+        except ValueError as error:
+            raise click.BadParameter(f"{setting!r}: {error}", param_hint="--set") from None
+    return overrides
+
+
+if __name__ == "__main__":
+    main()

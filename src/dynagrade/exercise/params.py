@@ -1,0 +1,153 @@
+"""Parameters of an exercise: how each is drawn, its unit and its printed symbol.
+
+A parameter's value lives in its declared unit (``alpha`` in degrees when ``unit="deg"``);
+the solver sees it in SI. Draws are taken from a ``numpy.random.Generator`` so that a
+variant is fully determined by its seed.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Callable, Mapping
+
+import numpy as np
+
+from .units import si_factor
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """What every parameter has: a name (an identifier), a unit and a printed symbol."""
+
+    name: str
+    unit: str | None = None
+    symbol: str | None = None
+
+    def __post_init__(self):
+        if not self.name.isidentifier():
+            raise ValueError(f"parameter name {self.name!r} is not an identifier")
+
+    def draw(self, rng: np.random.Generator) -> float:
+        """One value in the parameter's unit."""
+        raise TypeError(f"{type(self).__name__} cannot be drawn")
+
+    @property
+    def varies(self) -> bool:
+        """Whether different seeds can give different values."""
+        return True
+
+
+@dataclass(frozen=True)
+class Uniform(Parameter):
+    """A value drawn uniformly from the grid ``low, low + step, ..., high``.
+
+    Usage: ``Uniform("v0", 5, 30, step=0.5, unit="m/s", symbol="v_0")``.
+    """
+
+    low: float = 0.0
+    high: float = 1.0
+    step: float | None = None
+
+    def __init__(self, name, low, high, step=None, unit=None, symbol=None):
+        object.__setattr__(self, "low", float(low))
+        object.__setattr__(self, "high", float(high))
+        object.__setattr__(self, "step", None if step is None else float(step))
+        super().__init__(name, unit, symbol)
+        if not self.low <= self.high:
+            raise ValueError(f"parameter {name!r}: low {low} is above high {high}")
+        if self.step is not None and self.step <= 0:
+            raise ValueError(f"parameter {name!r}: step must be positive, got {step}")
+
+    def draw(self, rng):
+        if self.step is None:
+            return float(rng.uniform(self.low, self.high))
+        count = math.floor((self.high - self.low) / self.step + 1e-9) + 1
+        value = self.low + int(rng.integers(count)) * self.step
+        return _round_to_step(value, self.step)
+
+
+@dataclass(frozen=True)
+class Choice(Parameter):
+    """A value drawn from a fixed list. Usage: ``Choice("m", (0.2, 0.5, 1.0), unit="kg")``."""
+
+    values: tuple = ()
+
+    def __init__(self, name, values, unit=None, symbol=None):
+        object.__setattr__(self, "values", tuple(float(v) for v in values))
+        super().__init__(name, unit, symbol)
+        if not self.values:
+            raise ValueError(f"parameter {name!r}: a Choice needs at least one value")
+
+    def draw(self, rng):
+        return self.values[int(rng.integers(len(self.values)))]
+
+    @property
+    def varies(self):
+        return len(set(self.values)) > 1
+
+
+@dataclass(frozen=True)
+class Constant(Parameter):
+    """A fixed value, e.g. ``Constant("g", 9.81, unit="m/s^2")``."""
+
+    value: float = 0.0
+
+    def __init__(self, name, value, unit=None, symbol=None):
+        object.__setattr__(self, "value", float(value))
+        super().__init__(name, unit, symbol)
+
+    def draw(self, rng):
+        return self.value
+
+    @property
+    def varies(self):
+        return False
+
+
+@dataclass(frozen=True)
+class Constraint:
+    """A condition every variant's parameters must meet, stated in words.
+
+    ``check`` receives the parameters in SI (``p.alpha`` in radians).
+    Usage: ``Constraint("the block slides down", lambda p: p.mu < np.tan(p.alpha))``.
+    """
+
+    description: str
+    check: Callable[["ParamValues"], bool]
+
+
+class ParamValues(Mapping[str, float]):
+    """Parameter values by name, readable as attributes (``p.v0``) and as a mapping."""
+
+    def __init__(self, values: Mapping[str, float]):
+        self._values = dict(values)
+
+    def __getattr__(self, name):
+        try:
+            return self._values[name]
+        except KeyError:
+            raise AttributeError(f"no parameter named {name!r}") from None
+
+    def __getitem__(self, name):
+        return self._values[name]
+
+    def __iter__(self):
+        return iter(self._values)
+
+    def __len__(self):
+        return len(self._values)
+
+    def __repr__(self):
+        return f"ParamValues({self._values!r})"
+
+
+def to_si_values(params: tuple[Parameter, ...], values: Mapping[str, float]) -> ParamValues:
+    """The parameters' values (in their declared units) converted to SI."""
+    return ParamValues({p.name: values[p.name] * si_factor(p.unit) for p in params})
+
+
+def _round_to_step(value: float, step: float) -> float:
+    """``value`` without the float noise of repeated steps (0.1 * 3 -> 0.3)."""
+    decimals = max(0, -math.floor(math.log10(step)) + 6)
+    return round(value, decimals)

@@ -1,0 +1,1 @@
+"""Rendering: terminal tables, sheets, answer keys and reports."""

@@ -1,0 +1,97 @@
+"""What the commands print in a terminal (rich tables and progress)."""
+
+from __future__ import annotations
+
+from typing import Callable, Sequence
+
+from rich.console import Console
+from rich.markdown import Markdown
+from rich.panel import Panel
+from rich.progress import Progress
+from rich.table import Table
+
+from ..exercise.numbers import format_number
+from ..exercise.units import with_unit
+
+_STATUS_STYLE = {"correct": "green", "follow-through": "yellow", "partial": "yellow",
+                 "wrong": "red", "not answered": "dim"}
+
+
+def _console() -> Console:
+    return Console(highlight=False)
+
+
+def exercise_table(exercises) -> None:
+    table = Table(title=f"{len(exercises)} exercises")
+    for column in ("id", "source", "title", "parts"):
+        table.add_column(column, overflow="fold")
+    for e in exercises:
+        table.add_row(e.id, e.source, e.title, ", ".join(p.name for p in e.parts))
+    _console().print(table)
+
+
+def shown_answer(part, value) -> str:
+    """A reference answer with its unit, as a person reads it."""
+    if part.kind == "numeric":
+        return with_unit(format_number(value), part.unit)
+    if part.kind == "vector":
+        return with_unit("[" + ", ".join(format_number(v) for v in value) + "]", part.unit)
+    if isinstance(value, tuple):
+        return ", ".join(value)
+    return str(value)
+
+
+def answers_table(exercise, variant) -> None:
+    table = Table(title=f"{exercise.id}, seed {variant.seed}")
+    table.add_column("part")
+    table.add_column("answer")
+    for part in exercise.parts:
+        table.add_row(part.name, shown_answer(part, variant.answers[part.name]))
+    _console().print(table)
+
+
+def variant_panel(exercise, variant, with_answers: bool) -> None:
+    console = _console()
+    console.print(Panel(Markdown(variant.statement),
+                        title=f"{exercise.title} ({exercise.source})",
+                        subtitle=f"{exercise.id} · seed {variant.seed}"))
+    if with_answers:
+        answers_table(exercise, variant)
+
+
+def result_table(exercise, result) -> None:
+    table = Table(title=f"{exercise.title} ({exercise.id}, seed {result.seed})")
+    for column in ("part", "verdict", "points", "feedback"):
+        table.add_column(column, overflow="fold")
+    for part in result.parts:
+        style = _STATUS_STYLE.get(part.status, "")
+        table.add_row(part.name, f"[{style}]{part.status}[/]",
+                      f"{part.score:g} / {part.max_score:g}", part.feedback)
+    table.caption = f"total {result.score:g} / {result.max_score:g}"
+    _console().print(table)
+
+
+def verify_progress(exercises: Sequence, check: Callable) -> list:
+    """Run ``check`` on every exercise with a progress bar; print what failed."""
+    console = Console(stderr=True, highlight=False)
+    reports = []
+    with Progress(console=console, transient=True) as progress:
+        task = progress.add_task("verifying", total=len(exercises))
+        for exercise in exercises:
+            progress.update(task, description=f"verifying {exercise.id}")
+            reports.append(check(exercise))
+            progress.advance(task)
+    out = _console()
+    for report in reports:
+        if report.ok:
+            out.print(f"[green]ok[/]    {report.exercise_id}: {report.variants} variants")
+        else:
+            out.print(f"[red]FAIL[/]  {report.exercise_id}: {len(report.failures)} problems "
+                      f"in {report.variants} variants")
+            for failure in report.failures[:10]:
+                out.print(f"        {failure}")
+            if len(report.failures) > 10:
+                out.print(f"        … and {len(report.failures) - 10} more")
+    failed = sum(not r.ok for r in reports)
+    out.print(f"{len(reports) - failed} of {len(reports)} exercises passed")
+    return reports

@@ -1,0 +1,76 @@
+"""Loading exercise files: the shipped bank, user folders, and clear errors."""
+
+import textwrap
+
+import pytest
+
+from dynagrade.exercise import ExerciseFileError, load_file, open_bank
+from dynagrade.exercise.loader import ENVIRONMENT_VARIABLE
+
+GOOD = textwrap.dedent('''
+    from dynagrade.exercise import Exercise, Numeric, Uniform
+
+    EXERCISE = Exercise(
+        id="{id}", title="{title}", source="Example 1.1",
+        params=(Uniform("x", 1, 2, step=0.5),),
+        statement="x = {{{{ x }}}}",
+        solve=lambda p: {{"y": 2 * p.x}},
+        parts=(Numeric("y"),),
+    )
+''')
+
+
+def _write(folder, name, text):
+    path = folder / name
+    path.write_text(text)
+    return path
+
+
+def test_the_shipped_bank_has_the_pipeline_exercises(bank):
+    ids = {e.id for e in bank.all()}
+    assert {"projectile-range", "sliding-up-a-slope", "car-in-a-looping"} <= ids
+
+
+def test_a_user_folder_is_searched_and_overrides_the_shipped_bank(tmp_path):
+    _write(tmp_path, "mine.py", GOOD.format(id="projectile-range", title="Mine"))
+    _write(tmp_path, "other.py", GOOD.format(id="my-own", title="Own"))
+    bank = open_bank([tmp_path])
+    assert bank.get("projectile-range").title == "Mine"
+    assert bank.get("my-own").title == "Own"
+
+
+def test_the_environment_variable_names_folders(tmp_path, monkeypatch):
+    _write(tmp_path, "e.py", GOOD.format(id="from-env", title="Env"))
+    monkeypatch.setenv(ENVIRONMENT_VARIABLE, str(tmp_path))
+    assert open_bank().get("from-env").title == "Env"
+
+
+def test_two_files_with_one_id_are_an_error_naming_both(tmp_path):
+    a = _write(tmp_path, "a.py", GOOD.format(id="twin", title="A"))
+    b = _write(tmp_path, "b.py", GOOD.format(id="twin", title="B"))
+    with pytest.raises(ExerciseFileError) as error:
+        open_bank([tmp_path]).all()
+    assert str(a) in str(error.value) and str(b) in str(error.value)
+
+
+@pytest.mark.parametrize("text, message", [
+    ("EXERCISE = (\n", "line 1"),
+    ("x = 1\n", "defines no EXERCISE"),
+    ("import numpy\n\nraise RuntimeError('boom')\n", "line 3: RuntimeError: boom"),
+    (GOOD.format(id="Bad Id", title="t"), "kebab-case"),
+])
+def test_a_malformed_exercise_file_names_the_file_line_and_fault(tmp_path, text, message):
+    path = _write(tmp_path, "broken.py", text)
+    with pytest.raises(ExerciseFileError) as error:
+        load_file(path)
+    assert str(path) in str(error.value) and message in str(error.value)
+
+
+def test_an_unknown_id_suggests_close_ones(bank):
+    with pytest.raises(KeyError, match="projectile-range"):
+        bank.get("projectile-rnge")
+
+
+def test_a_missing_folder_is_an_error(tmp_path):
+    with pytest.raises(ExerciseFileError, match="does not exist"):
+        open_bank([tmp_path / "nope"])
