@@ -60,10 +60,10 @@ def bead_radial_speed(t, r0, radial_speed0, omega):
 
 
 def bead_normal_force(mass, omega, radial_speed):
-    """Horizontal force of the spinning rod on the bead, N = 2 m Omega r_dot: the rod
-    balances the Coriolis term (Section 3.4.3)."""
-    return mass * float(np.linalg.norm(coriolis_acceleration([0.0, 0.0, omega],
-                                                            [radial_speed, 0.0, 0.0])))
+    """Force of the spinning rod on the bead, perpendicular to the rod in the direction of
+    rotation, N = 2 m Omega r_dot: the rod supplies the Coriolis term (Section 3.4.3).
+    Signed: negative when the bead moves inward."""
+    return mass * float(coriolis_acceleration([0.0, 0.0, omega], [radial_speed, 0.0, 0.0])[1])
 
 
 def eastward_deflection_of_falling_body(height, latitude, earth_rate, g):
