@@ -1,1 +1,18 @@
-"""Grading: a safe expression parser and the comparison of answers with references."""
+"""Grading: a safe expression parser and the comparison of answers with references.
+
+Public API::
+
+    from dynagrade.grading import grade, Verdict, AnswerError
+    from dynagrade.grading.spec import NumericSpec, SymbolicSpec, VectorSpec, ChoiceSpec, Variable, KnownWrong
+
+Importing this package does not import pint or sympy: pint is loaded when an answer
+or a part uses a unit, sympy only for the optional exact check of formulas.
+"""
+
+from .dispatch import grade
+from .errors import AnswerError, SpecError
+from .spec import ChoiceSpec, KnownWrong, NumericSpec, SymbolicSpec, Variable, VectorSpec
+from .verdict import Verdict
+
+__all__ = ["grade", "AnswerError", "SpecError", "Verdict", "NumericSpec", "SymbolicSpec",
+           "VectorSpec", "ChoiceSpec", "Variable", "KnownWrong"]

@@ -1,0 +1,110 @@
+"""Dimensional analysis of expression trees with exponent vectors (see :mod:`units`).
+
+Sums need equal dimensions, exponents must be pure numbers (and constant when the
+base has a unit), and transcendental functions need pure-number arguments (trig
+functions accept angles too). Angle exponents are carried but, for formulas,
+compared as radians = 1.
+"""
+
+from __future__ import annotations
+
+from typing import Mapping
+
+from . import units
+from .errors import AnswerError
+from .evaluate import evaluate_constant
+from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit, names_in, to_text
+
+_TRIG = {"sin", "cos", "tan", "cot", "sec", "csc"}
+_INVERSE_TRIG = {"asin", "acos", "atan"}
+_PURE = {"sinh", "cosh", "tanh", "exp", "ln", "log10", "log2"}
+_ANGLE = (0.0,) * 7 + (1.0,)
+
+
+class DimensionIssue(Exception):
+    """An expression that mixes units illegally; ``message`` is written for the student."""
+
+    def __init__(self, message: str):
+        super().__init__(message)
+        self.message = message
+
+
+def show(dim: tuple) -> str:
+    """Text of a dimension for formula feedback (radians dropped: they are 1)."""
+    return units.format_dimension(tuple(dim[:7]) + (0.0,))
+
+
+def dimension(expr: Expr, variables: Mapping[str, tuple]) -> tuple:
+    """Dimension of ``expr``; variables map to dimensions, units are looked up."""
+    return _dim(expr, variables)
+
+
+def _dim(node: Expr, variables) -> tuple:
+    if isinstance(node, (Num, Const)):
+        return units.DIMENSIONLESS
+    if isinstance(node, Name):
+        return variables[node.id]
+    if isinstance(node, Unit):
+        try:
+            return units.lookup(node.id)[1]
+        except AnswerError as error:
+            raise AnswerError(error.message, node.pos) from None
+    if isinstance(node, Neg):
+        return _dim(node.operand, variables)
+    if isinstance(node, BinOp):
+        a = _dim(node.left, variables)
+        if node.op == "^":
+            return _power(node, a, variables)
+        b = _dim(node.right, variables)
+        if node.op == "*":
+            return units.add(a, b)
+        if node.op == "/":
+            return units.add(a, units.scale(b, -1.0))
+        if not units.same(a, b, ignore_angle=True):
+            raise DimensionIssue(
+                f"your expression adds or subtracts terms with different units ({show(a)} and {show(b)})")
+        return a if units.has_angle(a) else b
+    if isinstance(node, Call):
+        return _call(node, variables)
+    raise TypeError(f"not an expression node: {node!r}")
+
+
+def _power(node: BinOp, base: tuple, variables) -> tuple:
+    exponent_dim = _dim(node.right, variables)
+    if not units.is_dimensionless(exponent_dim):
+        raise DimensionIssue(f"an exponent must be a pure number, but '{to_text(node.right)}' "
+                             f"has units of {show(exponent_dim)}")
+    if units.is_dimensionless(base, ignore_angle=False):
+        return units.DIMENSIONLESS
+    if names_in(node.right):
+        raise DimensionIssue(f"'{to_text(node.left)}' has units of {show(base)} and cannot be raised "
+                             f"to a power that depends on the variables")
+    power = evaluate_constant(node.right)
+    if not abs(power) < 1e6:
+        raise DimensionIssue(f"the exponent of '{to_text(node.left)}' is not a usable number")
+    return units.scale(base, power)
+
+
+def _call(node: Call, variables) -> tuple:
+    args = [_dim(arg, variables) for arg in node.args]
+    func = node.func
+    if func in _TRIG:
+        if not units.is_dimensionless(args[0]):
+            raise DimensionIssue(f"the argument of {func} must be an angle or a pure number, "
+                                 f"but it has units of {show(args[0])}")
+        return units.DIMENSIONLESS
+    if func in _PURE or func in _INVERSE_TRIG:
+        if not units.is_dimensionless(args[0]):
+            raise DimensionIssue(f"the argument of {func} must be a pure number, "
+                                 f"but it has units of {show(args[0])}")
+        return _ANGLE if func in _INVERSE_TRIG else units.DIMENSIONLESS
+    if func == "atan2":
+        if not units.same(args[0], args[1], ignore_angle=True):
+            raise DimensionIssue(f"the two arguments of atan2 must have the same units "
+                                 f"({show(args[0])} and {show(args[1])} given)")
+        return _ANGLE
+    if func == "sqrt":
+        return units.scale(args[0], 0.5)
+    if func == "cbrt":
+        return units.scale(args[0], 1.0 / 3.0)
+    return args[0]  # abs

@@ -1,0 +1,161 @@
+"""Tokenizer: answer text -> tokens, with Unicode and number-format normalisation.
+
+Reads ``^``/``**``, ``×``/``·`` for products, the Unicode minus, superscript
+exponents (``m/s²``, ``10⁻³``), ``√``, ``π`` and Greek letters (as their ASCII
+names), and numbers ``1.2``, ``.5``, ``1.2e3``, ``1.2E+03`` (and ``12,5`` where a
+decimal comma is allowed). Everything else is refused with a positioned message.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from .errors import AnswerError
+from .names import GREEK, OPERATOR_CHARS, SUPERSCRIPTS
+
+#: Longest answer accepted, in characters.
+MAX_LENGTH = 2000
+#: Most tokens accepted in one answer.
+MAX_TOKENS = 1000
+
+_NUMBER = re.compile(r"(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
+_NUMBER_COMMA = re.compile(r"(?:[0-9]+(?:[.,][0-9]+|\.)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
+_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_NAME_TAIL = re.compile(r"[0-9_]*")
+_SUPERSCRIPT_VALUE = re.compile(r"[+-]?[0-9]+")
+
+NUM, NAME, OP, LPAR, RPAR, COMMA, SEMI, SUP, ROOT, EQUALS, END = (
+    "number", "name", "operator", "(", ")", ",", ";", "superscript", "root", "=", "end")
+
+_BRACKETS = {"(": LPAR, "[": LPAR, "{": LPAR, ")": RPAR, "]": RPAR, "}": RPAR}
+_REFUSED_CHARS = {
+    "'": "quotes are not allowed in an answer",
+    '"': "quotes are not allowed in an answer",
+    "!": "factorials are not supported",
+    "∞": "infinity is not a valid answer",
+    "=": "",
+    "%": "percent signs are not supported; give a plain number",
+    "\\": "backslashes are not allowed (no LaTeX commands)",
+    "$": "dollar signs are not allowed (no LaTeX)",
+    ":": "':' is not allowed in an answer",
+    "@": "'@' is not allowed in an answer",
+    "#": "'#' is not allowed in an answer",
+    "&": "'&' is not allowed in an answer",
+    "|": "use abs(...) instead of |...|",
+    "<": "comparisons are not allowed in an answer",
+    ">": "comparisons are not allowed in an answer",
+}
+
+
+@dataclass(frozen=True, slots=True)
+class Token:
+    kind: str
+    value: str
+    pos: int
+
+
+def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False) -> list[Token]:
+    """Split ``text`` into tokens.
+
+    ``quantity`` selects number-with-unit answers (``°`` is the unit ``deg``, ``µm``
+    is a micrometre); ``decimal_comma`` reads ``12,5`` as 12.5.
+    """
+    if not isinstance(text, str):
+        raise AnswerError("the answer must be text")
+    if len(text) > MAX_LENGTH:
+        raise AnswerError(f"the answer is too long ({len(text)} characters; at most {MAX_LENGTH})")
+    number_re = _NUMBER_COMMA if decimal_comma else _NUMBER
+    tokens: list[Token] = []
+    i, n = 0, len(text)
+    while i < n:
+        ch = text[i]
+        if ch.isspace():
+            i += 1
+            continue
+        if len(tokens) >= MAX_TOKENS:
+            raise AnswerError(f"the answer is too long (more than {MAX_TOKENS} symbols)", i, text)
+        if ch.isascii() and (ch.isdigit() or (ch == "." and i + 1 < n and text[i + 1].isdigit())):
+            m = number_re.match(text, i)
+            literal = m.group()
+            end = m.end()
+            if end < n and text[end] == "." and end + 1 < n and text[end + 1].isdigit():
+                raise AnswerError("a number cannot have two decimal points", end, text)
+            if end < n and text[end] == "," and decimal_comma and end + 1 < n and text[end + 1].isdigit():
+                raise AnswerError("a number cannot have two decimal commas", end, text)
+            value = float(literal.replace(",", "."))
+            if value == float("inf"):
+                raise AnswerError("this number is too large", i, text)
+            tokens.append(Token(NUM, literal, i))
+            i = end
+            continue
+        if ch.isascii() and (ch.isalpha() or ch == "_"):
+            m = _NAME.match(text, i)
+            end = m.end()
+            if end < n and text[end] == "." and end + 1 < n and (text[end + 1].isalpha() or text[end + 1] == "_"):
+                raise AnswerError("attribute access like a.b is not allowed", end, text)
+            tokens.append(Token(NAME, m.group(), i))
+            i = end
+            continue
+        if ch in ("µ", "μ") and quantity and i + 1 < n and text[i + 1].isascii() and text[i + 1].isalpha():
+            m = _NAME.match(text, i + 1)
+            tokens.append(Token(NAME, "u" + m.group(), i))
+            i = m.end()
+            continue
+        if ch in GREEK:
+            m = _NAME_TAIL.match(text, i + 1)
+            tokens.append(Token(NAME, GREEK[ch] + m.group(), i))
+            i = m.end()
+            continue
+        if ch in SUPERSCRIPTS:
+            j = i
+            while j < n and text[j] in SUPERSCRIPTS:
+                j += 1
+            exponent = "".join(SUPERSCRIPTS[c] for c in text[i:j])
+            if not _SUPERSCRIPT_VALUE.fullmatch(exponent):
+                raise AnswerError("this superscript is not a whole-number exponent", i, text)
+            tokens.append(Token(SUP, exponent, i))
+            i = j
+            continue
+        if ch == "°":
+            if not quantity:
+                raise AnswerError("the degree sign is only allowed after a number; "
+                                  "formulas use radians", i, text)
+            tokens.append(Token(NAME, "deg", i))
+            i += 1
+            continue
+        if ch in ("√", "∛"):
+            tokens.append(Token(ROOT, "sqrt" if ch == "√" else "cbrt", i))
+            i += 1
+            continue
+        op = OPERATOR_CHARS.get(ch, ch)
+        if op == "*" and i + 1 < n and OPERATOR_CHARS.get(text[i + 1], text[i + 1]) == "*":
+            tokens.append(Token(OP, "^", i))
+            i += 2
+            continue
+        if op in "+-*/^" and len(op) == 1:
+            tokens.append(Token(OP, op, i))
+            i += 1
+            continue
+        if op in _BRACKETS:
+            tokens.append(Token(_BRACKETS[op], op, i))
+            i += 1
+            continue
+        if op == ",":
+            tokens.append(Token(COMMA, ",", i))
+            i += 1
+            continue
+        if op == ";":
+            tokens.append(Token(SEMI, ";", i))
+            i += 1
+            continue
+        if op == "=":
+            tokens.append(Token(EQUALS, "=", i))
+            i += 1
+            continue
+        if ch in _REFUSED_CHARS:
+            raise AnswerError(_REFUSED_CHARS[ch], i, text)
+        shown = ch if ch.isprintable() else f"U+{ord(ch):04X}"
+        raise AnswerError(f"unexpected character '{shown}'", i, text)
+    tokens.append(Token(END, "", n))
+    return tokens

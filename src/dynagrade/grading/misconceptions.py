@@ -1,0 +1,54 @@
+"""Generic mistakes tried automatically when a numeric answer is wrong.
+
+Each candidate is (name, wrong value, feedback). They are tried after the part's
+declared misconceptions; the first one that matches the answer (with the part's own
+tolerance) names the mistake in the feedback. Candidates that coincide with the
+reference itself (e.g. the sign of 0) are skipped, since they cannot discriminate.
+"""
+
+from __future__ import annotations
+
+import math
+
+SIGN = "sign"
+DOUBLE = "factor 2"
+HALF = "factor 1/2"
+RECIPROCAL = "reciprocal"
+DEGREES = "degrees for radians"
+RADIANS = "radians for degrees"
+TWO_PI = "factor 2π"
+POWER_OF_TEN = "power of ten"
+
+
+def numeric_candidates(expected: float, *, angle_unit: str | None = None,
+                       rotational: bool = False) -> list[tuple[str, float, str]]:
+    """Wrong values a student commonly produces for ``expected``.
+
+    ``angle_unit`` is ``"rad"`` or ``"deg"`` when the part asks for an angle in that
+    unit; ``rotational`` enables the 2π mix-up (rev or Hz for rad/s).
+    """
+    e = expected
+    out: list[tuple[str, float, str]] = [
+        (SIGN, -e, "Your answer has the wrong sign: check the direction you took as positive."),
+        (DOUBLE, 2 * e, "Your answer is twice the expected value: check for an extra factor of 2."),
+        (HALF, e / 2, "Your answer is half the expected value: check for a missing factor of 2."),
+    ]
+    if angle_unit == "rad":
+        out.append((DEGREES, e * 180 / math.pi,
+                    "Your answer looks like degrees, but the answer is asked in radians."))
+    if angle_unit == "deg":
+        out.append((RADIANS, e * math.pi / 180,
+                    "Your answer looks like radians, but the answer is asked in degrees."))
+    if rotational:
+        out.append((TWO_PI, e / (2 * math.pi),
+                    "Your answer is off by a factor 2π: check revolutions (or Hz) against radians."))
+        out.append((TWO_PI, e * 2 * math.pi,
+                    "Your answer is off by a factor 2π: check revolutions (or Hz) against radians."))
+    if e != 0:
+        out.append((RECIPROCAL, 1 / e,
+                    "Your answer is the reciprocal of the expected value: is a fraction upside down?"))
+    for k in (3, -3, 1, -1, 2, -2, 6, -6, 9, -9, 4, -4, 5, -5, 7, -7, 8, -8):
+        sign = "" if k > 0 else "-"
+        out.append((POWER_OF_TEN, e * 10.0 ** k,
+                    f"Your answer is off by a factor of 10^{sign}{abs(k)}: check unit prefixes and conversions."))
+    return out

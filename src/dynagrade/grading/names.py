@@ -1,0 +1,85 @@
+"""Vocabulary of expressions: functions, constants, aliases and Unicode letters."""
+
+from __future__ import annotations
+
+import difflib
+import math
+
+#: Canonical function name -> number of arguments.
+FUNCTIONS: dict[str, int] = {
+    "sin": 1, "cos": 1, "tan": 1, "cot": 1, "sec": 1, "csc": 1,
+    "asin": 1, "acos": 1, "atan": 1, "atan2": 2,
+    "sinh": 1, "cosh": 1, "tanh": 1,
+    "exp": 1, "ln": 1, "log10": 1, "log2": 1,
+    "sqrt": 1, "cbrt": 1, "abs": 1,
+}
+
+#: Spellings students use -> canonical function name. ``log`` is the natural logarithm.
+FUNCTION_ALIASES: dict[str, str] = {
+    "arcsin": "asin", "arccos": "acos", "arctan": "atan", "arctan2": "atan2",
+    "log": "ln", "sinus": "sin", "cosinus": "cos", "tg": "tan", "cotan": "cot",
+    "cosec": "csc", "lg": "log10",
+}
+
+#: Mathematical constants: a declared variable of the same name wins over these.
+CONSTANTS: dict[str, float] = {"pi": math.pi, "e": math.e}
+
+#: Functions we recognise but do not offer, with the reason shown to the student.
+REFUSED_FUNCTIONS: dict[str, str] = {
+    "factorial": "factorials are not supported",
+    "gamma": "the gamma function is not supported",
+    "eval": "that name is not allowed",
+    "exec": "that name is not allowed",
+    "lambda": "that name is not allowed",
+    "int": "that name is not allowed",
+    "float": "that name is not allowed",
+    "pow": "write powers with ^ or **",
+    "max": "max is not supported",
+    "min": "min is not supported",
+    "diff": "derivatives are not supported; give the result",
+    "integrate": "integrals are not supported; give the result",
+}
+
+#: Greek letters (and common variants) -> ASCII names as used in exercise files.
+GREEK: dict[str, str] = {
+    "α": "alpha", "β": "beta", "γ": "gamma", "δ": "delta", "ε": "epsilon", "ϵ": "epsilon",
+    "ζ": "zeta", "η": "eta", "θ": "theta", "ϑ": "theta", "ι": "iota", "κ": "kappa",
+    "λ": "lambda", "μ": "mu", "µ": "mu", "ν": "nu", "ξ": "xi", "π": "pi", "ρ": "rho",
+    "σ": "sigma", "ς": "sigma", "τ": "tau", "υ": "upsilon", "φ": "phi", "ϕ": "phi",
+    "χ": "chi", "ψ": "psi", "ω": "omega",
+    "Γ": "Gamma", "Δ": "Delta", "Θ": "Theta", "Λ": "Lambda", "Ξ": "Xi", "Π": "Pi",
+    "Σ": "Sigma", "Φ": "Phi", "Ψ": "Psi", "Ω": "Omega",
+}
+
+#: Superscript characters -> their ASCII meaning inside an exponent.
+SUPERSCRIPTS: dict[str, str] = {
+    "⁰": "0", "¹": "1", "²": "2", "³": "3", "⁴": "4", "⁵": "5", "⁶": "6", "⁷": "7",
+    "⁸": "8", "⁹": "9", "⁻": "-", "⁺": "+",
+}
+
+#: Characters read as operators.
+OPERATOR_CHARS: dict[str, str] = {
+    "−": "-", "‒": "-", "–": "-", "—": "-", "﹣": "-", "－": "-",
+    "×": "*", "·": "*", "⋅": "*", "∙": "*", "•": "*", "∗": "*", "÷": "/", "∕": "/",
+    "＋": "+", "（": "(", "）": ")",
+}
+
+
+def canonical_function(name: str) -> str | None:
+    """The canonical function for a spelling, or None if ``name`` is no function."""
+    if name in FUNCTIONS:
+        return name
+    alias = FUNCTION_ALIASES.get(name)
+    if alias in FUNCTIONS:
+        return alias
+    return None
+
+
+def suggest(name: str, candidates) -> str | None:
+    """The closest candidate to a misspelt name (difflib), or None."""
+    pool = sorted(set(candidates))
+    lowered = {c.lower(): c for c in pool}
+    if name.lower() in lowered:
+        return lowered[name.lower()]
+    match = difflib.get_close_matches(name, pool, n=1, cutoff=0.6)
+    return match[0] if match else None

@@ -1,0 +1,154 @@
+"""Grading of numeric parts: read the value, convert it to the part's unit, compare."""
+
+from __future__ import annotations
+
+import math
+
+from . import units
+from .errors import AnswerError, SpecError
+from .feedback import show_number, show_tolerance, show_value
+from .misconceptions import TWO_PI, numeric_candidates
+from .quantity import Quantity, read_quantity, unit_info
+from .spec import NumericSpec
+from .tolerance import count_sigfigs, digits_needed, is_close, round_sig, same_sigfigs
+from .verdict import Verdict, unreadable
+
+
+def expected_value(expected) -> float:
+    if isinstance(expected, bool) or not isinstance(expected, (int, float)):
+        try:
+            import numpy as np
+
+            if isinstance(expected, np.generic):
+                expected = float(expected)
+            else:
+                raise TypeError
+        except TypeError:
+            raise SpecError(f"the reference of a numeric part must be a number, got {expected!r}") from None
+    value = float(expected)
+    if not math.isfinite(value):
+        raise SpecError(f"the reference of a numeric part must be finite, got {value!r}")
+    return value
+
+
+def grade_numeric(spec: NumericSpec, expected, answer: str) -> Verdict:
+    e = expected_value(expected)
+    part_factor, part_dim = unit_info(spec.unit)
+    try:
+        q = read_quantity(answer)
+    except AnswerError as error:
+        return unreadable(str(error))
+    if not math.isfinite(q.value):
+        return unreadable("your answer is not a finite number (it overflows or is undefined)")
+    reading = _read_in_part_unit(spec, q, part_factor, part_dim)
+    return _verdict(spec, e, q, reading)
+
+
+class _Reading:
+    """The answer's value in the part's unit, and what is wrong with its unit."""
+
+    def __init__(self, value: float, unit_ok: bool, unit_problem: str | None, converted: bool):
+        self.value = value
+        self.unit_ok = unit_ok
+        self.unit_problem = unit_problem
+        self.converted = converted
+
+
+def _read_in_part_unit(spec: NumericSpec, q: Quantity, part_factor: float, part_dim: tuple) -> _Reading:
+    wants_unit = not units.is_dimensionless(part_dim, ignore_angle=False)
+    if q.dim is None:
+        if spec.require_unit and wants_unit:
+            return _Reading(q.value, False, f"give the unit with your answer (the answer is in {spec.unit})", False)
+        return _Reading(q.value, True, None, False)
+    if units.compatible(q.dim, part_dim):
+        same_unit = abs(q.unit_factor - part_factor) <= 1e-12 * part_factor and \
+            units.same(q.dim, part_dim)
+        return _Reading(q.value / part_factor, True, None, not same_unit)
+    given = f"{units.describe_dimension(q.dim)} ({q.unit_text or units.format_dimension(q.dim)})"
+    if wants_unit:
+        wanted = f"{units.describe_dimension(part_dim)} ({spec.unit})"
+    else:
+        wanted = "a pure number (no unit)"
+    typed = q.value / q.unit_factor if q.unit_text else q.value
+    return _Reading(typed, False, f"you gave {given}, expected {wanted}", False)
+
+
+def _close(spec: NumericSpec, value: float, e: float) -> bool:
+    if spec.sigfigs is not None:
+        return same_sigfigs(value, e, spec.sigfigs)
+    return is_close(value, e, spec.rtol, spec.atol)
+
+
+def _verdict(spec: NumericSpec, e: float, q: Quantity, reading: _Reading) -> Verdict:
+    value_ok = _close(spec, reading.value, e)
+    u = spec.unit_credit
+    shown = show_value(reading.value, spec.unit)
+    reveal = f" The expected answer is {show_value(e, spec.unit)}." if spec.reveal else ""
+    if value_ok and reading.unit_ok:
+        note = f" (read as {shown})" if reading.converted else ""
+        return Verdict(True, 1.0, f"Correct{note}.")
+    if not reading.unit_ok:
+        score = (1.0 - u) if (u is not None and value_ok) else 0.0
+        text = f"Unit problem: {reading.unit_problem}."
+        if u is not None:
+            text += " The number is right." if value_ok else " The number is not right either."
+        return Verdict(False, score, text + reveal)
+    unit_score = u if u is not None else 0.0
+    found = _misconception(spec, e, reading.value, q)
+    if found is not None:
+        name, feedback, score = found
+        total = unit_score + (1.0 - unit_score) * score if u is not None else score
+        return Verdict(False, min(1.0, total), feedback + reveal, misconception=name)
+    text = f"Not correct: {shown} is not within the tolerance"
+    if spec.sigfigs is not None:
+        text = f"Not correct: {shown} does not round to the expected value at {spec.sigfigs} significant figures"
+    else:
+        text += f" ({show_tolerance(spec.rtol, spec.atol, spec.unit)})"
+    text += "." + _digits_hint(spec, e, q, reading) + reveal
+    return Verdict(False, unit_score, text)
+
+
+def _misconception(spec: NumericSpec, e: float, value: float, q: Quantity):
+    for known in spec.misconceptions:
+        try:
+            wrong = float(known.value)
+        except (TypeError, ValueError):
+            raise SpecError(f"misconception {known.name!r} needs a number, got {known.value!r}") from None
+        if math.isfinite(wrong) and not _close(spec, wrong, e) and _close(spec, value, wrong):
+            return known.name, known.feedback, known.score
+    if not spec.generic_misconceptions:
+        return None
+    part_dim = unit_info(spec.unit)[1]
+    angle_unit = None
+    if units.has_angle(part_dim) and units.is_dimensionless(part_dim):
+        angle_unit = "rad" if abs(unit_info(spec.unit)[0] - 1.0) < 1e-12 else "deg"
+    rotational = units.has_angle(part_dim) or (
+        units.same(part_dim, (0, 0, -1, 0, 0, 0, 0, 0), ignore_angle=True))
+    for name, wrong, feedback in numeric_candidates(e, angle_unit=angle_unit, rotational=rotational):
+        if name == TWO_PI and not rotational:
+            continue
+        if math.isfinite(wrong) and not _close(spec, wrong, e) and _close(spec, value, wrong):
+            return name, feedback, 0.0
+    return None
+
+
+def _digits_hint(spec: NumericSpec, e: float, q: Quantity, reading: _Reading) -> str:
+    """A hint when the answer is the reference correctly rounded, but too coarsely."""
+    if q.number_text is None:
+        return ""
+    typed = count_sigfigs(q.number_text)
+    needed = spec.sigfigs if spec.sigfigs is not None else digits_needed(spec.rtol)
+    if typed >= needed:
+        return ""
+    # The reference expressed in the unit the student wrote.
+    scale = 1.0
+    if q.dim is not None and q.unit_text:
+        scale = unit_info(spec.unit)[0] / q.unit_factor
+    typed_value = reading.value * scale
+    if round_sig(e * scale, typed) == round_sig(typed_value, typed):
+        return (f" You gave {typed} significant figure{'s' if typed > 1 else ''}; "
+                f"give at least {needed}.")
+    return ""
+
+
+__all__ = ["grade_numeric", "expected_value", "show_number"]

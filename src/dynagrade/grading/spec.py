@@ -1,0 +1,167 @@
+"""Specifications of answer parts: what kind of answer, in which unit, how strict.
+
+All specs are frozen dataclasses so a part can be shared, hashed and stored. The
+field order of the first fields is part of the public API; later fields are
+additive and always have defaults.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Mapping
+
+#: Form tests a symbolic part may require on top of equivalence.
+FORM_TESTS = ("no_decimals", "simplified", "no_functions")
+
+
+@dataclass(frozen=True)
+class KnownWrong:
+    """A declared misconception: a wrong answer that earns its own feedback and score.
+
+    ``value`` is a number in the part's unit (numeric parts), an expression string in
+    the declared variables (symbolic parts) or a tuple of numbers (vector parts).
+    """
+
+    name: str
+    value: float | str | tuple
+    feedback: str
+    score: float = 0.0
+
+    def __post_init__(self) -> None:
+        if not 0.0 <= self.score <= 1.0:
+            raise ValueError(f"KnownWrong score must lie in [0, 1], got {self.score}")
+
+
+@dataclass(frozen=True)
+class NumericSpec:
+    """A number, optionally with a unit.
+
+    Correct when |a - e| <= max(atol, rtol*|e|) with ``a`` converted to ``unit``;
+    ``atol=None`` means the default floor :data:`dynagrade.grading.tolerance.DEFAULT_ATOL`.
+    With ``sigfigs=N`` the answer must instead round to the same N significant figures.
+    ``unit_credit`` (0..1) splits the score between value and unit; ``require_unit``
+    makes a bare number wrong (a bare number is otherwise read in ``unit``).
+    """
+
+    unit: str | None = None
+    rtol: float = 1e-2
+    atol: float | None = None
+    sigfigs: int | None = None
+    misconceptions: tuple[KnownWrong, ...] = ()
+    require_unit: bool = False
+    unit_credit: float | None = None
+    reveal: bool = False
+    generic_misconceptions: bool = True
+
+    def __post_init__(self) -> None:
+        _check_tolerances(self.rtol, self.atol)
+        if self.sigfigs is not None and not (isinstance(self.sigfigs, int) and 1 <= self.sigfigs <= 15):
+            raise ValueError(f"sigfigs must be an integer in 1..15, got {self.sigfigs!r}")
+        if self.unit_credit is not None and not 0.0 <= self.unit_credit <= 1.0:
+            raise ValueError(f"unit_credit must lie in [0, 1], got {self.unit_credit}")
+        object.__setattr__(self, "misconceptions", tuple(self.misconceptions))
+
+
+@dataclass(frozen=True)
+class Variable:
+    """A symbol of a symbolic answer: the domain [min, max] sampled for equivalence,
+    in ``unit`` (used for dimensional analysis; samples are converted to SI)."""
+
+    min: float
+    max: float
+    unit: str | None = None
+
+    def __post_init__(self) -> None:
+        if not (float(self.min) <= float(self.max)):
+            raise ValueError(f"Variable domain needs min <= max, got [{self.min}, {self.max}]")
+
+
+@dataclass(frozen=True)
+class SymbolicSpec:
+    """An expression in the declared variables.
+
+    Equivalence is decided by evaluation at seeded random points of the variables'
+    domains: relative tolerance ``rtol`` (default 1e-6) with a floor scaled to the
+    reference's magnitude. ``form`` lists extra form tests from :data:`FORM_TESTS`;
+    an equivalent answer that fails one earns ``form_credit``.
+    """
+
+    variables: Mapping[str, Variable] = field(default_factory=dict)
+    rtol: float = 1e-6
+    misconceptions: tuple[KnownWrong, ...] = ()
+    form: tuple[str, ...] = ()
+    form_credit: float = 0.5
+    reveal: bool = False
+    points: int = 16
+    generic_misconceptions: bool = True
+
+    def __post_init__(self) -> None:
+        _check_tolerances(self.rtol, None)
+        variables = {}
+        for name, var in dict(self.variables).items():
+            if not isinstance(var, Variable):
+                lo, hi, *rest = var
+                var = Variable(lo, hi, rest[0] if rest else None)
+            variables[name] = var
+        object.__setattr__(self, "variables", MappingProxyType(variables))
+        object.__setattr__(self, "misconceptions", tuple(self.misconceptions))
+        object.__setattr__(self, "form", tuple(self.form))
+        for test in self.form:
+            if test not in FORM_TESTS:
+                raise ValueError(f"unknown form test {test!r}; choose from {', '.join(FORM_TESTS)}")
+        if not 0.0 <= self.form_credit <= 1.0:
+            raise ValueError(f"form_credit must lie in [0, 1], got {self.form_credit}")
+        if not 4 <= self.points <= 200:
+            raise ValueError(f"points must be in 4..200, got {self.points}")
+
+    def __hash__(self) -> int:
+        return hash((tuple(sorted(self.variables.items())), self.rtol, self.misconceptions,
+                     self.form, self.form_credit, self.reveal, self.points))
+
+
+@dataclass(frozen=True)
+class VectorSpec:
+    """A vector of ``size`` numbers sharing ``unit``; graded component by component.
+
+    Component i is right when |a_i - e_i| <= max(atol, rtol*max(|e_i|, 0.01*|e|)), with
+    |e| the Euclidean norm of the reference, so a zero component is gradable.
+    The score is the fraction of right components.
+    """
+
+    size: int
+    unit: str | None = None
+    rtol: float = 1e-2
+    atol: float | None = None
+    misconceptions: tuple[KnownWrong, ...] = ()
+    require_unit: bool = False
+    reveal: bool = False
+    generic_misconceptions: bool = True
+
+    def __post_init__(self) -> None:
+        _check_tolerances(self.rtol, self.atol)
+        if not (isinstance(self.size, int) and 1 <= self.size <= 100):
+            raise ValueError(f"size must be an integer in 1..100, got {self.size!r}")
+        object.__setattr__(self, "misconceptions", tuple(self.misconceptions))
+
+
+@dataclass(frozen=True)
+class ChoiceSpec:
+    """One option (``multiple=False``) or a set of options out of ``options`` (labels)."""
+
+    options: tuple[str, ...]
+    multiple: bool = False
+    reveal: bool = False
+
+    def __post_init__(self) -> None:
+        options = tuple(str(o) for o in self.options)
+        if not options:
+            raise ValueError("a choice part needs at least one option")
+        object.__setattr__(self, "options", options)
+
+
+def _check_tolerances(rtol: float, atol: float | None) -> None:
+    if not (rtol >= 0.0) or rtol != rtol:
+        raise ValueError(f"rtol must be >= 0, got {rtol!r}")
+    if atol is not None and (not (atol >= 0.0) or atol != atol):
+        raise ValueError(f"atol must be >= 0, got {atol!r}")

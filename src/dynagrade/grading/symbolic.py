@@ -1,0 +1,228 @@
+"""Grading of formulas: equivalence by evaluation at seeded random points.
+
+The reference expression is parsed with the same parser as the answer and evaluated
+at points drawn uniformly from the declared domains (seeded from the reference text,
+so a verdict never changes between runs), converted to SI. Points where the
+reference is undefined are redrawn; an answer undefined where the reference is
+defined is wrong. Point i agrees when ``|a_i - e_i| <= rtol * max(|e_i|, 1e-3*M)``
+with M the median of |e| over the points (an absolute 1e-12 when the reference is
+identically 0). Before that, when every variable has a unit, the answer's dimension
+must match the reference's.
+"""
+
+from __future__ import annotations
+
+import math
+import zlib
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from . import units
+from .dims import DimensionIssue, dimension, show
+from .errors import AnswerError, SpecError
+from .evaluate import evaluate
+from .feedback import reading_hints
+from .nodes import BinOp, Call, Expr, Neg, Num, names_in, to_text, walk
+from .parser import parse_expression
+from .quantity import unit_info
+from .spec import SymbolicSpec
+from .timing import Deadline
+from .tosympy import exactly_equal
+from .verdict import Verdict, unreadable
+
+_MAX_DRAWS = 12
+
+
+@dataclass(frozen=True)
+class _Reference:
+    tree: Expr
+    names: frozenset
+    env: dict
+    values: np.ndarray
+    tol: np.ndarray
+    dims: dict | None
+    dim: tuple | None
+    swapped: np.ndarray | None
+    known: tuple
+    domains: dict
+    rtol: float
+
+
+def _parse_reference(text, names, what: str) -> Expr:
+    if not isinstance(text, str):
+        raise SpecError(f"the {what} of a symbolic part must be an expression string, got {text!r}")
+    try:
+        return parse_expression(text, names)
+    except AnswerError as error:
+        raise SpecError(f"cannot read the {what} {text!r}: {error}") from None
+
+
+@lru_cache(maxsize=256)
+def _reference(spec: SymbolicSpec, expected: str) -> _Reference:
+    names = frozenset(spec.variables)
+    tree = _parse_reference(expected, names, "reference")
+    factors, dims = {}, {}
+    for name, var in spec.variables.items():
+        factor, dim = unit_info(var.unit) if var.unit is not None else (1.0, None)
+        factors[name] = factor
+        dims[name] = dim
+    all_dims = None if any(d is None for d in dims.values()) else dims
+    env, values = _sample(spec, expected, tree, factors)
+    scale = float(np.median(np.abs(values)))
+    floor = 1e-3 * scale if scale > 0 else 1e-12 / max(spec.rtol, 1e-300)
+    tol = spec.rtol * np.maximum(np.abs(values), floor)
+    ref_dim = None
+    if all_dims is not None:
+        try:
+            ref_dim = dimension(tree, all_dims)
+        except DimensionIssue:
+            all_dims = None  # an inhomogeneous reference: skip dimension checks
+    swapped = None
+    if any(isinstance(n, Call) and n.func in ("sin", "cos") for n in walk(tree)):
+        swapped = _values(_swap_sin_cos(tree), env, values.shape)
+    known = []
+    for wrong in spec.misconceptions:
+        wrong_tree = _parse_reference(wrong.value, names, f"misconception {wrong.name!r}")
+        known.append((wrong, _values(wrong_tree, env, values.shape)))
+    domains = {n: (v.min * factors[n], v.max * factors[n]) for n, v in spec.variables.items()}
+    return _Reference(tree, names, env, values, tol, all_dims, ref_dim, swapped, tuple(known), domains, spec.rtol)
+
+
+def _values(tree: Expr, env: dict, shape) -> np.ndarray:
+    return np.broadcast_to(np.asarray(evaluate(tree, env), dtype=np.float64), shape)
+
+
+def _sample(spec: SymbolicSpec, expected: str, tree: Expr, factors: dict):
+    seed = zlib.crc32(("|".join(sorted(spec.variables)) + "|" + expected).encode())
+    rng = np.random.default_rng(seed)
+    want = spec.points
+    env_parts: dict[str, list] = {n: [] for n in spec.variables}
+    kept: list[np.ndarray] = []
+    count = 0
+    for _ in range(_MAX_DRAWS):
+        batch = {n: rng.uniform(v.min, v.max, size=2 * want) * factors[n] for n, v in spec.variables.items()}
+        vals = _values(tree, batch, (2 * want,))
+        ok = np.isfinite(vals)
+        for n in batch:
+            env_parts[n].append(batch[n][ok])
+        kept.append(vals[ok])
+        count += int(ok.sum())
+        if count >= want:
+            break
+    if count < 4:
+        raise SpecError(f"the reference {expected!r} is undefined on almost all of the declared domain")
+    env = {n: np.concatenate(parts)[:want] for n, parts in env_parts.items()}
+    values = np.concatenate(kept)[:want]
+    return env, values
+
+
+def _swap_sin_cos(tree: Expr) -> Expr:
+    if isinstance(tree, Call):
+        func = {"sin": "cos", "cos": "sin"}.get(tree.func, tree.func)
+        return Call(func, tuple(_swap_sin_cos(a) for a in tree.args))
+    if isinstance(tree, BinOp):
+        return BinOp(tree.op, _swap_sin_cos(tree.left), _swap_sin_cos(tree.right))
+    if isinstance(tree, Neg):
+        return Neg(_swap_sin_cos(tree.operand))
+    return tree
+
+
+def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
+    deadline = Deadline()
+    ref = _reference(spec, expected)
+    try:
+        tree = parse_expression(answer, ref.names)
+    except AnswerError as error:
+        return unreadable(str(error))
+    reveal = f" The expected answer is {to_text(ref.tree)}." if spec.reveal else ""
+    if ref.dims is not None:
+        try:
+            dim = dimension(tree, ref.dims)
+        except DimensionIssue as issue:
+            return Verdict(False, 0.0, f"Not correct: {issue.message}.{reveal}", misconception="dimensions")
+        if not units.same(dim, ref.dim, ignore_angle=True):
+            return Verdict(False, 0.0, f"Not correct: your expression has units of {show(dim)}, "
+                                        f"expected {show(ref.dim)}.{reveal}", misconception="dimensions")
+    values = _values(tree, ref.env, ref.values.shape)
+    if not np.all(np.isfinite(values)):
+        return Verdict(False, 0.0, "Not correct: your expression is undefined for some allowed values of "
+                                    "the variables (a division by zero or the root or logarithm of a negative "
+                                    "number) where the expected one is defined." + reveal)
+    diff = np.abs(values - ref.values)
+    if np.all(diff <= ref.tol) or (np.all(diff <= 100 * ref.tol) and
+                                   exactly_equal(tree, ref.tree, ref.domains, min(0.3, deadline.remaining()))):
+        return _form_verdict(spec, ref, tree)
+    hints = " ".join(reading_hints(tree))
+    found = _misconception(spec, ref, values)
+    if found is not None:
+        name, feedback, score = found
+        return Verdict(False, score, " ".join(x for x in (feedback, hints) if x) + reveal, misconception=name)
+    text = f"Not correct: your expression (read as {to_text(tree)}) is not equivalent to the expected one."
+    return Verdict(False, 0.0, " ".join(x for x in (text, hints) if x) + reveal)
+
+
+def _form_verdict(spec: SymbolicSpec, ref: _Reference, tree: Expr) -> Verdict:
+    problems = []
+    if "no_decimals" in spec.form:
+        if any(isinstance(n, Num) and n.value != int(n.value) for n in walk(tree)) or \
+                any(isinstance(n, Num) and any(c in n.text for c in ".,") for n in walk(tree)):
+            problems.append("write exact numbers (fractions like 1/2) instead of decimals")
+    if "simplified" in spec.form:
+        if sum(1 for _ in walk(tree)) > sum(1 for _ in walk(ref.tree)) + 2:
+            problems.append("simplify your expression further")
+    if problems:
+        return Verdict(False, spec.form_credit,
+                       "Your expression is equivalent, but " + " and ".join(problems) + ".",
+                       misconception="form")
+    return Verdict(True, 1.0, "Correct.")
+
+
+def _agrees(values: np.ndarray, target: np.ndarray, ref: _Reference) -> bool:
+    """Whether ``values`` match ``target`` under the reference's tolerance rule."""
+    if not np.all(np.isfinite(target)):
+        return False
+    scale = float(np.median(np.abs(target)))
+    floor = 1e-3 * scale if scale > 0 else 1e-12 / max(ref.rtol, 1e-300)
+    return bool(np.all(np.abs(values - target) <= ref.rtol * np.maximum(np.abs(target), floor)))
+
+
+def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray):
+    for wrong, wrong_values in ref.known:
+        if _agrees(values, wrong_values, ref) and not _agrees(ref.values, wrong_values, ref):
+            return wrong.name, wrong.feedback, wrong.score
+    if not spec.generic_misconceptions:
+        return None
+    e = ref.values
+    nonzero = np.abs(e) > 0
+    if np.count_nonzero(nonzero) >= 3:
+        ratio = values[nonzero] / e[nonzero]
+        c = float(np.median(ratio))
+        if np.all(np.abs(ratio - c) <= 1e-6 * max(abs(c), 1e-300)) and c != 0:
+            if abs(c + 1) < 1e-6:
+                return "sign", "Your expression has the wrong sign: check the direction you took as positive.", 0.0
+            if abs(c - 2) < 1e-6:
+                return "factor 2", "Your expression is twice the expected one: check for an extra factor of 2.", 0.0
+            if abs(c - 0.5) < 1e-6:
+                return "factor 1/2", "Your expression is half the expected one: check for a missing factor of 2.", 0.0
+            k = math.log10(abs(c))
+            if abs(k - round(k)) < 1e-6 and c > 0:
+                return "power of ten", f"Your expression is off by a factor 10^{round(k)}.", 0.0
+    if ref.swapped is not None and _agrees(values, ref.swapped, ref) and not _agrees(e, ref.swapped, ref):
+        return "sin/cos", "Your expression has sin where cos belongs (or the other way round): check which angle you used.", 0.0
+    if np.all(nonzero):
+        with np.errstate(all="ignore"):
+            reciprocal = 1.0 / e
+        if _agrees(values, reciprocal, ref) and not _agrees(e, reciprocal, ref):
+            return "reciprocal", "Your expression is the reciprocal of the expected one: is a fraction upside down?", 0.0
+    if np.count_nonzero(nonzero) >= 3:
+        ratio = values[nonzero] / e[nonzero]
+        c = float(np.median(ratio))
+        if c != 0 and np.all(np.abs(ratio - c) <= 1e-6 * abs(c)):
+            return "constant factor", "Your expression differs from the expected one by a constant factor.", 0.0
+    offset = values - e
+    d = float(np.median(offset))
+    if d != 0 and np.all(np.abs(offset - d) <= ref.tol) and names_in(ref.tree):
+        return "constant term", "Your expression differs from the expected one by a constant term.", 0.0
+    return None

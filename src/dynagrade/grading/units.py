@@ -1,0 +1,208 @@
+"""Units: one lazily created pint registry, and angle tracked as its own dimension.
+
+pint is imported the first time a unit name has to be looked up. A unit is reduced
+to (factor to SI, dimension), where a dimension is a tuple of exponents of
+(kg, m, s, A, K, mol, cd, rad). pint counts the radian as dimensionless; here the
+radian is the eighth base dimension, read from pint's root units, so ``deg``,
+``rad``, ``rev``, ``rpm`` and ``deg/s`` keep their angle.
+
+Rule for angles (see :func:`compatible`): two dimensions match when all other
+exponents agree and the angle exponents agree -- or one side has no angle at all,
+in which case it is read in radians (SI makes the radian 1). So ``1/s`` is accepted
+for ``rad/s`` (read as rad/s) and ``rpm`` for ``1/s`` (converted to rad/s), while
+``30 m`` is never an angle.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+from functools import lru_cache
+
+from .errors import AnswerError
+from .names import suggest
+
+BASE_SYMBOLS = ("kg", "m", "s", "A", "K", "mol", "cd", "rad")
+_ANGLE = 7
+DIMENSIONLESS: tuple = (0.0,) * 8
+
+_ROOTS = {  # pint root unit -> (base index, factor of one root unit in SI)
+    "gram": (0, 1e-3), "meter": (1, 1.0), "second": (2, 1.0), "ampere": (3, 1.0),
+    "kelvin": (4, 1.0), "mole": (5, 1.0), "candela": (6, 1.0), "radian": (7, 1.0),
+}
+
+#: Spellings pint does not know (or reads differently), as products of pint units.
+_ALIASES = {
+    "Nm": (("newton", 1), ("meter", 1)),
+    "Nms": (("newton", 1), ("meter", 1), ("second", 1)),
+    "Ns": (("newton", 1), ("second", 1)),
+    "kmh": (("kilometer", 1), ("hour", -1)),
+    "rev": (("revolution", 1),),
+    "revs": (("revolution", 1),),
+    "degrees": (("degree", 1),),
+    "sec": (("second", 1),),
+    "secs": (("second", 1),),
+}
+_REFUSED = {"degC", "degF", "celsius", "fahrenheit", "degree_Celsius", "degree_Fahrenheit",
+            "delta_degC", "delta_degF", "percent", "ppm", "count"}
+_COMMON = ("m", "s", "kg", "g", "N", "J", "W", "Pa", "Hz", "rad", "deg", "rev", "rpm",
+           "km", "cm", "mm", "h", "min", "ms", "kN", "mN", "kJ", "kW", "MPa", "kPa", "bar",
+           "L", "t", "A", "V")
+
+_registry = None
+
+
+def registry():
+    """The one pint UnitRegistry of the process, created on first use."""
+    global _registry
+    if _registry is None:
+        import pint  # deferred: only answers with units pay for pint
+
+        _registry = pint.UnitRegistry()
+    return _registry
+
+
+@lru_cache(maxsize=2048)
+def lookup(name: str) -> tuple[float, tuple]:
+    """(factor to SI, dimension) of one unit name; AnswerError when unknown."""
+    if name in _REFUSED:
+        raise AnswerError(f"the unit '{name}' is not supported here")
+    if name in _ALIASES:
+        return _product(_ALIASES[name])
+    try:
+        return _pint_unit(name)
+    except AnswerError:
+        pieces = _split(name)
+        if pieces:
+            return _product(tuple((p, 1) for p in pieces))
+        raise
+
+
+def _product(parts) -> tuple[float, tuple]:
+    factor, dim = 1.0, DIMENSIONLESS
+    for unit, power in parts:
+        f, d = _pint_unit(unit)
+        factor *= f ** power
+        dim = add(dim, scale(d, power))
+    return factor, dim
+
+
+def _pint_unit(name: str) -> tuple[float, tuple]:
+    if not name.replace("_", "").isalnum() or len(name) > 40:
+        raise AnswerError(f"unknown unit '{name}'")
+    ureg = registry()
+    try:
+        factor, root = ureg.get_root_units(name)
+    except Exception:  # pint raises several error types for unknown names
+        hint = suggest(name, _COMMON)
+        tail = f"; did you mean '{hint}'?" if hint else ""
+        raise AnswerError(f"unknown unit '{name}'{tail}") from None
+    exps = [0.0] * 8
+    factor = float(factor)
+    for root_name, power in dict(root._units).items():
+        if root_name not in _ROOTS:
+            raise AnswerError(f"the unit '{name}' is not supported here")
+        index, si = _ROOTS[root_name]
+        exps[index] += float(power)
+        factor *= si ** float(power)
+    if not math.isfinite(factor) or factor == 0.0:
+        raise AnswerError(f"the unit '{name}' is not supported here")
+    return factor, tuple(exps)
+
+
+def _split(name: str) -> list[str] | None:
+    """Read ``Nm``-like names as units written together, longest first."""
+    if len(name) > 12:
+        return None
+    for k in range(len(name) - 1, 0, -1):
+        head, tail = name[:k], name[k:]
+        try:
+            _pint_unit(head)
+        except AnswerError:
+            continue
+        try:
+            _pint_unit(tail)
+            return [head, tail]
+        except AnswerError:
+            rest = _split(tail)
+            if rest:
+                return [head] + rest
+    return None
+
+
+# -- dimension algebra ---------------------------------------------------------------------
+def add(a: tuple, b: tuple) -> tuple:
+    return tuple(x + y for x, y in zip(a, b))
+
+
+def scale(a: tuple, k: float) -> tuple:
+    return tuple(x * k for x in a)
+
+
+def same(a: tuple, b: tuple, *, ignore_angle: bool = False) -> bool:
+    n = _ANGLE if ignore_angle else 8
+    return all(abs(a[i] - b[i]) < 1e-9 for i in range(n))
+
+
+def compatible(given: tuple, wanted: tuple) -> bool:
+    """Whether a value of dimension ``given`` can be converted to ``wanted`` (angle rule)."""
+    if not same(given, wanted, ignore_angle=True):
+        return False
+    ga, wa = given[_ANGLE], wanted[_ANGLE]
+    return abs(ga - wa) < 1e-9 or abs(ga) < 1e-9 or abs(wa) < 1e-9
+
+
+def is_dimensionless(a: tuple, *, ignore_angle: bool = True) -> bool:
+    return same(a, DIMENSIONLESS, ignore_angle=ignore_angle)
+
+
+def has_angle(a: tuple) -> bool:
+    return abs(a[_ANGLE]) > 1e-9
+
+
+_SUPERSCRIPT_DIGITS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+def _power_text(symbol: str, power: float) -> str:
+    frac = Fraction(power).limit_denominator(12)
+    if frac == 1:
+        return symbol
+    if frac.denominator == 1:
+        return symbol + str(frac.numerator).translate(_SUPERSCRIPT_DIGITS)
+    return f"{symbol}^({frac.numerator}/{frac.denominator})"
+
+
+def format_dimension(dim: tuple) -> str:
+    """SI text of a dimension: ``kg·m/s²``, ``m²/s``, ``1/s``, ``1`` for none."""
+    up = [_power_text(s, p) for s, p in zip(BASE_SYMBOLS, dim) if p > 1e-9]
+    down = [_power_text(s, -p) for s, p in zip(BASE_SYMBOLS, dim) if p < -1e-9]
+    top = "·".join(up) if up else "1"
+    if not down:
+        return top
+    bottom = "·".join(down)
+    return f"{top}/({bottom})" if len(down) > 1 else f"{top}/{bottom}"
+
+
+_NAMES = {
+    (0, 1, 0): "a length", (1, 0, 0): "a mass", (0, 0, 1): "a time",
+    (0, 1, -1): "a velocity", (0, 1, -2): "an acceleration", (1, 1, -2): "a force",
+    (1, 2, -2): "an energy (or torque)", (1, 2, -3): "a power", (1, -1, -2): "a pressure",
+    (1, 1, -1): "a momentum (or impulse)", (0, 0, -1): "a frequency (1/s)",
+    (0, 0, -2): "a quantity in 1/s²", (0, 2, 0): "an area", (0, 3, 0): "a volume",
+    (1, -3, 0): "a density", (1, 0, -2): "a stiffness (N/m)", (1, 0, -1): "a damping coefficient (N·s/m)",
+    (1, 2, 0): "a moment of inertia", (1, 2, -1): "an angular momentum", (0, 0, 0): "a pure number",
+}
+_ANGLE_NAMES = {(0, 0, 0): "an angle", (0, 0, -1): "an angular velocity",
+                (0, 0, -2): "an angular acceleration"}
+
+
+def describe_dimension(dim: tuple) -> str:
+    """Words for a dimension: 'a velocity', 'an angle', 'a quantity in kg·m/s³'."""
+    if all(abs(x) < 1e-9 for x in dim[3:7]):
+        key = tuple(int(round(x)) if abs(x - round(x)) < 1e-9 else None for x in dim[:3])
+        if None not in key:
+            if has_angle(dim) and abs(dim[_ANGLE] - 1) < 1e-9 and key in _ANGLE_NAMES:
+                return _ANGLE_NAMES[key]
+            if not has_angle(dim) and key in _NAMES:
+                return _NAMES[key]
+    return f"a quantity in {format_dimension(dim)}"
