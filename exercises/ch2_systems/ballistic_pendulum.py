@@ -1,0 +1,77 @@
+"""Ballistic pendulum: a bullet embeds itself in a block hanging on strings (Section 2.3.1)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, Variable)
+from dynagrade.mechanics import collisions, projectile
+
+
+def _energy_conserving_speed(p):
+    """The wrong route: kinetic energy of the bullet shared by bullet and block."""
+    return p.v * np.sqrt(p.m / (p.m + p.M))
+
+
+def solve(p):
+    common = collisions.common_velocity_after_plastic_impact(p.m, p.M, p.v, 0.0)
+    lost = collisions.kinetic_energy_lost_in_impact(p.m, p.M, p.v, 0.0)
+    return {
+        "V": common,
+        # the block swings up like a vertical throw with the speed V: h = V^2 / (2 g)
+        "h": projectile.peak_height(common, np.pi / 2, p.g),
+        "fraction_lost": lost / (0.5 * p.m * p.v**2),
+    }
+
+
+EXERCISE = Exercise(
+    id="ballistic-pendulum",
+    title="Ballistic pendulum",
+    source="Section 2.3.1",
+    topics=("plastic impact", "momentum conservation", "work-energy balance"),
+    params=(
+        Uniform("m", 5, 50, step=1, unit="g", symbol="m"),
+        Uniform("M", 0.5, 5.0, step=0.1, unit="kg", symbol="M"),
+        Uniform("v", 100, 600, step=10, unit="m/s", symbol="v"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    statement=r"""
+A bullet of mass $m$ = {{ m }} flying horizontally with speed $v$ = {{ v }} hits a wooden
+block of mass $M$ = {{ M }} that hangs at rest on long strings, and stays stuck in it.
+Treat bullet and block as particles; $g$ = {{ g }}.
+
+1. With which speed $V$ does the block (with the bullet) start to swing?
+2. How high does the block rise?
+3. Which fraction of the bullet's kinetic energy is lost in the impact?
+4. Give $V$ as a formula in $m$, $M$ and $v$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("V", "speed just after the impact", unit="m/s", points=2,
+                misconceptions=(
+                    Misconception("kinetic energy conserved in the impact", _energy_conserving_speed,
+                                  "A plastic impact dissipates energy: only momentum is "
+                                  "conserved during the impact."),
+                )),
+        Numeric("h", "rise of the block", unit="cm", points=1,
+                misconceptions=(
+                    Misconception("kinetic energy conserved in the impact",
+                                  lambda p: p.m * p.v**2 / (2 * (p.m + p.M) * p.g),
+                                  "Energy is conserved during the swing, not during the "
+                                  "impact."),
+                )),
+        Numeric("fraction_lost", "fraction of kinetic energy lost", points=1,
+                misconceptions=(
+                    Misconception("masses swapped", lambda p: p.m / (p.m + p.M),
+                                  "The fraction lost is M/(m + M): nearly all of it for a "
+                                  "heavy block."),
+                )),
+        Symbolic("V_formula", "V as a formula", points=1, expected="m*v/(m+M)",
+                 variables={"m": Variable(0.001, 0.1, "kg"), "M": Variable(0.1, 10, "kg"),
+                            "v": Variable(10, 1000, "m/s")},
+                 equals="V",
+                 misconceptions=(
+                     Misconception("kinetic energy conserved", "v*sqrt(m/(m+M))",
+                                   "Only momentum is conserved in a plastic impact."),
+                 )),
+    ),
+)

@@ -1,0 +1,78 @@
+"""Two carts pushed apart by a compressed spring: internal work (Section 2.2.2)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, Variable)
+from dynagrade.mechanics import systems
+
+
+def _relative_speed(p):
+    return systems.relative_speed_from_internal_work(p.m1, p.m2, 0.5 * p.k * p.delta**2)
+
+
+def solve(p):
+    v_rel = _relative_speed(p)
+    total = systems.total_mass([p.m1, p.m2])
+    # the centre of mass stays at rest: m1 v1 = m2 v2, v1 + v2 = v_rel
+    return {"v1": p.m2 / total * v_rel, "v2": p.m1 / total * v_rel, "v_rel": v_rel}
+
+
+def _equal_share(p, m):
+    """The wrong route: each cart receives half of the spring energy."""
+    return np.sqrt(0.5 * p.k * p.delta**2 / m)
+
+
+EXERCISE = Exercise(
+    id="spring-between-carts",
+    title="Two carts pushed apart by a spring",
+    source="Section 2.2.2",
+    topics=("work-energy balance", "internal forces", "momentum conservation"),
+    params=(
+        Uniform("m1", 0.5, 5.0, step=0.1, unit="kg", symbol="m_1"),
+        Uniform("m2", 0.5, 5.0, step=0.1, unit="kg", symbol="m_2"),
+        Uniform("k", 200, 2000, step=50, unit="N/m", symbol="k"),
+        Uniform("delta", 2, 10, step=0.5, unit="cm", symbol=r"\delta"),
+    ),
+    constraints=(
+        Constraint("the masses differ, so that the energy is not shared equally",
+                   lambda p: abs(p.m1 - p.m2) > 0.15 * max(p.m1, p.m2)),
+    ),
+    statement=r"""
+Two carts, $m_1$ = {{ m1 }} and $m_2$ = {{ m2 }}, stand at rest on a level frictionless
+track with a massless spring (stiffness $k$ = {{ k }}) compressed by $\delta$ = {{ delta }}
+between them, held by a thread. The thread is cut.
+
+1. With which speed does cart 1 move once the spring has released?
+2. With which speed does cart 2 move?
+3. With which speed do the carts move apart?
+4. Give the speed of cart 1 as a formula in $m_1$, $m_2$, $k$ and $\delta$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("v1", "speed of cart 1", unit="m/s", points=2,
+                misconceptions=(
+                    Misconception("equal share of the energy", lambda p: _equal_share(p, p.m1),
+                                  "The carts do not share the energy equally: momentum "
+                                  "m1 v1 = m2 v2 fixes the split."),
+                    Misconception("all the energy to cart 1",
+                                  lambda p: np.sqrt(p.k * p.delta**2 / p.m1),
+                                  "Both carts move: the centre of mass stays at rest."),
+                )),
+        Numeric("v2", "speed of cart 2", unit="m/s", points=1,
+                misconceptions=(
+                    Misconception("equal share of the energy", lambda p: _equal_share(p, p.m2),
+                                  "Use momentum conservation to split the energy."),
+                )),
+        Numeric("v_rel", "relative speed", unit="m/s", points=1),
+        Symbolic("v1_formula", "speed of cart 1 as a formula", points=1,
+                 expected="delta*sqrt(k*m2/(m1*(m1+m2)))",
+                 variables={"m1": Variable(0.1, 10, "kg"), "m2": Variable(0.1, 10, "kg"),
+                            "k": Variable(10, 5000, "N/m"), "delta": Variable(0.01, 0.2, "m")},
+                 equals="v1",
+                 misconceptions=(
+                     Misconception("all the energy to cart 1", "delta*sqrt(k/m1)",
+                                   "Both carts move: the centre of mass stays at rest."),
+                 )),
+    ),
+)

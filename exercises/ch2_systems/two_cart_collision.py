@@ -1,0 +1,92 @@
+"""Two carts colliding head-on with a coefficient of restitution (Section 2.3.1)."""
+
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
+                                Symbolic, Uniform, Variable)
+from dynagrade.mechanics import collisions
+
+
+def _after(p, e):
+    return collisions.velocities_after_central_impact(p.m1, p.m2, p.v1, p.v2, e)
+
+
+def solve(p):
+    after = _after(p, p.e)
+    return {
+        "v1_after": after.v1,
+        "v2_after": after.v2,
+        "dT": collisions.kinetic_energy_lost_in_impact(p.m1, p.m2, p.v1 - p.v2, p.e),
+    }
+
+
+def _distinct(a, b):
+    return abs(a - b) > 0.03 * max(abs(a), abs(b))
+
+
+EXERCISE = Exercise(
+    id="two-cart-collision",
+    title="Two carts colliding head-on",
+    source="Section 2.3.1",
+    topics=("particle collisions", "coefficient of restitution", "momentum conservation"),
+    params=(
+        Uniform("m1", 0.5, 5.0, step=0.1, unit="kg", symbol="m_1"),
+        Uniform("m2", 0.5, 5.0, step=0.1, unit="kg", symbol="m_2"),
+        Uniform("v1", 1.0, 6.0, step=0.1, unit="m/s", symbol="v_1"),
+        Uniform("v2", -3.0, 1.0, step=0.1, unit="m/s", symbol="v_2"),
+        Uniform("e", 0.1, 0.8, step=0.05, symbol="e"),
+    ),
+    constraints=(
+        Constraint("cart 1 catches up with cart 2", lambda p: p.v1 - p.v2 > 0.5),
+        Constraint("the carts' speeds after the impact are not close to zero",
+                   lambda p: min(abs(_after(p, p.e).v1), abs(_after(p, p.e).v2)) > 0.05),
+        Constraint("the elastic and plastic answers differ from the right one",
+                   lambda p: _distinct(_after(p, p.e).v1, _after(p, 1.0).v1)
+                   and _distinct(_after(p, p.e).v1, _after(p, 0.0).v1)
+                   and _distinct(_after(p, p.e).v2, _after(p, 1.0).v2)),
+    ),
+    statement=r"""
+Cart 1 ($m_1$ = {{ m1 }}) rolls along a straight track with $v_1$ = {{ v1 }} and hits
+cart 2 ($m_2$ = {{ m2 }}), which moves along the same line with $v_2$ = {{ v2 }}
+(velocities positive in the direction of cart 1's motion). The coefficient of
+restitution is $e$ = {{ e }}. Treat the carts as particles and neglect friction.
+
+1. What is the velocity of cart 1 just after the impact?
+2. What is the velocity of cart 2 just after the impact?
+3. How much kinetic energy is lost in the impact?
+4. Give the energy lost as a formula in $m_1$, $m_2$, $v_1$, $v_2$ and $e$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("v1_after", "velocity of cart 1 after the impact", unit="m/s", points=2,
+                misconceptions=(
+                    Misconception("elastic impact assumed", lambda p: _after(p, 1.0).v1,
+                                  "That is the elastic result (e = 1); the relative velocity "
+                                  "after the impact is only −e times that before."),
+                    Misconception("plastic impact assumed", lambda p: _after(p, 0.0).v1,
+                                  "The carts do not move on together unless e = 0."),
+                )),
+        Numeric("v2_after", "velocity of cart 2 after the impact", unit="m/s", points=2,
+                misconceptions=(
+                    Misconception("elastic impact assumed", lambda p: _after(p, 1.0).v2,
+                                  "That is the elastic result (e = 1)."),
+                )),
+        Numeric("dT", "kinetic energy lost", unit="J", points=1,
+                misconceptions=(
+                    Misconception("(1 - e) instead of (1 - e^2)",
+                                  lambda p: collisions.kinetic_energy_lost_in_impact(
+                                      p.m1, p.m2, p.v1 - p.v2, p.e) / (1 + p.e),
+                                  "The loss is ½ μ (1 − e²) v_rel² with the reduced mass μ."),
+                )),
+        Symbolic("dT_formula", "energy lost as a formula", points=1,
+                 expected="m1*m2*(1-e^2)*(v1-v2)^2/(2*(m1+m2))",
+                 variables={"m1": Variable(0.1, 10, "kg"), "m2": Variable(0.1, 10, "kg"),
+                            "v1": Variable(1, 6, "m/s"), "v2": Variable(-3, 1, "m/s"),
+                            "e": Variable(0, 1)},
+                 equals="dT",
+                 misconceptions=(
+                     Misconception("total mass instead of reduced mass",
+                                   "(m1+m2)*(1-e^2)*(v1-v2)^2/2",
+                                   "Only the relative motion loses energy: its mass is the "
+                                   "reduced mass m1 m2/(m1 + m2)."),
+                 )),
+    ),
+)
