@@ -1,0 +1,70 @@
+"""A chain falling onto a scale: weight plus momentum flux (Section 2.3.2)."""
+
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
+                                Symbolic, Uniform, Variable)
+from dynagrade.mechanics import variable_mass
+
+
+def solve(p):
+    lam = p.m / p.L
+    return {
+        "F_x": variable_mass.chain_on_scale_force(lam, p.x, p.g),
+        "F_max": variable_mass.chain_on_scale_force(lam, p.L, p.g),
+        "F_end": lam * p.L * p.g,
+    }
+
+
+EXERCISE = Exercise(
+    id="chain-falling-on-scale",
+    title="Chain falling on a scale",
+    source="Section 2.3.2",
+    topics=("mass accretion", "momentum flux", "variable mass"),
+    params=(
+        Uniform("m", 0.5, 5.0, step=0.1, unit="kg", symbol="m"),
+        Uniform("L", 0.5, 3.0, step=0.1, unit="m", symbol="L"),
+        Uniform("x", 0.1, 2.5, step=0.05, unit="m", symbol="x"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        Constraint("the fallen length is a clear part of the chain (0.1 L < x < 0.9 L)",
+                   lambda p: 0.1 * p.L < p.x < 0.9 * p.L),
+    ),
+    statement=r"""
+A flexible chain of mass $m$ = {{ m }} and length $L$ = {{ L }} hangs vertically with its
+lower end just touching the pan of a scale. It is released from rest and falls freely
+onto the pan, where the links come to rest at once ($g$ = {{ g }}).
+
+1. What does the scale read (a force) when the length $x$ = {{ x }} has fallen onto it?
+2. What does it read just before the last link lands?
+3. What does it read once the whole chain lies on the pan?
+4. Give the reading of question 1 as a formula in $m$, $L$, $x$ and $g$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("F_x", "reading after x has fallen", unit="N", points=2,
+                misconceptions=(
+                    Misconception("weight of the piled chain only",
+                                  lambda p: p.m / p.L * p.x * p.g,
+                                  "The pan also stops the arriving links: add the momentum "
+                                  "flux λ v² = 2 λ g x."),
+                    Misconception("momentum flux at half", lambda p: 2 * p.m / p.L * p.x * p.g,
+                                  "The arriving links have v² = 2 g x: the flux is λ v², "
+                                  "twice the weight of the piled part."),
+                )),
+        Numeric("F_max", "reading just before the last link lands", unit="N", points=1,
+                misconceptions=(
+                    Misconception("weight only", lambda p: p.m * p.g,
+                                  "Just before the end the pan still stops links arriving with "
+                                  "v² = 2 g L."),
+                )),
+        Numeric("F_end", "reading at rest", unit="N", points=1),
+        Symbolic("F_x_formula", "reading as a formula", points=1, expected="3*m*g*x/L",
+                 variables={"m": Variable(0.1, 10, "kg"), "L": Variable(0.5, 5, "m"),
+                            "x": Variable(0.01, 0.5, "m"), "g": Variable(1, 20, "m/s^2")},
+                 equals="F_x",
+                 misconceptions=(
+                     Misconception("weight of the piled chain only", "m*g*x/L",
+                                   "Add the momentum flux of the arriving links."),
+                 )),
+    ),
+)

@@ -1,0 +1,86 @@
+"""Angular momentum of a spinning, flying dumbbell about its centre of mass and about a
+fixed point (Section 2.2.3)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import systems
+
+
+def _state(p):
+    """Masses, positions and velocities of the two particles (planar, components e1, e2)."""
+    masses = [p.m1, p.m2]
+    total = systems.total_mass(masses)
+    direction = np.array([np.cos(p.phi), np.sin(p.phi)])
+    centre = np.array([0.0, p.d])
+    r = np.array([centre - p.m2 / total * p.L * direction,
+                  centre + p.m1 / total * p.L * direction])
+    rot = p.omega * np.array([[0.0, -1.0], [1.0, 0.0]])
+    v = np.array([[p.v, 0.0] + rot @ (ri - centre) for ri in r])
+    return masses, r, v
+
+
+def solve(p):
+    masses, r, v = _state(p)
+    return {
+        "H_C": systems.angular_momentum_about_centre_of_mass(masses, r, v)[2],
+        "H_O": systems.angular_momentum_about_point(masses, r, v, [0.0, 0.0])[2],
+    }
+
+
+def _geometric_centre_h(p):
+    """The wrong route: both masses at L/2 from the centre of rotation."""
+    return (p.m1 + p.m2) * (p.L / 2) ** 2 * p.omega
+
+
+EXERCISE = Exercise(
+    id="dumbbell-angular-momentum",
+    title="Angular momentum of a flying dumbbell",
+    source="Section 2.2.3",
+    topics=("angular momentum of a system", "centre of mass"),
+    params=(
+        Uniform("m1", 0.5, 3.0, step=0.1, unit="kg", symbol="m_1"),
+        Uniform("m2", 0.5, 3.0, step=0.1, unit="kg", symbol="m_2"),
+        Uniform("L", 0.3, 1.5, step=0.05, unit="m", symbol="L"),
+        Uniform("omega", 2.0, 20.0, step=0.5, unit="rad/s", symbol=r"\omega"),
+        Uniform("v", 1.0, 10.0, step=0.5, unit="m/s", symbol="v"),
+        Uniform("d", 0.5, 3.0, step=0.1, unit="m", symbol="d"),
+        Uniform("phi", 0, 180, step=5, unit="deg", symbol=r"\varphi"),
+    ),
+    constraints=(
+        Constraint("the masses differ enough that the centre of mass is off the middle",
+                   lambda p: abs(p.m1 - p.m2) > 0.3 * max(p.m1, p.m2)),
+        Constraint("the two contributions to H_O do not nearly cancel",
+                   lambda p: abs(solve(p)["H_O"]) > 0.2 * p.d * (p.m1 + p.m2) * p.v),
+    ),
+    statement=r"""
+Two small balls, $m_1$ = {{ m1 }} and $m_2$ = {{ m2 }}, are joined by a light rod of length
+$L$ = {{ L }} and fly in a vertical plane. At the instant considered the centre of mass
+C is at height $d$ = {{ d }} above the point O on the ground, it moves horizontally
+(along $e_1$) with speed $v$ = {{ v }}, and the dumbbell spins counter-clockwise (seen
+from $+e_3$) with $\omega$ = {{ omega }}; the rod makes the angle $\varphi$ = {{ phi }}
+with $e_1$.
+
+1. What is the angular momentum of the dumbbell about its centre of mass ($e_3$ component)?
+2. What is its angular momentum about the fixed point O ($e_3$ component)?
+""",
+    solve=solve,
+    parts=(
+        Numeric("H_C", "angular momentum about C", unit="kg*m^2/s", points=2,
+                misconceptions=(
+                    Misconception("rotation about the middle of the rod", _geometric_centre_h,
+                                  "The dumbbell spins about its centre of mass, which is not "
+                                  "the middle of the rod when m1 ≠ m2."),
+                )),
+        Numeric("H_O", "angular momentum about O", unit="kg*m^2/s", points=2,
+                misconceptions=(
+                    Misconception("transfer term forgotten", lambda p: solve(p)["H_C"],
+                                  "About O add r_OC × M v_C, the angular momentum of the "
+                                  "centre-of-mass motion."),
+                    Misconception("transfer term with the wrong sign",
+                                  lambda p: 2 * solve(p)["H_C"] - solve(p)["H_O"],
+                                  "r_OC × M v_C for C above O moving along +e1 points along "
+                                  "−e3."),
+                )),
+    ),
+)
