@@ -1,0 +1,89 @@
+"""A wheel rolling without slipping: velocity of a rim point and the instantaneous centre
+of rotation (Section 3.1.1)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, Variable, Vector)
+from dynagrade.mechanics import rigid_kinematics as rk
+
+
+def _rim_position(p):
+    """Rim point relative to the hub, at the angle phi from the contact point."""
+    return p.R * np.array([np.sin(p.phi), -np.cos(p.phi)])
+
+
+def solve(p):
+    v_point = rk.rim_point_velocity(p.v, p.R, p.phi)
+    omega_e3 = -rk.rolling_angular_velocity(p.v, p.R)
+    hub = np.array([0.0, p.R])
+    icr = rk.instantaneous_centre_of_rotation(hub, np.array([p.v, 0.0]), omega_e3)
+    return {
+        "omega": rk.rolling_angular_velocity(p.v, p.R),
+        "v_P": v_point,
+        "speed": float(np.linalg.norm(v_point)),
+        "d_ICR": float(np.linalg.norm(hub + _rim_position(p) - icr)),
+    }
+
+
+EXERCISE = Exercise(
+    id="rolling-wheel-rim-velocity",
+    title="Velocity of a point on a rolling wheel",
+    source="Section 3.1.1",
+    topics=("rigid-body kinematics in 2D", "rolling without slipping",
+            "instantaneous centre of rotation"),
+    params=(
+        Uniform("R", 0.2, 0.8, step=0.05, unit="m", symbol="R"),
+        Uniform("v", 2.0, 30.0, step=0.5, unit="m/s", symbol="v"),
+        Uniform("phi", 20, 340, step=5, unit="deg", symbol=r"\varphi"),
+    ),
+    constraints=(
+        Constraint("the point is not where its speed equals the hub's (phi = 60 or 300 deg)",
+                   lambda p: abs(2 * abs(np.sin(p.phi / 2)) - 1) > 0.08),
+        Constraint("the point is clear of the top, where the hub-only answer is parallel",
+                   lambda p: abs(p.phi - np.pi) > np.radians(15)),
+    ),
+    statement=r"""
+A wheel of radius $R$ = {{ R }} rolls without slipping to the right (along $e_1$) on level
+ground, its hub moving with $v$ = {{ v }}. A point P on the rim sits at the angle
+$\varphi$ = {{ phi }} from the contact point, measured about the hub counter-clockwise
+(so $\varphi$ = 90° is the point level with the hub, ahead of it; $e_2$ points up).
+
+1. What is the wheel's angular speed?
+2. What is the velocity vector of P (components along $e_1$, $e_2$)?
+3. What is the speed of P?
+4. How far is P from the instantaneous centre of rotation?
+5. Give the speed of P as a formula in $v$ and $\varphi$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("omega", "angular speed", unit="rad/s", points=1),
+        Vector("v_P", "velocity of P", unit="m/s", size=2, points=2,
+               misconceptions=(
+                   Misconception("rotation about the hub only",
+                                 lambda p: rk.velocity_of_point(np.zeros(2), -p.v / p.R,
+                                                                _rim_position(p)),
+                                 "Add the hub's velocity: v_P = v_C + ω × r_CP."),
+               )),
+        Numeric("speed", "speed of P", unit="m/s", points=1,
+                misconceptions=(
+                    Misconception("speed of the hub", lambda p: p.v,
+                                  "Points of a rolling wheel move with ω times their distance "
+                                  "from the contact point, not all with v."),
+                )),
+        Numeric("d_ICR", "distance from the instantaneous centre", unit="m", points=1,
+                misconceptions=(
+                    Misconception("centre of rotation at the hub", lambda p: p.R,
+                                  "Rolling without slipping: the contact point is at rest, it "
+                                  "is the instantaneous centre of rotation."),
+                )),
+        Symbolic("speed_formula", "speed of P as a formula", points=1,
+                 expected="2*v*abs(sin(phi/2))",
+                 variables={"v": Variable(0.5, 30, "m/s"), "phi": Variable(0.1, 6.2, "rad")},
+                 equals="speed",
+                 misconceptions=(
+                     Misconception("rotation about the hub only", "v",
+                                   "The contact point, not the hub, is at rest."),
+                 )),
+    ),
+)
