@@ -278,7 +278,7 @@ class _Parser:
         if self.peek().kind == LPAR and self.peek().value == "[" and not self.vocabulary.quantity:
             raise self.error("subscripts like a[0] are not allowed", self.peek())
         if word.startswith("_"):
-            raise self.error(f"names starting with '_' are not allowed ('{word}')", token)
+            raise self.error(f"names starting with '_' are not allowed ('{word[:30]}')", token)
         function = canonical_function(word)
         if function and follows_bracket and word not in self.vocabulary.variables:
             return self.call(token, function)
@@ -300,7 +300,8 @@ class _Parser:
         if pieces:
             return self.product_of_pieces(token, pieces)
         pool = list(variables) + list(CONSTANTS) + list(FUNCTIONS)
-        hint = suggest(word, pool)
+        hint = suggest(word, pool) if len(word) <= 40 else None
+        word = word if len(word) <= 30 else word[:30] + "…"
         did_you_mean = f"; did you mean '{hint}'?" if hint else ""
         if follows_bracket:
             raise self.error(f"unknown function '{word}'{did_you_mean}", token)

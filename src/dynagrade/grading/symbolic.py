@@ -146,10 +146,12 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
             return Verdict(False, 0.0, f"Not correct: your expression has units of {show(dim)}, "
                                         f"expected {show(ref.dim)}.{reveal}", misconception="dimensions")
     values = _values(tree, ref.env, ref.values.shape)
+    if np.any(np.isinf(values)) and not names_in(tree):
+        return Verdict(False, 0.0, "Not correct: your expression overflows (it is too large to compute)." + reveal)
     if not np.all(np.isfinite(values)):
         return Verdict(False, 0.0, "Not correct: your expression is undefined for some allowed values of "
-                                    "the variables (a division by zero or the root or logarithm of a negative "
-                                    "number) where the expected one is defined." + reveal)
+                                    "the variables (a division by zero, the root or logarithm of a negative "
+                                    "number, or a number too large to compute) where the expected one is defined." + reveal)
     diff = np.abs(values - ref.values)
     if np.all(diff <= ref.tol) or (np.all(diff <= 100 * ref.tol) and
                                    exactly_equal(tree, ref.tree, ref.domains, min(0.3, deadline.remaining()))):
@@ -159,7 +161,9 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
     if found is not None:
         name, feedback, score = found
         return Verdict(False, score, " ".join(x for x in (feedback, hints) if x) + reveal, misconception=name)
-    text = f"Not correct: your expression (read as {to_text(tree)}) is not equivalent to the expected one."
+    read = to_text(tree)
+    read = read if len(read) <= 120 else read[:120] + "…"
+    text = f"Not correct: your expression (read as {read}) is not equivalent to the expected one."
     return Verdict(False, 0.0, " ".join(x for x in (text, hints) if x) + reveal)
 
 

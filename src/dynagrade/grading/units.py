@@ -88,8 +88,8 @@ def _product(parts) -> tuple[float, tuple]:
 
 
 def _pint_unit(name: str) -> tuple[float, tuple]:
-    if not name.replace("_", "").isalnum() or len(name) > 40:
-        raise AnswerError(f"unknown unit '{name}'")
+    if not name.replace("_", "").isalnum() or len(name) > 40 or name.startswith("_"):
+        raise AnswerError(f"unknown unit '{name[:30]}'")
     ureg = registry()
     try:
         factor, root = ureg.get_root_units(name)

@@ -1,0 +1,203 @@
+"""The expression parser: accepted syntax, positioned errors, limits, and fuzzing.
+
+Student text must never reach eval/exec/sympify: the parser is our own, so these tests
+hold it to its grammar and to its promise of only ever raising AnswerError.
+"""
+
+import math
+import time
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from dynagrade.grading import AnswerError, grade
+from dynagrade.grading.nodes import BinOp, Call, Const, Name, Neg, Num, to_text
+from dynagrade.grading.parser import MAX_DEPTH, parse_expression, parse_quantity, parse_vector
+from dynagrade.grading.spec import ChoiceSpec, NumericSpec, SymbolicSpec, Variable, VectorSpec
+
+VARS = ("m", "g", "v0", "t", "alpha", "a", "b", "k", "e", "x")
+
+
+def read(text, variables=VARS):
+    return to_text(parse_expression(text, variables))
+
+
+@pytest.mark.parametrize("text, canonical", [
+    ("2g", "2 * g"),
+    ("m g", "m * g"),
+    ("2(a+b)", "2 * (a + b)"),
+    ("(a)(b)", "a * b"),
+    ("v0 t cos(alpha)", "v0 * t * cos(alpha)"),
+    ("mg", "m * g"),
+    ("mv0^2", "m * v0^2"),
+    ("v0", "v0"),
+    ("v_0", "v0"),
+    ("a^b^x", "a^b^x"),
+    ("a**2", "a^2"),
+    ("-a^2", "-a^2"),
+    ("a^-2", "a^(-2)"),
+    ("α·m × g", "alpha * m * g"),
+    ("a²·b³", "a^2 * b^3"),
+    ("√(k/m)", "sqrt(k / m)"),
+    ("√k/√m", "sqrt(k) / sqrt(m)"),
+    ("arctan(a/b)", "atan(a / b)"),
+    ("log(x)", "ln(x)"),
+    ("π a", "pi * a"),
+    ("e^x", "e^x"),            # e is declared here: a variable
+    ("a − b", "a - b"),
+    ("msin(alpha)", "m * sin(alpha)"),
+    ("1/2 m v0^2", "1 / 2 * m * v0^2"),
+    ("x = 2a", "2 * a"),
+])
+def test_accepted_syntax_reads_as_the_canonical_text(text, canonical):
+    assert read(text) == canonical
+
+
+def test_e_is_eulers_number_unless_declared():
+    assert parse_expression("e^x", ("x",)) == BinOp("^", Const("e"), Name("x"))
+    assert parse_expression("e^x", ("x", "e")) == BinOp("^", Name("e"), Name("x"))
+
+
+def test_pi_is_a_constant_unless_declared():
+    assert parse_expression("pi", ("x",)) == Const("pi")
+    assert parse_expression("pi", ("pi",)) == Name("pi")
+
+
+@pytest.mark.parametrize("text, fragment, position", [
+    ("2*(a+b", "missing ')'", 2),
+    ("2*(a+b))", "unexpected ')'", 7),
+    ("2 3", "missing operator", 2),
+    ("a +* b", "two operators", 3),
+    ("a.b", "attribute access", 1),
+    ("a[0]", "subscripts", 1),
+    ("__import__(x)", "names starting with '_'", 0),
+    ("'a'", "quotes", 0),
+    ("lambda x: x", "':'", 8),
+    ("f(x)", "unknown function 'f'", 0),
+    ("sine(x)", "did you mean 'sin'", 0),
+    ("alhpa", "did you mean 'alpha'", 0),
+    ("sin x", "brackets", 0),
+    ("a, b", "comma", 1),
+    ("atan2(a)", "takes 2 arguments", 0),
+    ("a!", "factorial", 1),
+    ("", "empty", None),
+    ("2*", "ends too early", 2),
+])
+def test_errors_name_the_problem_and_where_it_is(text, fragment, position):
+    with pytest.raises(AnswerError) as info:
+        parse_expression(text, VARS)
+    assert fragment in info.value.message
+    assert info.value.position == position
+
+
+@pytest.mark.parametrize("text, value", [
+    ("1.2e3", 1200.0), ("1.2E+03", 1200.0), ("1.2×10^3", 1200.0), ("1.2·10⁻³", 1.2e-3),
+    ("12,5", 12.5), ("−3", -3.0), ("981/100", 9.81), ("sqrt(2)", math.sqrt(2)), ("2*pi", 2 * math.pi),
+    (".5", 0.5), ("5.", 5.0),
+])
+def test_number_formats(text, value):
+    from dynagrade.grading.evaluate import evaluate_constant
+
+    assert evaluate_constant(parse_quantity(text)) == pytest.approx(value, rel=1e-12)
+
+
+def test_vectors_split_on_commas_or_semicolons():
+    components, unit = parse_vector("(1,5; -2,5) m/s")
+    assert [to_text(c) for c in components] == ["1.5", "-2.5"] and to_text(unit) == "m / s"
+    components, unit = parse_vector("[1.2, -3.4]")
+    assert len(components) == 2 and unit is None
+
+
+def test_nesting_beyond_the_limit_is_refused_without_recursion_error():
+    deep = "(" * (MAX_DEPTH + 5) + "x" + ")" * (MAX_DEPTH + 5)
+    with pytest.raises(AnswerError, match="nested too deeply"):
+        parse_expression(deep, ("x",))
+    assert read("(" * (MAX_DEPTH - 5) + "x" + ")" * (MAX_DEPTH - 5)) == "x"
+
+
+# -- hostile answers: every one gets a clear verdict within a second ------------------------
+HOSTILE = [
+    "(" * 10000 + "x" + ")" * 10000,
+    "(" * 1900,
+    "-" * 1999 + "x",
+    "9**9**9**9",
+    "9^9^9^9^9^9^9^9",
+    "10^10^10^10 m",
+    "factorial(10^7)",
+    "__import__('os').system('echo hi')",
+    "().__class__.__bases__[0].__subclasses__()",
+    "exec('1')", "eval('2')", "lambda: 1", "open('/etc/passwd')",
+    "x" * 5000, "sin(" * 500 + "x" + ")" * 500, "x^" * 900 + "x",
+    "1e999999", "1" * 1999, "nan", "inf", "-inf", "NaN m/s", "∞", "", "   ", "\x00", "\u202e1",
+    "'; DROP TABLE answers; --", "${7*7}", "{{7*7}}", "%s%s%s", "\\frac{1}{2}",
+    "[" * 800, "1,2,3,4,5", "(1;;2)", "a.b.c", "x[0][1]", "sqrt(-1)", "ln(0)", "1/0", "0/0",
+    "exp(exp(exp(exp(exp(x)))))", "x" + "+x" * 700, "(x)" * 500, "√" * 900 + "x",
+]
+SPECS = [
+    (NumericSpec(unit="m/s"), 12.5),
+    (NumericSpec(), 0.0),
+    (SymbolicSpec({"x": Variable(0.5, 2.0, "m"), "m": Variable(1, 2, "kg")}), "x"),
+    (SymbolicSpec({"x": Variable(0.5, 2.0)}), "sin(x)"),
+    (VectorSpec(2, unit="m"), (1.0, 2.0)),
+    (ChoiceSpec(("a", "b", "c"), multiple=True), ("a", "b")),
+]
+
+
+@pytest.mark.parametrize("answer", HOSTILE, ids=[repr(h[:20]) for h in HOSTILE])
+def test_hostile_answers_get_a_wrong_verdict_within_a_second(answer):
+    for spec, expected in SPECS:
+        start = time.perf_counter()
+        verdict = grade(spec, expected, answer)
+        elapsed = time.perf_counter() - start
+        assert elapsed < 1.0, (answer[:30], spec, elapsed)
+        assert not verdict.correct and verdict.score == 0.0
+        assert verdict.feedback
+
+
+# -- fuzzing --------------------------------------------------------------------------------
+ALPHABET = "0123456789.,+-*/^()[]{} abegmtxv_αμπ√²³⁻·×−=!'\"e:;°"
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.text(alphabet=ALPHABET, max_size=60))
+def test_arbitrary_text_only_ever_raises_answer_error(text):
+    for parse in (lambda s: parse_expression(s, ("m", "g", "x", "v0")), parse_quantity, parse_vector):
+        try:
+            parse(text)
+        except AnswerError:
+            pass
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.text(max_size=80))
+def test_grade_never_raises_on_any_unicode_text(text):
+    for spec, expected in SPECS:
+        verdict = grade(spec, expected, text)
+        assert 0.0 <= verdict.score <= 1.0
+
+
+NAMES = ("m", "g", "v0", "alpha", "x")
+leaves = st.one_of(
+    st.builds(Num, st.floats(min_value=0, max_value=1e6, allow_nan=False, allow_infinity=False)),
+    st.sampled_from([Name(n) for n in NAMES]),
+    st.sampled_from([Const("pi"), Const("e")]),
+)
+
+
+def _extend(children):
+    return st.one_of(
+        st.builds(Neg, children),
+        st.builds(BinOp, st.sampled_from("+-*/^"), children, children),
+        st.builds(lambda f, a: Call(f, (a,)), st.sampled_from(["sin", "cos", "sqrt", "exp", "ln", "abs"]), children),
+        st.builds(lambda a, b: Call("atan2", (a, b)), children, children),
+    )
+
+
+trees = st.recursive(leaves, _extend, max_leaves=25)
+
+
+@settings(max_examples=200, deadline=None)
+@given(trees)
+def test_random_trees_round_trip_through_print_and_parse(tree):
+    assert parse_expression(to_text(tree), NAMES) == tree
