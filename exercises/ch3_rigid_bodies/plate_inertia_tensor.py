@@ -1,0 +1,98 @@
+"""Inertia tensor of a rectangular plate about a corner: parallel-axis theorem, products of
+inertia, moment about a diagonal and principal moments (Section 3.2.3)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import inertia
+
+
+def _centroidal(p):
+    return inertia.inertia_tensor_box(p.m, p.a, p.b, 0.0)
+
+
+def _about_corner(p):
+    return inertia.parallel_axis_inertia_tensor(_centroidal(p), p.m, [p.a / 2, p.b / 2, 0.0])
+
+
+def _diagonal(p):
+    return np.array([p.a, p.b, 0.0])
+
+
+def _diagonal_without_products(p):
+    """The wrong route: n.I n with the off-diagonal entries dropped."""
+    tensor = np.diag(np.diag(_about_corner(p)))
+    return inertia.moment_of_inertia_about_axis(tensor, _diagonal(p))
+
+
+def solve(p):
+    tensor = _about_corner(p)
+    return {
+        "I11": tensor[0, 0],
+        "I12": tensor[0, 1],
+        "I33": tensor[2, 2],
+        "I_diag": inertia.moment_of_inertia_about_axis(tensor, _diagonal(p)),
+        "I_min": inertia.principal_axes(tensor).moments[0],
+    }
+
+
+EXERCISE = Exercise(
+    id="plate-inertia-about-corner",
+    title="Inertia tensor of a plate about its corner",
+    source="Section 3.2.3",
+    topics=("moment of inertia tensor", "parallel-axis theorem", "principal axes"),
+    params=(
+        Uniform("m", 0.5, 10.0, step=0.5, unit="kg", symbol="m"),
+        Uniform("a", 0.2, 1.2, step=0.05, unit="m", symbol="a"),
+        Uniform("b", 0.2, 1.2, step=0.05, unit="m", symbol="b"),
+    ),
+    constraints=(
+        Constraint("the plate is clearly not square", lambda p: abs(p.a - p.b) > 0.2 * max(p.a, p.b)),
+    ),
+    statement=r"""
+A thin homogeneous rectangular plate of mass $m$ = {{ m }} occupies
+$0 \le x_1 \le a$, $0 \le x_2 \le b$ in the $e_1$-$e_2$ plane, with $a$ = {{ a }} and
+$b$ = {{ b }}. Work with the inertia tensor about the corner O at the origin, in the basis
+$e_1, e_2, e_3$ (with $I_{12} = -\int x_1 x_2\,dm$).
+
+1. What is $I_{11}$?
+2. What is the product of inertia $I_{12}$?
+3. What is $I_{33}$?
+4. What is the moment of inertia about the plate's diagonal through O?
+5. What is the smallest principal moment of inertia at O?
+""",
+    solve=solve,
+    parts=(
+        Numeric("I11", "I11 about the corner", unit="kg*m^2", points=1,
+                misconceptions=(
+                    Misconception("centroidal value", lambda p: _centroidal(p)[0, 0],
+                                  "Shift to the corner: add m (b/2)²."),
+                    Misconception("wrong edge", lambda p: p.m * p.a**2 / 3,
+                                  "I11 sums x2² + x3²: the edge b along e2 counts."),
+                )),
+        Numeric("I12", "product of inertia I12", unit="kg*m^2", points=1,
+                misconceptions=(
+                    Misconception("sign convention", lambda p: p.m * p.a * p.b / 4,
+                                  "The tensor carries −∫x1 x2 dm off the diagonal."),
+                    Misconception("centroidal product", lambda p: -p.m * p.a * p.b / 12,
+                                  "Shifting from the centre adds −m (a/2)(b/2) = −m a b/4."),
+                )),
+        Numeric("I33", "I33 about the corner", unit="kg*m^2", points=1,
+                misconceptions=(
+                    Misconception("centroidal value", lambda p: _centroidal(p)[2, 2],
+                                  "Shift to the corner: add m (a² + b²)/4."),
+                )),
+        Numeric("I_diag", "moment about the diagonal", unit="kg*m^2", points=2,
+                misconceptions=(
+                    Misconception("products of inertia dropped", _diagonal_without_products,
+                                  "n·I n needs the off-diagonal entries too."),
+                )),
+        Numeric("I_min", "smallest principal moment", unit="kg*m^2", points=2,
+                misconceptions=(
+                    Misconception("smallest diagonal entry",
+                                  lambda p: min(np.diag(_about_corner(p))),
+                                  "The basis e1, e2 is not principal at the corner: find the "
+                                  "eigenvalues of the tensor."),
+                )),
+    ),
+)
