@@ -1,0 +1,90 @@
+"""A hanging rod struck by a particle: eccentric impact on a pinned body (Section 3.3)."""
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import inertia, rigid_impact
+
+
+def _moment_pivot(p):
+    return inertia.parallel_axis_moment(inertia.inertia_tensor_rod(p.M, p.L)[0, 0], p.M, p.L / 2)
+
+
+def _impulse(p, moment):
+    w_rod = rigid_impact.inverse_effective_mass_pinned_body(moment, p.d)
+    return rigid_impact.eccentric_impact_impulse(1.0 / p.m, w_rod, p.v, p.e)
+
+
+def solve(p):
+    i_o = _moment_pivot(p)
+    impulse = _impulse(p, i_o)
+    return {
+        "omega": rigid_impact.angular_velocity_change(impulse, p.d, i_o),
+        "v_after": p.v - impulse / p.m,
+        "R_pivot": abs(rigid_impact.pivot_impulse(impulse, p.d, p.M, p.L / 2, i_o)),
+        "d_percussion": rigid_impact.centre_of_percussion_distance(i_o, p.M, p.L / 2),
+    }
+
+
+def _centroidal_omega(p):
+    """The wrong route: the rod's moment of inertia about its centre."""
+    i_c = inertia.inertia_tensor_rod(p.M, p.L)[0, 0]
+    return rigid_impact.angular_velocity_change(_impulse(p, i_c), p.d, i_c)
+
+
+EXERCISE = Exercise(
+    id="rod-struck-by-particle",
+    title="Hanging rod struck by a particle",
+    source="Section 3.3",
+    topics=("eccentric impact", "coefficient of restitution", "angular momentum"),
+    params=(
+        Uniform("M", 1.0, 10.0, step=0.5, unit="kg", symbol="M"),
+        Uniform("L", 0.5, 2.0, step=0.1, unit="m", symbol="L"),
+        Uniform("m", 0.1, 2.0, step=0.05, unit="kg", symbol="m"),
+        Uniform("v", 2.0, 20.0, step=0.5, unit="m/s", symbol="v"),
+        Uniform("d", 0.2, 2.0, step=0.05, unit="m", symbol="d"),
+        Uniform("e", 0.1, 0.9, step=0.05, symbol="e"),
+    ),
+    constraints=(
+        Constraint("the particle hits the rod clear of its ends", lambda p: 0.3 * p.L <= p.d <= 0.95 * p.L),
+        Constraint("the blow is clear of the centre of percussion (2L/3), where the pivot "
+                   "takes no impulse", lambda p: abs(p.d - 2 * p.L / 3) > 0.08 * p.L),
+        Constraint("the rod's effective mass at the contact, M L^2/(3 d^2), differs from M",
+                   lambda p: abs(3 * p.d**2 / p.L**2 - 1) > 0.25),
+        Constraint("the particle's velocity after the impact is not close to zero",
+                   lambda p: abs(solve(p)["v_after"]) > 0.05 * p.v),
+    ),
+    statement=r"""
+A slender rod (mass $M$ = {{ M }}, length $L$ = {{ L }}) hangs at rest from a frictionless
+pivot O at its upper end. A small ball of mass $m$ = {{ m }} moving horizontally with
+$v$ = {{ v }} hits it at the distance $d$ = {{ d }} below O; the coefficient of
+restitution is $e$ = {{ e }}. Gravity plays no part during the short impact.
+
+1. What is the rod's angular speed just after the impact?
+2. What is the ball's velocity just after the impact (positive in its original direction)?
+3. How large is the impulse the pivot exerts on the rod during the impact?
+4. At which distance below O would the blow cause no impulse at the pivot?
+""",
+    solve=solve,
+    parts=(
+        Numeric("omega", "angular speed of the rod", unit="rad/s", points=2,
+                misconceptions=(
+                    Misconception("centroidal moment of inertia", _centroidal_omega,
+                                  "The rod turns about O: use I_O = M L²/3 (parallel-axis "
+                                  "theorem), not M L²/12."),
+                )),
+        Numeric("v_after", "velocity of the ball after the impact", unit="m/s", points=2,
+                misconceptions=(
+                    Misconception("rod treated as a free particle of mass M",
+                                  lambda p: p.v - rigid_impact.eccentric_impact_impulse(
+                                      1 / p.m, 1 / p.M, p.v, p.e) / p.m,
+                                  "The rod is pinned and turns: its effective mass at the "
+                                  "contact is I_O / d²."),
+                )),
+        Numeric("R_pivot", "impulse at the pivot", unit="N*s", points=1),
+        Numeric("d_percussion", "centre of percussion", unit="m", points=1,
+                misconceptions=(
+                    Misconception("centre of mass", lambda p: p.L / 2,
+                                  "A blow at the centre of mass makes the pivot push back; "
+                                  "the centre of percussion is at I_O/(M d_C) = 2L/3."),
+                )),
+    ),
+)
