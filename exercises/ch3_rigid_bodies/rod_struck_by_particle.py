@@ -48,7 +48,7 @@ EXERCISE = Exercise(
         Constraint("the blow is clear of the centre of percussion (2L/3), where the pivot "
                    "takes no impulse", lambda p: abs(p.d - 2 * p.L / 3) > 0.08 * p.L),
         Constraint("the rod's effective mass at the contact, M L^2/(3 d^2), differs from M",
-                   lambda p: abs(3 * p.d**2 / p.L**2 - 1) > 0.25),
+                   lambda p: abs(3 * p.d**2 / p.L**2 - 1) > 0.4),
         Constraint("the particle's velocity after the impact is not close to zero",
                    lambda p: abs(solve(p)["v_after"]) > 0.05 * p.v),
     ),
