@@ -24,6 +24,11 @@ def solve(p):
     }
 
 
+def _free_particle_rebound(p):
+    """The wrong route: the rod hit as if it were a free particle of mass M."""
+    return p.v - rigid_impact.eccentric_impact_impulse(1 / p.m, 1 / p.M, p.v, p.e) / p.m
+
+
 def _centroidal_omega(p):
     """The wrong route: the rod's moment of inertia about its centre."""
     i_c = inertia.inertia_tensor_rod(p.M, p.L)[0, 0]
@@ -47,8 +52,10 @@ EXERCISE = Exercise(
         Constraint("the particle hits the rod clear of its ends", lambda p: 0.3 * p.L <= p.d <= 0.95 * p.L),
         Constraint("the blow is clear of the centre of percussion (2L/3), where the pivot "
                    "takes no impulse", lambda p: abs(p.d - 2 * p.L / 3) > 0.08 * p.L),
-        Constraint("the rod's effective mass at the contact, M L^2/(3 d^2), differs from M",
-                   lambda p: abs(3 * p.d**2 / p.L**2 - 1) > 0.4),
+        Constraint("the rod's effective mass at the contact, M L^2/(3 d^2), differs from M "
+                   "enough to change the ball's rebound",
+                   lambda p: abs(_free_particle_rebound(p) - solve(p)["v_after"])
+                   > 0.04 * abs(solve(p)["v_after"])),
         Constraint("the particle's velocity after the impact is not close to zero",
                    lambda p: abs(solve(p)["v_after"]) > 0.05 * p.v),
     ),
@@ -74,8 +81,7 @@ restitution is $e$ = {{ e }}. Gravity plays no part during the short impact.
         Numeric("v_after", "velocity of the ball after the impact", unit="m/s", points=2,
                 misconceptions=(
                     Misconception("rod treated as a free particle of mass M",
-                                  lambda p: p.v - rigid_impact.eccentric_impact_impulse(
-                                      1 / p.m, 1 / p.M, p.v, p.e) / p.m,
+                                  lambda p: _free_particle_rebound(p),
                                   "The rod is pinned and turns: its effective mass at the "
                                   "contact is I_O / d²."),
                 )),
