@@ -4,7 +4,39 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform, Variable)
+from dynagrade.exercise.figure import angle_arc, arrow, ground, new_drawing
+from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import looping
+
+
+def figure(p):
+    """The looping to scale in metres: the circle of radius R clamped at A, the car at the
+    angle phi travelled from the bottom, and the entry velocity (Example 1.13)."""
+    from matplotlib.patches import Circle
+
+    R = p.R
+    drawing, axes = new_drawing(4.6, 4.0)
+    axes.add_patch(Circle((0.0, R), R, fill=False, edgecolor="0.1", lw=1.4))
+    ground(axes, -1.9 * R, 1.2 * R, hatch=R / 12)
+    car = np.array([R * np.sin(p.phi), R * (1.0 - np.cos(p.phi))])
+    axes.plot([0.0, car[0]], [R, car[1]], color="0.4", lw=0.8, ls=":")
+    axes.plot([0.0, 0.0], [R, 0.0], color="0.4", lw=0.8, ls=":")
+    axes.plot(*car, "s", color="C0", ms=9)
+    axes.text(*(car + 0.18 * R * (car - (0.0, R)) / R), "car", ha="center", va="center",
+              fontsize=9)
+    angle_arc(axes, (0.0, R), 0.22 * R, -np.pi / 2, p.phi - np.pi / 2,
+              f"φ = {format_number(np.degrees(p.phi))}°", label_radius=0.45 * R)
+    radius_end = (0.0, R) + R * np.array([np.cos(0.75 * np.pi), np.sin(0.75 * np.pi)])
+    axes.plot([0.0, radius_end[0]], [R, radius_end[1]], color="0.1", lw=0.8)
+    axes.text(0.5 * radius_end[0] - 0.08 * R, 0.5 * (R + radius_end[1]) + 0.08 * R,
+              f"R = {format_number(R)} m", ha="right", va="bottom", fontsize=10)
+    axes.plot([0.0], [0.0], "^", color="0.1", ms=8)
+    axes.text(0.06 * R, -0.15 * R, "A", ha="left", va="top", fontsize=10)
+    arrow(axes, (-1.7 * R, 0.12 * R), (-0.9 * R, 0.12 * R),
+          f"v₀ = {format_number(p.v0)} m/s", offset=(0.0, 0.2 * R), color="C3")
+    axes.set_xlim(-1.95 * R, 1.25 * R)
+    axes.set_ylim(-0.3 * R, 2.1 * R)
+    return drawing
 
 
 def solve(p):
@@ -50,6 +82,7 @@ lowest point A.
 6. Write the smallest entry speed as a formula in $g$ and $R$.
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("v_min_entry", "smallest entry speed", unit="m/s", points=2,
                 misconceptions=(

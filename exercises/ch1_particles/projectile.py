@@ -4,6 +4,8 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform, Variable)
+from dynagrade.exercise.figure import angle_arc, arrow, ground, new_drawing
+from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import projectile
 
 
@@ -13,6 +15,26 @@ def solve(p):
         "h_max": projectile.peak_height(p.v0, p.alpha, p.g),
         "t_flight": projectile.flight_time(p.v0, p.alpha, p.g),
     }
+
+
+def figure(p):
+    """The throw to scale: the path of eq. (1.78) over the flight time of eq. (1.79), the
+    launch angle and the launch velocity (its arrow a quarter of the path's width)."""
+    t = np.linspace(0.0, projectile.flight_time(p.v0, p.alpha, p.g), 81)
+    x1, x2 = projectile.position(t, p.v0, p.alpha, p.g)
+    width = float(x1[-1])
+    drawing, axes = new_drawing(5.0, 2.2 + 2.0 * np.tan(p.alpha) / 4)
+    ground(axes, -0.08 * width, 1.08 * width, hatch=width / 60)
+    axes.plot(x1, x2, ls="--", color="0.45", lw=1.0)
+    axes.plot([0], [0], "o", color="C3", ms=6)
+    tip = (0.25 * width * np.cos(p.alpha), 0.25 * width * np.sin(p.alpha))
+    arrow(axes, (0.0, 0.0), tip, f"v₀ = {format_number(p.v0)} m/s",
+          offset=(-0.1 * width, 0.05 * width))
+    angle_arc(axes, (0.0, 0.0), 0.1 * width, 0.0, p.alpha,
+              f"α = {format_number(np.degrees(p.alpha))}°", label_radius=0.2 * width)
+    axes.set_xlim(-0.12 * width, 1.12 * width)
+    axes.set_ylim(-0.06 * width, max(float(x2.max()), tip[1]) + 0.08 * width)
+    return drawing
 
 
 _LAUNCH = {"v0": Variable(1, 50, "m/s"), "alpha": Variable(0.1, 1.4, "rad"),
@@ -44,6 +66,7 @@ $\\alpha$ = {{ alpha }} above the horizontal. Gravity is $g$ = {{ g }}; neglect 
 4. Write the landing distance as a formula in $v_0$, $\\alpha$ and $g$.
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("x_max", "landing distance", unit="m", points=2,
                 misconceptions=(

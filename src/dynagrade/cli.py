@@ -7,6 +7,8 @@ Usage::
     dynagrade sheet projectile-range --student s1 -o exercise.py
     grade exercise.py
     dynagrade verify --variants 200
+    dynagrade exam exam.toml --roster roster.csv -o out/
+    dynagrade grade --manifest out/manifest.json out/submissions/ -o out/grading/
 """
 
 from __future__ import annotations
@@ -174,13 +176,57 @@ def compare(context, source):
 
 
 @main.command("grade")
-@click.argument("files", nargs=-1, required=True,
-                type=click.Path(exists=True, dir_okay=False))
+@click.argument("files", nargs=-1, required=True, type=click.Path(exists=True))
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@click.option("--manifest", type=click.Path(exists=True, dir_okay=False),
+              help="Grade a class against this exam manifest: FILES are filled-in files, "
+                   "folders of them (searched recursively) or CSV files of responses "
+                   "(student_id,exercise_id,part,answer).")
+@click.option("-o", "--output", type=click.Path(file_okay=False),
+              help="With --manifest: the folder for grades.csv, feedback and report.html.")
+@click.option("--jobs", type=click.IntRange(1), default=None,
+              help="With --manifest: worker processes (default: up to 2).")
 @click.pass_obj
-def grade_command(context, files, as_json):
-    """Grade filled-in exercise files (never executing them)."""
-    _grade_files(context, files, as_json)
+def grade_command(context, files, as_json, manifest, output, jobs):
+    """Grade filled-in exercise files (never executing them); with --manifest, a class."""
+    if manifest is None:
+        if output is not None or jobs is not None:
+            raise click.UsageError("-o/--output and --jobs need --manifest")
+        for file in files:
+            if Path(file).is_dir():
+                raise click.BadParameter(f"File {file!r} is a directory.",
+                                         param_hint="'FILES...'")
+        _grade_files(context, files, as_json)
+        return
+    _grade_class(context, manifest, files, output, jobs, as_json)
+
+
+@main.command()
+@click.argument("exam_file", type=click.Path(exists=True, dir_okay=False))
+@click.option("--roster", required=True, type=click.Path(exists=True, dir_okay=False),
+              help="CSV with the header student_id,name[,email].")
+@click.option("-o", "--output", required=True, type=click.Path(file_okay=False),
+              help="The folder to write the exam into.")
+@click.option("--jobs", type=click.IntRange(1), default=None,
+              help="Worker processes (default: up to 2).")
+@click.option("--no-pdf", is_flag=True, help="Skip the PDFs (faster drafts).")
+@click.pass_obj
+def exam(context, exam_file, roster, output, jobs, no_pdf):
+    """Generate an exam: every student's variants, sheets, keys, Moodle XML, manifest."""
+    from .exam.generate import generate_exam
+    from .exam.spec import ExamSpecError
+    from .exam.variants import NoUsableVariant
+    from .render.terminal import progress_reporter
+
+    try:
+        with progress_reporter() as progress:
+            report = generate_exam(exam_file, roster, output, bank=context.bank, jobs=jobs,
+                                   pdf=not no_pdf, progress=progress)
+    except (ExamSpecError, NoUsableVariant, loader.ExerciseFileError) as error:
+        raise click.ClickException(str(error)) from None
+    click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
+               f"({report.redraws} draws replaced because they could not discriminate; see "
+               f"manifest.json) in {report.timings['total']:.1f} s", err=True)
 
 
 # -- grade exercise.py -------------------------------------------------------------------
@@ -230,6 +276,28 @@ def _grade_files(context, files, as_json):
 
     for exercise, result in results:
         result_table(exercise, result)
+
+
+def _grade_class(context, manifest, files, output, jobs, as_json):
+    from .exam.classgrade import ManifestError, grade_class
+    from .render.terminal import progress_reporter
+
+    try:
+        with progress_reporter() as progress:
+            outcome = grade_class(manifest, files, output, bank=context.bank, jobs=jobs,
+                                  progress=progress)
+    except (ManifestError, loader.ExerciseFileError) as error:
+        raise click.ClickException(str(error)) from None
+    for problem in outcome.problems:
+        click.echo(f"{problem.level}: {problem.source}: {problem.message}", err=True)
+    if as_json:
+        click.echo(json.dumps(outcome.summary(), indent=2, ensure_ascii=False))
+        return
+    from .render.terminal import gradebook_table
+
+    gradebook_table(outcome)
+    if output:
+        click.echo(f"wrote {output}: grades.csv, feedback/, report.html", err=True)
 
 
 # -- helpers -----------------------------------------------------------------------------

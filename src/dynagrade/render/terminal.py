@@ -95,3 +95,35 @@ def verify_progress(exercises: Sequence, check: Callable) -> list:
     failed = sum(not r.ok for r in reports)
     out.print(f"{len(reports) - failed} of {len(reports)} exercises passed")
     return reports
+
+
+class progress_reporter:
+    """A context manager giving ``progress(stage, done, total)``, shown as rich progress
+    bars on stderr (one bar per stage)."""
+
+    def __enter__(self):
+        self._progress = Progress(console=Console(stderr=True, highlight=False),
+                                  transient=False)
+        self._tasks: dict[str, int] = {}
+        self._progress.__enter__()
+        return self.update
+
+    def update(self, stage: str, done: int, total: int) -> None:
+        if stage not in self._tasks:
+            self._tasks[stage] = self._progress.add_task(stage, total=total)
+        self._progress.update(self._tasks[stage], completed=done, total=total)
+
+    def __exit__(self, *exc):
+        return self._progress.__exit__(*exc)
+
+
+def gradebook_table(outcome) -> None:
+    """The class's grades, one row per roster student."""
+    table = Table(title=f"{outcome.exam_title}: {len(outcome.rows)} students")
+    for column in ("student", *outcome.exercise_ids, "total", "%", "status"):
+        table.add_column(column, overflow="fold")
+    for row in outcome.rows:
+        table.add_row(row["student_id"], *(format_number(row[e]) for e in outcome.exercise_ids),
+                      f"{format_number(row['total'])} / {format_number(row['max_total'])}",
+                      format_number(row["percent"], 4), row["status"])
+    _console().print(table)

@@ -1,0 +1,302 @@
+"""Generating an exam: every student's variants, sheets, fill-in files, PDFs, answer keys,
+the Moodle export and the manifest that grading reads.
+
+Output folder::
+
+    manifest.json                   the exam, exercises (file hash, parts, points) and every
+                                    student's variants: seed, parameters, reference answers
+    students/<student_id>/sheet.pdf, sheet.html, sheet.md, <exercise-id>.py,
+                          figures/<exercise-id>.svg
+    sheets.pdf                      every student's sheet, for printing
+    key.csv, key.pdf                answer keys
+    moodle.xml                      a question category per exercise, a question per variant
+
+Work per student runs in a pool of processes (``jobs``); results are put together in
+roster order, so the files do not depend on the pool. Every file is written atomically and
+the manifest last: a folder with a manifest holds a whole exam.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import time
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+from .. import __name__ as _package
+from ..exercise.figure import figure_svg
+from ..exercise.loader import Bank, ExerciseFileError, load_file, open_bank
+from ..exercise.model import ConstraintError, Exercise
+from ..exercise.sheet import write_sheet
+from ..exercise.units import pretty_unit
+from ..render.sheets import (SheetExercise, SheetPart, StudentSheet, sheet_html,
+                             sheet_markdown, sheet_typst_body, typst_preamble)
+from .files import write_atomic
+from .spec import ExamSpec, ExamSpecError, Student, read_exam_spec, read_roster
+from .variants import exam_variant
+
+MANIFEST_FORMAT = "dynagrade-exam-manifest"
+MANIFEST_VERSION = 1
+
+Progress = Callable[[str, int, int], None]
+
+
+@dataclass
+class GenerationReport:
+    """What a run produced, with timings in seconds per stage."""
+
+    out_dir: Path
+    students: int
+    variants: int
+    redraws: int
+    timings: dict[str, float] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
+
+
+# -- the work of one student (runs in a worker process) ----------------------------------
+
+_STATE: dict = {}
+
+
+def _init_worker(spec: ExamSpec, paths: dict[str, str], parts: dict, out_dir: str,
+                 pdf: bool) -> None:
+    exercises = {}
+    for exercise_id, path in paths.items():
+        exercises[exercise_id] = load_file(path)
+    _STATE.update(spec=spec, exercises=exercises, parts=parts, out_dir=Path(out_dir), pdf=pdf)
+
+
+def _student_job(student: Student) -> dict:
+    """Variants, figures, sheets and the PDF of one student; returns the manifest entry,
+    the typst body (for the combined PDF) and the key rows."""
+    spec: ExamSpec = _STATE["spec"]
+    folder = _STATE["out_dir"] / "students" / student.student_id
+    entries, sheet_exercises = [], []
+    for number, item in enumerate(spec.exercises, 1):
+        exercise: Exercise = _STATE["exercises"][item.id]
+        variant, redraws = exam_variant(exercise, spec.id, student.student_id, item.set)
+        entries.append({
+            "exercise": exercise.id, "seed": variant.seed, "params": variant.params,
+            "answers": {k: list(v) if isinstance(v, tuple) else v
+                        for k, v in variant.answers.items()},
+            "redraws": [r.to_json() for r in redraws],
+        })
+        fill_in = f"{exercise.id}.py"
+        write_atomic(folder / fill_in,
+                     write_sheet(exercise, variant, student.student_id, fill_in))
+        svg = _figure(exercise, variant)
+        figure_file = None
+        if svg is not None:
+            figure_file = f"figures/{exercise.id}.svg"
+            write_atomic(folder / figure_file, svg)
+        parts = tuple(SheetPart(p["name"], p["label"], p["kind"], p["shown_unit"], p["points"],
+                                p["hint"]) for p in _STATE["parts"][exercise.id])
+        sheet_exercises.append(SheetExercise(number, exercise.id, exercise.title,
+                                             exercise.source, item.points, variant.statement,
+                                             parts, fill_in, svg, figure_file))
+    sheet = StudentSheet(spec.to_json(), student.student_id, student.name,
+                         tuple(sheet_exercises))
+    write_atomic(folder / "sheet.md", sheet_markdown(sheet))
+    write_atomic(folder / "sheet.html", sheet_html(sheet))
+    body = sheet_typst_body(sheet)
+    if _STATE["pdf"]:
+        write_atomic(folder / "sheet.pdf", compile_pdf(typst_preamble(spec.to_json()) + body))
+    return {"entry": {**student.to_json(), "variants": entries}, "body": body}
+
+
+_FIGURES: dict[tuple, str | None] = {}
+
+
+def _figure(exercise: Exercise, variant) -> str | None:
+    key = (exercise.id, tuple(sorted(variant.params.items())))
+    if key not in _FIGURES:
+        if len(_FIGURES) > 2000:
+            _FIGURES.clear()
+        _FIGURES[key] = figure_svg(exercise, variant)
+    return _FIGURES[key]
+
+
+def compile_pdf(source: str) -> bytes:
+    """A typst document compiled in-process, with typst's own fonts only (the same PDF on
+    every machine; no package downloads)."""
+    import typst
+
+    return typst.compile(source.encode("utf-8"), ignore_system_fonts=True)
+
+
+def _compile_to(path: str, source: str) -> str:
+    write_atomic(path, compile_pdf(source))
+    return path
+
+
+# -- the whole exam -----------------------------------------------------------------------
+
+
+def file_sha256(path: str | os.PathLike) -> str:
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
+def load_exam(exam_path, roster_path, bank: Bank | None = None):
+    """The exam spec, the roster and the exercises by id; errors as :class:`ExamSpecError`."""
+    bank = bank or open_bank()
+
+    def known(exercise_id):
+        try:
+            return bank.get(exercise_id)
+        except ExerciseFileError as error:
+            raise KeyError(str(error)) from None
+
+    spec = read_exam_spec(exam_path, known)
+    roster = read_roster(roster_path)
+    exercises = {item.id: bank.get(item.id) for item in spec.exercises}
+    for item in spec.exercises:
+        if item.set:
+            try:
+                exercises[item.id].draw(0, item.set)
+            except ConstraintError as error:
+                raise ExamSpecError(f"{spec.path}, line {item.line}, [[exercise]] {item.id}, "
+                                    f"field 'set': the values set break a constraint: "
+                                    f"{error}") from None
+    return spec, roster, exercises
+
+
+def exercise_parts(exercise: Exercise, points: float) -> list[dict]:
+    """The parts of ``exercise`` with points scaled so that they sum to ``points``."""
+    total = sum(p.points for p in exercise.parts)
+    scale = points / total if total else 0.0
+    described = []
+    for part in exercise.parts:
+        entry = {"name": part.name, "label": part.label or part.name, "kind": part.kind,
+                 "unit": part.unit, "points": round(part.points * scale, 6),
+                 "shown_unit": pretty_unit(part.unit) if part.unit else "", "hint": ""}
+        if part.kind == "numeric":
+            entry["rtol"] = part.rtol
+            entry["atol"] = part.atol
+        elif part.kind == "vector":
+            entry.update(rtol=part.rtol, atol=part.atol, size=part.size)
+            entry["hint"] = f"{part.size} components"
+        elif part.kind == "symbolic":
+            entry["hint"] = "in " + ", ".join(part.variables)
+        elif part.kind == "choice":
+            entry["options"] = list(part.options)
+            entry["multiple"] = part.multiple
+            entry["hint"] = ("one or more of " if part.multiple else "one of ") \
+                + ", ".join(part.options)
+        described.append(entry)
+    return described
+
+
+def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
+                  jobs: int | None = None, pdf: bool = True,
+                  progress: Progress | None = None) -> GenerationReport:
+    """Write the whole exam into ``out_dir`` (see the module docstring)."""
+    from ..render.keys import key_csv, key_typst
+    from ..render.moodle import moodle_xml
+
+    started = time.perf_counter()
+    out = Path(out_dir)
+    progress = progress or (lambda stage, done, total: None)
+    spec, roster, exercises = load_exam(exam_path, roster_path, bank)
+    parts = {item.id: exercise_parts(exercises[item.id], item.points)
+             for item in spec.exercises}
+    paths = {exercise_id: exercise.path for exercise_id, exercise in exercises.items()}
+    report = GenerationReport(out, len(roster), len(roster) * len(spec.exercises), 0)
+    report.timings["load"] = time.perf_counter() - started
+
+    jobs = max(1, jobs if jobs is not None else min(2, os.cpu_count() or 1))
+    init_args = (spec, paths, parts, str(out), pdf)
+    stage = time.perf_counter()
+    results = []
+    executor = _executor(jobs, init_args)
+    try:
+        if executor is None:
+            _init_worker(*init_args)
+            mapped = map(_student_job, roster)
+        else:
+            mapped = executor.map(_student_job, roster, chunksize=4)
+        for done, result in enumerate(mapped, 1):
+            results.append(result)
+            progress("students", done, len(roster))
+        report.timings["students"] = time.perf_counter() - stage
+
+        manifest = build_manifest(spec, exercises, parts, [r["entry"] for r in results])
+        report.redraws = sum(len(v["redraws"]) for s in manifest["students"]
+                             for v in s["variants"])
+        stage = time.perf_counter()
+        write_atomic(out / "key.csv", key_csv(manifest))
+        write_atomic(out / "moodle.xml", moodle_xml(manifest, exercises))
+        if pdf:
+            preamble = typst_preamble(spec.to_json())
+            combined = preamble + "\n#pagebreak(weak: true)\n".join(r["body"] for r in results)
+            key_source = typst_preamble(spec.to_json(), f"{spec.title}: answer key") \
+                + key_typst(manifest)
+            jobs_pdf = [(str(out / "sheets.pdf"), combined), (str(out / "key.pdf"), key_source)]
+            if executor is None:
+                for path, source in jobs_pdf:
+                    _compile_to(path, source)
+                    progress("combined PDFs", jobs_pdf.index((path, source)) + 1, 2)
+            else:
+                futures = [executor.submit(_compile_to, path, source) for path, source in jobs_pdf]
+                for done, future in enumerate(futures, 1):
+                    future.result()
+                    progress("combined PDFs", done, 2)
+        report.timings["keys, moodle, combined PDFs"] = time.perf_counter() - stage
+    finally:
+        if executor is not None:
+            executor.shutdown()
+    write_atomic(out / "manifest.json", manifest_text(manifest))
+    report.timings["total"] = time.perf_counter() - started
+    return report
+
+
+def _executor(jobs: int, init_args) -> ProcessPoolExecutor | None:
+    if jobs <= 1:
+        return None
+    import multiprocessing
+
+    methods = multiprocessing.get_all_start_methods()
+    context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
+    return ProcessPoolExecutor(max_workers=jobs, mp_context=context,
+                               initializer=_init_worker, initargs=init_args)
+
+
+def build_manifest(spec: ExamSpec, exercises: dict[str, Exercise], parts: dict,
+                   students: list[dict]) -> dict:
+    """The manifest: everything grading needs, independent of later code or numpy."""
+    import numpy
+
+    described = []
+    for item in spec.exercises:
+        exercise = exercises[item.id]
+        described.append({
+            "id": exercise.id, "title": exercise.title, "source": exercise.source,
+            "points": item.points, "set": dict(item.set),
+            "file": "/".join(Path(exercise.path).parts[-2:]),
+            "sha256": file_sha256(exercise.path),
+            "parts": [{k: v for k, v in p.items() if k not in ("shown_unit", "hint")}
+                      for p in parts[item.id]],
+        })
+    return {
+        "format": MANIFEST_FORMAT, "version": MANIFEST_VERSION,
+        "generator": {"dynagrade": _version(), "numpy": numpy.__version__},
+        "exam": {**spec.to_json(), "points": spec.total_points},
+        "exercises": described,
+        "students": students,
+    }
+
+
+def manifest_text(manifest: dict) -> str:
+    return json.dumps(manifest, indent=1, ensure_ascii=False, allow_nan=False) + "\n"
+
+
+def _version() -> str:
+    try:
+        from importlib.metadata import version
+
+        return version(_package)
+    except Exception:  # running from a source tree that is not installed
+        return "source"

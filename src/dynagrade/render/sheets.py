@@ -1,0 +1,133 @@
+"""A student's exam sheet as Markdown, HTML (MathML, inline SVG) and typst (for PDF).
+
+The three renderers read one description of the sheet (:class:`StudentSheet`), built by
+:mod:`dynagrade.exam.generate`. Numbers are formatted in Python before they reach a
+template; typst only lays out text.
+
+Usage::
+
+    markdown = sheet_markdown(sheet)
+    page = sheet_html(sheet)
+    source = typst_preamble(sheet.exam) + sheet_typst_body(sheet)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+import jinja2
+from markupsafe import Markup
+
+from ..exercise.figure import inline_svg
+from ..exercise.numbers import format_number
+from .markup import inline_html, inline_typst, markdown_to_html, markdown_to_typst, typst_text
+
+TEMPLATES = Path(__file__).resolve().parent.parent / "templates"
+
+
+@dataclass(frozen=True)
+class SheetPart:
+    """One answer part as the sheet lists it (points already scaled to the exam)."""
+
+    name: str
+    label: str
+    kind: str
+    unit: str
+    points: float
+    hint: str = ""
+
+
+@dataclass(frozen=True)
+class SheetExercise:
+    """One exercise on a student's sheet."""
+
+    number: int
+    id: str
+    title: str
+    source: str
+    points: float
+    statement: str  # Markdown with $...$ math, the variant's numbers filled in
+    parts: tuple[SheetPart, ...]
+    fill_in: str  # the name of the fill-in file
+    svg: str | None = None
+    figure_file: str | None = None  # relative to the sheet, for the Markdown link
+
+
+@dataclass(frozen=True)
+class StudentSheet:
+    """Everything on one student's sheet."""
+
+    exam: dict  # id, title, date, instructions
+    student_id: str
+    name: str
+    exercises: tuple[SheetExercise, ...]
+
+    @property
+    def total_points(self) -> float:
+        return sum(e.points for e in self.exercises)
+
+
+def points_text(points: float) -> str:
+    """``2 points``, ``1 point``, ``1.5 points``."""
+    shown = format_number(round(points, 4))
+    return f"{shown} point" + ("" if shown == "1" else "s")
+
+
+@lru_cache(maxsize=4)
+def _environment(kind: str) -> jinja2.Environment:
+    options = {"loader": jinja2.FileSystemLoader(str(TEMPLATES)),
+               "undefined": jinja2.StrictUndefined, "keep_trailing_newline": True,
+               "trim_blocks": True, "lstrip_blocks": True}
+    if kind == "html":
+        options["autoescape"] = True
+    else:
+        options["autoescape"] = False
+        options["comment_start_string"] = "{##"
+        options["comment_end_string"] = "##}"
+    environment = jinja2.Environment(**options)
+    environment.filters.update({
+        "points": points_text, "number": format_number,
+        "md_html": lambda text, offset=0: Markup(markdown_to_html(text, offset)),
+        "inline_html": lambda text: Markup(inline_html(text)),
+        "md_typst": markdown_to_typst, "inline_typst": inline_typst, "typst_text": typst_text,
+        "typst_string": typst_string, "svg_inline": lambda svg: Markup(inline_svg(svg)),
+    })
+    return environment
+
+
+def render_template(name: str, **context) -> str:
+    """Render ``templates/<name>``; ``.html`` templates escape HTML automatically."""
+    kind = "html" if name.endswith(".html") else "text"
+    return _environment(kind).get_template(name).render(**context)
+
+
+def typst_string(text: str) -> str:
+    """``text`` as the inside of a typst string literal."""
+    return (text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
+            .replace("\r", "\\r"))
+
+
+def sheet_markdown(sheet: StudentSheet) -> str:
+    return render_template("sheet.md", sheet=sheet)
+
+
+def sheet_html(sheet: StudentSheet) -> str:
+    return render_template("sheet.html", sheet=sheet)
+
+
+def typst_date(iso: str) -> str:
+    year, month, day = (int(x) for x in iso.split("-"))
+    return f"datetime(year: {year}, month: {month}, day: {day})"
+
+
+def typst_preamble(exam: dict, title: str | None = None) -> str:
+    """Page, font and document settings (title and a fixed date, so PDFs reproduce)."""
+    return render_template("preamble.typ", exam=exam, title=title or exam["title"],
+                           date=typst_date(exam["date"]))
+
+
+def sheet_typst_body(sheet: StudentSheet) -> str:
+    """One student's pages; bodies of several students can follow one preamble."""
+    return render_template("sheet.typ", sheet=sheet)
