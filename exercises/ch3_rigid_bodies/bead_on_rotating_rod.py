@@ -1,0 +1,72 @@
+"""A bead sliding on a rod that spins in a horizontal plane: centrifugal and Coriolis terms
+in the rotating frame (Section 3.4.3)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import frames
+
+
+def solve(p):
+    rdot = frames.bead_radial_speed(p.t, p.r0, 0.0, p.Omega)
+    return {
+        "r_t": frames.bead_radial_position(p.t, p.r0, 0.0, p.Omega),
+        "rdot_t": rdot,
+        "N": frames.bead_normal_force(p.m, p.Omega, rdot),
+    }
+
+
+EXERCISE = Exercise(
+    id="bead-on-rotating-rod",
+    title="Bead on a rotating rod",
+    source="Section 3.4.3",
+    topics=("rotating frames", "Coriolis force", "centrifugal force"),
+    params=(
+        Uniform("m", 0.05, 0.5, step=0.01, unit="kg", symbol="m"),
+        Uniform("Omega", 1.0, 6.0, step=0.25, unit="rad/s", symbol=r"\Omega"),
+        Uniform("r0", 0.05, 0.3, step=0.01, unit="m", symbol="r_0"),
+        Uniform("t", 0.2, 1.5, step=0.05, unit="s", symbol="t"),
+    ),
+    constraints=(
+        Constraint("the bead is still on a 1.5 m rod at time t",
+                   lambda p: frames.bead_radial_position(p.t, p.r0, 0.0, p.Omega) < 1.5),
+        Constraint("the bead has moved well beyond the start (Omega t > 1.1), where r0 cosh differs "
+                   "from a uniform acceleration", lambda p: p.Omega * p.t > 1.1),
+    ),
+    statement=r"""
+A rod turns in a horizontal plane about a vertical axis through its end O with the
+constant rate $\Omega$ = {{ Omega }}. A bead of mass $m$ = {{ m }} slides on it without
+friction. At $t = 0$ the bead is at $r_0$ = {{ r0 }} from O and at rest relative to the rod.
+Gravity is carried by the rod's vertical reaction and plays no further part.
+
+1. How far from O is the bead at $t$ = {{ t }}?
+2. How fast does it slide along the rod then?
+3. How large is the horizontal force of the rod on the bead then?
+""",
+    solve=solve,
+    parts=(
+        Numeric("r_t", "distance from O", unit="m", points=2,
+                misconceptions=(
+                    Misconception("uniform acceleration r0 Omega^2",
+                                  lambda p: p.r0 + 0.5 * p.r0 * p.Omega**2 * p.t**2,
+                                  "The centrifugal term Ω² r grows with r: r'' = Ω² r gives "
+                                  "r = r0 cosh(Ω t)."),
+                )),
+        Numeric("rdot_t", "sliding speed", unit="m/s", points=1,
+                misconceptions=(
+                    Misconception("speed of the rod point at r0", lambda p: p.r0 * p.Omega,
+                                  "That is the circumferential speed at r0, not the speed "
+                                  "along the rod."),
+                )),
+        Numeric("N", "force of the rod", unit="N", points=2,
+                misconceptions=(
+                    Misconception("centripetal force instead of Coriolis",
+                                  lambda p: p.m * p.Omega**2 * solve(p)["r_t"],
+                                  "Along the rod nothing pushes (frictionless); normal to it "
+                                  "the rod supplies the Coriolis term 2 m Ω ṙ."),
+                    Misconception("Coriolis term without the factor 2",
+                                  lambda p: p.m * p.Omega * solve(p)["rdot_t"],
+                                  "The Coriolis acceleration is 2 Ω × v_rel."),
+                )),
+    ),
+)

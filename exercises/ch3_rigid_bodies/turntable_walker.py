@@ -1,0 +1,70 @@
+"""A person walking outward on a turning turntable: absolute acceleration in the rotating
+frame (Section 3.4.2)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, Vector
+from dynagrade.mechanics import frames
+
+
+def _acceleration(p):
+    """Absolute acceleration, components along e_r, e_phi, e_3 of the rotating frame."""
+    return frames.absolute_acceleration(np.zeros(3), [0, 0, p.Omega], [0, 0, p.Omega_dot],
+                                        [p.r, 0, 0], [p.u, 0, 0], [p.a_rel, 0, 0])
+
+
+def solve(p):
+    a = _acceleration(p)
+    return {"a": a[:2], "F": p.m * float(np.linalg.norm(a))}
+
+
+def _without_coriolis(p):
+    """The wrong route: the Coriolis term left out."""
+    return _acceleration(p) - frames.coriolis_acceleration([0, 0, p.Omega], [p.u, 0, 0])
+
+
+EXERCISE = Exercise(
+    id="turntable-walker",
+    title="Walking outward on a turntable",
+    source="Section 3.4.2",
+    topics=("rotating frames", "Coriolis acceleration", "centripetal acceleration"),
+    params=(
+        Uniform("m", 40, 100, step=5, unit="kg", symbol="m"),
+        Uniform("r", 0.5, 4.0, step=0.1, unit="m", symbol="r"),
+        Uniform("u", 0.5, 2.0, step=0.1, unit="m/s", symbol="u"),
+        Uniform("a_rel", 0.0, 1.0, step=0.1, unit="m/s^2", symbol="a_{rel}"),
+        Uniform("Omega", 0.3, 2.0, step=0.05, unit="rad/s", symbol=r"\Omega"),
+        Uniform("Omega_dot", 0.0, 0.5, step=0.05, unit="rad/s^2", symbol=r"\dot\Omega"),
+    ),
+    constraints=(
+        Constraint("the Coriolis term changes the result noticeably",
+                   lambda p: 2 * p.Omega * p.u > 0.1 * np.linalg.norm(_acceleration(p))),
+        Constraint("the result is not dominated by a near-zero radial part",
+                   lambda p: abs(_acceleration(p)[0]) > 0.05),
+    ),
+    statement=r"""
+A person of mass $m$ = {{ m }} walks radially outward on a turntable. At the instant
+considered the person is at $r$ = {{ r }} from the axis, walks with $u$ = {{ u }} relative
+to the turntable and speeds up at $a_{rel}$ = {{ a_rel }} (relative, along the radius).
+The turntable turns counter-clockwise with $\Omega$ = {{ Omega }} and speeds up at
+$\dot\Omega$ = {{ Omega_dot }}. Use the turntable's radial and circumferential unit
+vectors $e_r$, $e_\varphi$ at the person's position.
+
+1. What is the person's absolute acceleration (components along $e_r$, $e_\varphi$)?
+2. Which horizontal force must the floor exert on the person?
+""",
+    solve=solve,
+    parts=(
+        Vector("a", "absolute acceleration", unit="m/s^2", size=2, points=3, atol=0.01,
+               misconceptions=(
+                   Misconception("Coriolis term forgotten", lambda p: _without_coriolis(p)[:2],
+                                 "Walking in a rotating frame adds 2 Ω × v_rel along e_φ."),
+               )),
+        Numeric("F", "horizontal floor force", unit="N", points=1,
+                misconceptions=(
+                    Misconception("Coriolis term forgotten",
+                                  lambda p: p.m * float(np.linalg.norm(_without_coriolis(p))),
+                                  "The floor must also supply m · 2 Ω u along e_φ."),
+                )),
+    ),
+)
