@@ -317,12 +317,11 @@ class _Parser:
         return Name(first) if first in self.vocabulary.variables else Const(first)
 
     def quantity_name(self, token: Token, function: str | None) -> Expr:
+        """In a number-with-unit answer a bare name is a unit (``min``, ``sec`` too)."""
         word = token.value
         if word in CONSTANTS:
             return Const(word)
-        if function:
-            raise self.error(f"write {word}(...) with brackets around its argument", token)
-        if word in REFUSED_FUNCTIONS:
+        if word in REFUSED_FUNCTIONS and self.peek().kind == LPAR:
             raise self.error(f"'{word}': {REFUSED_FUNCTIONS[word]}", token)
         if word.lower() in ("nan", "inf", "infinity"):
             raise self.error(f"'{word}' is not a valid answer: give a finite number", token)

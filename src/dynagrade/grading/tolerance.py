@@ -19,8 +19,10 @@ DEFAULT_ATOL = 1e-9
 
 
 def is_close(answer: float, expected: float, rtol: float, atol: float | None) -> bool:
+    """The tolerance rule; the boundary is inclusive up to float rounding (2.02 for 2 at 1 %)."""
     floor = DEFAULT_ATOL if atol is None else atol
-    return abs(answer - expected) <= max(floor, rtol * abs(expected))
+    slack = 8 * 2.0 ** -52 * max(abs(answer), abs(expected))
+    return abs(answer - expected) <= max(floor, rtol * abs(expected)) + slack
 
 
 def round_sig(value: float, digits: int) -> Decimal:
