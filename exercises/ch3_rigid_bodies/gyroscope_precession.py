@@ -1,0 +1,67 @@
+"""A gyroscope supported at one end of its horizontal axle: precession rate
+(Section 3.5.2)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import gyro, inertia
+
+
+def _spin(p):
+    """Spin rate in rad/s from revolutions per time."""
+    return 2 * np.pi * p.n
+
+
+def solve(p):
+    i3 = inertia.inertia_tensor_disk(p.m, p.R)[2, 2]
+    rate = gyro.fast_top_precession_rate(p.m, p.g, p.l, i3, _spin(p))
+    return {"H": i3 * _spin(p), "psi_dot": rate, "T": 2 * np.pi / rate}
+
+
+EXERCISE = Exercise(
+    id="gyroscope-precession",
+    title="Precession of a gyroscope",
+    source="Section 3.5.2",
+    topics=("gyroscope", "steady precession", "fast-top approximation"),
+    params=(
+        Uniform("m", 0.2, 2.0, step=0.05, unit="kg", symbol="m"),
+        Uniform("R", 3, 12, step=0.5, unit="cm", symbol="R"),
+        Uniform("l", 5, 20, step=0.5, unit="cm", symbol="l"),
+        Uniform("n", 1000, 6000, step=100, unit="1/min", symbol="n"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        Constraint("the gyroscope is fast: spin at least 30 times the precession rate",
+                   lambda p: _spin(p) > 30 * solve(p)["psi_dot"]),
+    ),
+    statement=r"""
+A gyroscope consists of a homogeneous disk (mass $m$ = {{ m }}, radius $R$ = {{ R }}) on a
+light axle. The axle is horizontal and rests with one end on a pivot; the disk's centre
+is at $l$ = {{ l }} from the pivot. The disk spins about the axle at $n$ = {{ n }}
+($g$ = {{ g }}). Use the fast-top approximation.
+
+1. What is the spin angular momentum of the disk?
+2. With which angular velocity does the axle precess about the vertical?
+3. How long does one full precession take?
+""",
+    solve=solve,
+    parts=(
+        Numeric("H", "spin angular momentum", unit="kg*m^2/s", points=1,
+                misconceptions=(
+                    Misconception("spin in revolutions, not radians",
+                                  lambda p: inertia.inertia_tensor_disk(p.m, p.R)[2, 2] * p.n,
+                                  "Convert the spin to rad/s: ω = 2π n."),
+                )),
+        Numeric("psi_dot", "precession rate", unit="rad/s", points=2,
+                misconceptions=(
+                    Misconception("transverse moment of inertia used",
+                                  lambda p: p.m * p.g * p.l
+                                  / (inertia.inertia_tensor_disk(p.m, p.R)[0, 0] * _spin(p)),
+                                  "The spin angular momentum uses the axial moment ½ m R²."),
+                    Misconception("moment of inertia m R^2",
+                                  lambda p: p.g * p.l / (p.R**2 * _spin(p)),
+                                  "A solid disk has I3 = ½ m R²."),
+                )),
+        Numeric("T", "precession period", unit="s", points=1),
+    ),
+)

@@ -1,0 +1,75 @@
+"""Steady precession of a heavy symmetric top: slow and fast precession, the fast-top
+approximation and the smallest spin (Section 3.5.2)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import gyro
+
+
+def _rates(p):
+    return gyro.steady_precession_rates(p.m, p.g, p.l, p.I1, p.I3, p.w3, p.theta)
+
+
+def _fast_top(p):
+    return gyro.fast_top_precession_rate(p.m, p.g, p.l, p.I3, p.w3)
+
+
+def solve(p):
+    return {
+        "w_min": gyro.minimum_spin_for_steady_precession(p.m, p.g, p.l, p.I1, p.I3, p.theta),
+        "psi_slow": _rates(p).slow,
+        "psi_fast": _rates(p).fast,
+        "psi_approx": _fast_top(p),
+    }
+
+
+EXERCISE = Exercise(
+    id="heavy-top-steady-precession",
+    title="Steady precession of a heavy top",
+    source="Section 3.5.2",
+    topics=("spinning tops", "Euler angles", "steady precession", "fast-top approximation"),
+    params=(
+        Uniform("m", 0.1, 1.0, step=0.05, unit="kg", symbol="m"),
+        Uniform("l", 2, 8, step=0.5, unit="cm", symbol="l"),
+        Uniform("I1", 2e-4, 2e-3, step=1e-4, unit="kg*m^2", symbol="I_1"),
+        Uniform("I3", 1e-4, 1e-3, step=5e-5, unit="kg*m^2", symbol="I_3"),
+        Uniform("w3", 20, 300, step=5, unit="rad/s", symbol=r"\omega_3"),
+        Uniform("theta", 10, 70, step=5, unit="deg", symbol=r"\theta"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        Constraint("the spin is between 1.2 and 3 times the smallest for steady precession",
+                   lambda p: 1.2 < p.w3 / gyro.minimum_spin_for_steady_precession(
+                       p.m, p.g, p.l, p.I1, p.I3, p.theta) < 3.0),
+        Constraint("the transverse moment about the tip exceeds the axial one", lambda p: p.I1 > p.I3),
+    ),
+    statement=r"""
+A symmetric top of mass $m$ = {{ m }} spins on a fixed tip O; its centre of mass lies on the
+symmetry axis at $l$ = {{ l }} from O. About O its transverse moment of inertia is
+$I_1$ = {{ I1 }} and its axial one $I_3$ = {{ I3 }}. The axis is tilted by
+$\theta$ = {{ theta }} from the vertical and the axial component of the angular velocity is
+$\omega_3$ = {{ w3 }} ($g$ = {{ g }}).
+
+1. What is the smallest $\omega_3$ for which steady precession at this tilt is possible?
+2. What is the rate of the slow steady precession?
+3. What is the rate of the fast steady precession?
+4. What precession rate does the fast-top approximation give?
+""",
+    solve=solve,
+    parts=(
+        Numeric("w_min", "smallest axial spin", unit="rad/s", points=1),
+        Numeric("psi_slow", "slow precession rate", unit="rad/s", points=2,
+                misconceptions=(
+                    Misconception("fast-top approximation", _fast_top,
+                                  "Near the smallest spin the approximation m g l/(I3 ω3) is "
+                                  "poor: solve the quadratic I1 cos θ ψ'² − I3 ω3 ψ' + m g l = 0."),
+                )),
+        Numeric("psi_fast", "fast precession rate", unit="rad/s", points=2,
+                misconceptions=(
+                    Misconception("fast-top approximation", _fast_top,
+                                  "The fast root is near I3 ω3/(I1 cos θ)."),
+                )),
+        Numeric("psi_approx", "fast-top approximation", unit="rad/s", points=1),
+    ),
+)

@@ -1,0 +1,78 @@
+"""A tossed book tumbling freely: principal moments, stable axes and wobble frequency
+(Section 3.4.4)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Options, Uniform
+from dynagrade.mechanics import euler_equations, inertia
+
+AXES = ("e1", "e2", "e3")
+
+
+def _moments(p):
+    return np.diag(inertia.inertia_tensor_box(p.m, p.a, p.b, p.c))
+
+
+def _largest(p):
+    return int(np.argmax(_moments(p)))
+
+
+def solve(p):
+    moments = _moments(p)
+    stable = tuple(AXES[k] for k in range(3)
+                   if euler_equations.is_stable_rotation_axis(moments, k))
+    return {
+        "I_max": moments[_largest(p)],
+        "stable": stable,
+        "nu": euler_equations.wobble_frequency(moments, _largest(p), p.w),
+    }
+
+
+EXERCISE = Exercise(
+    id="torque-free-tumbling",
+    title="A tumbling book: which rotations are stable?",
+    source="Section 3.4.4",
+    topics=("Euler equations", "torque-free rotation", "stability of rotation"),
+    params=(
+        Uniform("m", 0.2, 2.0, step=0.1, unit="kg", symbol="m"),
+        Uniform("a", 2, 30, step=1, unit="cm", symbol="a"),
+        Uniform("b", 2, 30, step=1, unit="cm", symbol="b"),
+        Uniform("c", 2, 30, step=1, unit="cm", symbol="c"),
+        Uniform("w", 5, 30, step=1, unit="rad/s", symbol=r"\omega_0"),
+    ),
+    constraints=(
+        Constraint("the three edges differ clearly, so the principal moments are distinct",
+                   lambda p: min(abs(p.a - p.b), abs(p.b - p.c), abs(p.a - p.c))
+                   > 0.15 * max(p.a, p.b, p.c)),
+        Constraint("the wobble frequency differs from the spin rate",
+                   lambda p: abs(solve(p)["nu"] - p.w) > 0.04 * p.w),
+    ),
+    statement=r"""
+A book is modelled as a homogeneous box of mass $m$ = {{ m }} with edges $a$ = {{ a }}
+along $e_1$, $b$ = {{ b }} along $e_2$ and $c$ = {{ c }} along $e_3$ (body axes through its
+centre). It is tossed into the air spinning about one of these axes; air drag is
+negligible.
+
+1. What is the largest principal moment of inertia about the centre?
+2. About which axes is a steady spin stable against small disturbances? (List all of
+   `e1`, `e2`, `e3` that are.)
+3. The book spins with $\omega_0$ = {{ w }} about the axis of the largest moment and is
+   disturbed slightly. With which angular frequency does its angular velocity wobble?
+""",
+    solve=solve,
+    parts=(
+        Numeric("I_max", "largest principal moment", unit="kg*m^2", points=1,
+                misconceptions=(
+                    Misconception("edges squared of the largest edge only",
+                                  lambda p: p.m * max(p.a, p.b, p.c) ** 2 / 12,
+                                  "About an axis the box has m (sum of the squares of the "
+                                  "two other edges)/12."),
+                )),
+        Options("stable", "stable axes", options=AXES, multiple=True, points=2),
+        Numeric("nu", "wobble frequency", unit="rad/s", points=2,
+                misconceptions=(
+                    Misconception("spin rate", lambda p: p.w,
+                                  "The wobble frequency is ω0 √((I_k − I_i)(I_k − I_j)/(I_i I_j))."),
+                )),
+    ),
+)
