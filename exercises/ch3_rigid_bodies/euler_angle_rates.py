@@ -1,0 +1,70 @@
+"""Angular velocity of a top from its Euler-angle rates (Section 3.5.1)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, Vector
+from dynagrade.mechanics import gyro
+
+
+def _omega(p):
+    return gyro.body_angular_velocity_from_euler_rates(p.theta, p.phi, p.psi_dot,
+                                                       p.theta_dot, p.phi_dot)
+
+
+def solve(p):
+    w = _omega(p)
+    return {"omega_body": w, "omega_abs": float(np.linalg.norm(w))}
+
+
+def _rates_added(p):
+    """The wrong route: precession and spin added as if about one axis."""
+    return np.array([p.theta_dot, 0.0, p.psi_dot + p.phi_dot])
+
+
+EXERCISE = Exercise(
+    id="euler-angle-rates",
+    title="Angular velocity of a top from its Euler angles",
+    source="Section 3.5.1",
+    topics=("Euler angles", "spinning tops", "angular velocity"),
+    params=(
+        Uniform("theta", 10, 80, step=5, unit="deg", symbol=r"\theta"),
+        Uniform("phi", 0, 345, step=15, unit="deg", symbol=r"\varphi"),
+        Uniform("psi_dot", 0.5, 5.0, step=0.25, unit="rad/s", symbol=r"\dot\psi"),
+        Uniform("theta_dot", -2.0, 2.0, step=0.25, unit="rad/s", symbol=r"\dot\theta"),
+        Uniform("phi_dot", 10, 100, step=5, unit="rad/s", symbol=r"\dot\varphi"),
+    ),
+    constraints=(
+        Constraint("the nutation rate is not zero", lambda p: abs(p.theta_dot) > 0.1),
+        Constraint("the tilt changes the magnitude noticeably",
+                   lambda p: abs(solve(p)["omega_abs"] - np.linalg.norm(_rates_added(p)))
+                   > 0.02 * solve(p)["omega_abs"]),
+    ),
+    statement=r"""
+The orientation of a top is described by the Euler angles of the lecture: precession
+$\psi$ about the vertical $e_3$, nutation $\theta$ about the line of nodes and spin
+$\varphi$ about the symmetry axis $e_3^B$ ($R = R_3(\psi) R_1(\theta) R_3(\varphi)$). At the
+instant considered $\theta$ = {{ theta }}, $\varphi$ = {{ phi }}, and the rates are
+$\dot\psi$ = {{ psi_dot }}, $\dot\theta$ = {{ theta_dot }}, $\dot\varphi$ = {{ phi_dot }}.
+
+1. What are the components of the top's angular velocity in its body frame
+   ($e_1^B, e_2^B, e_3^B$)?
+2. What is the magnitude of the angular velocity?
+""",
+    solve=solve,
+    parts=(
+        Vector("omega_body", "body-frame angular velocity", unit="rad/s", size=3, points=3,
+               atol=0.01,
+               misconceptions=(
+                   Misconception("rates added about one axis", _rates_added,
+                                 "The precession rate is about the vertical, not about the "
+                                 "symmetry axis: ψ' e3 has components ψ' (sin θ sin φ, "
+                                 "sin θ cos φ, cos θ) in the body frame."),
+               )),
+        Numeric("omega_abs", "magnitude of the angular velocity", unit="rad/s", points=1,
+                misconceptions=(
+                    Misconception("rates added about one axis",
+                                  lambda p: float(np.linalg.norm(_rates_added(p))),
+                                  "ψ' e3 and φ' e3^B are not parallel when θ ≠ 0."),
+                )),
+    ),
+)
