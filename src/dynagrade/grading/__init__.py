@@ -11,8 +11,9 @@ or a part uses a unit, sympy only for the optional exact check of formulas.
 
 from .dispatch import grade
 from .errors import AnswerError, SpecError
+from .reading import evaluate_expression, read_number
 from .spec import ChoiceSpec, KnownWrong, NumericSpec, SymbolicSpec, Variable, VectorSpec
 from .verdict import Verdict
 
-__all__ = ["grade", "AnswerError", "SpecError", "Verdict", "NumericSpec", "SymbolicSpec",
+__all__ = ["grade", "read_number", "evaluate_expression", "AnswerError", "SpecError", "Verdict", "NumericSpec", "SymbolicSpec",
            "VectorSpec", "ChoiceSpec", "Variable", "KnownWrong"]

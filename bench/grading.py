@@ -1,0 +1,199 @@
+"""Benchmark of the grader: throughput, symbolic verdict latency, a naive CAS baseline,
+and the cold-process time of grading one filled-in exercise file.
+
+    PYTHONPATH=src python bench/grading.py            # 2000 answers, CI-sized
+    PYTHONPATH=src python bench/grading.py --size 10000 --naive 60
+
+The naive baseline is `sympy.simplify(parse_expr(a) - parse_expr(b)) == 0` on the
+bench's own generated strings (never a student's), timed on a subsample.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import random
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "src"))
+
+from dynagrade.grading.compare import compare_lines, compare_record  # noqa: E402
+
+PROJ = {"v0": {"min": 1, "max": 50, "unit": "m/s"}, "alpha": {"min": 0.1, "max": 1.4, "unit": "rad"},
+        "g": {"min": 9, "max": 10, "unit": "m/s^2"}}
+OSC = {"k": {"min": 1, "max": 100, "unit": "N/m"}, "m": {"min": 0.1, "max": 10, "unit": "kg"}}
+KIN = {"m": {"min": 0.1, "max": 10, "unit": "kg"}, "v": {"min": 1, "max": 10, "unit": "m/s"},
+       "g": {"min": 9, "max": 10, "unit": "m/s^2"}, "h": {"min": 0.1, "max": 10, "unit": "m"}}
+
+# (variables, reference, answers in our syntax, the same answers in sympy's Python syntax)
+SYMBOLIC = [
+    (PROJ, "v0^2*sin(2*alpha)/g", [
+        ("2 v0^2 sin(alpha) cos(alpha)/g", "2*v0**2*sin(alpha)*cos(alpha)/g"),
+        ("v0² sin(2α)/g", "v0**2*sin(2*alpha)/g"),
+        ("v0^2*sin(alpha)/g", "v0**2*sin(alpha)/g"),
+        ("v0^2*cos(2*alpha)/g", "v0**2*cos(2*alpha)/g"),
+        ("v0^2*sin(2*alpha)/g*1.001", "v0**2*sin(2*alpha)/g*1.001"),
+        ("(v0^2/g)*sin(2*alpha)", "(v0**2/g)*sin(2*alpha)"),
+    ]),
+    (PROJ, "v0*sin(alpha)/g", [
+        ("v0 sin(alpha)/g", "v0*sin(alpha)/g"),
+        ("2 v0 sin(alpha)/g", "2*v0*sin(alpha)/g"),
+        ("v0*cos(alpha)/g", "v0*cos(alpha)/g"),
+        ("v0*sin(alpha)*g^-1", "v0*sin(alpha)*g**-1"),
+    ]),
+    (OSC, "sqrt(k/m)", [
+        ("sqrt(k)/sqrt(m)", "sqrt(k)/sqrt(m)"),
+        ("(k/m)^0.5", "(k/m)**0.5"),
+        ("2*pi*sqrt(k/m)", "2*pi*sqrt(k/m)"),
+        ("sqrt(m/k)", "sqrt(m/k)"),
+    ]),
+    (KIN, "m*v^2/2 + m*g*h", [
+        ("0.5 m v^2 + m g h", "0.5*m*v**2 + m*g*h"),
+        ("m (v^2/2 + g h)", "m*(v**2/2 + g*h)"),
+        ("m v^2 + m g h", "m*v**2 + m*g*h"),
+        ("mv^2/2 + mgh", "m*v**2/2 + m*g*h"),
+    ]),
+]
+
+NUMERIC_UNITS = [("m/s", [("{v}", 1), ("{k} km/h", 3.6), ("{c} cm/s", 100)]),
+                 ("N", [("{v}", 1), ("{k} mN", 1000), ("{v} kg*m/s^2", 1)]),
+                 ("rad", [("{v}", 1), ("{d} deg", 180 / 3.141592653589793)]),
+                 ("m", [("{v}", 1), ("{k} mm", 1000)])]
+
+
+def synthetic_class(size: int, seed: int = 7) -> list[dict]:
+    """A mixed class: about 40 % plain numbers, 30 % numbers with units, 30 % formulas."""
+    rng = random.Random(seed)
+    records = []
+    for i in range(size):
+        roll = rng.random()
+        if roll < 0.4:
+            e = rng.uniform(-100, 100)
+            answer = rng.choice([f"{e:.4g}", f"{e * 1.05:.4g}", f"{-e:.3g}", f"{e:.2e}", "abc", f"{e:.5g}".replace(".", ",")])
+            records.append({"id": f"n{i}", "kind": "numeric", "expected": e, "answer": answer})
+        elif roll < 0.7:
+            unit, forms = rng.choice(NUMERIC_UNITS)
+            e = rng.uniform(0.1, 50)
+            form, factor = rng.choice(forms)
+            wrong = rng.random() < 0.3
+            value = e * factor * (1.07 if wrong else 1.0)
+            answer = form.format(v=f"{value:.4g}", k=f"{value:.4g}", c=f"{value:.4g}", d=f"{value:.4g}")
+            records.append({"id": f"u{i}", "kind": "numeric", "expected": e, "unit": unit, "answer": answer})
+        else:
+            variables, reference, answers = rng.choice(SYMBOLIC)
+            answer = rng.choice(answers)[0]
+            records.append({"id": f"s{i}", "kind": "symbolic", "expected": reference,
+                            "variables": variables, "answer": answer})
+    return records
+
+
+def percentile(values: list[float], q: float) -> float:
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, int(round(q * (len(ordered) - 1))))]
+
+
+def run_fixtures() -> None:
+    sys.path.insert(0, str(ROOT / "tests"))
+    from test_grading_fixtures import FIXTURES, _record
+
+    records = [_record(json.loads(line)) for line in FIXTURES.read_text(encoding="utf-8").splitlines() if line.strip()]
+    start = time.perf_counter()
+    outputs = list(compare_lines(json.dumps(r) for r in records))
+    elapsed = time.perf_counter() - start
+    print(f"fixtures: {len(outputs)} cases in {elapsed * 1000:.0f} ms ({len(outputs) / elapsed:,.0f} answers/s)")
+
+
+def run_class(size: int) -> list[float]:
+    records = synthetic_class(size)
+    lines = [json.dumps(r) for r in records]
+    start = time.perf_counter()
+    outputs = list(compare_lines(lines))
+    elapsed = time.perf_counter() - start
+    assert len(outputs) == size
+    print(f"class: {size} answers in {elapsed:.2f} s = {size / elapsed:,.0f} answers/s")
+    symbolic_times = []
+    for record in records:
+        if record["kind"] == "symbolic":
+            t0 = time.perf_counter()
+            compare_record(record)
+            symbolic_times.append(time.perf_counter() - t0)
+    print(f"symbolic verdicts: n={len(symbolic_times)}, median {statistics.median(symbolic_times) * 1e3:.3f} ms, "
+          f"p99 {percentile(symbolic_times, 0.99) * 1e3:.3f} ms, max {max(symbolic_times) * 1e3:.1f} ms")
+    return symbolic_times
+
+
+def run_naive(count: int, ours: list[float]) -> None:
+    import sympy
+    from sympy.parsing.sympy_parser import parse_expr, standard_transformations
+
+    pairs = [(ref.replace("^", "**"), py) for _, ref, answers in SYMBOLIC for _, py in answers]
+    rng = random.Random(3)
+    sample = [rng.choice(pairs) for _ in range(count)]
+    times = []
+    for reference, answer in sample:
+        t0 = time.perf_counter()
+        # The bench's own strings, never a student's: the naive approach in question.
+        sympy.simplify(parse_expr(answer, transformations=standard_transformations)
+                       - parse_expr(reference, transformations=standard_transformations)) == 0
+        times.append(time.perf_counter() - t0)
+    naive = statistics.median(times)
+    mine = statistics.median(ours)
+    print(f"naive sympy.simplify baseline: n={count}, median {naive * 1e3:.1f} ms, "
+          f"p99 {percentile(times, 0.99) * 1e3:.1f} ms -> ours is {naive / mine:,.0f}x faster (median)")
+
+
+def run_cold() -> None:
+    env = dict(os.environ, PYTHONPATH=str(ROOT / "src"))
+    out = subprocess.run([sys.executable, "-X", "importtime", "-c", "import dynagrade.grading"],
+                         capture_output=True, text=True, env=env)
+    lines = [l for l in out.stderr.splitlines() if l.rstrip().endswith("dynagrade.grading")]
+    if lines:
+        cumulative = int(lines[-1].split("|")[1])
+        print(f"import dynagrade.grading: {cumulative / 1000:.0f} ms cumulative (python -X importtime)")
+    with tempfile.TemporaryDirectory() as folder:
+        sheet = Path(folder) / "x.py"
+        made = subprocess.run([sys.executable, "-m", "dynagrade.cli", "sheet", "projectile-range",
+                               "--student", "s1", "-o", str(sheet)], capture_output=True, text=True, env=env)
+        if made.returncode != 0 or not sheet.exists():
+            print("cold `grade FILE`: skipped (could not make a sheet: "
+                  f"{(made.stderr or made.stdout).strip().splitlines()[-1:] or 'no output'})")
+            return
+        lines = sheet.read_text(encoding="utf-8").splitlines()
+        for k, line in enumerate(lines):
+            if line.endswith(" = None") and line.split(" = ")[0].isidentifier():
+                comment = lines[k - 1] if k else ""
+                value = '"v0^2*sin(2*alpha)/g"' if "formula" in comment else '"12.5"'
+                lines[k] = line.replace("None", value)
+        sheet.write_text("\n".join(lines) + "\n", encoding="utf-8")
+        command = [sys.executable, "-c", "import sys; from dynagrade.cli import grade_main; grade_main()", str(sheet)]
+        times = []
+        for _ in range(3):
+            t0 = time.perf_counter()
+            done = subprocess.run(command, capture_output=True, text=True, env=env)
+            times.append(time.perf_counter() - t0)
+        status = "ok" if done.returncode == 0 else f"exit {done.returncode}"
+        print(f"cold `grade FILE` (answered sheet, {status}): best of 3 {min(times):.2f} s")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--size", type=int, default=2000, help="answers in the synthetic class")
+    parser.add_argument("--naive", type=int, default=30, help="symbolic cases for the naive baseline")
+    parser.add_argument("--no-cold", action="store_true", help="skip the cold-process timings")
+    args = parser.parse_args()
+    run_fixtures()
+    ours = run_class(args.size)
+    run_naive(args.naive, ours)
+    if not args.no_cold:
+        run_cold()
+
+
+if __name__ == "__main__":
+    main()
