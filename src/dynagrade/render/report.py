@@ -1,0 +1,109 @@
+"""Feedback for each student and the class report, from a graded class.
+
+Plots are drawn with matplotlib into inline SVG (fixed hash salt, no date), so the
+report is one self-contained HTML file that shows the same on every run.
+"""
+
+from __future__ import annotations
+
+import io
+
+from ..exercise.figure import SVG_SETTINGS, inline_svg
+from ..exercise.numbers import format_number
+from ..exercise.units import pretty_unit
+from .keys import answer_text
+from .sheets import render_template
+
+
+def _shown(value, unit) -> str:
+    text = answer_text(value)
+    shown_unit = pretty_unit(unit) if unit else ""
+    return f"{text} {shown_unit}".strip() if isinstance(value, (int, float, list)) else text
+
+
+def _feedback_context(exam, exercises, data) -> dict:
+    sections = []
+    for entry in data["student"]["variants"]:
+        exercise_id = entry["exercise"]
+        result = data["results"][exercise_id]
+        described = exercises[exercise_id]
+        parts = []
+        if result is not None:
+            for part in result["parts"]:
+                parts.append({**part, "expected_shown": _shown(part["expected"], part["unit"]),
+                              "answer_shown": part["answer"] if part["answer"] is not None
+                              else "—"})
+        sections.append({"id": exercise_id, "title": described["title"],
+                         "points": described["points"], "result": result, "parts": parts})
+    return {"exam": exam, "student": data["student"], "row": data["row"],
+            "sections": sections}
+
+
+def feedback_markdown(exam: dict, exercises: dict, data: dict) -> str:
+    """One student's feedback as Markdown."""
+    return render_template("feedback.md", **_feedback_context(exam, exercises, data))
+
+
+def feedback_html(exam: dict, exercises: dict, data: dict) -> str:
+    """One student's feedback as a self-contained HTML page."""
+    return render_template("feedback.html", **_feedback_context(exam, exercises, data))
+
+
+def _svg(figure) -> str:
+    import matplotlib
+
+    buffer = io.StringIO()
+    with matplotlib.rc_context(SVG_SETTINGS):
+        figure.savefig(buffer, format="svg", metadata={"Date": None, "Creator": "dynagrade"})
+    return inline_svg(buffer.getvalue())
+
+
+def histogram_svg(percents: list[float]) -> str:
+    """Histogram of the students' percentages in bins of 10 %."""
+    from matplotlib.figure import Figure
+
+    figure = Figure(figsize=(6.0, 2.8))
+    axes = figure.add_axes((0.1, 0.18, 0.86, 0.74))
+    axes.hist(percents, bins=[10 * i for i in range(11)], color="C0", edgecolor="white")
+    axes.set_xlabel("score (%)")
+    axes.set_ylabel("students")
+    axes.set_xlim(0, 100)
+    axes.yaxis.get_major_locator().set_params(integer=True)
+    return _svg(figure)
+
+
+def items_svg(stats) -> str:
+    """Difficulty (mean score fraction) and point-biserial discrimination per part."""
+    from matplotlib.figure import Figure
+
+    labels = [f"{s.exercise_id}\n{s.part}" for s in stats]
+    height = 1.2 + 0.32 * len(stats)
+    figure = Figure(figsize=(7.0, height))
+    axes = figure.add_axes((0.34, 0.6 / height, 0.62, 1 - 1.0 / height))
+    positions = list(range(len(stats)))[::-1]
+    axes.barh([p + 0.2 for p in positions], [s.difficulty or 0.0 for s in stats], height=0.4,
+              color="C0", label="difficulty (mean fraction)")
+    axes.barh([p - 0.2 for p in positions], [s.point_biserial or 0.0 for s in stats],
+              height=0.4, color="C1", label="discrimination (point-biserial)")
+    axes.set_yticks(positions, labels, fontsize=7)
+    axes.set_xlim(-0.5, 1.0)
+    axes.axvline(0, color="0.3", lw=0.6)
+    axes.legend(fontsize=7, loc="lower right")
+    return _svg(figure)
+
+
+def report_html(exam: dict, outcome) -> str:
+    """The class report: summary, histogram, item statistics and common wrong answers."""
+    present = [r for r in outcome.rows if r["status"] != "absent"]
+    percents = [r["percent"] for r in present]
+    summary = {
+        "students": len(outcome.rows), "present": len(present),
+        "absent": len(outcome.rows) - len(present),
+        "mean": format_number(sum(percents) / len(percents), 4) if percents else "—",
+        "median": format_number(sorted(percents)[len(percents) // 2], 4) if percents else "—",
+    }
+    return render_template(
+        "report.html", exam=exam, outcome=outcome, summary=summary,
+        histogram=histogram_svg(percents) if percents else "",
+        items=items_svg(outcome.stats) if present else "",
+        fmt=lambda v: "—" if v is None else format_number(v, 3))
