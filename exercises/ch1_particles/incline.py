@@ -2,8 +2,8 @@
 
 import numpy as np
 
-from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symbolic, Uniform,
-                                Variable)
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
+                                Symbolic, Uniform, Variable)
 from dynagrade.exercise.figure import angle_arc, arrow, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import incline
@@ -60,6 +60,13 @@ EXERCISE = Exercise(
         Uniform("alpha", 10, 50, step=1, unit="deg", symbol=r"\alpha"),
         Uniform("mu", 0.1, 0.6, step=0.05, symbol=r"\mu"),
         Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        # Taking N = m g instead of m g cos(alpha) changes the distance by the factor
+        # (sin a + mu cos a)/(sin a + mu); on shallow slopes that is within tolerance.
+        Constraint("the slope is steep enough that cos(alpha) matters by at least 5 %",
+                   lambda p: p.mu * (1 - np.cos(p.alpha))
+                   >= 0.05 * (np.sin(p.alpha) + p.mu * np.cos(p.alpha))),
     ),
     statement="""
 A block of mass $m$ = {{ m }} is pushed up a slope inclined at $\\alpha$ = {{ alpha }}

@@ -67,6 +67,11 @@ EXERCISE = Exercise(
                    lambda p: p.v0 > 1.05 * looping.minimum_entry_speed(p.R, p.g)),
         Constraint("the angle is clear of 90 degrees, where cos(phi) vanishes",
                    lambda p: abs(p.phi - np.pi / 2) > np.radians(10)),
+        # Forgetting the speed lost on the way up changes N(phi) by 2 m g (1 - cos phi);
+        # it must stand out from the 1 % tolerance.
+        Constraint("the height gained by phi changes the normal force by at least 5 %",
+                   lambda p: 2 * p.m * p.g * (1 - np.cos(p.phi))
+                   >= 0.05 * looping.normal_force(p.phi, p.m, p.v0, p.R, p.g)),
     ),
     statement="""
 A car of mass $m$ = {{ m }} coasts with its engine off into a circular looping of radius

@@ -55,6 +55,9 @@ EXERCISE = Exercise(
         # then the only misconception to catch, and near 45 it is caught weakly.
         Constraint("the angle is at least 5 degrees away from 45 degrees",
                    lambda p: abs(p.alpha - np.pi / 4) >= np.radians(5) - 1e-9),
+        # At 60 degrees sin(a) = sin(2a): the double-angle slip would give the right range.
+        Constraint("the angle is at least 5 degrees away from 60 degrees",
+                   lambda p: abs(p.alpha - np.pi / 3) >= np.radians(5) - 1e-9),
     ),
     statement="""
 A ball is thrown from level ground with speed $v_0$ = {{ v0 }} at an angle

@@ -89,7 +89,7 @@ def verify_progress(exercises: Sequence, check: Callable) -> list:
             out.print(f"[red]FAIL[/]  {report.exercise_id}: {len(report.failures)} problems "
                       f"in {report.variants} variants")
             for failure in report.failures[:10]:
-                out.print(f"        {failure}")
+                out.print(f"        {failure}", soft_wrap=True)
             if len(report.failures) > 10:
                 out.print(f"        … and {len(report.failures) - 10} more")
     failed = sum(not r.ok for r in reports)

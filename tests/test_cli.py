@@ -1,0 +1,153 @@
+"""The command line, end to end, through click's runner (no subprocess)."""
+
+import json
+
+import pytest
+from click.testing import CliRunner
+
+from dynagrade.cli import grade_main, main
+
+
+@pytest.fixture
+def run():
+    runner = CliRunner()
+
+    def invoke(command, *args, input=None):
+        result = runner.invoke(command, [str(a) for a in args], input=input)
+        return result
+
+    return invoke
+
+
+def test_list_json_has_the_fields_tools_rely_on(run):
+    result = run(main, "list", "--json")
+    assert result.exit_code == 0, result.output
+    listed = {e["id"]: e for e in json.loads(result.output)}
+    projectile = listed["projectile-range"]
+    assert projectile["source"] == "Example 1.9" and projectile["chapter"] == 1
+    assert {"name": "x_max", "kind": "numeric", "unit": "m"}.items() <= \
+        projectile["parts"][0].items()
+
+
+def test_solve_reproduces_the_notes_for_given_parameters(run):
+    # Example 1.13 at v0 = sqrt(5 g R): the normal force at the top vanishes, so the
+    # largest one (at the bottom) is m v0^2/R + m g = 6 m g, eq. (1.116).
+    m, R, g = 1000.0, 5.0, 9.81
+    v0 = (5 * g * R) ** 0.5
+    result = run(main, "solve", "car-in-a-looping", "--set", f"m={m}", "--set", f"R={R}",
+                 "--set", f"v0={v0}", "--set", "phi=60", "--json")
+    assert result.exit_code == 0, result.output
+    answers = json.loads(result.output[result.output.index("{"):])["answers"]
+    assert answers["N_max"] == pytest.approx(6 * m * g)
+    assert answers["v_min_entry"] == pytest.approx(v0)
+
+
+def test_set_accepts_a_value_with_its_own_unit(run):
+    result = run(main, "solve", "projectile-range", "--set", "v0=36 km/h",
+                 "--set", "alpha=0.5235987755982988 rad", "--json")
+    answers = json.loads(result.output[result.output.index("{"):])["answers"]
+    # v0 = 10 m/s at 30 degrees: range 100 sin(60°)/9.81.
+    assert answers["x_max"] == pytest.approx(100 * 3**0.5 / 2 / 9.81)
+
+
+@pytest.mark.parametrize("args, message", [
+    (("show", "no-such-exercise"), "no exercise"),
+    (("solve", "projectile-range", "--set", "speed=3"), "no parameter"),
+    (("solve", "projectile-range", "--set", "v0=fast"), "v0=fast"),
+    (("solve", "projectile-range", "--set", "v0=3 kg"), "cannot convert"),
+])
+def test_bad_requests_get_a_clear_error(run, args, message):
+    result = run(main, *args)
+    assert result.exit_code != 0 and message in result.output
+
+
+def _filled_sheet(run, tmp_path, answers_for):
+    path = tmp_path / "exercise.py"
+    assert run(main, "sheet", "projectile-range", "--student", "s1", "-o", path).exit_code == 0
+    shown = json.loads(run(main, "show", "projectile-range", "--student", "s1",
+                           "--answers", "--json").output)
+    text = path.read_text()
+    for name, value in answers_for(shown["answers"]).items():
+        text = text.replace(f"{name} = None", f"{name} = {value!r}")
+    path.write_text(text)
+    return path
+
+
+def test_a_sheet_filled_with_the_reference_answers_gets_full_marks(run, tmp_path):
+    path = _filled_sheet(run, tmp_path, lambda a: a)
+    result = run(grade_main, path, "--json")
+    assert result.exit_code == 0, result.output
+    graded = json.loads(result.output)
+    assert graded["exercise"] == "projectile-range"
+    assert graded["score"] == graded["max_score"] == 5
+    assert all(p["correct"] for p in graded["parts"])
+
+
+def test_a_sheet_filled_with_wrong_values_gets_zero_with_feedback_per_part(run, tmp_path):
+    def wrong(answers):
+        return {"x_max": answers["x_max"] * 1.3, "h_max": answers["h_max"] * 0.7,
+                "t_flight": answers["t_flight"] + 5, "x_max_formula": "v0^2*cos(alpha)/g"}
+
+    graded = json.loads(run(grade_main, _filled_sheet(run, tmp_path, wrong), "--json").output)
+    assert graded["score"] == 0
+    assert all(not p["correct"] and p["feedback"] for p in graded["parts"])
+
+
+def test_the_table_shows_each_part_and_the_total(run, tmp_path):
+    result = run(grade_main, _filled_sheet(run, tmp_path, lambda a: {"x_max": a["x_max"]}))
+    assert result.exit_code == 0, result.output
+    assert "x_max" in result.output and "not answered" in result.output
+    assert "total 2 / 5" in result.output
+
+
+def test_grading_a_file_that_is_not_a_sheet_is_a_clear_error(run, tmp_path):
+    path = tmp_path / "notes.py"
+    path.write_text("print('hello')\n")
+    result = run(grade_main, path)
+    assert result.exit_code != 0 and "not a dynagrade sheet" in result.output
+
+
+def test_compare_answers_each_line_in_order_and_survives_bad_lines(run):
+    lines = "\n".join([
+        json.dumps({"id": "a", "kind": "numeric", "expected": 12.5, "unit": "m/s",
+                    "answer": "45 km/h"}),
+        "this is not json",
+        json.dumps({"id": "c", "kind": "symbolic", "expected": "m*g*sin(alpha)",
+                    "answer": "m g sin(α)", "variables": {
+                        "m": {"min": 0.1, "max": 10}, "g": {"min": 1, "max": 20},
+                        "alpha": {"min": 0, "max": 1.5}}}),
+        json.dumps({"id": "d", "kind": "numeric", "expected": 1.0, "answer": "2"}),
+    ]) + "\n"
+    result = run(main, "compare", "-", input=lines)
+    assert result.exit_code == 0, result.output
+    out = [json.loads(line) for line in result.output.splitlines()]
+    assert [o["id"] for o in out] == ["a", None, "c", "d"]
+    assert [o["correct"] for o in out] == [True, False, True, False]
+    assert out[1]["error"] and out[0]["error"] is None
+    assert all(set(o) == {"id", "correct", "score", "feedback", "error"} for o in out)
+
+
+def test_verify_passes_for_the_pipeline_exercises(run):
+    result = run(main, "verify", "projectile-range", "sliding-up-a-slope",
+                 "car-in-a-looping", "--variants", 20)
+    assert result.exit_code == 0, result.output
+    assert "3 of 3 exercises passed" in result.output
+
+
+def test_verify_fails_for_an_exercise_that_cannot_discriminate(run, tmp_path):
+    (tmp_path / "weak.py").write_text('''
+from dynagrade.exercise import Exercise, Misconception, Numeric, Uniform
+import numpy as np
+
+EXERCISE = Exercise(
+    id="weak", title="Weak", source="Example 1.9",
+    params=(Uniform("alpha", 44, 46, step=1, unit="deg"),),
+    statement="angle {{ alpha }}",
+    solve=lambda p: {"s": np.sin(p.alpha)},
+    parts=(Numeric("s", misconceptions=(
+        Misconception("cos for sin", lambda p: np.cos(p.alpha), "sin, not cos"),)),),
+)
+''')
+    result = run(main, "--exercises", tmp_path, "verify", "weak", "--variants", 5)
+    assert result.exit_code == 1
+    assert "cos for sin" in result.output

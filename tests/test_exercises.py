@@ -1,0 +1,40 @@
+"""Every exercise in the bank: well-formed, and able to tell right from wrong.
+
+`dynagrade verify --variants 200` is the full check; here each exercise runs a few
+variants so that the suite stays fast, with seeds that differ between exercises.
+"""
+
+import re
+
+import pytest
+
+from dynagrade.exercise import open_bank
+from dynagrade.exercise.verify import verify_exercise
+
+BANK = open_bank()
+EXERCISES = BANK.all()
+VARIANTS = 8
+
+
+@pytest.mark.parametrize("exercise", EXERCISES, ids=lambda e: e.id)
+def test_every_variant_can_tell_right_from_wrong(exercise):
+    offset = sum(map(ord, exercise.id)) * 1000
+    report = verify_exercise(exercise, range(offset, offset + VARIANTS))
+    assert report.ok, "\n".join(report.failures[:10])
+
+
+@pytest.mark.parametrize("exercise", EXERCISES, ids=lambda e: e.id)
+def test_every_exercise_names_its_source_in_the_notes(exercise):
+    assert re.fullmatch(r"(Example \d+\.\d+|Section \d+(\.\d+)*)( .*)?", exercise.source)
+    assert exercise.title and exercise.topics
+    assert 1 <= exercise.chapter <= 5
+
+
+@pytest.mark.parametrize("exercise", EXERCISES, ids=lambda e: e.id)
+def test_the_folder_matches_the_chapter(exercise):
+    assert f"/ch{exercise.chapter}_" in exercise.path.replace("\\", "/")
+
+
+def test_exercise_ids_are_unique():
+    ids = [e.id for e in EXERCISES]
+    assert len(ids) == len(set(ids))
