@@ -137,14 +137,15 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
     except AnswerError as error:
         return unreadable(str(error))
     reveal = f" The expected answer is {to_text(ref.tree)}." if spec.reveal else ""
+    hint = "".join(" " + h for h in reading_hints(tree))
     if ref.dims is not None:
         try:
             dim = dimension(tree, ref.dims)
         except DimensionIssue as issue:
-            return Verdict(False, 0.0, f"Not correct: {issue.message}.{reveal}", misconception="dimensions")
+            return Verdict(False, 0.0, f"Not correct: {issue.message}.{hint}{reveal}", misconception="dimensions")
         if not units.same(dim, ref.dim, ignore_angle=True):
             return Verdict(False, 0.0, f"Not correct: your expression has units of {show(dim)}, "
-                                        f"expected {show(ref.dim)}.{reveal}", misconception="dimensions")
+                                        f"expected {show(ref.dim)}.{hint}{reveal}", misconception="dimensions")
     values = _values(tree, ref.env, ref.values.shape)
     if np.any(np.isinf(values)) and not names_in(tree):
         return Verdict(False, 0.0, "Not correct: your expression overflows (it is too large to compute)." + reveal)

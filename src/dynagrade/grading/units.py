@@ -49,22 +49,45 @@ _COMMON = ("m", "s", "kg", "g", "N", "J", "W", "Pa", "Hz", "rad", "deg", "rev", 
            "km", "cm", "mm", "h", "min", "ms", "kN", "mN", "kJ", "kW", "MPa", "kPa", "bar",
            "L", "t", "A", "V")
 
+def _dim(kg=0.0, m=0.0, s=0.0, rad=0.0) -> tuple:
+    return (float(kg), float(m), float(s), 0.0, 0.0, 0.0, 0.0, float(rad))
+
+
+#: The most common units, so that typical answers never wait for pint to load
+#: (tests hold every entry against pint).
+BUILTIN: dict[str, tuple[float, tuple]] = {
+    "m": (1.0, _dim(m=1)), "km": (1e3, _dim(m=1)), "cm": (1e-2, _dim(m=1)), "mm": (1e-3, _dim(m=1)),
+    "s": (1.0, _dim(s=1)), "ms": (1e-3, _dim(s=1)), "min": (60.0, _dim(s=1)), "h": (3600.0, _dim(s=1)),
+    "kg": (1.0, _dim(kg=1)), "g": (1e-3, _dim(kg=1)), "t": (1e3, _dim(kg=1)),
+    "N": (1.0, _dim(kg=1, m=1, s=-2)), "kN": (1e3, _dim(kg=1, m=1, s=-2)), "mN": (1e-3, _dim(kg=1, m=1, s=-2)),
+    "J": (1.0, _dim(kg=1, m=2, s=-2)), "kJ": (1e3, _dim(kg=1, m=2, s=-2)),
+    "W": (1.0, _dim(kg=1, m=2, s=-3)), "kW": (1e3, _dim(kg=1, m=2, s=-3)),
+    "Pa": (1.0, _dim(kg=1, m=-1, s=-2)), "kPa": (1e3, _dim(kg=1, m=-1, s=-2)),
+    "MPa": (1e6, _dim(kg=1, m=-1, s=-2)), "Hz": (1.0, _dim(s=-1)),
+    "rad": (1.0, _dim(rad=1)), "deg": (math.pi / 180, _dim(rad=1)), "degree": (math.pi / 180, _dim(rad=1)),
+    "rev": (2 * math.pi, _dim(rad=1)), "revolution": (2 * math.pi, _dim(rad=1)),
+    "rpm": (2 * math.pi / 60, _dim(s=-1, rad=1)),
+}
+
 _registry = None
 
 
 def registry():
-    """The one pint UnitRegistry of the process, created on first use."""
+    """The pint UnitRegistry of the process (pint's application registry, so other
+    layers that use it share one), created on first use."""
     global _registry
     if _registry is None:
-        import pint  # deferred: only answers with units pay for pint
+        import pint  # deferred: only answers with uncommon units pay for pint
 
-        _registry = pint.UnitRegistry()
+        _registry = pint.get_application_registry()
     return _registry
 
 
 @lru_cache(maxsize=2048)
 def lookup(name: str) -> tuple[float, tuple]:
     """(factor to SI, dimension) of one unit name; AnswerError when unknown."""
+    if name in BUILTIN:
+        return BUILTIN[name]
     if name in _REFUSED:
         raise AnswerError(f"the unit '{name}' is not supported here")
     if name in _ALIASES:
@@ -81,7 +104,7 @@ def lookup(name: str) -> tuple[float, tuple]:
 def _product(parts) -> tuple[float, tuple]:
     factor, dim = 1.0, DIMENSIONLESS
     for unit, power in parts:
-        f, d = _pint_unit(unit)
+        f, d = BUILTIN.get(unit) or _pint_unit(unit)
         factor *= f ** power
         dim = add(dim, scale(d, power))
     return factor, dim
@@ -117,11 +140,11 @@ def _split(name: str) -> list[str] | None:
     for k in range(len(name) - 1, 0, -1):
         head, tail = name[:k], name[k:]
         try:
-            _pint_unit(head)
+            BUILTIN.get(head) or _pint_unit(head)
         except AnswerError:
             continue
         try:
-            _pint_unit(tail)
+            BUILTIN.get(tail) or _pint_unit(tail)
             return [head, tail]
         except AnswerError:
             rest = _split(tail)
