@@ -22,6 +22,8 @@ MAX_TOKENS = 1000
 _NUMBER = re.compile(r"(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
 _NUMBER_COMMA = re.compile(r"(?:[0-9]+(?:[.,][0-9]+|\.)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_DIGITS = frozenset("0123456789")
+_LETTERS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ")
 _NAME_TAIL = re.compile(r"[0-9_]*")
 _SUPERSCRIPT_VALUE = re.compile(r"[+-]?[0-9]+")
 
@@ -75,13 +77,13 @@ def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False) 
             continue
         if len(tokens) >= MAX_TOKENS:
             raise AnswerError(f"the answer is too long (more than {MAX_TOKENS} symbols)", i, text)
-        if ch.isascii() and (ch.isdigit() or (ch == "." and i + 1 < n and text[i + 1].isdigit())):
+        if ch in _DIGITS or (ch == "." and i + 1 < n and text[i + 1] in _DIGITS):
             m = number_re.match(text, i)
             literal = m.group()
             end = m.end()
-            if end < n and text[end] == "." and end + 1 < n and text[end + 1].isdigit():
+            if end < n and text[end] == "." and end + 1 < n and text[end + 1] in _DIGITS:
                 raise AnswerError("a number cannot have two decimal points", end, text)
-            if end < n and text[end] == "," and decimal_comma and end + 1 < n and text[end + 1].isdigit():
+            if end < n and text[end] == "," and decimal_comma and end + 1 < n and text[end + 1] in _DIGITS:
                 raise AnswerError("a number cannot have two decimal commas", end, text)
             value = float(literal.replace(",", "."))
             if value == float("inf"):
@@ -89,15 +91,15 @@ def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False) 
             tokens.append(Token(NUM, literal, i))
             i = end
             continue
-        if ch.isascii() and (ch.isalpha() or ch == "_"):
+        if ch in _LETTERS or ch == "_":
             m = _NAME.match(text, i)
             end = m.end()
-            if end < n and text[end] == "." and end + 1 < n and (text[end + 1].isalpha() or text[end + 1] == "_"):
+            if end < n and text[end] == "." and end + 1 < n and (text[end + 1] in _LETTERS or text[end + 1] == "_"):
                 raise AnswerError("attribute access like a.b is not allowed", end, text)
             tokens.append(Token(NAME, m.group(), i))
             i = end
             continue
-        if ch in ("µ", "μ") and quantity and i + 1 < n and text[i + 1].isascii() and text[i + 1].isalpha():
+        if ch in ("µ", "μ") and quantity and i + 1 < n and text[i + 1] in _LETTERS:
             m = _NAME.match(text, i + 1)
             tokens.append(Token(NAME, "u" + m.group(), i))
             i = m.end()
