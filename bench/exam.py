@@ -1,0 +1,100 @@
+"""Benchmark: generate an exam for a synthetic class, then grade sample submissions.
+
+Usage::
+
+    PYTHONPATH=src python bench/exam.py                              # 20 students x 3
+    PYTHONPATH=src python bench/exam.py --students 500 --exercises 6 --jobs 2
+
+Prints the time of each stage. The exercises are the first K of the chapter-1 bank (in
+bank order, then chapter 2 if chapter 1 has fewer), each worth 10 points; the submissions
+are those of ``examples/make_submissions.py`` (correct, half-correct, empty, corrupt,
+duplicate, CSV, strangers) for every student, cycling through the kinds.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import os
+import shutil
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _make_submissions_module():
+    spec = importlib.util.spec_from_file_location("make_submissions",
+                                                  ROOT / "examples" / "make_submissions.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def main(argv=None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--students", type=int, default=20)
+    parser.add_argument("--exercises", type=int, default=3)
+    parser.add_argument("--jobs", type=int, default=None)
+    parser.add_argument("--no-pdf", action="store_true")
+    parser.add_argument("--keep", help="Write into this folder and keep it.")
+    args = parser.parse_args(argv)
+
+    from dynagrade.exam.classgrade import grade_class
+    from dynagrade.exam.generate import generate_exam
+    from dynagrade.exercise.loader import open_bank
+
+    bank = open_bank()
+    exercises = [e for e in bank.all() if e.chapter in (1, 2)][:args.exercises]
+    if len(exercises) < args.exercises:
+        print(f"only {len(exercises)} exercises in chapters 1-2 of the bank", file=sys.stderr)
+    folder = Path(args.keep) if args.keep else Path(tempfile.mkdtemp(prefix="dynagrade-bench-"))
+    if folder.exists() and args.keep:
+        shutil.rmtree(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    try:
+        exam = folder / "exam.toml"
+        exam.write_text('id = "bench"\ntitle = "Benchmark exam"\ndate = 2025-01-01\n'
+                        + "".join(f'\n[[exercise]]\nid = "{e.id}"\npoints = 10\n'
+                                  for e in exercises), encoding="utf-8")
+        roster = folder / "roster.csv"
+        roster.write_text("student_id,name\n" + "".join(
+            f"b{i:05d},Student {i}\n" for i in range(args.students)), encoding="utf-8")
+        out = folder / "out"
+        print(f"{args.students} students x {len(exercises)} exercises "
+              f"({', '.join(e.id for e in exercises)}), {os.cpu_count()} cores, "
+              f"jobs={args.jobs or 'default'}")
+
+        started = time.perf_counter()
+        report = generate_exam(exam, roster, out, bank=bank, jobs=args.jobs,
+                               pdf=not args.no_pdf)
+        generation = time.perf_counter() - started
+        for stage, seconds in report.timings.items():
+            print(f"  generation / {stage:<28} {seconds:7.2f} s")
+        print(f"generation{' (no PDFs)' if args.no_pdf else ' including all PDFs'}: "
+              f"{generation:.2f} s ({report.redraws} redraws)")
+
+        make = _make_submissions_module()
+        make.PLAN = tuple((kind, args.students) for kind, _ in make.PLAN)
+        students = [f"b{i:05d}" for i in range(args.students)]
+        kinds = ["correct", "half", "empty", "corrupt", "duplicate", "csv"]
+        make.plan = lambda ids: {s: kinds[i % len(kinds)] for i, s in enumerate(students)}
+        make.main(str(out))
+
+        started = time.perf_counter()
+        outcome = grade_class(out / "manifest.json", [out / "submissions"], out / "grading",
+                              bank=bank, jobs=args.jobs)
+        grading = time.perf_counter() - started
+        for stage, seconds in outcome.timings.items():
+            print(f"  grading / {stage:<31} {seconds:7.2f} s")
+        print(f"class grading: {grading:.2f} s ({len(outcome.rows)} students, "
+              f"{len(outcome.problems)} problems reported)")
+    finally:
+        if not args.keep:
+            shutil.rmtree(folder, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()
