@@ -132,7 +132,7 @@ def grade_student(student: dict, manifest_parts: dict[str, list[dict]],
             fraction = verdict.score / verdict.max_score if verdict.max_score else 0.0
             graded_parts.append({
                 "name": part["name"], "label": part["label"], "status": verdict.status,
-                "fraction": fraction, "score": round(fraction * part["points"], 6),
+                "fraction": fraction, "score": fraction * part["points"],
                 "points": part["points"], "answer": verdict.answer,
                 "feedback": verdict.feedback, "misconception": verdict.misconception,
                 "expected": entry["answers"][part["name"]], "unit": part.get("unit"),

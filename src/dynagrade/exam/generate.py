@@ -200,7 +200,7 @@ def exercise_parts(exercise: Exercise, points: float) -> list[dict]:
     described = []
     for part in exercise.parts:
         entry = {"name": part.name, "label": part.label or part.name, "kind": part.kind,
-                 "unit": part.unit, "points": round(part.points * scale, 6),
+                 "unit": part.unit, "points": part.points * scale,
                  "shown_unit": pretty_unit(part.unit) if part.unit else "", "hint": ""}
         if part.kind == "numeric":
             entry["rtol"] = part.rtol

@@ -1,0 +1,199 @@
+"""Generating an exam: reproducible files, PDFs holding each student's numbers, a valid
+Moodle export with the right tolerances, and variants that cannot discriminate replaced."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from dynagrade.exam.generate import generate_exam
+from dynagrade.exercise.loader import open_bank
+from dynagrade.exercise.numbers import format_number
+from dynagrade.exercise.seeds import exam_seed
+
+ROOT = Path(__file__).resolve().parent.parent
+EXAM = ROOT / "examples" / "exam.toml"
+ROSTER = "student_id,name\nq-001,Emmy Noether\nq-002,Leonhard Euler\nq-003,Sophie Germain\n"
+
+
+@pytest.fixture(scope="module")
+def bank():
+    return open_bank()
+
+
+@pytest.fixture(scope="module")
+def exam(tmp_path_factory, bank):
+    folder = tmp_path_factory.mktemp("exam")
+    roster = folder / "roster.csv"
+    roster.write_text(ROSTER, encoding="utf-8")
+    out = folder / "out"
+    generate_exam(EXAM, roster, out, bank=bank, jobs=1)
+    manifest = json.loads((out / "manifest.json").read_text(encoding="utf-8"))
+    return {"folder": folder, "roster": roster, "out": out, "manifest": manifest}
+
+
+def _files(folder: Path) -> dict[str, bytes]:
+    return {str(p.relative_to(folder)): p.read_bytes()
+            for p in sorted(folder.rglob("*")) if p.is_file()}
+
+
+def test_a_second_run_writes_byte_identical_files(exam):
+    """Run again in a fresh process with two workers: every file, PDFs included, matches."""
+    second = exam["folder"] / "again"
+    environment = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
+    subprocess.run([sys.executable, "-m", "dynagrade.cli", "exam", str(EXAM), "--roster",
+                    str(exam["roster"]), "-o", str(second), "--jobs", "2"],
+                   check=True, capture_output=True, env=environment, timeout=120)
+    first, again = _files(exam["out"]), _files(second)
+    assert sorted(first) == sorted(again)
+    different = [name for name in first if first[name] != again[name]]
+    assert different == []
+    assert "manifest.json" in first and "sheets.pdf" in first
+
+
+def test_the_manifest_stores_each_students_seed_parameters_and_answers(exam, bank):
+    manifest = exam["manifest"]
+    spec_points = {"projectile-range": 6, "sliding-up-a-slope": 6, "car-in-a-looping": 8}
+    for described in manifest["exercises"]:
+        exercise = bank.get(described["id"])
+        assert described["sha256"] == hashlib.sha256(Path(exercise.path).read_bytes()).hexdigest()
+        assert math.isclose(sum(p["points"] for p in described["parts"]),
+                            spec_points[exercise.id], rel_tol=1e-9)
+    for student in manifest["students"]:
+        for entry in student["variants"]:
+            exercise = bank.get(entry["exercise"])
+            if not entry["redraws"]:
+                assert entry["seed"] == exam_seed(manifest["exam"]["id"],
+                                                  student["student_id"], exercise.id)
+            rebuilt = exercise.variant_from_params(entry["seed"], entry["params"])
+            for name, value in rebuilt.answers.items():
+                stored = entry["answers"][name]
+                if isinstance(value, float):
+                    assert stored == value
+                else:
+                    assert stored == (list(value) if isinstance(value, tuple) else value)
+    looping = [v for s in manifest["students"] for v in s["variants"]
+               if v["exercise"] == "car-in-a-looping"]
+    assert all(v["params"]["g"] == 9.81 for v in looping)
+
+
+def test_every_student_gets_sheets_fill_in_files_and_figures(exam, bank):
+    out = exam["out"]
+    for student in exam["manifest"]["students"]:
+        folder = out / "students" / student["student_id"]
+        for name in ("sheet.pdf", "sheet.html", "sheet.md"):
+            assert (folder / name).stat().st_size > 0
+        markdown = (folder / "sheet.md").read_text(encoding="utf-8")
+        html = (folder / "sheet.html").read_text(encoding="utf-8")
+        for entry in student["variants"]:
+            fill_in = (folder / f"{entry['exercise']}.py").read_text(encoding="utf-8")
+            assert f"SEED = {entry['seed']}" in fill_in
+            assert f"STUDENT = {student['student_id']!r}" in fill_in
+            assert f"figures/{entry['exercise']}.svg" in markdown
+            svg = (folder / "figures" / f"{entry['exercise']}.svg").read_text(encoding="utf-8")
+            assert svg.lstrip().startswith("<?xml") and "<svg" in svg
+        assert html.count("<svg") == 3 and "<math" in html
+        assert "<script" not in html and "http://cdn" not in html and "https://" not in html
+
+
+def _pdf_text(path: Path) -> str:
+    return subprocess.run(["pdftotext", "-layout", str(path), "-"], check=True,
+                          capture_output=True, text=True, timeout=60).stdout
+
+
+@pytest.mark.skipif(shutil.which("pdftotext") is None,
+                    reason="pdftotext missing: install the apt package poppler-utils")
+def test_every_pdf_opens_and_shows_the_students_own_numbers(exam, bank):
+    out = exam["out"]
+    combined = _pdf_text(out / "sheets.pdf")
+    key = _pdf_text(out / "key.pdf")
+    for student in exam["manifest"]["students"]:
+        text = _pdf_text(out / "students" / student["student_id"] / "sheet.pdf")
+        assert student["name"] in text and student["name"] in combined
+        for entry in student["variants"]:
+            exercise = bank.get(entry["exercise"])
+            for parameter in exercise.params:
+                shown = format_number(entry["params"][parameter.name])
+                assert re.search(rf"(?<![\d.]){re.escape(shown)}(?![\d])", text), \
+                    (student["student_id"], parameter.name, shown)
+            first_numeric = next(p for p in exercise.parts if p.kind == "numeric")
+            assert format_number(entry["answers"][first_numeric.name]) in key
+    assert combined.count("Exercise 1:") == len(exam["manifest"]["students"])
+
+
+def test_the_moodle_export_has_one_question_per_variant_with_its_tolerance(exam, bank):
+    tree = ET.parse(exam["out"] / "moodle.xml")
+    questions = tree.getroot().findall("question")
+    categories = [q for q in questions if q.get("type") == "category"]
+    assert [c.findtext("category/text").rsplit("/", 1)[1] for c in categories] == \
+        [e["id"] for e in exam["manifest"]["exercises"]]
+    variants = {(v["exercise"], v["seed"]): v for s in exam["manifest"]["students"]
+                for v in s["variants"]}
+    graded = [q for q in questions if q.get("type") != "category"]
+    assert len(graded) == len(variants)
+    cloze = re.compile(r"\{(\d+):NUMERICAL:=([^:}]+):([^}]+)\}")
+    for question in graded:
+        assert question.findtext("penalty") == "0"
+        exercise_id, seed = question.findtext("idnumber").rsplit("-", 1)
+        variant = variants[(exercise_id, int(seed))]
+        exercise = bank.get(exercise_id)
+        numeric = [p for p in exercise.parts if p.kind == "numeric"]
+        fields = cloze.findall(question.findtext("questiontext/text"))
+        assert question.get("type") == "cloze" and len(fields) == len(numeric)
+        for part, (_, value, tolerance) in zip(numeric, fields):
+            expected = variant["answers"][part.name]
+            assert float(value) == expected
+            assert math.isclose(float(tolerance), part.rtol * abs(expected), rel_tol=1e-12)
+
+
+REDRAW_EXERCISE = '''
+"""Squaring a number, whose value 1 cannot tell the square from the number itself."""
+from dynagrade.exercise import Choice, Exercise, Misconception, Numeric
+
+
+def solve(p):
+    return {"y": p.x ** 2}
+
+
+EXERCISE = Exercise(
+    id="square-of-x", title="Square", source="Section 1.1",
+    params=(Choice("x", (1.0, 2.0, 3.0), unit="m"),),
+    statement="What is the square of $x$ = {{ x }}?",
+    solve=solve,
+    parts=(Numeric("y", "square", unit="m^2", points=1,
+                   misconceptions=(Misconception("not squared", lambda p: p.x, "Square it."),)),),
+)
+'''
+
+
+def test_a_variant_that_cannot_discriminate_is_replaced_and_the_manifest_says_why(tmp_path):
+    bank_folder = tmp_path / "bank"
+    bank_folder.mkdir()
+    (bank_folder / "square.py").write_text(REDRAW_EXERCISE, encoding="utf-8")
+    exam = tmp_path / "exam.toml"
+    exam.write_text('id = "q"\ntitle = "Q"\ndate = 2025-01-01\n[[exercise]]\n'
+                    'id = "square-of-x"\npoints = 2\n', encoding="utf-8")
+    roster = tmp_path / "roster.csv"
+    roster.write_text("student_id,name\n" + "".join(f"t{i},T {i}\n" for i in range(12)),
+                      encoding="utf-8")
+    bank = open_bank([bank_folder])
+    report = generate_exam(exam, roster, tmp_path / "out", bank=bank, jobs=1, pdf=False)
+    manifest = json.loads((tmp_path / "out" / "manifest.json").read_text(encoding="utf-8"))
+    exercise = bank.get("square-of-x")
+    entries = [s["variants"][0] for s in manifest["students"]]
+    assert all(e["params"]["x"] != 1.0 for e in entries)
+    redraws = [r for e in entries for r in e["redraws"]]
+    assert redraws and report.redraws == len(redraws)
+    for redraw in redraws:
+        assert exercise.variant(redraw["seed"]).params["x"] == 1.0
+        assert any("not squared" in problem for problem in redraw["problems"])

@@ -1,0 +1,165 @@
+"""Grading a class from the exam manifest: the gradebook a known class must get, problems
+reported for bad submissions, reproducible outputs, and the single-file `grade` intact."""
+
+from __future__ import annotations
+
+import csv
+import importlib.util
+import io
+import json
+import math
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from dynagrade.cli import grade_main, main
+from dynagrade.exam.classgrade import grade_class
+from dynagrade.exam.generate import generate_exam
+from dynagrade.exercise.loader import open_bank
+
+ROOT = Path(__file__).resolve().parent.parent
+EXAM = ROOT / "examples" / "exam.toml"
+KINDS = ["correct", "half", "empty", "corrupt", "duplicate", "csv"]
+ROSTER_IDS = [f"c-{i}" for i in range(8)]  # the last two are absent
+
+
+def _make_submissions():
+    spec = importlib.util.spec_from_file_location(
+        "make_submissions_for_tests", ROOT / "examples" / "make_submissions.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    module.PLAN = tuple((kind, 1) for kind in KINDS)
+    return module
+
+
+@pytest.fixture(scope="module")
+def bank():
+    return open_bank()
+
+
+@pytest.fixture(scope="module")
+def graded(tmp_path_factory, bank):
+    folder = tmp_path_factory.mktemp("class")
+    roster = folder / "roster.csv"
+    roster.write_text("student_id,name\n" + "".join(f"{s},Student {s}\n" for s in ROSTER_IDS),
+                      encoding="utf-8")
+    out = folder / "out"
+    generate_exam(EXAM, roster, out, bank=bank, jobs=1, pdf=False)
+    _make_submissions().main(str(out))
+    outcome = grade_class(out / "manifest.json", [out / "submissions"], out / "grading",
+                          bank=bank, jobs=1)
+    manifest = json.loads((out / "manifest.json").read_text(encoding="utf-8"))
+    return {"out": out, "outcome": outcome, "manifest": manifest}
+
+
+def expected_gradebook(bank, exam_points: dict[str, float]) -> dict[str, dict]:
+    """The gradebook worked out from the submission plan and the exercises' own part points
+    scaled to the exam's points."""
+    def scaled(exercise_id):
+        exercise = bank.get(exercise_id)
+        total = sum(p.points for p in exercise.parts)
+        return [p.points * exam_points[exercise_id] / total for p in exercise.parts]
+
+    ids = list(exam_points)
+    rows = {}
+    for student_id, kind in zip(ROSTER_IDS, KINDS + ["absent", "absent"]):
+        if kind in ("correct", "duplicate", "csv"):
+            scores = {e: exam_points[e] for e in ids}
+        elif kind == "half":
+            scores = {e: sum(p for i, p in enumerate(scaled(e)) if i % 2 == 0) for e in ids}
+        elif kind == "corrupt":
+            scores = {e: (0.0 if e == ids[0] else exam_points[e]) for e in ids}
+        else:
+            scores = {e: 0.0 for e in ids}
+        status = {"absent": "absent", "corrupt": "incomplete"}.get(kind, "graded")
+        total = sum(scores.values())
+        rows[student_id] = {**scores, "total": total, "status": status,
+                            "percent": 100 * total / sum(exam_points.values())}
+    return rows
+
+
+def test_the_class_gets_exactly_the_expected_gradebook(graded, bank):
+    exam_points = {"projectile-range": 6.0, "sliding-up-a-slope": 6.0, "car-in-a-looping": 8.0}
+    expected = expected_gradebook(bank, exam_points)
+    text = (graded["out"] / "grading" / "grades.csv").read_text(encoding="utf-8")
+    rows = list(csv.DictReader(io.StringIO(text)))
+    assert list(rows[0]) == ["student_id", *exam_points, "total", "max_total", "percent",
+                             "status"]
+    assert [r["student_id"] for r in rows] == ROSTER_IDS
+    for row in rows:
+        want = expected[row["student_id"]]
+        for column in (*exam_points, "total"):
+            assert math.isclose(float(row[column]), want[column], abs_tol=1e-6), \
+                (row["student_id"], column, row[column], want[column])
+        assert math.isclose(float(row["percent"]), want["percent"], abs_tol=0.006)
+        assert float(row["max_total"]) == 20.0
+        assert row["status"] == want["status"], row["student_id"]
+
+
+def test_bad_submissions_are_reported_and_skipped(graded):
+    problems = graded["outcome"].problems
+    by_kind = [(p.level, p.student_id, p.message.split(":")[0]) for p in problems]
+    assert ("error", "", "corrupt, skipped") in by_kind
+    assert ("warning", "c-4", "duplicate") in by_kind
+    assert ("error", "x00-000", "skipped") in by_kind
+    assert any(p.level == "error" and p.message.startswith("foreign, skipped: SEED 12345")
+               for p in problems)
+    duplicate = next(p for p in problems if p.message.startswith("duplicate"))
+    assert duplicate.source.endswith("2-projectile-range.py")
+    assert "1-projectile-range.py" in duplicate.message
+    logged = (graded["out"] / "grading" / "problems.csv").read_text(encoding="utf-8")
+    assert len(list(csv.reader(io.StringIO(logged)))) == len(problems) + 1
+
+
+def test_item_statistics_match_the_class(graded):
+    stats = {(s.exercise_id, s.part): s for s in graded["outcome"].stats}
+    # projectile-range was submitted by correct, half, empty, duplicate and csv students;
+    # its first part is right for all but the empty one, its second only for three
+    assert stats[("projectile-range", "x_max")].answered == 5
+    assert math.isclose(stats[("projectile-range", "x_max")].difficulty, 4 / 5)
+    assert math.isclose(stats[("projectile-range", "h_max")].difficulty, 3 / 5)
+    wrong = stats[("projectile-range", "h_max")].wrong_answers
+    assert len(wrong) == 1 and wrong[0][1] == 1  # the half-correct student's answer
+    report = (graded["out"] / "grading" / "report.html").read_text(encoding="utf-8")
+    assert report.count("<svg") == 2 and "point-biserial" in report
+    for student_id in ROSTER_IDS:
+        for suffix in ("md", "html"):
+            assert (graded["out"] / "grading" / "feedback" / f"{student_id}.{suffix}").exists()
+
+
+def test_a_rerun_after_an_interruption_writes_the_same_gradebook(graded, bank, tmp_path):
+    grading = graded["out"] / "grading"
+    before = {p.name: p.read_bytes() for p in grading.iterdir() if p.is_file()}
+    (grading / "grades.csv").unlink()
+    (grading / ".report.html.999.tmp").write_text("half-written")
+    (grading / "feedback" / "c-0.md").write_text("truncated")
+    grade_class(graded["out"] / "manifest.json", [graded["out"] / "submissions"], grading,
+                bank=bank, jobs=1)
+    after = {p.name: p.read_bytes() for p in grading.iterdir() if p.is_file()
+             and not p.name.endswith(".999.tmp")}
+    assert after == before
+    assert (grading / "feedback" / "c-0.md").read_text(encoding="utf-8").startswith("# ")
+    assert not [p for p in grading.rglob("*.tmp") if ".999." not in p.name]
+
+
+def test_the_command_line_grades_a_class_and_single_files_as_before(graded):
+    out = graded["out"]
+    runner = CliRunner()
+    result = runner.invoke(main, ["grade", "--manifest", str(out / "manifest.json"),
+                                  str(out / "submissions" / "c-0"), "-o",
+                                  str(out / "cli-grading"), "--jobs", "1"])
+    assert result.exit_code == 0, result.output
+    rows = list(csv.DictReader(io.StringIO(
+        (out / "cli-grading" / "grades.csv").read_text(encoding="utf-8"))))
+    assert [r["status"] for r in rows] == ["graded"] + ["absent"] * 7
+    sheet = out / "submissions" / "c-0" / "projectile-range.py"
+    single = runner.invoke(grade_main, [str(sheet), "--json"])
+    assert single.exit_code == 0, single.output
+    verdict = json.loads(single.output[single.output.index("{"):])
+    assert verdict["exercise"] == "projectile-range"
+    assert verdict["score"] == verdict["max_score"]
+    folder = runner.invoke(main, ["grade", str(out / "submissions")])
+    assert folder.exit_code != 0 and "is a directory" in folder.output
+    no_manifest = runner.invoke(main, ["grade", str(sheet), "-o", str(out / "x")])
+    assert no_manifest.exit_code != 0 and "need --manifest" in no_manifest.output
