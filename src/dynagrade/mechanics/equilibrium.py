@@ -27,11 +27,23 @@ def equilibrium_conditions(V, q):
 
 
 def equilibrium_positions(V, q):
-    """All equilibrium positions sympy finds from dV/dq = 0, as dicts {q_i: value}, Section 4.2."""
+    """Equilibrium positions from dV/dq = 0 (as sympy solves it), as dicts {q_i: value}, Section 4.2.
+
+    Angles are returned within one period as sympy reports them (e.g. 0 and pi).
+    """
     dummies, to_dummy = _plain(q)
     conditions = [c.subs(to_dummy) for c in equilibrium_conditions(V, q)]
-    solutions = sp.solve(conditions, dummies, dict=True)
     back = dict(zip(dummies, q))
+    if len(q) == 1:
+        # one coordinate: solve factor by factor (sympy.solve on the product can miss
+        # roots of trigonometric factors such as sin(theta) = 0 at theta = pi)
+        _, factors = sp.factor_list(sp.factor(sp.expand_trig(conditions[0])))
+        values = []
+        for f, _ in factors:
+            if f.has(dummies[0]):
+                values += [v for v in sp.solve(f, dummies[0]) if v not in values]
+        return [{q[0]: v} for v in values]
+    solutions = sp.solve(conditions, dummies, dict=True)
     return [{back[d]: value for d, value in sol.items()} for sol in solutions]
 
 
