@@ -1,0 +1,85 @@
+"""Impact of a particle on a fixed, smooth wall or floor, Section 1.2.4 (the standard
+relations of the coefficient of restitution e; the notes' text of this section is not
+included in our copy).  SI units; angles in rad measured from the wall normal.
+"""
+import numpy as np
+
+
+def rebound_normal_velocity(v_n, e):
+    """Normal velocity component after impact on a fixed wall, v_n' = -e v_n (Section 1.2.4)."""
+    return -e * v_n
+
+
+def restitution_from_speeds(v_before, v_after):
+    """Coefficient of restitution from the normal speeds before and after impact,
+    e = |v_n'| / |v_n| (Section 1.2.4)."""
+    return np.abs(v_after) / np.abs(v_before)
+
+
+def restitution_from_heights(h0, h1):
+    """Coefficient of restitution of a ball dropped from h0 that bounces back to h1,
+    e = sqrt(h1/h0) (Section 1.2.4 with energy conservation in flight, eq. 1.102)."""
+    return np.sqrt(h1 / h0)
+
+
+def impact_speed_after_fall(h, g):
+    """Speed after falling freely from rest through height h, sqrt(2 g h) (eq. 1.102)."""
+    return np.sqrt(2.0 * g * np.asarray(h, dtype=float))
+
+
+def rebound_height(h0, e, n=1):
+    """Height reached after the n-th bounce of a ball dropped from h0 onto a floor,
+    e^(2n) h0 (Section 1.2.4)."""
+    return e ** (2 * n) * h0
+
+
+def rebound_velocity(v, normal, e):
+    """Velocity after impact on a fixed smooth wall with unit normal ``normal``: the tangential
+    part is kept, the normal part reversed and scaled by e, v' = v - (1 + e)(v.n) n
+    (Section 1.2.4)."""
+    v = np.asarray(v, dtype=float)
+    n = np.asarray(normal, dtype=float)
+    n = n / np.linalg.norm(n)
+    return v - (1.0 + e) * np.sum(v * n, axis=-1, keepdims=True) * n
+
+
+def rebound_angle(theta, e):
+    """Angle to the wall normal after an oblique impact on a smooth wall, arctan(tan(theta)/e)
+    for an incidence angle theta to the normal (Section 1.2.4)."""
+    return np.arctan2(np.tan(theta), e)
+
+
+def rebound_speed(v, theta, e):
+    """Speed after an oblique impact on a smooth wall, v sqrt(sin^2 theta + e^2 cos^2 theta)
+    (Section 1.2.4)."""
+    return v * np.sqrt(np.sin(theta) ** 2 + (e * np.cos(theta)) ** 2)
+
+
+def normal_energy_loss_fraction(e):
+    """Fraction of the kinetic energy of the normal motion lost in the impact, 1 - e^2
+    (Section 1.2.4)."""
+    return 1.0 - e**2
+
+
+def impact_energy_loss(m, v, theta, e):
+    """Kinetic energy lost in an oblique impact on a smooth wall,
+    (1 - e^2) m (v cos theta)^2 / 2 (Section 1.2.4)."""
+    return normal_energy_loss_fraction(e) * 0.5 * m * (v * np.cos(theta)) ** 2
+
+
+def wall_impulse(m, v_n, e):
+    """Magnitude of the impulse the wall gives the particle, m (1 + e) |v_n| (Section 1.2.4,
+    linear momentum balance integrated over the impact)."""
+    return m * (1.0 + e) * np.abs(v_n)
+
+
+def bouncing_time(h0, e, g):
+    """Total time until a ball dropped from rest at h0 stops bouncing (geometric series of
+    flight times), sqrt(2 h0/g) (1 + e)/(1 - e) for e < 1 (Section 1.2.4)."""
+    return np.sqrt(2.0 * h0 / g) * (1.0 + e) / (1.0 - e)
+
+
+def bouncing_distance(h0, e):
+    """Total distance travelled by a ball dropped from h0 until it comes to rest,
+    h0 (1 + e^2)/(1 - e^2) for e < 1 (Section 1.2.4)."""
+    return h0 * (1.0 + e**2) / (1.0 - e**2)

@@ -1,0 +1,268 @@
+"""Particle kinematics, Section 1.1 of the notes: Cartesian motion from a known
+acceleration (Examples 1.1, 1.2), constrained motion (1.1.2), polar coordinates (1.1.3)
+and space curves (1.1.4).  SI units, angles in rad; floats or numpy arrays.
+"""
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.integrate import quad
+
+
+# --- 1.1.1 Cartesian frame: trajectories from a(t), a(v), a(x) ----------------------------
+
+def velocity_from_acceleration(acceleration, t, v0, t0=0.0):
+    """Velocity at time t from a known 1D acceleration a(t) (a callable), eq. (1.9):
+    v(t) = v(t0) + integral_{t0}^{t} a(tau) dtau, by quadrature."""
+    integral, _ = quad(acceleration, t0, t, epsabs=1e-13, epsrel=1e-11, limit=200)
+    return v0 + integral
+
+
+def position_from_acceleration(acceleration, t, x0, v0, t0=0.0):
+    """Position at time t from a known 1D acceleration a(t), eq. (1.10) with (1.9):
+    x(t) = x0 + v0 (t - t0) + integral_{t0}^{t} (t - tau) a(tau) dtau (both integrations in one)."""
+    integral, _ = quad(lambda tau: (t - tau) * acceleration(tau), t0, t,
+                       epsabs=1e-13, epsrel=1e-11, limit=200)
+    return x0 + v0 * (t - t0) + integral
+
+
+def release_velocity(t, v0, g):
+    """Velocity vector of a particle released with velocity v0 under gravity g (a vector,
+    e.g. (0, -9.81, 0)), eq. (1.11): v(t) = v(0) + g t.  Broadcasts over a column of times."""
+    t = np.asarray(t, dtype=float)[..., None]
+    return np.asarray(v0, dtype=float) + np.asarray(g, dtype=float) * t
+
+
+def release_position(t, r0, v0, g):
+    """Position vector of a particle released from r0 with velocity v0 under gravity g
+    (a vector), eq. (1.12): r(t) = g t^2/2 + v(0) t + r(0)."""
+    t = np.asarray(t, dtype=float)[..., None]
+    return (np.asarray(r0, dtype=float) + np.asarray(v0, dtype=float) * t
+            + 0.5 * np.asarray(g, dtype=float) * t**2)
+
+
+def linear_drag_velocity(t, v0, k):
+    """Velocity under linear (Stokes) drag a = -k v, eq. (1.14): v(t) = v0 exp(-k t).
+    Component-wise for vectors, eq. (1.15)."""
+    return v0 * np.exp(-k * np.asarray(t, dtype=float))
+
+
+def linear_drag_position(t, v0, k, x0=0.0):
+    """Position under linear drag, eq. (1.14) integrated once more with eq. (1.10):
+    x(t) = x0 + v0 (1 - exp(-k t)) / k."""
+    return x0 + v0 * (1.0 - np.exp(-k * np.asarray(t, dtype=float))) / k
+
+
+def linear_drag_time_to_speed(v0, v, k):
+    """Time for linear drag to slow the particle from v0 to v (same sign), eq. (1.13)/(1.14):
+    t = ln(v0/v)/k."""
+    return np.log(v0 / v) / k
+
+
+def linear_drag_distance_to_speed(v0, v, k):
+    """Distance covered while linear drag slows the particle from v0 to v, from
+    a(x) = v dv/dx = -k v (eq. 1.17): x = (v0 - v)/k."""
+    return (v0 - v) / k
+
+
+def linear_drag_coasting_distance(v0, k):
+    """Total distance until rest under linear drag (t -> infinity), v0/k, limit of eq. (1.14)."""
+    return v0 / k
+
+
+def quadratic_drag_velocity(t, v0, k):
+    """Velocity under quadratic (Rayleigh) drag a = -k v^2 (v0 > 0), separation of variables
+    as in eq. (1.13), footnote 2: v(t) = v0 / (1 + k v0 t)."""
+    return v0 / (1.0 + k * v0 * np.asarray(t, dtype=float))
+
+
+def quadratic_drag_position(t, v0, k, x0=0.0):
+    """Position under quadratic drag a = -k v^2: x(t) = x0 + ln(1 + k v0 t)/k (eq. 1.10)."""
+    return x0 + np.log1p(k * v0 * np.asarray(t, dtype=float)) / k
+
+
+def quadratic_drag_distance_to_speed(v0, v, k):
+    """Distance over which quadratic drag slows the particle from v0 to v, eq. (1.17):
+    x = ln(v0/v)/k."""
+    return np.log(v0 / v) / k
+
+
+def time_from_velocity_field(velocity, x0, x):
+    """Time to travel from x0 to x when the velocity is a known function v(x) of position
+    (a callable, no sign change on the way), eq. (1.16): t = integral dx / v(x)."""
+    integral, _ = quad(lambda s: 1.0 / velocity(s), x0, x, epsabs=1e-13, epsrel=1e-11, limit=200)
+    return integral
+
+
+def speed_from_acceleration_field(acceleration, x0, x, v0):
+    """Speed at position x when the acceleration is a known function a(x) (a callable),
+    eq. (1.17): v^2/2 = v0^2/2 + integral_{x0}^{x} a(s) ds.  NaN where x is not reached."""
+    integral, _ = quad(acceleration, x0, x, epsabs=1e-13, epsrel=1e-11, limit=200)
+    v_sq = v0**2 + 2.0 * integral
+    return float(np.sqrt(v_sq)) if v_sq >= 0.0 else float("nan")
+
+
+def gravity_at_height(x, g, R):
+    """Gravitational acceleration (magnitude) at height x above a planet of radius R with
+    surface value g, g(x) = g R^2 / (R + x)^2 (the rocket of Example 1.2, eq. 1.17)."""
+    return g * R**2 / (R + np.asarray(x, dtype=float)) ** 2
+
+
+def rocket_speed_at_height(x, v0, g, R):
+    """Speed at height x of a body launched vertically with v0 under g(x) = g R^2/(R+x)^2,
+    eq. (1.17) integrated: v^2 = v0^2 - 2 g R x / (R + x).  NaN above the peak."""
+    x = np.asarray(x, dtype=float)
+    v_sq = v0**2 - 2.0 * g * R * x / (R + x)
+    with np.errstate(invalid="ignore"):
+        return np.where(v_sq >= 0.0, np.sqrt(np.maximum(v_sq, 0.0)), np.nan)
+
+
+def rocket_peak_height(v0, g, R):
+    """Greatest height reached under g(x) = g R^2/(R+x)^2, where v of eq. (1.17) vanishes:
+    h = R v0^2 / (2 g R - v0^2); infinite at or above the escape speed."""
+    denominator = 2.0 * g * R - v0**2
+    with np.errstate(divide="ignore"):
+        return np.where(denominator > 0.0, R * v0**2 / np.where(denominator > 0, denominator, 1.0),
+                        np.inf)
+
+
+def escape_speed(g, R):
+    """Launch speed above which eq. (1.17) with g(x) = g R^2/(R+x)^2 never gives v = 0:
+    sqrt(2 g R)."""
+    return np.sqrt(2.0 * g * R)
+
+
+# --- 1.1.2 constrained motion -------------------------------------------------------------
+
+def degrees_of_freedom(d, k=0):
+    """Degrees of freedom of a particle in d dimensions under k kinematic constraints,
+    eqs. (1.2) and (1.21): d - k."""
+    if not 1 <= d <= 3 or not 0 <= k <= d:
+        raise ValueError(f"need 1 <= d <= 3 and 0 <= k <= d, got d={d}, k={k}")
+    return d - k
+
+
+# --- 1.1.3 polar coordinates --------------------------------------------------------------
+
+def polar_basis(phi):
+    """Co-rotating unit vectors (e_r, e_phi) in Cartesian components, eq. (1.27)/(1.28)."""
+    phi = np.asarray(phi, dtype=float)
+    e_r = np.stack([np.cos(phi), np.sin(phi)], axis=-1)
+    e_phi = np.stack([-np.sin(phi), np.cos(phi)], axis=-1)
+    return e_r, e_phi
+
+
+def polar_velocity(r, rdot, phidot):
+    """Polar components (v_r, v_phi) = (r', r phi') of the velocity, eq. (1.31)."""
+    return rdot + 0.0 * r, r * phidot
+
+
+def polar_acceleration(r, rdot, rddot, phidot, phiddot):
+    """Polar components (a_r, a_phi) = (r'' - r phi'^2, 2 r' phi' + r phi'') of the
+    acceleration, eq. (1.33)."""
+    return rddot - r * phidot**2, 2.0 * rdot * phidot + r * phiddot
+
+
+def polar_to_cartesian(radial, circumferential, phi):
+    """Cartesian components of the vector radial e_r + circumferential e_phi, eq. (1.29)
+    with (1.27); e.g. eq. (1.25) for the velocity."""
+    e_r, e_phi = polar_basis(phi)
+    return (np.asarray(radial, dtype=float)[..., None] * e_r
+            + np.asarray(circumferential, dtype=float)[..., None] * e_phi)
+
+
+def circular_position(r, phi):
+    """Position on a circle of radius r about the origin, eq. (1.18)."""
+    return polar_to_cartesian(r, 0.0 * np.asarray(phi, dtype=float), phi)
+
+
+def circular_velocity(r, phi, phidot):
+    """Velocity vector on a circle of constant radius r, eq. (1.19): r phi' e_phi."""
+    return polar_to_cartesian(*polar_velocity(r, 0.0, phidot), phi)
+
+
+def circular_acceleration(r, phi, phidot, phiddot):
+    """Acceleration vector on a circle of constant radius r, eq. (1.20):
+    -r phi'^2 e_r + r phi'' e_phi."""
+    return polar_to_cartesian(*polar_acceleration(r, 0.0, 0.0, phidot, phiddot), phi)
+
+
+def centripetal_acceleration(v, rho):
+    """Magnitude of the acceleration towards the centre of curvature, v^2/rho, eqs. (1.37), (1.51)."""
+    return v**2 / rho
+
+
+# --- 1.1.4 space curves -------------------------------------------------------------------
+
+def radius_of_curvature_of_graph(fp, fpp):
+    """Radius of curvature of the plane curve x2 = f(x1) from f' and f'', eq. (1.48):
+    rho = (1 + f'^2)^(3/2) / |f''| (infinite where f'' = 0)."""
+    fpp = np.asarray(fpp, dtype=float)
+    with np.errstate(divide="ignore"):
+        return (1.0 + np.asarray(fp, dtype=float) ** 2) ** 1.5 / np.abs(fpp)
+
+
+def parabola_radius_of_curvature(c, x1):
+    """Radius of curvature of the parabola x2 = c x1^2 at x1, eq. (1.49):
+    rho = (1 + (2 c x1)^2)^(3/2) / (2 |c|)."""
+    return radius_of_curvature_of_graph(2.0 * c * np.asarray(x1, dtype=float), 2.0 * c)
+
+
+def _as_3d(vector):
+    vector = np.asarray(vector, dtype=float)
+    if vector.shape[-1] == 2:
+        vector = np.concatenate([vector, np.zeros(vector.shape[:-1] + (1,))], axis=-1)
+    return vector
+
+
+def unit_tangent(v):
+    """Unit tangent e_t = v/|v| of the trajectory, eq. (1.41)."""
+    v = np.asarray(v, dtype=float)
+    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+
+def tangential_acceleration(v, a):
+    """Path acceleration s'' = a . e_t, the e_t component of eq. (1.51)."""
+    return np.sum(np.asarray(a, dtype=float) * unit_tangent(v), axis=-1)
+
+
+def normal_acceleration(v, a):
+    """Magnitude of the acceleration normal to the path, v^2/rho = |v x a|/|v|, eq. (1.51)."""
+    cross = np.cross(_as_3d(v), _as_3d(a))
+    return np.linalg.norm(cross, axis=-1) / np.linalg.norm(np.asarray(v, dtype=float), axis=-1)
+
+
+def principal_normal(v, a):
+    """Principal normal e_n, the unit part of a normal to v, pointing to the centre of
+    curvature, eqs. (1.44)-(1.50)."""
+    a = np.asarray(a, dtype=float)
+    e_t = unit_tangent(v)
+    a_n = a - tangential_acceleration(v, a)[..., None] * e_t
+    return a_n / np.linalg.norm(a_n, axis=-1, keepdims=True)
+
+
+def binormal(v, a):
+    """Binormal e_b = e_t x e_n, eq. (1.52) (3D components)."""
+    return np.cross(_as_3d(unit_tangent(v)), _as_3d(principal_normal(v, a)))
+
+
+def radius_of_curvature(v, a):
+    """Radius of curvature of the path at a point with velocity v and acceleration a
+    (any parametrisation in time), rho = |v|^3 / |v x a|, from eq. (1.51)."""
+    speed = np.linalg.norm(np.asarray(v, dtype=float), axis=-1)
+    with np.errstate(divide="ignore"):
+        return speed**3 / np.linalg.norm(np.cross(_as_3d(v), _as_3d(a)), axis=-1)
+
+
+@dataclass(frozen=True)
+class PathAcceleration:
+    """Acceleration in the space-curve frame, eq. (1.51): a = s'' e_t + (v^2/rho) e_n."""
+
+    tangential: float
+    normal: float
+    rho: float
+
+
+def path_acceleration(v, a):
+    """Split a known (v, a) into the space-curve components of eq. (1.51)."""
+    return PathAcceleration(tangential=tangential_acceleration(v, a),
+                            normal=normal_acceleration(v, a), rho=radius_of_curvature(v, a))
