@@ -22,7 +22,26 @@ from dynagrade.exercise.numbers import format_number
 from dynagrade.exercise.seeds import exam_seed
 
 ROOT = Path(__file__).resolve().parent.parent
-EXAM = ROOT / "examples" / "exam.toml"
+EXAM_TOML = """\
+id = "dynamics-test-exam"
+title = "Dynamics: test exam"
+date = 2025-04-14
+instructions = "Answer every part."
+
+[[exercise]]
+id = "projectile-range"
+points = 6
+
+[[exercise]]
+id = "sliding-up-a-slope"
+points = 6
+
+[[exercise]]
+id = "car-in-a-looping"
+points = 8
+[exercise.set]
+g = 9.81
+"""
 ROSTER = "student_id,name\nq-001,Emmy Noether\nq-002,Leonhard Euler\nq-003,Sophie Germain\n"
 
 
@@ -36,10 +55,12 @@ def exam(tmp_path_factory, bank):
     folder = tmp_path_factory.mktemp("exam")
     roster = folder / "roster.csv"
     roster.write_text(ROSTER, encoding="utf-8")
+    exam = folder / "exam.toml"
+    exam.write_text(EXAM_TOML, encoding="utf-8")
     out = folder / "out"
-    generate_exam(EXAM, roster, out, bank=bank, jobs=1)
+    generate_exam(exam, roster, out, bank=bank, jobs=1)
     manifest = json.loads((out / "manifest.json").read_text(encoding="utf-8"))
-    return {"folder": folder, "roster": roster, "out": out, "manifest": manifest}
+    return {"folder": folder, "roster": roster, "exam": exam, "out": out, "manifest": manifest}
 
 
 def _files(folder: Path) -> dict[str, bytes]:
@@ -51,7 +72,7 @@ def test_a_second_run_writes_byte_identical_files(exam):
     """Run again in a fresh process with two workers: every file, PDFs included, matches."""
     second = exam["folder"] / "again"
     environment = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
-    subprocess.run([sys.executable, "-m", "dynagrade.cli", "exam", str(EXAM), "--roster",
+    subprocess.run([sys.executable, "-m", "dynagrade.cli", "exam", str(exam["exam"]), "--roster",
                     str(exam["roster"]), "-o", str(second), "--jobs", "2"],
                    check=True, capture_output=True, env=environment, timeout=120)
     first, again = _files(exam["out"]), _files(second)

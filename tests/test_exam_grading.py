@@ -19,7 +19,26 @@ from dynagrade.exam.generate import generate_exam
 from dynagrade.exercise.loader import open_bank
 
 ROOT = Path(__file__).resolve().parent.parent
-EXAM = ROOT / "examples" / "exam.toml"
+EXAM_TOML = """\
+id = "dynamics-test-exam"
+title = "Dynamics: test exam"
+date = 2025-04-14
+instructions = "Answer every part."
+
+[[exercise]]
+id = "projectile-range"
+points = 6
+
+[[exercise]]
+id = "sliding-up-a-slope"
+points = 6
+
+[[exercise]]
+id = "car-in-a-looping"
+points = 8
+[exercise.set]
+g = 9.81
+"""
 KINDS = ["correct", "half", "empty", "corrupt", "duplicate", "csv"]
 ROSTER_IDS = [f"c-{i}" for i in range(8)]  # the last two are absent
 
@@ -44,8 +63,10 @@ def graded(tmp_path_factory, bank):
     roster = folder / "roster.csv"
     roster.write_text("student_id,name\n" + "".join(f"{s},Student {s}\n" for s in ROSTER_IDS),
                       encoding="utf-8")
+    exam = folder / "exam.toml"
+    exam.write_text(EXAM_TOML, encoding="utf-8")
     out = folder / "out"
-    generate_exam(EXAM, roster, out, bank=bank, jobs=1, pdf=False)
+    generate_exam(exam, roster, out, bank=bank, jobs=1, pdf=False)
     _make_submissions().main(str(out))
     outcome = grade_class(out / "manifest.json", [out / "submissions"], out / "grading",
                           bank=bank, jobs=1)

@@ -138,11 +138,14 @@ def test_a_generated_html_sheet_lays_out_its_math_and_figures_in_chromium(tmp_pa
     from dynagrade.exam.generate import generate_exam
     from dynagrade.exercise.loader import open_bank
 
-    root = Path(__file__).resolve().parent.parent
     roster = tmp_path / "roster.csv"
     roster.write_text("student_id,name\nh-1,Henri Poincaré\n", encoding="utf-8")
-    generate_exam(root / "examples" / "exam.toml", roster, tmp_path / "out", bank=open_bank(),
-                  jobs=1, pdf=False)
+    exam = tmp_path / "exam.toml"
+    exam.write_text('id = "t"\ntitle = "T"\ndate = 2025-01-01\n' + "".join(
+        f'[[exercise]]\nid = "{e}"\npoints = 5\n'
+        for e in ("projectile-range", "sliding-up-a-slope", "car-in-a-looping")),
+        encoding="utf-8")
+    generate_exam(exam, roster, tmp_path / "out", bank=open_bank(), jobs=1, pdf=False)
     result = _laid_out(tmp_path / "out" / "students" / "h-1" / "sheet.html", tmp_path)
     assert result["maths"] >= 10 and result["svgs"] == 3
     assert result["bad"] == []

@@ -120,8 +120,11 @@ class progress_reporter:
 def gradebook_table(outcome) -> None:
     """The class's grades, one row per roster student."""
     table = Table(title=f"{outcome.exam_title}: {len(outcome.rows)} students")
-    for column in ("student", *outcome.exercise_ids, "total", "%", "status"):
-        table.add_column(column, overflow="fold")
+    numbers = [str(n) for n in range(1, len(outcome.exercise_ids) + 1)]
+    for column in ("student", *numbers, "total", "%", "status"):
+        table.add_column(column, overflow="fold", justify="left" if column in
+                         ("student", "status") else "right")
+    table.caption = "  ".join(f"{n}: {e}" for n, e in zip(numbers, outcome.exercise_ids))
     for row in outcome.rows:
         table.add_row(row["student_id"], *(format_number(row[e]) for e in outcome.exercise_ids),
                       f"{format_number(row['total'])} / {format_number(row['max_total'])}",
