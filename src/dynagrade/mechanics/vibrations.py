@@ -101,6 +101,11 @@ def damping_regime(zeta, tol=1e-9):
     return "underdamped" if zeta < 1.0 else "overdamped"
 
 
+def natural_frequency_from_damped(omega_d, zeta):
+    """Undamped natural frequency omega_n = omega_d / sqrt(1 - zeta^2) from a measured damped one, Section 4.3.2."""
+    return omega_d / np.sqrt(1.0 - zeta**2)
+
+
 def logarithmic_decrement(zeta):
     """Logarithmic decrement delta = ln(x_i / x_{i+1}) = 2 pi zeta / sqrt(1 - zeta^2), Section 4.3.2."""
     return 2.0 * np.pi * zeta / np.sqrt(1.0 - zeta**2)

@@ -1,0 +1,76 @@
+"""A bead on a spinning hoop: equilibria, their stability and small oscillations (Section 4.2)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
+                                Options, Uniform)
+from dynagrade.mechanics import equilibrium
+
+
+def solve(p):
+    theta = equilibrium.hoop_equilibrium_angle(p.R, p.Omega, p.g)
+    bottom = equilibrium.stability([[equilibrium.hoop_potential_curvature(0.0, p.m, p.R, p.Omega, p.g)]])
+    return {
+        "Omega_c": equilibrium.hoop_critical_spin_rate(p.R, p.g),
+        "theta_star": theta,
+        "bottom": bottom,
+        "omega": equilibrium.hoop_oscillation_frequency(p.R, p.Omega, p.g),
+    }
+
+
+EXERCISE = Exercise(
+    id="hoop-bead-equilibrium",
+    title="Bead on a spinning hoop: equilibria and stability",
+    source="Section 4.2",
+    topics=("equilibrium", "stability", "effective potential", "linearization"),
+    params=(
+        Uniform("m", 0.01, 0.2, step=0.01, unit="kg", symbol="m"),
+        Uniform("R", 0.1, 1.0, step=0.05, unit="m", symbol="R"),
+        Uniform("Omega", 60, 300, step=5, unit="rpm", symbol=r"\Omega"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        Constraint("the hoop spins at least 25 % faster than the critical rate",
+                   lambda p: p.Omega >= 1.25 * np.sqrt(p.g / p.R)),
+        Constraint("the off-axis angle stays below 80 degrees (the bead visibly oscillates)",
+                   lambda p: p.g / (p.R * p.Omega**2) >= np.cos(np.radians(80))),
+        Constraint("the oscillation frequency differs from the plain pendulum's by at least 3 %",
+                   lambda p: abs(equilibrium.hoop_oscillation_frequency(p.R, p.Omega, p.g)
+                                 / np.sqrt(p.g / p.R) - 1) >= 0.03),
+    ),
+    statement="""
+A small bead of mass $m$ = {{ m }} slides without friction on a circular hoop of radius
+$R$ = {{ R }}. The hoop spins about its vertical diameter at the constant rate
+$\\Omega$ = {{ Omega }}; $g$ = {{ g }}. Let $\\theta$ be the bead's angle from the lowest
+point of the hoop, measured at the hoop's centre.
+
+1. Above which spin rate $\\Omega_c$ (in rad/s) does the lowest point stop being a stable equilibrium?
+2. At the given spin rate, at which angle $\\theta^* \\in (0, 90°)$ does the bead rest relative to the hoop?
+3. Is the lowest point stable or unstable at the given spin rate?
+4. With which angular frequency does the bead oscillate about $\\theta^*$ when slightly disturbed?
+""",
+    solve=solve,
+    parts=(
+        Numeric("Omega_c", "critical spin rate", unit="rad/s", points=1,
+                misconceptions=(Misconception("sqrt(R/g)", lambda p: np.sqrt(p.R / p.g),
+                                              "Omega_c^2 = g/R: check the dimension (1/s)."),)),
+        Numeric("theta_star", "equilibrium angle", unit="deg", points=2,
+                misconceptions=(
+                    Misconception("arcsin for arccos", lambda p: np.arcsin(p.g / (p.R * p.Omega**2)),
+                                  "The equilibrium condition is cos(theta*) = g/(R Omega^2)."),
+                    Misconception("spin rate in rpm used as rad/s",
+                                  lambda p: np.arccos(min(1.0, p.g / (p.R * (p.Omega * 60 / (2 * np.pi))**2))),
+                                  "Convert rpm to rad/s: multiply by 2 pi / 60."),
+                )),
+        Options("bottom", "stability of the lowest point", options=("stable", "unstable"), points=1),
+        Numeric("omega", "frequency of small oscillations about theta*", unit="rad/s", points=2,
+                misconceptions=(
+                    Misconception("the spin rate", lambda p: p.Omega,
+                                  "Linearize: V*''(theta*) = m R^2 Omega^2 sin^2(theta*), so omega = Omega sin(theta*)."),
+                    Misconception("the pendulum frequency", lambda p: np.sqrt(p.g / p.R),
+                                  "The spin changes the restoring curvature: omega = Omega sin(theta*)."),
+                    Misconception("cos for sin", lambda p: p.Omega * p.g / (p.R * p.Omega**2),
+                                  "omega^2 = V*''/(m R^2) = Omega^2 sin^2(theta*)."),
+                )),
+    ),
+)

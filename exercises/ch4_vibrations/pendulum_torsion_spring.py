@@ -1,0 +1,96 @@
+"""A pendulum with a torsional spring at its pivot: equation of motion by Lagrange and the
+linearized natural frequency (Section 4.1)."""
+
+import numpy as np
+import sympy as sp
+
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
+                                Symbolic, Uniform, Variable)
+from dynagrade.mechanics import equilibrium, lagrange, vibrations
+
+# The system as the statement gives it: T and V in the angle theta; the core derives the
+# equation of motion and its linearization once, at import.
+_t = sp.Symbol("t")
+_theta = sp.Function("theta")(_t)
+_m, _L, _g, _kt = sp.symbols("m L g kt", positive=True)
+_T = _m * _L**2 * _theta.diff(_t) ** 2 / 2
+_V = -_m * _g * _L * sp.cos(_theta) + _kt * _theta**2 / 2
+# the equation of motion, q'' = ACCELERATION (tests hold the statement's formula against it)
+ACCELERATION = lagrange.in_state_symbols(lagrange.accelerations(_T, _V, [_theta], _t)[0], [_theta], _t)
+_OMEGA_SQUARED = sp.lambdify(
+    [_m, _L, _g, _kt], equilibrium.linearized_frequency_squared(_T, _V, [_theta], _t, {_theta: 0}))
+
+
+def omega(p):
+    return float(np.sqrt(_OMEGA_SQUARED(p.m, p.L, p.g, p.kt)))
+
+
+def solve(p):
+    w = omega(p)
+    return {"omega": w, "f": vibrations.frequency_in_hertz(w), "T_period": vibrations.period(w)}
+
+
+_VARS = {"theta": Variable(-3, 3, "rad"), "m": Variable(0.1, 10, "kg"), "L": Variable(0.1, 3, "m"),
+         "g": Variable(1, 20, "m/s^2"), "kt": Variable(0.1, 100, "N*m")}
+
+EXERCISE = Exercise(
+    id="pendulum-torsion-spring-lagrange",
+    title="Pendulum with a torsional spring: Lagrange equation and linearized frequency",
+    source="Section 4.1",
+    topics=("Lagrange equations", "linearization", "natural frequency"),
+    params=(
+        Uniform("m", 0.2, 5.0, step=0.1, unit="kg", symbol="m"),
+        Uniform("L", 0.3, 2.0, step=0.05, unit="m", symbol="L"),
+        Uniform("kt", 0.5, 40.0, step=0.5, unit="N*m", symbol="k_t"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        # the spring must matter: forgetting it (omega^2 = g/L) is then more than 3 % off
+        Constraint("the spring adds at least 6 % to omega^2",
+                   lambda p: p.kt / (p.m * p.L**2) >= 0.06 * p.g / p.L),
+        Constraint("gravity adds at least 6 % to omega^2",
+                   lambda p: p.g / p.L >= 0.06 * p.kt / (p.m * p.L**2)),
+    ),
+    statement="""
+A point mass $m$ = {{ m }} sits at the end of a massless rod of length $L$ = {{ L }} that
+swings in a vertical plane about a frictionless pivot. A torsional spring of stiffness
+$k_t$ = {{ kt }} (per radian) at the pivot is relaxed when the rod hangs straight down.
+Let $\\theta$ be the angle of the rod from the downward vertical; $g$ = {{ g }}.
+
+1. Write the kinetic and potential energy, derive the equation of motion with the
+   Lagrange equations and give the angular acceleration $\\ddot\\theta$ as an expression
+   in `theta`, `m`, `L`, `g` and `kt` (valid for large angles).
+2. Linearize about $\\theta = 0$: what is the natural angular frequency $\\omega$?
+3. What is the natural frequency $f$ in Hz, and the period of small oscillations?
+""",
+    solve=solve,
+    parts=(
+        Symbolic("theta_ddot", "angular acceleration", points=2,
+                 expected="-g/L*sin(theta) - kt*theta/(m*L^2)", variables=_VARS,
+                 misconceptions=(
+                     Misconception("linearized too early", "-g/L*theta - kt*theta/(m*L^2)",
+                                   "The equation of motion holds for large angles: keep sin(theta)."),
+                     Misconception("spring torque not divided by the inertia", "-g/L*sin(theta) - kt*theta",
+                                   "d/dt(dT/dtheta') = m L^2 theta'': divide every torque by m L^2."),
+                 )),
+        Numeric("omega", "natural angular frequency", unit="rad/s", points=2,
+                misconceptions=(
+                    Misconception("spring forgotten", lambda p: np.sqrt(p.g / p.L),
+                                  "The torsional spring adds k_t/(m L^2) to omega^2."),
+                    Misconception("gravity forgotten", lambda p: np.sqrt(p.kt / (p.m * p.L**2)),
+                                  "Gravity also restores: -m g L sin(theta) linearizes to -m g L theta."),
+                    Misconception("f for omega", lambda p: omega(p) / (2 * np.pi),
+                                  "omega is in rad/s; f = omega/(2 pi) is in Hz."),
+                )),
+        Numeric("f", "natural frequency", unit="Hz", points=1,
+                misconceptions=(Misconception("omega for f", omega,
+                                              "f = omega/(2 pi): a frequency in Hz counts cycles per second."),)),
+        Numeric("T_period", "period", unit="s", points=1,
+                misconceptions=(Misconception("1/omega for the period", lambda p: 1 / omega(p),
+                                              "The period is 2 pi / omega."),)),
+        Symbolic("omega_formula", "omega as a formula", points=1,
+                 expected="sqrt(g/L + kt/(m*L^2))", variables={k: v for k, v in _VARS.items() if k != "theta"},
+                 equals="omega"),
+    ),
+)
+
