@@ -1,0 +1,69 @@
+"""A mass-spring-damper left to itself: natural frequency, damping ratio, damped frequency
+and the damping regime (Section 4.3.2)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Options, Uniform
+from dynagrade.mechanics import vibrations
+
+
+def zeta(p):
+    return vibrations.damping_ratio(p.c, p.k, p.m)
+
+
+def solve(p):
+    w = vibrations.natural_frequency(p.k, p.m)
+    wd = vibrations.damped_frequency(w, zeta(p))
+    return {"omega_n": w, "zeta": zeta(p), "omega_d": wd, "T_d": vibrations.period(wd),
+            "regime": vibrations.damping_regime(zeta(p)),
+            "delta": vibrations.logarithmic_decrement(zeta(p))}
+
+
+EXERCISE = Exercise(
+    id="damped-free-vibration",
+    title="Mass-spring-damper: free damped vibration",
+    source="Section 4.3.2",
+    topics=("free vibration", "damping ratio", "damped frequency", "logarithmic decrement"),
+    params=(
+        Uniform("m", 0.5, 50.0, step=0.5, unit="kg", symbol="m"),
+        Uniform("k", 200, 20000, step=100, unit="N/m", symbol="k"),
+        Uniform("c", 2, 800, step=2, unit="N*s/m", symbol="c"),
+    ),
+    constraints=(
+        Constraint("underdamped with 0.2 <= zeta <= 0.7",
+                   lambda p: 0.2 <= vibrations.damping_ratio(p.c, p.k, p.m) <= 0.7),
+    ),
+    statement="""
+A mass $m$ = {{ m }} on a spring of stiffness $k$ = {{ k }} is connected to a viscous
+damper with coefficient $c$ = {{ c }}. It is displaced and released.
+
+1. What are the undamped natural angular frequency $\\omega_n$ and the damping ratio $\\zeta$?
+2. What are the damped angular frequency $\\omega_d$ and the period $T_d$ of the decaying oscillation?
+3. Which regime is this: undamped, underdamped, critically damped or overdamped?
+4. What is the logarithmic decrement $\\delta$ between successive peaks?
+""",
+    solve=solve,
+    parts=(
+        Numeric("omega_n", "natural angular frequency", unit="rad/s", points=1,
+                misconceptions=(Misconception("f for omega", lambda p: np.sqrt(p.k / p.m) / (2 * np.pi),
+                                              "omega_n = sqrt(k/m) is in rad/s."),)),
+        Numeric("zeta", "damping ratio", points=1,
+                misconceptions=(
+                    Misconception("c / sqrt(k m)", lambda p: p.c / np.sqrt(p.k * p.m),
+                                  "The critical damping is c_cr = 2 sqrt(k m)."),
+                    Misconception("decay rate c/(2m) for zeta", lambda p: p.c / (2 * p.m),
+                                  "c/(2m) = zeta omega_n is the decay rate in 1/s; zeta is dimensionless."),
+                )),
+        Numeric("omega_d", "damped angular frequency", unit="rad/s", points=1,
+                misconceptions=(Misconception("undamped frequency", lambda p: np.sqrt(p.k / p.m),
+                                              "Damping slows the oscillation: omega_d = omega_n sqrt(1 - zeta^2)."),)),
+        Numeric("T_d", "damped period", unit="s", points=1,
+                misconceptions=(Misconception("1/omega_d", lambda p: 1 / vibrations.damped_frequency(
+                    np.sqrt(p.k / p.m), zeta(p)), "T_d = 2 pi / omega_d."),)),
+        Options("regime", "damping regime",
+                options=("undamped", "underdamped", "critically damped", "overdamped"), points=1),
+        Numeric("delta", "logarithmic decrement", points=1,
+                misconceptions=(Misconception("small-damping approximation 2 pi zeta", lambda p: 2 * np.pi * zeta(p),
+                                              "delta = 2 pi zeta / sqrt(1 - zeta^2) exactly; 2 pi zeta only for small zeta."),)),
+    ),
+)

@@ -1,0 +1,84 @@
+"""An inverted pendulum held upright by two springs: stability of the upright position
+and the frequency of small oscillations (Section 4.2)."""
+
+import numpy as np
+import sympy as sp
+
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
+                                Symbolic, Uniform, Variable)
+from dynagrade.mechanics import equilibrium
+
+_t = sp.Symbol("t")
+_theta = sp.Function("theta")(_t)
+_m, _L, _a, _k, _g = sp.symbols("m L a k g", positive=True)
+# uniform rod pivoted at its lower end (J = m L^2 / 3), two horizontal springs at height a
+_T = (_m * _L**2 / 3) * _theta.diff(_t) ** 2 / 2
+_V = _m * _g * _L / 2 * sp.cos(_theta) + 2 * _k * (_a * sp.sin(_theta)) ** 2 / 2
+_K_UPRIGHT = equilibrium.stiffness_matrix(_V, [_theta], {_theta: 0})[0, 0]
+_K_MIN = sp.lambdify([_m, _L, _a, _g], sp.solve(sp.Eq(_K_UPRIGHT, 0), _k)[0])
+_OMEGA2 = sp.lambdify([_m, _L, _a, _k, _g],
+                      equilibrium.linearized_frequency_squared(_T, _V, [_theta], _t, {_theta: 0}))
+
+
+def omega(p):
+    return float(np.sqrt(_OMEGA2(p.m, p.L, p.a_frac * p.L, p.k, p.g)))
+
+
+def solve(p):
+    return {"k_min": _K_MIN(p.m, p.L, p.a_frac * p.L, p.g), "omega": omega(p)}
+
+
+EXERCISE = Exercise(
+    id="inverted-pendulum-springs",
+    title="Inverted pendulum on springs: stability and small oscillations",
+    source="Section 4.2",
+    topics=("equilibrium", "stability", "potential energy", "linearization"),
+    params=(
+        Uniform("m", 0.5, 10.0, step=0.5, unit="kg", symbol="m"),
+        Uniform("L", 0.5, 2.0, step=0.1, unit="m", symbol="L"),
+        Uniform("a_frac", 0.3, 1.0, step=0.05, symbol="a/L"),
+        Uniform("k", 50, 2000, step=10, unit="N/m", symbol="k"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        Constraint("the springs hold the rod upright with a margin of 30 %",
+                   lambda p: p.k >= 1.3 * p.m * p.g * p.L / (4 * (p.a_frac * p.L) ** 2)),
+        Constraint("gravity lowers omega^2 by at least 6 %",
+                   lambda p: p.m * p.g * p.L / 2 >= 0.06 * 2 * p.k * (p.a_frac * p.L) ** 2),
+    ),
+    statement="""
+A uniform rod of mass $m$ = {{ m }} and length $L$ = {{ L }} stands upright on a
+frictionless pin at its lower end. Two identical horizontal springs of stiffness
+$k$ = {{ k }}, one on each side, are attached to the rod at the height
+$a = {{ a_frac.value }}\\,L$ above the pin; they are relaxed when the rod is upright and
+stay horizontal. Let $\\theta$ be the rod's angle from the vertical; $g$ = {{ g }}.
+
+1. Write the potential energy $V(\\theta)$ as an expression in `theta`, `m`, `g`, `L`, `k`, `a`.
+2. Which spring stiffness $k_{\\min}$ is at least needed for the upright position to be stable?
+3. With the given springs, what is the angular frequency of small oscillations about the upright position?
+""",
+    solve=solve,
+    parts=(
+        Symbolic("V", "potential energy", points=1,
+                 expected="m*g*L/2*cos(theta) + k*a^2*sin(theta)^2",
+                 variables={"theta": Variable(-1.5, 1.5, "rad"), "m": Variable(0.1, 10, "kg"),
+                            "g": Variable(1, 20, "m/s^2"), "L": Variable(0.2, 3, "m"),
+                            "k": Variable(10, 1000, "N/m"), "a": Variable(0.1, 3, "m")},
+                 misconceptions=(Misconception("one spring only", "m*g*L/2*cos(theta) + k*a^2*sin(theta)^2/2",
+                                               "Both springs are stretched (one compressed) by a sin(theta)."),)),
+        Numeric("k_min", "minimum spring stiffness", unit="N/m", points=2,
+                misconceptions=(
+                    Misconception("one spring only", lambda p: p.m * p.g * p.L / (2 * (p.a_frac * p.L) ** 2),
+                                  "Each of the two springs adds k a^2 to V''(0)."),
+                )),
+        Numeric("omega", "angular frequency of small oscillations", unit="rad/s", points=2,
+                misconceptions=(
+                    Misconception("gravity forgotten", lambda p: np.sqrt(2 * p.k * (p.a_frac * p.L) ** 2 / (p.m * p.L**2 / 3)),
+                                  "Gravity destabilizes: V''(0) = 2 k a^2 - m g L/2."),
+                    Misconception("point-mass inertia m L^2",
+                                  lambda p: np.sqrt((2 * p.k * (p.a_frac * p.L) ** 2 - p.m * p.g * p.L / 2) / (p.m * p.L**2)),
+                                  "The rod's moment of inertia about its end is m L^2 / 3."),
+                    Misconception("f for omega", lambda p: omega(p) / (2 * np.pi), "omega is in rad/s; f = omega/(2 pi)."),
+                )),
+    ),
+)

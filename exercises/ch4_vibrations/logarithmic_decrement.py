@@ -1,0 +1,76 @@
+"""Identifying damping from a measured decay: logarithmic decrement, damping ratio,
+stiffness and damping coefficient (Section 4.3.2)."""
+
+import numpy as np
+
+from dynagrade.exercise import Choice, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import vibrations
+
+
+def _identified(p):
+    delta = vibrations.logarithmic_decrement_from_amplitudes(p.x0, p.xn, p.n)
+    zeta = vibrations.damping_ratio_from_decrement(delta)
+    w = vibrations.natural_frequency_from_damped(2 * np.pi / p.Td, zeta)
+    return delta, zeta, w
+
+
+def solve(p):
+    delta, zeta, w = _identified(p)
+    k = p.m * w**2
+    return {"delta": delta, "zeta": zeta, "omega_n": w, "k": k,
+            "c": vibrations.damping_coefficient(zeta, k, p.m)}
+
+
+def _zeta(p):
+    return _identified(p)[1]
+
+
+EXERCISE = Exercise(
+    id="logarithmic-decrement-measurement",
+    title="Damping from a measured decay",
+    source="Section 4.3.2",
+    topics=("logarithmic decrement", "damping ratio", "system identification"),
+    params=(
+        Uniform("m", 1.0, 100.0, step=1.0, unit="kg", symbol="m"),
+        Uniform("x0", 5.0, 30.0, step=0.5, unit="mm", symbol="x_0"),
+        Uniform("xn", 0.2, 20.0, step=0.1, unit="mm", symbol="x_n"),
+        Choice("n", (2, 3, 4, 5), symbol="n"),
+        Uniform("Td", 0.05, 2.0, step=0.01, unit="s", symbol="T_d"),
+    ),
+    constraints=(
+        # zeta >= 0.15 keeps the small-damping shortcuts more than 1 % off
+        Constraint("0.15 <= zeta <= 0.5", lambda p: 0.15 <= _zeta(p) <= 0.5),
+    ),
+    statement="""
+A machine part of mass $m$ = {{ m }}, mounted elastically with some viscous damping, is
+knocked and its free decay recorded. One peak of the displacement is $x_0$ = {{ x0 }};
+the peak $n$ = {{ n.value }} periods later is $x_n$ = {{ xn }}. The time between
+successive peaks is $T_d$ = {{ Td }}.
+
+1. What is the logarithmic decrement $\\delta$?
+2. What is the damping ratio $\\zeta$?
+3. What is the undamped natural angular frequency $\\omega_n$?
+4. What are the stiffness $k$ and the damping coefficient $c$ of the mounting?
+""",
+    solve=solve,
+    parts=(
+        Numeric("delta", "logarithmic decrement", points=1,
+                misconceptions=(Misconception("not divided by n", lambda p: np.log(p.x0 / p.xn),
+                                              "delta is the log ratio per period: divide ln(x0/xn) by n."),)),
+        Numeric("zeta", "damping ratio", points=2,
+                misconceptions=(Misconception("small-damping approximation", lambda p: _identified(p)[0] / (2 * np.pi),
+                                              "zeta = delta / sqrt(4 pi^2 + delta^2); delta/(2 pi) holds only for small damping."),)),
+        Numeric("omega_n", "natural angular frequency", unit="rad/s", points=1,
+                misconceptions=(
+                    Misconception("damped frequency for omega_n", lambda p: 2 * np.pi / p.Td,
+                                  "The measured period is the damped one: omega_n = omega_d / sqrt(1 - zeta^2)."),
+                    Misconception("1/T_d", lambda p: 1 / p.Td, "omega_d = 2 pi / T_d."),
+                )),
+        Numeric("k", "stiffness", unit="N/m", points=1,
+                misconceptions=(Misconception("from the damped frequency", lambda p: p.m * (2 * np.pi / p.Td) ** 2,
+                                              "k = m omega_n^2 with the undamped omega_n."),)),
+        Numeric("c", "damping coefficient", unit="N*s/m", points=1,
+                misconceptions=(Misconception("c = zeta sqrt(k m)", lambda p: solve(p)["c"] / 2,
+                                              "c = 2 zeta sqrt(k m) = 2 zeta m omega_n."),)),
+    ),
+)

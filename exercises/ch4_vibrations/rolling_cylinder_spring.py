@@ -1,0 +1,87 @@
+"""A cylinder rolling on a spring: equivalent mass and stiffness of a one-degree-of-freedom
+system and its natural frequency (Section 4.3.1)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform, Variable
+from dynagrade.mechanics import vibrations
+
+
+def m_eq(p):
+    # x' for the translation, phi' = x'/r for the rotation (J = m r^2 / 2)
+    return vibrations.equivalent_mass([p.m, p.m * p.r**2 / 2], [1.0, 1.0 / p.r])
+
+
+def k_eq(p):
+    # a spring attached at height a above the centre stretches by (r + a)/r per unit x
+    return vibrations.equivalent_stiffness([p.k], [(p.r + p.a) / p.r])
+
+
+def solve(p):
+    w = vibrations.natural_frequency(k_eq(p), m_eq(p))
+    return {"m_eq": m_eq(p), "k_eq": k_eq(p), "omega": w, "f": vibrations.frequency_in_hertz(w)}
+
+
+EXERCISE = Exercise(
+    id="rolling-cylinder-spring",
+    title="Rolling cylinder on a spring: equivalent mass and stiffness",
+    source="Section 4.3.1",
+    topics=("equivalent mass", "equivalent stiffness", "natural frequency", "rolling"),
+    params=(
+        Uniform("m", 1.0, 20.0, step=0.5, unit="kg", symbol="m"),
+        Uniform("r", 0.05, 0.3, step=0.01, unit="m", symbol="r"),
+        Uniform("a", 0.0, 0.3, step=0.01, unit="m", symbol="a"),
+        Uniform("k", 100, 5000, step=50, unit="N/m", symbol="k"),
+    ),
+    constraints=(
+        Constraint("the attachment point lies on the cylinder, at least 0.2 r above the centre",
+                   lambda p: 0.2 * p.r - 1e-12 <= p.a <= p.r + 1e-12),
+        # at a = 0.22 r the lever (k_eq = 3k/2) cancels the rolling inertia (m_eq = 3m/2)
+        Constraint("omega differs from sqrt(k/m) by at least 3 %",
+                   lambda p: abs(k_eq(p) / m_eq(p) / (p.k / p.m) - 1) >= 0.06),
+    ),
+    statement="""
+A solid homogeneous cylinder (mass $m$ = {{ m }}, radius $r$ = {{ r }}) rolls without
+slipping on a horizontal floor. A horizontal spring of stiffness $k$ = {{ k }}, fixed to a
+wall, is pinned to the cylinder's end face at the height $a$ = {{ a }} above the axis,
+vertically above the centre when the spring is relaxed. Let $x$ be the displacement of the
+centre; consider small motions.
+
+1. What is the equivalent mass $m_{eq}$ (with $T = m_{eq}\\dot x^2/2$)?
+2. What is the equivalent stiffness $k_{eq}$ (with $V = k_{eq} x^2/2$)?
+3. What are the natural angular frequency and the natural frequency in Hz?
+4. Give $\\omega$ as a formula in `k`, `m`, `r`, `a`.
+""",
+    solve=solve,
+    parts=(
+        Numeric("m_eq", "equivalent mass", unit="kg", points=1,
+                misconceptions=(
+                    Misconception("rotation forgotten", lambda p: p.m,
+                                  "The rolling cylinder also stores J phi'^2/2 = m x'^2/4."),
+                    Misconception("J = m r^2 (thin ring)", lambda p: 2 * p.m,
+                                  "A solid cylinder has J = m r^2/2 about its axis."),
+                )),
+        Numeric("k_eq", "equivalent stiffness", unit="N/m", points=1,
+                misconceptions=(
+                    Misconception("spring at the centre", lambda p: p.k,
+                                  "The attachment point moves (r + a)/r times as far as the centre."),
+                    Misconception("ratio not squared", lambda p: p.k * (p.r + p.a) / p.r,
+                                  "V = k (u)^2/2 with u = (r + a) x / r: the ratio enters squared."),
+                )),
+        Numeric("omega", "natural angular frequency", unit="rad/s", points=1,
+                misconceptions=(
+                    Misconception("sqrt(k/m)", lambda p: np.sqrt(p.k / p.m),
+                                  "Use the equivalent mass and stiffness of the whole system."),
+                    Misconception("f for omega", lambda p: vibrations.natural_frequency(k_eq(p), m_eq(p)) / (2 * np.pi),
+                                  "omega is in rad/s; f = omega/(2 pi)."),
+                )),
+        Numeric("f", "natural frequency", unit="Hz", points=1,
+                misconceptions=(Misconception("omega for f", lambda p: vibrations.natural_frequency(k_eq(p), m_eq(p)),
+                                              "f = omega/(2 pi)."),)),
+        Symbolic("omega_formula", "omega as a formula", points=1,
+                 expected="(r + a)/r*sqrt(2*k/(3*m))",
+                 variables={"k": Variable(10, 1e4, "N/m"), "m": Variable(0.5, 50, "kg"),
+                            "r": Variable(0.01, 1, "m"), "a": Variable(0, 1, "m")},
+                 equals="omega"),
+    ),
+)
