@@ -1,0 +1,82 @@
+"""A particle on a circle with a prescribed angle phi(t) = phi0 + c t^2: velocity and
+acceleration vectors (Example 1.3)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector)
+from dynagrade.mechanics import kinematics
+
+
+def _angles(p):
+    return p.c * p.t**2, 2 * p.c * p.t, 2 * p.c
+
+
+def solve(p):
+    phi, phidot, phiddot = _angles(p)
+    a = kinematics.circular_acceleration(p.r, phi, phidot, phiddot)
+    return {
+        "v": tuple(kinematics.circular_velocity(p.r, phi, phidot)),
+        "speed": p.r * phidot,
+        "a": tuple(a),
+        "a_abs": float(np.linalg.norm(a)),
+    }
+
+
+def _centripetal_only(p):
+    phi, phidot, _ = _angles(p)
+    return tuple(kinematics.circular_acceleration(p.r, phi, phidot, 0.0))
+
+
+EXERCISE = Exercise(
+    id="circular-trajectory",
+    title="Particle on a circular trajectory",
+    source="Example 1.3",
+    topics=("kinematics", "circular motion", "centripetal acceleration"),
+    params=(
+        Uniform("r", 0.5, 3.0, step=0.1, unit="m", symbol="r"),
+        Uniform("c", 0.2, 2.0, step=0.05, unit="rad/s^2", symbol="c"),
+        Uniform("t", 0.5, 2.0, step=0.05, unit="s", symbol="t"),
+    ),
+    constraints=(
+        Constraint("the angular velocity is not close to 1 rad/s (where forgetting it is harmless)",
+                   lambda p: abs(2 * p.c * p.t - 1.0) > 0.1),
+        Constraint("both acceleration parts matter: 0.2 < phi'^2/phi'' < 5",
+                   lambda p: 0.2 < (2 * p.c * p.t) ** 2 / (2 * p.c) < 5),
+        Constraint("no velocity or acceleration component is close to zero",
+                   lambda p: min(abs(x) for x in solve(p)["v"] + solve(p)["a"])
+                   > 0.08 * solve(p)["a_abs"]),
+    ),
+    statement="""
+A particle on a string of fixed length $r$ = {{ r }} moves on a circle about the origin in
+the $x_1$-$x_2$ plane. Its angle from the $x_1$-axis is $\\varphi(t) = c\\,t^2$ with
+$c$ = {{ c }}.
+
+At $t$ = {{ t }}:
+
+1. give its velocity $(v_1, v_2)$ in Cartesian components;
+2. its speed;
+3. its acceleration $(a_1, a_2)$ in Cartesian components;
+4. the magnitude of its acceleration.
+""",
+    solve=solve,
+    parts=(
+        Vector("v", "velocity", unit="m/s", size=2, points=2,
+               misconceptions=(
+                   Misconception("angle and rate mixed up",
+                                 lambda p: (-p.r * np.sin(p.c * p.t**2), p.r * np.cos(p.c * p.t**2)),
+                                 "v = r φ̇ (−sin φ, cos φ): do not forget the factor φ̇, eq. (1.19)."),
+               )),
+        Numeric("speed", "speed", unit="m/s", points=1),
+        Vector("a", "acceleration", unit="m/s^2", size=2, points=2,
+               misconceptions=(
+                   Misconception("tangential part forgotten", _centripetal_only,
+                                 "φ̈ ≠ 0: the acceleration also has r φ̈ along e_φ, eq. (1.20)."),
+               )),
+        Numeric("a_abs", "magnitude of the acceleration", unit="m/s^2", points=1,
+                misconceptions=(
+                    Misconception("centripetal part only",
+                                  lambda p: p.r * (2 * p.c * p.t) ** 2,
+                                  "Add the tangential part r φ̈ (at right angles)."),
+                )),
+    ),
+)

@@ -1,0 +1,75 @@
+"""A body shot straight up against height-dependent gravity g R^2/(R+x)^2 (Example 1.2,
+acceleration known as a function of position, eq. 1.17)."""
+
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
+                                Variable)
+from dynagrade.mechanics import energy, kinematics
+
+
+def solve(p):
+    return {
+        "v_x": float(kinematics.rocket_speed_at_height(p.x, p.v0, p.g, p.R)),
+        "h_max": float(kinematics.rocket_peak_height(p.v0, p.g, p.R)),
+        "v_esc": kinematics.escape_speed(p.g, p.R),
+    }
+
+
+EXERCISE = Exercise(
+    id="rocket-variable-gravity",
+    title="Vertical launch against height-dependent gravity",
+    source="Example 1.2",
+    topics=("kinematics", "acceleration as a function of position", "gravity"),
+    params=(
+        Uniform("v0", 3.0, 9.0, step=0.25, unit="km/s", symbol="v_0"),
+        Uniform("x", 200, 3000, step=50, unit="km", symbol="x"),
+        Constant("R", 6371, unit="km", symbol="R"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        Constraint("the probe passes the height x well below its peak",
+                   lambda p: p.x < 0.9 * solve(p)["h_max"]),
+        Constraint("constant gravity would give a speed at x at least 4 % off",
+                   lambda p: abs(max(p.v0**2 - 2 * p.g * p.x, 0.0) ** 0.5 - solve(p)["v_x"])
+                   > 0.04 * solve(p)["v_x"]),
+    ),
+    statement="""
+A probe leaves the Earth's surface vertically with speed $v_0$ = {{ v0 }} (engine off, no
+air). Gravity decreases with the height $x$ as $g(x) = g R^2/(R+x)^2$ with
+$g$ = {{ g }} and $R$ = {{ R }}.
+
+1. What is its speed at the height $x$ = {{ x }}?
+2. How high does it rise?
+3. Above what launch speed would it never come back?
+4. Write the greatest height as a formula in $v_0$, $g$ and $R$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("v_x", "speed at height x", unit="km/s", points=1,
+                misconceptions=(
+                    Misconception("constant gravity",
+                                  lambda p: max(p.v0**2 - 2 * p.g * p.x, 0.0) ** 0.5,
+                                  "g decreases with height: integrate v dv = a(x) dx, eq. (1.17)."),
+                )),
+        Numeric("h_max", "greatest height", unit="km", points=2,
+                misconceptions=(
+                    Misconception("constant gravity",
+                                  lambda p: energy.height_gain(p.v0, 0.0, p.g),
+                                  "v0²/(2g) holds only while g is constant; here g(x) falls off "
+                                  "with height, eq. (1.17)."),
+                )),
+        Numeric("v_esc", "escape speed", unit="km/s", points=1,
+                misconceptions=(
+                    Misconception("no factor 2", lambda p: (p.g * p.R) ** 0.5,
+                                  "v0² = 2 g R x/(R+x) tends to 2 g R as x grows."),
+                )),
+        Symbolic("h_formula", "greatest height as a formula", points=1,
+                 expected="R*v0^2/(2*g*R - v0^2)",
+                 variables={"v0": Variable(1e3, 9e3, "m/s"), "g": Variable(5, 15, "m/s^2"),
+                            "R": Variable(6e6, 7e6, "m")},
+                 equals="h_max",
+                 misconceptions=(
+                     Misconception("constant gravity", "v0^2/(2*g)",
+                                   "That is the constant-gravity height."),
+                 )),
+    ),
+)
