@@ -1,0 +1,71 @@
+"""A car speeding up on a circular track, described in the space-curve frame
+(Example 1.6, eqs. 1.51 and 1.54)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform)
+from dynagrade.mechanics import kinematics
+
+
+def solve(p):
+    v = p.v0 + p.at * p.t                       # s'' = a_t constant
+    s = p.v0 * p.t + 0.5 * p.at * p.t**2
+    return {
+        "v": v,
+        "a_n": kinematics.centripetal_acceleration(v, p.R),
+        "a_abs": float(np.hypot(p.at, kinematics.centripetal_acceleration(v, p.R))),
+        "phi": s / p.R,
+    }
+
+
+EXERCISE = Exercise(
+    id="circular-motion-path-frame",
+    title="Speeding up on a circle: tangential and normal acceleration",
+    source="Example 1.6",
+    topics=("space curves", "tangential and normal acceleration", "circular motion"),
+    params=(
+        Uniform("R", 20, 200, step=5, unit="m", symbol="R"),
+        Uniform("v0", 2.0, 15.0, step=0.5, unit="m/s", symbol="v_0"),
+        Uniform("at", 0.5, 3.0, step=0.1, unit="m/s^2", symbol=r"\ddot s"),
+        Uniform("t", 2.0, 10.0, step=0.5, unit="s", symbol="t"),
+    ),
+    constraints=(
+        Constraint("the normal part is at least 20 % of the tangential part and vice versa",
+                   lambda p: 0.2 < solve(p)["a_n"] / p.at < 5),
+        Constraint("the car turns less than one lap", lambda p: solve(p)["phi"] < 2 * np.pi),
+    ),
+    statement="""
+A car drives on a circular track of radius $R$ = {{ R }}. At $t = 0$ its speed is
+$v_0$ = {{ v0 }}, and it speeds up at the constant rate $\\ddot s$ = {{ at }}.
+
+At $t$ = {{ t }}:
+
+1. what is its speed?
+2. what is the normal (centripetal) component $v^2/\\rho$ of its acceleration?
+3. what is the magnitude of its acceleration?
+4. through what angle $\\varphi$ has it turned since $t = 0$ (in rad)?
+""",
+    solve=solve,
+    parts=(
+        Numeric("v", "speed", unit="m/s", points=1),
+        Numeric("a_n", "normal acceleration", unit="m/s^2", points=2,
+                misconceptions=(
+                    Misconception("initial speed used", lambda p: p.v0**2 / p.R,
+                                  "Use the speed at time t: v = v0 + s̈ t."),
+                )),
+        Numeric("a_abs", "magnitude of the acceleration", unit="m/s^2", points=1,
+                misconceptions=(
+                    Misconception("components added",
+                                  lambda p: p.at + (p.v0 + p.at * p.t) ** 2 / p.R,
+                                  "e_t and e_n are perpendicular: |a| = √(s̈² + (v²/ρ)²), eq. (1.51)."),
+                    Misconception("normal part only",
+                                  lambda p: (p.v0 + p.at * p.t) ** 2 / p.R,
+                                  "The car also speeds up along e_t."),
+                )),
+        Numeric("phi", "angle turned", unit="rad", points=1,
+                misconceptions=(
+                    Misconception("constant speed", lambda p: p.v0 * p.t / p.R,
+                                  "s(t) = v0 t + s̈ t²/2, and φ = s/R, eq. (1.53)."),
+                )),
+    ),
+)

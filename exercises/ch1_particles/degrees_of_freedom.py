@@ -1,0 +1,47 @@
+"""Counting the degrees of freedom of free and constrained particles (Example 1.4,
+eqs. 1.2 and 1.21)."""
+
+from dynagrade.exercise import Choice, Exercise, Options
+from dynagrade.mechanics import kinematics
+
+COUNTS = ("0", "1", "2", "3")
+CASES = ("free particle", "particle sliding on a flat ground", "particle on a rigid link about a fixed point",
+         "particle on a spring about a fixed point")
+
+
+def solve(p):
+    d = int(p.d)
+    return {
+        "free": str(kinematics.degrees_of_freedom(d)),
+        "ground": str(kinematics.degrees_of_freedom(d, 1)),
+        "link": str(kinematics.degrees_of_freedom(d, 1)),
+        "spring": str(kinematics.degrees_of_freedom(d)),
+        "reaction": (CASES[1], CASES[2]),
+    }
+
+
+EXERCISE = Exercise(
+    id="degrees-of-freedom",
+    title="Degrees of freedom of constrained particles",
+    source="Example 1.4",
+    topics=("kinematics", "constrained motion", "degrees of freedom"),
+    params=(Choice("d", (2, 3), symbol="d"),),
+    statement="""
+Consider a single particle in $d$ = {{ d }} dimensions (rotations of a particle are not
+counted). How many degrees of freedom does it have when it
+
+1. moves freely;
+2. slides on a flat rigid ground (a line in 2D, a plane in 3D);
+3. is attached to a fixed point O by a rigid, massless link;
+4. is attached to a fixed point O by an elastic spring?
+5. Which of these cases need a constraint (reaction) force to enforce the motion?
+""",
+    solve=solve,
+    parts=(
+        Options("free", "free particle", options=COUNTS, points=1),
+        Options("ground", "on the ground", options=COUNTS, points=1),
+        Options("link", "on a rigid link", options=COUNTS, points=1),
+        Options("spring", "on a spring", options=COUNTS, points=1),
+        Options("reaction", "cases with a reaction force", options=CASES, multiple=True, points=2),
+    ),
+)

@@ -1,0 +1,63 @@
+"""Radius of curvature of a parabolic path and the normal acceleration of a particle on
+it (Section 1.1.4, eqs. 1.48, 1.49 and 1.51)."""
+
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
+                                Variable)
+from dynagrade.mechanics import kinematics
+
+
+def solve(p):
+    rho = float(kinematics.parabola_radius_of_curvature(p.c, p.x1))
+    return {"rho": rho, "rho_vertex": float(kinematics.parabola_radius_of_curvature(p.c, 0.0)),
+            "a_n": kinematics.centripetal_acceleration(p.v, rho)}
+
+
+EXERCISE = Exercise(
+    id="parabola-radius-of-curvature",
+    title="Radius of curvature of a parabola",
+    source="Section 1.1.4",
+    topics=("space curves", "radius of curvature", "normal acceleration"),
+    params=(
+        Uniform("c", 0.1, 1.0, step=0.05, unit="1/m", symbol="c"),
+        Uniform("x1", 0.3, 3.0, step=0.1, unit="m", symbol="x_1"),
+        Uniform("v", 1.0, 10.0, step=0.5, unit="m/s", symbol="v"),
+    ),
+    constraints=(
+        Constraint("the slope matters: (2 c x1)^2 > 0.1", lambda p: (2 * p.c * p.x1) ** 2 > 0.1),
+    ),
+    statement="""
+A bead slides along a wire bent into the parabola $x_2 = c\\,x_1^2$ with $c$ = {{ c }}.
+
+1. What is the radius of curvature of the wire at $x_1$ = {{ x1 }}?
+2. What is it at the vertex $x_1 = 0$?
+3. The bead passes $x_1$ = {{ x1 }} with speed $v$ = {{ v }}. What is the normal
+   component of its acceleration there?
+4. Write the radius of curvature as a formula in $c$ and $x_1$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("rho", "radius of curvature at x1", unit="m", points=2,
+                misconceptions=(
+                    Misconception("reciprocal of f''", lambda p: 1 / (2 * p.c),
+                                  "Only at the vertex is ρ = 1/f''; elsewhere the slope enters "
+                                  "as (1 + f'²)^(3/2), eq. (1.48)."),
+                    Misconception("power 1/2 instead of 3/2",
+                                  lambda p: (1 + (2 * p.c * p.x1) ** 2) ** 0.5 / (2 * p.c),
+                                  "The numerator is (1 + f'²) to the power 3/2, eq. (1.49)."),
+                )),
+        Numeric("rho_vertex", "radius of curvature at the vertex", unit="m", points=1),
+        Numeric("a_n", "normal acceleration", unit="m/s^2", points=1,
+                misconceptions=(
+                    Misconception("vertex radius used", lambda p: p.v**2 * 2 * p.c,
+                                  "Use the radius of curvature at the bead's position."),
+                )),
+        Symbolic("rho_formula", "radius of curvature as a formula", points=1,
+                 expected="(1 + 4*c^2*x1^2)^(3/2)/(2*c)",
+                 variables={"c": Variable(0.05, 2, "1/m"), "x1": Variable(-3, 3, "m")},
+                 equals="rho",
+                 misconceptions=(
+                     Misconception("power 1/2", "(1 + 4*c^2*x1^2)^(1/2)/(2*c)",
+                                   "The power is 3/2, eq. (1.49)."),
+                 )),
+    ),
+)
