@@ -1,0 +1,71 @@
+"""A car on a wavy road: base excitation of a mass on a spring and damper (Section 4.3.3)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import vibrations
+
+
+def _omega_n(p):
+    return vibrations.natural_frequency(p.k, p.m)
+
+
+def _eta(p):
+    return vibrations.frequency_ratio(2 * np.pi * p.v / p.lam, _omega_n(p))
+
+
+def solve(p):
+    Omega = 2 * np.pi * p.v / p.lam
+    zeta = vibrations.damping_ratio(p.c, p.k, p.m)
+    return {"Omega": Omega, "v_res": _omega_n(p) * p.lam / (2 * np.pi),
+            "X": vibrations.base_excitation_amplitude(p.Y, _eta(p), zeta)}
+
+
+EXERCISE = Exercise(
+    id="car-wavy-road",
+    title="A car on a wavy road: base excitation",
+    source="Section 4.3.3",
+    topics=("base excitation", "transmissibility", "resonance", "forced vibration"),
+    params=(
+        Uniform("m", 200, 600, step=10, unit="kg", symbol="m"),
+        Uniform("k", 1e4, 6e4, step=1e3, unit="N/m", symbol="k"),
+        Uniform("c", 500, 5000, step=100, unit="N*s/m", symbol="c"),
+        Uniform("lam", 2.0, 20.0, step=0.5, unit="m", symbol=r"\lambda"),
+        Uniform("Y", 5, 40, step=1, unit="mm", symbol="Y"),
+        Uniform("v", 20, 120, step=5, unit="km/h", symbol="v"),
+    ),
+    constraints=(
+        Constraint("0.1 <= zeta <= 0.6", lambda p: 0.1 <= vibrations.damping_ratio(p.c, p.k, p.m) <= 0.6),
+        Constraint("away from resonance (15 %)", lambda p: abs(_eta(p) - 1) >= 0.15),
+        Constraint("the damper's share of the transmissibility matters (2 zeta eta >= 0.2)",
+                   lambda p: 2 * vibrations.damping_ratio(p.c, p.k, p.m) * _eta(p) >= 0.2),
+    ),
+    statement="""
+A quarter-car model: a body of mass $m$ = {{ m }} rests on a suspension spring
+$k$ = {{ k }} and a damper $c$ = {{ c }}; the wheel follows a road whose height varies
+sinusoidally with wavelength $\\lambda$ = {{ lam }} and amplitude $Y$ = {{ Y }}. The car
+drives at $v$ = {{ v }}.
+
+1. With which angular frequency $\\Omega$ is the suspension excited?
+2. At which driving speed (in km/h) would the body be excited at its natural frequency?
+3. What is the amplitude of the body's vertical motion in steady state?
+""",
+    solve=solve,
+    parts=(
+        Numeric("Omega", "excitation frequency", unit="rad/s", points=1,
+                misconceptions=(Misconception("v / lambda", lambda p: p.v / p.lam,
+                                              "v/lambda is in Hz: Omega = 2 pi v / lambda."),)),
+        Numeric("v_res", "resonant driving speed", unit="km/h", points=1,
+                misconceptions=(Misconception("2 pi forgotten", lambda p: _omega_n(p) * p.lam,
+                                              "Omega = 2 pi v / lambda = omega_n gives v = omega_n lambda / (2 pi)."),)),
+        Numeric("X", "body amplitude", unit="mm", points=2,
+                misconceptions=(
+                    Misconception("force amplification V instead of transmissibility",
+                                  lambda p: p.Y * vibrations.amplification_factor(_eta(p), vibrations.damping_ratio(p.c, p.k, p.m)),
+                                  "The damper also transmits the base motion: X/Y = sqrt(1 + (2 zeta eta)^2) V."),
+                    Misconception("relative motion", lambda p: vibrations.relative_base_excitation_amplitude(
+                        p.Y, _eta(p), vibrations.damping_ratio(p.c, p.k, p.m)),
+                                  "Y eta^2 V is the spring's deflection, not the body's absolute motion."),
+                )),
+    ),
+)

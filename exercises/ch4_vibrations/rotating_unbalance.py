@@ -1,0 +1,84 @@
+"""A machine on springs with a rotating unbalance: critical speed, amplitude at the
+operating speed and the force passed to the floor (Section 4.3.3)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import vibrations
+
+
+def _state(p):
+    w = vibrations.natural_frequency(p.k, p.M)
+    return w, vibrations.frequency_ratio(p.n, w)
+
+
+def amplitude(p, Omega=None):
+    w, eta = _state(p)
+    if Omega is not None:
+        eta = Omega / w
+    return vibrations.unbalance_amplitude(p.m_u, p.e, p.M, eta, p.zeta)
+
+
+def solve(p):
+    w, eta = _state(p)
+    X = amplitude(p)
+    c = vibrations.damping_coefficient(p.zeta, p.k, p.M)
+    return {"n_crit": w, "X": X, "F_T": vibrations.transmitted_force_amplitude(X, p.k, c, p.n)}
+
+
+EXERCISE = Exercise(
+    id="machine-rotating-unbalance",
+    title="Machine with a rotating unbalance on an elastic mounting",
+    source="Section 4.3.3",
+    topics=("forced vibration", "rotating unbalance", "resonance", "transmissibility"),
+    params=(
+        Uniform("M", 50, 500, step=10, unit="kg", symbol="M"),
+        Uniform("k", 1e5, 2e6, step=5e4, unit="N/m", symbol="k"),
+        Uniform("zeta", 0.05, 0.3, step=0.01, symbol=r"\zeta"),
+        Uniform("m_u", 0.1, 2.0, step=0.1, unit="kg", symbol="m_u"),
+        Uniform("e", 5, 50, step=1, unit="mm", symbol="e"),
+        Uniform("n", 300, 3000, step=50, unit="rpm", symbol="n"),
+    ),
+    constraints=(
+        Constraint("the operating speed is at least 15 % away from resonance",
+                   lambda p: abs(_state(p)[1] - 1) >= 0.15),
+        Constraint("damping matters for the transmitted force (2 zeta eta >= 0.15)",
+                   lambda p: 2 * p.zeta * _state(p)[1] >= 0.15),
+        # near eta = sqrt(2) the mounting passes the force unchanged (TR = 1)
+        Constraint("the transmissibility differs from 1 by at least 5 %",
+                   lambda p: abs(vibrations.transmissibility(_state(p)[1], p.zeta) - 1) >= 0.05),
+        # far above resonance X tends to m_u e / M whatever the speed
+        Constraint("the amplitude still depends on the speed (a wrong speed unit changes it by 5 %)",
+                   lambda p: abs(amplitude(p, p.n * 60 / (2 * np.pi)) / amplitude(p) - 1) >= 0.05),
+    ),
+    statement="""
+A machine of total mass $M$ = {{ M }} stands on elastic mounts of total stiffness
+$k$ = {{ k }} with damping ratio $\\zeta$ = {{ zeta }}. Its rotor carries an unbalance
+$m_u$ = {{ m_u }} at eccentricity $e$ = {{ e }} and runs at $n$ = {{ n }}. Only vertical
+motion is possible.
+
+1. At which rotor speed (in rpm) is the mounting in resonance ($\\Omega = \\omega_n$)?
+2. What is the amplitude of the machine's vertical vibration at the operating speed?
+3. What is the amplitude of the force transmitted to the floor through springs and dampers?
+""",
+    solve=solve,
+    parts=(
+        Numeric("n_crit", "critical speed", unit="rpm", points=1,
+                misconceptions=(Misconception("rad/s read as rpm", lambda p: np.sqrt(p.k / p.M) * 2 * np.pi / 60,
+                                              "omega_n = sqrt(k/M) is in rad/s: multiply by 60/(2 pi) for rpm."),)),
+        Numeric("X", "vibration amplitude", unit="mm", points=2,
+                misconceptions=(
+                    Misconception("rpm used as rad/s", lambda p: amplitude(p, p.n * 60 / (2 * np.pi)),
+                                  "Convert the speed to rad/s: Omega = 2 pi n / 60."),
+                    Misconception("static deflection m_u e Omega^2 / k", lambda p: p.m_u * p.e * p.n**2 / p.k,
+                                  "The force m_u e Omega^2 is amplified by V(eta, zeta)."),
+                )),
+        Numeric("F_T", "transmitted force amplitude", unit="N", points=2,
+                misconceptions=(
+                    Misconception("spring force only", lambda p: p.k * amplitude(p),
+                                  "The damper also passes c Omega X, out of phase with the spring force."),
+                    Misconception("the unbalance force", lambda p: p.m_u * p.e * p.n**2,
+                                  "The mounting changes the force: F_T = TR m_u e Omega^2."),
+                )),
+    ),
+)
