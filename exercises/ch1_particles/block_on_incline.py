@@ -1,0 +1,76 @@
+"""A block sliding down an inclined plane with kinetic friction: acceleration, normal
+force, and whether it comes to rest (Example 1.8, eqs. 1.72-1.74)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Options,
+                                Symbolic, Uniform, Variable)
+from dynagrade.mechanics import incline
+
+
+def solve(p):
+    return {
+        "a": incline.sliding_acceleration(p.alpha, p.mu, p.g),
+        "N": incline.normal_force(p.m, p.alpha, p.g),
+        "stops": "yes" if incline.decelerates_down_slope(p.alpha, p.mu) else "no",
+    }
+
+
+EXERCISE = Exercise(
+    id="block-sliding-down-incline",
+    title="Block sliding down a rough incline",
+    source="Example 1.8",
+    topics=("linear momentum balance", "Coulomb friction", "inclined plane"),
+    params=(
+        Uniform("m", 0.5, 10.0, step=0.5, unit="kg", symbol="m"),
+        Uniform("alpha", 10, 50, step=1, unit="deg", symbol=r"\alpha"),
+        Uniform("mu", 0.1, 0.9, step=0.05, symbol=r"\mu"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        Constraint("the block clearly accelerates or decelerates: |a| > 0.3 m/s^2",
+                   lambda p: abs(incline.sliding_acceleration(p.alpha, p.mu, p.g)) > 0.3),
+        Constraint("swapping sin and cos changes the acceleration by more than 5 %",
+                   lambda p: abs(np.tan(p.alpha) - 1) > 0.15),
+    ),
+    statement="""
+A block of mass $m$ = {{ m }} slides down a plane inclined at $\\alpha$ = {{ alpha }}.
+The kinetic friction coefficient is $\\mu$ = {{ mu }}; $g$ = {{ g }}.
+
+1. What is its acceleration along the slope, counted positive down the slope (negative if it slows down)?
+2. What is the normal force of the plane on the block?
+3. Does the block eventually come to rest on the slope?
+4. Write the acceleration as a formula in $g$, $\\alpha$ and $\\mu$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("a", "acceleration down the slope", unit="m/s^2", points=2,
+                misconceptions=(
+                    Misconception("sin and cos swapped",
+                                  lambda p: p.g * (np.cos(p.alpha) - p.mu * np.sin(p.alpha)),
+                                  "Gravity's component along the slope is m g sin α, the normal "
+                                  "force m g cos α, eq. (1.72)."),
+                    Misconception("friction forgotten", lambda p: p.g * np.sin(p.alpha),
+                                  "Friction R = µ N acts up the slope while the block slides "
+                                  "down, eq. (1.73)."),
+                    Misconception("normal force taken as m g",
+                                  lambda p: p.g * (np.sin(p.alpha) - p.mu),
+                                  "On a slope N = m g cos α."),
+                )),
+        Numeric("N", "normal force", unit="N", points=1,
+                misconceptions=(
+                    Misconception("normal force equals the weight", lambda p: p.m * p.g,
+                                  "Only the component m g cos α presses on the slope."),
+                )),
+        Options("stops", "comes to rest", options=("yes", "no"), points=1),
+        Symbolic("a_formula", "acceleration as a formula", points=1,
+                 expected="g*(sin(alpha) - mu*cos(alpha))",
+                 variables={"g": Variable(1, 20, "m/s^2"), "alpha": Variable(0.05, 1.5, "rad"),
+                            "mu": Variable(0.0, 1.5)},
+                 equals="a",
+                 misconceptions=(
+                     Misconception("sin and cos swapped", "g*(cos(alpha) - mu*sin(alpha))",
+                                   "Gravity along the slope is g sin α."),
+                 )),
+    ),
+)

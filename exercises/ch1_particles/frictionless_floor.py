@@ -1,0 +1,72 @@
+"""A block pulled across a frictionless floor by an inclined rope: normal force and
+motion along the floor (Example 1.7, component-wise balance 1.69)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Uniform)
+from dynagrade.mechanics import particle
+
+
+def _forces(p):
+    pull = np.array([p.F * np.cos(p.theta), p.F * np.sin(p.theta)])
+    return pull, particle.weight(p.m, (0.0, -p.g))
+
+
+def solve(p):
+    pull, weight = _forces(p)
+    N = -(pull[1] + weight[1])                # no motion normal to the floor: x2'' = 0
+    a = particle.acceleration(p.m, pull, weight, (0.0, N))
+    return {"N": N, "a": float(a[0]), "v_t": p.v0 + float(a[0]) * p.t,
+            "N_free": particle.floor_normal_force(p.m, p.g)}
+
+
+EXERCISE = Exercise(
+    id="block-on-frictionless-floor",
+    title="Block on a frictionless floor pulled by a rope",
+    source="Example 1.7",
+    topics=("linear momentum balance", "normal force", "constrained motion"),
+    params=(
+        Uniform("m", 2.0, 20.0, step=0.5, unit="kg", symbol="m"),
+        Uniform("F", 5.0, 60.0, step=1.0, unit="N", symbol="F"),
+        Uniform("theta", 10, 50, step=1, unit="deg", symbol=r"\theta"),
+        Uniform("v0", 0.0, 3.0, step=0.1, unit="m/s", symbol="v_0"),
+        Uniform("t", 1.0, 5.0, step=0.5, unit="s", symbol="t"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        Constraint("the rope does not lift the block: F sin(theta) < 0.8 m g",
+                   lambda p: p.F * np.sin(p.theta) < 0.8 * p.m * p.g),
+        Constraint("the rope's vertical pull changes N by at least 5 %",
+                   lambda p: p.F * np.sin(p.theta) > 0.05 * p.m * p.g),
+        Constraint("cos(theta) matters for the acceleration", lambda p: np.cos(p.theta) < 0.97),
+    ),
+    statement="""
+A block of mass $m$ = {{ m }} slides on a frictionless horizontal floor. At $t = 0$ it
+moves with $v_0$ = {{ v0 }} along $\\boldsymbol e_1$, and from then on a rope pulls it with
+the constant force $F$ = {{ F }} at the angle $\\theta$ = {{ theta }} above the horizontal
+(in the direction of motion). $g$ = {{ g }}.
+
+1. What is the normal force of the floor on the block?
+2. What is the block's acceleration along the floor?
+3. What is its speed at $t$ = {{ t }}?
+4. What would the normal force be without the rope?
+""",
+    solve=solve,
+    parts=(
+        Numeric("N", "normal force", unit="N", points=2,
+                misconceptions=(
+                    Misconception("normal force equals the weight", lambda p: p.m * p.g,
+                                  "The rope also pulls upward: N = m g − F sin θ from the "
+                                  "balance in e2 (eq. 1.69)."),
+                    Misconception("rope pushes down", lambda p: p.m * p.g + p.F * np.sin(p.theta),
+                                  "The rope pulls upward, which relieves the floor."),
+                )),
+        Numeric("a", "acceleration", unit="m/s^2", points=1,
+                misconceptions=(
+                    Misconception("whole rope force along the floor", lambda p: p.F / p.m,
+                                  "Only the component F cos θ acts along e1."),
+                )),
+        Numeric("v_t", "speed at t", unit="m/s", points=1),
+        Numeric("N_free", "normal force without the rope", unit="N", points=1),
+    ),
+)

@@ -1,0 +1,73 @@
+"""A particle swung on a string at constant angular velocity: the string force
+(Example 1.10, eq. 1.84)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
+                                Variable)
+from dynagrade.mechanics import particle
+
+
+def solve(p):
+    omega = p.n          # the rate n arrives in SI, i.e. as an angular velocity in rad/s
+    return {"S": particle.string_tension(p.m, p.l, omega),
+            "v": p.l * omega,
+            "S_double": particle.string_tension(p.m, p.l, 2 * omega)}
+
+
+EXERCISE = Exercise(
+    id="particle-on-a-string",
+    title="Particle on a string: the string force",
+    source="Example 1.10",
+    topics=("linear momentum balance", "circular motion", "centripetal force"),
+    params=(
+        Uniform("m", 0.1, 2.0, step=0.05, unit="kg", symbol="m"),
+        Uniform("l", 0.3, 2.0, step=0.05, unit="m", symbol="l"),
+        Uniform("n", 30, 240, step=10, unit="rpm", symbol="n"),
+    ),
+    constraints=(
+        Constraint("omega is not near 1 rad/s, where omega and omega^2 agree",
+                   lambda p: abs(p.n - 1.0) > 0.2),
+        Constraint("the length is not near 1 m, where l and 1/l agree",
+                   lambda p: abs(p.l - 1.0) > 0.1),
+    ),
+    statement="""
+A particle of mass $m$ = {{ m }} on a taut string of length $l$ = {{ l }} is swung around
+a fixed point on a smooth horizontal table at a constant $n$ = {{ n }} revolutions per
+minute. Gravity acts perpendicular to the table.
+
+1. What is the force in the string?
+2. What is the particle's speed?
+3. What would the string force be at twice the rate of revolution?
+4. Write the string force as a formula in $m$, $l$ and the angular velocity $\\omega$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("S", "string force", unit="N", points=2,
+                misconceptions=(
+                    Misconception("rpm used as rad/s", lambda p: p.m * p.l * (p.n * 60 / (2 * np.pi)) ** 2,
+                                  "Convert: ω = 2π n / 60 in rad/s."),
+                    Misconception("revolutions not converted to radians",
+                                  lambda p: p.m * p.l * (p.n / (2 * np.pi)) ** 2,
+                                  "One revolution is 2π rad: ω = 2π n / 60."),
+                    Misconception("omega not squared",
+                                  lambda p: p.m * p.l * p.n,
+                                  "|S| = m l ω², eq. (1.84)."),
+                )),
+        Numeric("v", "speed", unit="m/s", points=1),
+        Numeric("S_double", "string force at twice the rate", unit="N", points=1,
+                misconceptions=(
+                    Misconception("linear in omega",
+                                  lambda p: 2 * particle.string_tension(p.m, p.l, p.n),
+                                  "The force grows with ω²: twice the rate, four times the force."),
+                )),
+        Symbolic("S_formula", "string force as a formula", points=1, expected="m*l*omega^2",
+                 variables={"m": Variable(0.1, 5, "kg"), "l": Variable(0.1, 5, "m"),
+                            "omega": Variable(0.5, 30, "rad/s")},
+                 misconceptions=(
+                     Misconception("divided by l", "m*omega^2/l",
+                                   "a = l ω², so the force is m l ω²."),
+                 )),
+    ),
+)
+
