@@ -184,3 +184,45 @@ def test_the_command_line_grades_a_class_and_single_files_as_before(graded):
     assert folder.exit_code != 0 and "is a directory" in folder.output
     no_manifest = runner.invoke(main, ["grade", str(sheet), "-o", str(out / "x")])
     assert no_manifest.exit_code != 0 and "need --manifest" in no_manifest.output
+
+
+def test_response_csvs_report_bad_rows_and_let_a_later_row_win(graded, tmp_path):
+    from dynagrade.exam.submissions import collect
+
+    manifest = graded["manifest"]
+    student = manifest["students"][0]
+    variant = student["variants"][0]
+    name = manifest["exercises"][0]["parts"][0]["name"]
+    responses = tmp_path / "responses.csv"
+    responses.write_text(
+        "student_id,exercise_id,part,answer\n"
+        f"{student['student_id']},{variant['exercise']},{name},1\n"
+        f"{student['student_id']},{variant['exercise']},{name},2\n"
+        f"{student['student_id']},{variant['exercise']},no_such_part,3\n"
+        f"nobody,{variant['exercise']},{name},4\n"
+        f"{student['student_id']},not-in-exam,{name},5\n"
+        f"{student['student_id']},{variant['exercise']}\n", encoding="utf-8")
+    wrong_header = tmp_path / "wrong.csv"
+    wrong_header.write_text("student,exercise,part,answer\n", encoding="utf-8")
+    chosen, problems = collect([responses, wrong_header], manifest)
+    submission = chosen[(student["student_id"], variant["exercise"])]
+    assert submission.answers == {name: "2"}
+    messages = [(p.source.rsplit(", ", 1)[-1], p.level, p.message.split(":")[0])
+                for p in problems]
+    assert messages == [("row 3", "warning", "duplicate"), ("row 4", "warning",
+                                                            "no part named 'no_such_part' in "
+                                                            + variant["exercise"] + "; ignored"),
+                        ("row 5", "error", "skipped"), ("row 6", "error", "foreign, skipped"),
+                        ("row 7", "error", "skipped"), ("row 1", "error", "corrupt, skipped")]
+
+
+def test_the_exam_command_reports_a_malformed_roster_and_writes_nothing(tmp_path):
+    exam = tmp_path / "exam.toml"
+    exam.write_text(EXAM_TOML, encoding="utf-8")
+    roster = tmp_path / "roster.csv"
+    roster.write_text("student_id,name\ns1,A\ns1,B\n", encoding="utf-8")
+    result = CliRunner().invoke(main, ["exam", str(exam), "--roster", str(roster), "-o",
+                                       str(tmp_path / "out")])
+    assert result.exit_code == 1
+    assert f"{roster}, row 3, column 1 (student_id): 's1' is already on row 2" in result.output
+    assert not (tmp_path / "out").exists()
