@@ -1,0 +1,87 @@
+"""A pendulum hanging from a cart on a spring: mass and stiffness matrices from the
+Lagrange equations and the coupled natural frequencies (Section 4.4.1)."""
+
+import numpy as np
+import sympy as sp
+
+from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import equilibrium, lagrange, multi_dof
+
+_t = sp.Symbol("t")
+_x, _phi = sp.Function("x")(_t), sp.Function("phi")(_t)
+_M, _m, _L, _k, _g = sp.symbols("M m L k g", positive=True)
+_xb, _yb = _x + _L * sp.sin(_phi), -_L * sp.cos(_phi)          # the bob
+_T = _M * _x.diff(_t) ** 2 / 2 + _m * (_xb.diff(_t) ** 2 + _yb.diff(_t) ** 2) / 2
+_V = _k * _x**2 / 2 + _m * _g * _yb
+_REST = {_x: 0, _phi: 0}
+_MASS = sp.lambdify([_M, _m, _L, _k, _g], equilibrium.linearized_mass_matrix(_T, [_x, _phi], _t, _REST))
+_STIFF = sp.lambdify([_M, _m, _L, _k, _g], equilibrium.stiffness_matrix(_V, [_x, _phi], _REST))
+
+
+def matrices(p):
+    args = (p.M, p.m, p.L, p.k, p.g)
+    return np.array(_STIFF(*args), dtype=float), np.array(_MASS(*args), dtype=float)
+
+
+def solve(p):
+    K, M = matrices(p)
+    w = multi_dof.natural_frequencies(K, M)
+    return {"M11": M[0, 0], "M12": M[0, 1], "K22": K[1, 1], "omega1": w[0], "omega2": w[1]}
+
+
+def _apart(p):
+    w = multi_dof.natural_frequencies(*matrices(p))
+    return all(abs(guess / wi - 1) >= 0.05
+               for guess in (np.sqrt(p.k / p.M), np.sqrt(p.g / p.L)) for wi in w)
+
+
+EXERCISE = Exercise(
+    id="cart-pendulum-matrices",
+    title="Pendulum on a sprung cart: mass and stiffness matrices",
+    source="Section 4.4.1",
+    topics=("Lagrange equations", "mass matrix", "stiffness matrix", "coupled vibrations"),
+    params=(
+        Uniform("M", 1.0, 10.0, step=0.5, unit="kg", symbol="M"),
+        Uniform("m", 0.5, 5.0, step=0.1, unit="kg", symbol="m"),
+        Uniform("L", 0.2, 1.5, step=0.05, unit="m", symbol="L"),
+        Uniform("k", 20, 500, step=5, unit="N/m", symbol="k"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        Constraint("the pendulum is heavy enough to couple (m >= 0.25 M)", lambda p: p.m >= 0.25 * p.M),
+        Constraint("L is not 1 m (else m g and m g L agree)", lambda p: abs(p.L - 1.0) >= 0.05),
+        Constraint("the uncoupled guesses are at least 5 % off both frequencies", _apart),
+    ),
+    statement="""
+A cart of mass $M$ = {{ M }} rolls without friction on a horizontal track and is tied to
+a wall by a spring of stiffness $k$ = {{ k }}. From the cart hangs a pendulum: a point
+mass $m$ = {{ m }} on a massless rod of length $L$ = {{ L }}; $g$ = {{ g }}. Use the
+cart's displacement $x$ and the pendulum's angle $\\varphi$ from the vertical as
+generalized coordinates.
+
+1. Linearize the Lagrange equations about $x = 0$, $\\varphi = 0$ into
+   $\\mathbf M\\ddot{\\mathbf q} + \\mathbf K\\mathbf q = \\mathbf 0$ with $\\mathbf q = (x, \\varphi)$.
+   Give the entries $M_{11}$, $M_{12}$ and $K_{22}$.
+2. What are the two natural angular frequencies $\\omega_1 < \\omega_2$?
+""",
+    solve=solve,
+    parts=(
+        Numeric("M11", "mass matrix entry M11", unit="kg", points=1,
+                misconceptions=(Misconception("cart only", lambda p: p.M, "The bob moves with the cart: M11 = M + m."),)),
+        Numeric("M12", "mass matrix entry M12", unit="kg*m", points=1,
+                misconceptions=(Misconception("uncoupled", lambda p: 0.0,
+                                              "The bob's velocity contains x' + L phi' cos(phi): T has the term m L x' phi'."),)),
+        Numeric("K22", "stiffness matrix entry K22", unit="N*m", points=1,
+                misconceptions=(Misconception("m g", lambda p: p.m * p.g, "V = -m g L cos(phi): K22 = m g L."),)),
+        Numeric("omega1", "lower natural frequency", unit="rad/s", points=2,
+                misconceptions=(
+                    Misconception("uncoupled cart", lambda p: np.sqrt(p.k / p.M), "The two motions are coupled through M12."),
+                    Misconception("uncoupled pendulum", lambda p: np.sqrt(p.g / p.L), "The two motions are coupled through M12."),
+                )),
+        Numeric("omega2", "higher natural frequency", unit="rad/s", points=2,
+                misconceptions=(
+                    Misconception("uncoupled cart", lambda p: np.sqrt(p.k / p.M), "Solve det(K - omega^2 M) = 0."),
+                    Misconception("uncoupled pendulum", lambda p: np.sqrt(p.g / p.L), "Solve det(K - omega^2 M) = 0."),
+                )),
+    ),
+)

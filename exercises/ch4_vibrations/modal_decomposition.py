@@ -1,0 +1,81 @@
+"""Two coupled masses released from rest: modal decomposition of the free vibration
+(Section 4.4.4)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import multi_dof
+
+
+def _system(p):
+    return (multi_dof.chain_stiffness_matrix([p.k, p.kc, p.k], right_wall=True),
+            multi_dof.lumped_mass_matrix([p.m, p.m]))
+
+
+def _x(p, t):
+    K, M = _system(p)
+    return multi_dof.free_response([t], K, M, [p.a, 0.0], [0.0, 0.0])[:, 0]
+
+
+def solve(p):
+    K, M = _system(p)
+    w = multi_dof.natural_frequencies(K, M)
+    eta0 = multi_dof.modal_coordinates(K, M, [p.a, 0.0])
+    shapes = multi_dof.mode_shapes(K, M)
+    x1, x2 = _x(p, p.t1)
+    # the part of x1 carried by each mode: phi_i1 * eta_i(0)
+    return {"omega1": w[0], "omega2": w[1], "A1": shapes[0, 0] * eta0[0], "x1": x1, "x2": x2}
+
+
+def _first_mode_only(p):
+    w = multi_dof.natural_frequencies(*_system(p))
+    return p.a * np.cos(w[0] * p.t1)
+
+
+EXERCISE = Exercise(
+    id="modal-decomposition-coupled-masses",
+    title="Coupled masses released from rest: modal decomposition",
+    source="Section 4.4.4",
+    topics=("modal decomposition", "mode shapes", "free vibration", "beats"),
+    params=(
+        Uniform("m", 0.5, 10, step=0.5, unit="kg", symbol="m"),
+        Uniform("k", 100, 2000, step=50, unit="N/m", symbol="k"),
+        Uniform("kc", 20, 1000, step=10, unit="N/m", symbol="k_c"),
+        Uniform("a", 5, 50, step=1, unit="mm", symbol="a"),
+        Uniform("t1", 0.05, 2.0, step=0.01, unit="s", symbol="t_1"),
+    ),
+    constraints=(
+        Constraint("the coupling is at least 10 % of the wall springs", lambda p: p.kc >= 0.1 * p.k),
+        Constraint("both displacements at t1 exceed 10 % of a",
+                   lambda p: np.all(np.abs(_x(p, p.t1)) >= 0.1 * p.a)),
+        Constraint("keeping only the first mode is at least 10 % of a off",
+                   lambda p: abs(_first_mode_only(p) - _x(p, p.t1)[0]) >= 0.1 * p.a),
+    ),
+    statement="""
+Two equal masses $m$ = {{ m }} slide without friction between two walls. Each is tied to
+its wall by a spring $k$ = {{ k }}, and they are joined by a coupling spring
+$k_c$ = {{ kc }}. Mass 1 is pulled aside by $a$ = {{ a }} while mass 2 is
+held in place, and both are released from rest at $t = 0$.
+
+1. What are the natural angular frequencies $\\omega_1 < \\omega_2$?
+2. Decompose the initial state into the modes: what is the amplitude of the first
+   (in-phase) mode in the motion $x_1(t)$ of mass 1?
+3. What are the displacements $x_1$ and $x_2$ at $t_1$ = {{ t1 }}?
+""",
+    solve=solve,
+    parts=(
+        Numeric("omega1", "lower natural frequency", unit="rad/s", points=1,
+                misconceptions=(Misconception("f for omega", lambda p: np.sqrt(p.k / p.m) / (2 * np.pi),
+                                              "omega is in rad/s."),)),
+        Numeric("omega2", "higher natural frequency", unit="rad/s", points=1,
+                misconceptions=(Misconception("coupling spring counted once", lambda p: np.sqrt((p.k + p.kc) / p.m),
+                                              "In the out-of-phase mode the coupling spring is stretched by 2x: omega^2 = (k + 2 k_c)/m."),)),
+        Numeric("A1", "first-mode amplitude in x1", unit="mm", points=1,
+                misconceptions=(Misconception("all of a", lambda p: p.a,
+                                              "The initial state (a, 0) is half in-phase mode, half out-of-phase mode."),)),
+        Numeric("x1", "x1 at t1", unit="mm", points=2,
+                misconceptions=(Misconception("first mode only", _first_mode_only,
+                                              "Superpose both modes: x1 = a/2 (cos omega1 t + cos omega2 t)."),)),
+        Numeric("x2", "x2 at t1", unit="mm", points=2),
+    ),
+)

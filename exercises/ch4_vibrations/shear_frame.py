@@ -1,0 +1,83 @@
+"""A two-storey shear frame: storey stiffness from the columns, natural frequencies and
+mode shapes (Section 4.4.2, with the column stiffness of Section 5.1)."""
+
+import numpy as np
+
+from dynagrade.exercise import Choice, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import multi_dof, stiffness, vibrations
+
+
+def storey_stiffness(p, per_column=None):
+    k = per_column if per_column is not None else stiffness.column_sway_stiffness(p.E, p.I, p.h)
+    return stiffness.parallel_stiffness(*([k] * int(p.n_col)))
+
+
+def matrices(p, per_column=None):
+    k = storey_stiffness(p, per_column)
+    return multi_dof.chain_stiffness_matrix([k, k]), multi_dof.lumped_mass_matrix([p.m1, p.m2])
+
+
+def solve(p):
+    K, M = matrices(p)
+    w = multi_dof.natural_frequencies(K, M)
+    ratios = multi_dof.amplitude_ratios(K, M)
+    return {"k": storey_stiffness(p), "f1": vibrations.frequency_in_hertz(w[0]),
+            "f2": vibrations.frequency_in_hertz(w[1]), "r1": ratios[1, 0], "r2": ratios[1, 1]}
+
+
+def _f1(p, per_column=None):
+    return vibrations.frequency_in_hertz(multi_dof.natural_frequencies(*matrices(p, per_column))[0])
+
+
+EXERCISE = Exercise(
+    id="two-storey-shear-frame",
+    title="Two-storey shear frame: natural frequencies and mode shapes",
+    source="Section 4.4.2",
+    topics=("multi-DOF vibrations", "natural frequencies", "mode shapes", "shear frame"),
+    params=(
+        Uniform("m1", 2000, 20000, step=500, unit="kg", symbol="m_1"),
+        Uniform("m2", 1000, 20000, step=500, unit="kg", symbol="m_2"),
+        Choice("n_col", (2, 4), symbol="n"),
+        Uniform("h", 2.5, 4.0, step=0.1, unit="m", symbol="h"),
+        Uniform("E", 30, 210, step=10, unit="GPa", symbol="E"),
+        Uniform("I", 1.0e-6, 5.0e-5, step=1e-6, unit="m^4", symbol="I"),
+    ),
+    constraints=(
+        Constraint("the floors differ in mass by at least 10 %", lambda p: abs(p.m1 / p.m2 - 1) >= 0.1),
+    ),
+    statement="""
+A two-storey frame has rigid floors of masses $m_1$ = {{ m1 }} (first floor) and
+$m_2$ = {{ m2 }} (roof). Each storey stands on {{ n_col.value }} identical columns of
+height $h$ = {{ h }}, Young's modulus $E$ = {{ E }} and second moment of area
+$I$ = {{ I }}; the columns are clamped into the ground and into the rigid floors, so each
+acts as a spring $12EI/h^3$ for the sway of its storey. Neglect the columns' mass and
+consider horizontal floor displacements $x_1$, $x_2$ only.
+
+1. What is the stiffness $k$ of one storey?
+2. What are the two natural frequencies $f_1 < f_2$ in Hz?
+3. For each mode, give the amplitude ratio $x_2/x_1$ (roof over first floor).
+""",
+    solve=solve,
+    parts=(
+        Numeric("k", "storey stiffness", unit="N/m", points=1,
+                misconceptions=(
+                    Misconception("cantilever columns 3EI/h^3",
+                                  lambda p: storey_stiffness(p, stiffness.cantilever_tip_stiffness(p.E, p.I, p.h)),
+                                  "The floors stop the column tops from rotating: 12 EI/h^3 per column."),
+                    Misconception("one column", lambda p: stiffness.column_sway_stiffness(p.E, p.I, p.h),
+                                  "The columns of a storey act in parallel: their stiffnesses add."),
+                )),
+        Numeric("f1", "first natural frequency", unit="Hz", points=2,
+                misconceptions=(
+                    Misconception("omega for f", lambda p: 2 * np.pi * _f1(p), "f = omega/(2 pi)."),
+                    Misconception("cantilever columns", lambda p: _f1(p, stiffness.cantilever_tip_stiffness(p.E, p.I, p.h)),
+                                  "Clamped-clamped columns: 12 EI/h^3."),
+                )),
+        Numeric("f2", "second natural frequency", unit="Hz", points=1,
+                misconceptions=(Misconception("omega for f", lambda p: 2 * np.pi * solve(p)["f2"], "f = omega/(2 pi)."),)),
+        Numeric("r1", "x2/x1 in mode 1", points=1,
+                misconceptions=(Misconception("inverted ratio", lambda p: 1 / solve(p)["r1"],
+                                              "The ratio asked is roof over first floor, x2/x1."),)),
+        Numeric("r2", "x2/x1 in mode 2", points=1),
+    ),
+)

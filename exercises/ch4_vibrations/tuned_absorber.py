@@ -1,0 +1,72 @@
+"""A tuned vibration absorber for a machine excited near resonance (Section 4.4.3)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import multi_dof, vibrations
+
+
+def _Omega(p):
+    return 2 * np.pi * p.f
+
+
+def solve(p):
+    k_a = multi_dof.tuned_absorber_stiffness(p.m_a, _Omega(p))
+    w = multi_dof.natural_frequencies(*multi_dof.absorber_system_matrices(p.m, p.k, p.m_a, k_a))
+    return {"X0": vibrations.steady_state_amplitude(p.F0, p.k, vibrations.frequency_ratio(
+                _Omega(p), vibrations.natural_frequency(p.k, p.m)), 0.0),
+            "k_a": k_a, "X_a": abs(multi_dof.absorber_amplitude(p.F0, k_a)),
+            "f_low": vibrations.frequency_in_hertz(w[0]), "f_high": vibrations.frequency_in_hertz(w[1])}
+
+
+EXERCISE = Exercise(
+    id="tuned-mass-absorber",
+    title="Tuned vibration absorber",
+    source="Section 4.4.3",
+    topics=("vibration absorber", "forced vibration", "multi-DOF vibrations", "anti-resonance"),
+    params=(
+        Uniform("m", 50, 500, step=10, unit="kg", symbol="m"),
+        Uniform("k", 1e5, 2e6, step=5e4, unit="N/m", symbol="k"),
+        Uniform("F0", 50, 1000, step=50, unit="N", symbol="F_0"),
+        Uniform("f", 5, 40, step=0.5, unit="Hz", symbol="f"),
+        Uniform("m_a", 5, 100, step=1, unit="kg", symbol="m_a"),
+    ),
+    constraints=(
+        Constraint("the machine runs near but not at resonance (5 % to 25 % off)",
+                   lambda p: 0.05 <= abs(_Omega(p) / vibrations.natural_frequency(p.k, p.m) - 1) <= 0.25),
+        Constraint("the absorber weighs 5 % to 30 % of the machine", lambda p: 0.05 <= p.m_a / p.m <= 0.3),
+    ),
+    statement="""
+A machine of mass $m$ = {{ m }} on mounts of stiffness $k$ = {{ k }} (damping negligible)
+is shaken by the force $F_0\\cos(\\Omega t)$ with $F_0$ = {{ F0 }} at the frequency
+$f = \\Omega/2\\pi$ = {{ f }}.
+
+1. What is the machine's vibration amplitude without any absorber?
+2. An absorber of mass $m_a$ = {{ m_a }} is attached to the machine by a spring $k_a$.
+   Which $k_a$ keeps the machine at rest at this frequency?
+3. What is then the absorber's amplitude?
+4. What are the two natural frequencies (in Hz) of the machine with the absorber?
+""",
+    solve=solve,
+    parts=(
+        Numeric("X0", "amplitude without absorber", unit="mm", points=1,
+                misconceptions=(Misconception("static deflection", lambda p: p.F0 / p.k,
+                                              "Near resonance the force is amplified by 1/|1 - eta^2|."),)),
+        Numeric("k_a", "absorber stiffness", unit="N/m", points=2,
+                misconceptions=(
+                    Misconception("tuned to the machine's natural frequency", lambda p: p.m_a * p.k / p.m,
+                                  "Tune the absorber to the forcing frequency: k_a = m_a Omega^2."),
+                    Misconception("f for Omega", lambda p: p.m_a * p.f**2, "Omega = 2 pi f."),
+                )),
+        Numeric("X_a", "absorber amplitude", unit="mm", points=1,
+                misconceptions=(Misconception("F0/k", lambda p: p.F0 / p.k,
+                                              "The absorber spring must pass -F0: X_a = F0/k_a."),)),
+        Numeric("f_low", "lower natural frequency", unit="Hz", points=1,
+                misconceptions=(Misconception("the machine alone",
+                                              lambda p: vibrations.frequency_in_hertz(vibrations.natural_frequency(p.k, p.m)),
+                                              "The absorber splits the machine's resonance in two."),)),
+        Numeric("f_high", "higher natural frequency", unit="Hz", points=1,
+                misconceptions=(Misconception("the forcing frequency", lambda p: p.f,
+                                              "The forcing frequency lies between the two new natural frequencies."),)),
+    ),
+)
