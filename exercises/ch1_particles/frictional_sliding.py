@@ -1,0 +1,63 @@
+"""A particle sliding to rest on a rough floor: stopping distance by the work-energy
+balance (Example 1.11, eq. 1.91)."""
+
+from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symbolic, Uniform,
+                                Variable)
+from dynagrade.mechanics import energy, particle
+
+
+def solve(p):
+    dx = energy.sliding_stopping_distance(p.v0, p.mu, p.g)
+    return {"dx": dx, "t_stop": particle.sliding_stop_time(p.v0, p.mu, p.g),
+            "W": energy.friction_work_on_floor(p.mu, p.m, p.g, dx)}
+
+
+EXERCISE = Exercise(
+    id="frictional-sliding-stop",
+    title="Frictional sliding to rest",
+    source="Example 1.11",
+    topics=("work-energy balance", "Coulomb friction"),
+    params=(
+        Uniform("m", 0.5, 20.0, step=0.5, unit="kg", symbol="m"),
+        Uniform("v0", 1.0, 15.0, step=0.5, unit="m/s", symbol="v_0"),
+        Uniform("mu", 0.1, 0.8, step=0.05, symbol=r"\mu"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    statement="""
+A crate of mass $m$ = {{ m }} slides over a level floor with initial speed $v_0$ = {{ v0 }}.
+The coefficient of kinetic friction is $\\mu$ = {{ mu }}; $g$ = {{ g }}.
+
+1. How far does it slide before it stops?
+2. How long does it slide?
+3. How much work does friction do on it over that distance?
+4. Write the stopping distance as a formula in $v_0$, $\\mu$ and $g$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("dx", "stopping distance", unit="m", points=2,
+                misconceptions=(
+                    Misconception("factor 1/2 of the kinetic energy forgotten",
+                                  lambda p: p.v0**2 / (p.mu * p.g),
+                                  "T = m v0²/2: Δx = v0²/(2 µ g), eq. (1.91)."),
+                    Misconception("friction without g", lambda p: p.v0**2 / (2 * p.mu),
+                                  "The friction force is µ N = µ m g."),
+                )),
+        Numeric("t_stop", "sliding time", unit="s", points=1),
+        Numeric("W", "work of friction", unit="J", points=1,
+                misconceptions=(
+                    Misconception("sign: friction work positive",
+                                  lambda p: 0.5 * p.m * p.v0**2,
+                                  "Friction opposes the motion, so its work is negative: "
+                                  "W = −µ m g Δx = −m v0²/2."),
+                )),
+        Symbolic("dx_formula", "stopping distance as a formula", points=1,
+                 expected="v0^2/(2*mu*g)",
+                 variables={"v0": Variable(0.5, 20, "m/s"), "mu": Variable(0.05, 1.0),
+                            "g": Variable(1, 20, "m/s^2")},
+                 equals="dx",
+                 misconceptions=(
+                     Misconception("factor 1/2 forgotten", "v0^2/(mu*g)",
+                                   "The kinetic energy is m v0²/2."),
+                 )),
+    ),
+)

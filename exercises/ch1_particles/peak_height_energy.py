@@ -1,0 +1,67 @@
+"""Maximum height of a throw from the energy balance (Example 1.12, eq. 1.106)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, Variable)
+from dynagrade.mechanics import energy
+
+
+def solve(p):
+    v_top = p.v0 * np.cos(p.alpha)            # horizontal velocity is kept in flight
+    return {"v_top": v_top, "h": energy.height_gain(p.v0, v_top, p.g),
+            "T_top": float(energy.kinetic_energy(p.m, v_top))}
+
+
+EXERCISE = Exercise(
+    id="peak-height-by-energy",
+    title="Peak height of a throw by the energy balance",
+    source="Example 1.12",
+    topics=("work-energy balance", "conservation of energy", "projectile motion"),
+    params=(
+        Uniform("m", 0.1, 2.0, step=0.05, unit="kg", symbol="m"),
+        Uniform("v0", 5.0, 30.0, step=0.5, unit="m/s", symbol="v_0"),
+        Uniform("alpha", 20, 75, step=1, unit="deg", symbol=r"\alpha"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        Constraint("the angle is clear of 45 degrees, where sin and cos agree",
+                   lambda p: abs(p.alpha - np.pi / 4) > np.radians(4)),
+    ),
+    statement="""
+A ball of mass $m$ = {{ m }} is thrown with speed $v_0$ = {{ v0 }} at $\\alpha$ = {{ alpha }}
+above the horizontal; $g$ = {{ g }}, no air drag. Use the conservation of energy.
+
+1. What is its speed at the highest point?
+2. How high above the launch point does it rise?
+3. What is its kinetic energy at the highest point?
+4. Write the height as a formula in $v_0$, $\\alpha$ and $g$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("v_top", "speed at the top", unit="m/s", points=1,
+                misconceptions=(
+                    Misconception("at rest at the top", lambda p: 0.0,
+                                  "Only the vertical velocity vanishes at the top; v0 cos α remains."),
+                    Misconception("sin for cos", lambda p: p.v0 * np.sin(p.alpha),
+                                  "The horizontal component is v0 cos α."),
+                )),
+        Numeric("h", "peak height", unit="m", points=2,
+                misconceptions=(
+                    Misconception("all kinetic energy into height", lambda p: p.v0**2 / (2 * p.g),
+                                  "The horizontal motion keeps m (v0 cos α)²/2, eq. (1.105)."),
+                )),
+        Numeric("T_top", "kinetic energy at the top", unit="J", points=1),
+        Symbolic("h_formula", "peak height as a formula", points=1,
+                 expected="v0^2*sin(alpha)^2/(2*g)",
+                 variables={"v0": Variable(1, 40, "m/s"), "alpha": Variable(0.1, 1.5, "rad"),
+                            "g": Variable(1, 20, "m/s^2")},
+                 equals="h",
+                 misconceptions=(
+                     Misconception("all kinetic energy into height", "v0^2/(2*g)",
+                                   "The horizontal velocity is kept at the top."),
+                     Misconception("cos for sin", "v0^2*cos(alpha)^2/(2*g)",
+                                   "The height comes from the vertical component v0 sin α."),
+                 )),
+    ),
+)

@@ -1,0 +1,70 @@
+"""An elastic slingshot: release speed from the conservation of energy (Example 1.14,
+eqs. 1.124-1.125)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
+                                Variable)
+from dynagrade.mechanics import energy
+
+
+def solve(p):
+    return {"stretch": float(energy.slingshot_stretch(p.dx, p.l0)),
+            "V1": float(energy.spring_potential_of_stretch(p.k, energy.slingshot_stretch(p.dx, p.l0))),
+            "v": float(energy.slingshot_speed(p.k, p.m, p.dx, p.l0))}
+
+
+EXERCISE = Exercise(
+    id="elastic-slingshot",
+    title="Elastic slingshot",
+    source="Example 1.14",
+    topics=("conservation of energy", "spring potential"),
+    params=(
+        Uniform("m", 0.01, 0.2, step=0.005, unit="kg", symbol="m"),
+        Uniform("k", 50, 800, step=10, unit="N/m", symbol="k"),
+        Uniform("l0", 5, 30, step=1, unit="cm", symbol="l_0"),
+        Uniform("dx", 5, 40, step=1, unit="cm", symbol=r"\Delta x"),
+    ),
+    constraints=(
+        Constraint("taking dx as the stretch is off by more than 5 %",
+                   lambda p: energy.slingshot_stretch(p.dx, p.l0) < 0.95 * p.dx),
+    ),
+    statement="""
+A linear spring of stiffness $k$ = {{ k }} and natural length $l_0$ = {{ l0 }} is fixed at
+one end to a point at height $l_0$ above a smooth floor; its other end holds a particle of
+mass $m$ = {{ m }} on the floor, directly below the fixed point. The particle is pulled
+sideways along the floor by $\\Delta x$ = {{ dx }} and released from rest.
+
+1. By how much is the spring stretched before release?
+2. How much energy does the spring store then?
+3. What is the particle's speed when it passes below the fixed point?
+4. Write that speed as a formula in $k$, $m$, $\\Delta x$ (write `dx`) and $l_0$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("stretch", "stretch of the spring", unit="cm", points=1,
+                misconceptions=(
+                    Misconception("sideways pull taken as the stretch", lambda p: p.dx,
+                                  "The spring's new length is √(Δx² + l0²); subtract l0."),
+                )),
+        Numeric("V1", "stored energy", unit="J", points=1),
+        Numeric("v", "speed below the fixed point", unit="m/s", points=2,
+                misconceptions=(
+                    Misconception("sideways pull taken as the stretch",
+                                  lambda p: np.sqrt(p.k / p.m) * p.dx,
+                                  "The stretch is √(Δx² + l0²) − l0, eq. (1.124)."),
+                    Misconception("factor 1/2 on one side only",
+                                  lambda p: np.sqrt(2 * p.k / p.m) * energy.slingshot_stretch(p.dx, p.l0),
+                                  "Both energies carry a factor 1/2: k s²/2 = m v²/2."),
+                )),
+        Symbolic("v_formula", "speed as a formula", points=1,
+                 expected="sqrt(k/m)*(sqrt(dx^2 + l0^2) - l0)",
+                 variables={"k": Variable(10, 1000, "N/m"), "m": Variable(0.005, 1, "kg"),
+                            "dx": Variable(0.01, 0.5, "m"), "l0": Variable(0.01, 0.5, "m")},
+                 equals="v",
+                 misconceptions=(
+                     Misconception("sideways pull taken as the stretch", "sqrt(k/m)*dx",
+                                   "The stretch is √(Δx² + l0²) − l0."),
+                 )),
+    ),
+)

@@ -1,0 +1,73 @@
+"""A particle shot upward by a compressed spring: launch height (Example 1.12, variation,
+eq. 1.108)."""
+
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, Variable)
+from dynagrade.mechanics import energy
+
+
+def solve(p):
+    h = energy.spring_launch_height(p.k, p.dx, p.m, p.g)
+    return {"h": h, "V_spring": float(energy.spring_potential_of_stretch(p.k, p.dx)),
+            "v_release": float(energy.speed_after_work(p.m, 0.0, energy.spring_potential_of_stretch(p.k, p.dx)
+                                                       - p.m * p.g * p.dx))}
+
+
+EXERCISE = Exercise(
+    id="spring-launch-height",
+    title="Spring launch: how high does the particle fly?",
+    source="Example 1.12",
+    topics=("conservation of energy", "spring potential", "gravity potential"),
+    params=(
+        Uniform("m", 0.02, 0.5, step=0.01, unit="kg", symbol="m"),
+        Uniform("k", 100, 2000, step=50, unit="N/m", symbol="k"),
+        Uniform("dx", 2, 15, step=0.5, unit="cm", symbol=r"\Delta x"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        Constraint("the spring launches the particle well clear of itself",
+                   lambda p: solve(p)["h"] > 3 * p.dx),
+        # m g dx must be at least a tenth of the spring energy, else ignoring it is harmless
+        Constraint("the rise over the compression costs at least 10 % of the spring energy",
+                   lambda p: p.m * p.g * p.dx > 0.1 * energy.spring_potential_of_stretch(p.k, p.dx)),
+        Constraint("the height stays below 100 m", lambda p: solve(p)["h"] < 100),
+    ),
+    statement="""
+A particle of mass $m$ = {{ m }} rests on a vertical spring (stiffness $k$ = {{ k }})
+that is compressed by $\\Delta x$ = {{ dx }}. The spring is released and launches the
+particle straight up; $g$ = {{ g }}, no air drag, the spring is massless.
+
+1. How high above its starting point does the particle rise?
+2. How much energy was stored in the spring?
+3. How fast is the particle when the spring reaches its natural length?
+4. Write the height as a formula in $k$, $\\Delta x$ (write `dx`), $m$ and $g$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("h", "height above the start", unit="m", points=2,
+                misconceptions=(
+                    Misconception("factor 1/2 in the spring energy forgotten",
+                                  lambda p: p.k * p.dx**2 / (p.m * p.g),
+                                  "The spring energy is k Δx²/2, eq. (1.97)."),
+                    Misconception("spring energy linear in the compression",
+                                  lambda p: p.k * p.dx / (2 * p.m * p.g),
+                                  "V = k Δx²/2: the compression enters squared."),
+                )),
+        Numeric("V_spring", "stored spring energy", unit="J", points=1),
+        Numeric("v_release", "speed at the spring's natural length", unit="m/s", points=1,
+                misconceptions=(
+                    Misconception("gravity over the compression ignored",
+                                  lambda p: (p.k / p.m) ** 0.5 * p.dx,
+                                  "The particle also rises by Δx while the spring expands: "
+                                  "subtract m g Δx."),
+                )),
+        Symbolic("h_formula", "height as a formula", points=1, expected="k*dx^2/(2*m*g)",
+                 variables={"k": Variable(10, 5000, "N/m"), "dx": Variable(0.01, 0.3, "m"),
+                            "m": Variable(0.01, 2, "kg"), "g": Variable(1, 20, "m/s^2")},
+                 equals="h",
+                 misconceptions=(
+                     Misconception("factor 1/2 forgotten", "k*dx^2/(m*g)",
+                                   "The spring energy is k Δx²/2."),
+                 )),
+    ),
+)
