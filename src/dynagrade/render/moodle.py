@@ -33,7 +33,13 @@ def tolerance(value: float, rtol: float, atol: float | None) -> float:
 
 
 def _number(value: float) -> str:
+    """A number as Moodle reads it, exactly (the shortest text that round-trips)."""
     return repr(float(value))
+
+
+def _tolerance_text(value: float) -> str:
+    """A tolerance to 15 significant figures (``0.1725``, not ``0.17250000000000001``)."""
+    return f"{float(value):.15g}"
 
 
 def _sub(parent: ET.Element, tag: str, text: str | None = None, **attributes) -> ET.Element:
@@ -53,10 +59,11 @@ def _cloze_field(part: dict, value, weight: int) -> str:
     kind = part["kind"]
     if kind == "numeric":
         tol = tolerance(value, part["rtol"], part["atol"])
-        return f"{{{weight}:NUMERICAL:={_number(value)}:{_number(tol)}}}"
+        return f"{{{weight}:NUMERICAL:={_number(value)}:{_tolerance_text(tol)}}}"
     if kind == "vector":
         fields = [f"{{{weight}:NUMERICAL:={_number(v)}:"
-                  f"{_number(tolerance(v, part['rtol'], part['atol']))}}}" for v in value]
+                  f"{_tolerance_text(tolerance(v, part['rtol'], part['atol']))}}}"
+                  for v in value]
         return "[" + ", ".join(fields) + "]"
     if kind == "choice":
         correct = set(value) if isinstance(value, list) else {value}
@@ -120,7 +127,7 @@ def _question(quiz: ET.Element, exercise: Exercise, described: dict, variant: di
         value = answers[part["name"]]
         answer = _sub(question, "answer", fraction="100", format="moodle_auto_format")
         _sub(answer, "text", _number(value))
-        _sub(answer, "tolerance", _number(tolerance(value, part["rtol"], part["atol"])))
+        _sub(answer, "tolerance", _tolerance_text(tolerance(value, part["rtol"], part["atol"])))
         _text(answer, "feedback", "", format="html")
         _sub(question, "unitgradingtype", "0")
         _sub(question, "unitpenalty", "0")
