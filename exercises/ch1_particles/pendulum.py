@@ -1,0 +1,87 @@
+"""A particle on a massless string as a pendulum: equation of motion with air drag and the
+small-angle period (Example 1.17, eqs. 1.145-1.149)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, Variable)
+from dynagrade.mechanics import angular_momentum as am
+
+
+def solve(p):
+    return {
+        "T": am.pendulum_small_angle_period(p.g, p.R),
+        "phi_ddot": float(am.pendulum_angular_acceleration(p.phi, p.phidot, p.g, p.R, p.k, p.m)),
+        "S": float(am.pendulum_string_force(p.m, p.R, p.g, p.phi, p.phidot)),
+    }
+
+
+EXERCISE = Exercise(
+    id="pendulum-with-drag",
+    title="Pendulum: equation of motion and small-angle period",
+    source="Example 1.17",
+    topics=("angular momentum balance", "pendulum", "equation of motion", "linearization"),
+    params=(
+        Uniform("m", 0.1, 3.0, step=0.1, unit="kg", symbol="m"),
+        Uniform("R", 0.3, 3.0, step=0.1, unit="m", symbol="R"),
+        Uniform("k", 0.05, 0.5, step=0.01, unit="kg/s", symbol="k"),
+        Uniform("phi", 15, 70, step=1, unit="deg", symbol=r"\varphi"),
+        Uniform("phidot", 0.3, 3.0, step=0.1, unit="rad/s", symbol=r"\dot\varphi"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        Constraint("the drag term is at least 5 % of the gravity term",
+                   lambda p: p.k / p.m * p.phidot > 0.05 * p.g / p.R * np.sin(p.phi)),
+        Constraint("the small-angle slip sin(phi) -> phi matters by 5 %",
+                   lambda p: abs(p.g / p.R * (p.phi - np.sin(p.phi)))
+                   > 0.05 * abs(solve(p)["phi_ddot"])),
+        Constraint("the string stays taut", lambda p: solve(p)["S"] > 0),
+    ),
+    statement="""
+A particle of mass $m$ = {{ m }} hangs from a fixed point B on a light, rigid string of
+length $R$ = {{ R }}; $g$ = {{ g }}. Air drag on the particle is $\\boldsymbol F_d = -k\\boldsymbol v$ with
+$k$ = {{ k }}. $\\varphi$ is the string's angle from the downward vertical.
+
+1. What is the period of small oscillations without drag?
+2. At an instant with $\\varphi$ = {{ phi }} and $\\dot\\varphi$ = {{ phidot }} (swinging
+   further out), what is the angular acceleration $\\ddot\\varphi$?
+3. What is the force in the string at that instant?
+4. Write $\\ddot\\varphi$ as a formula in $\\varphi$ (`phi`), $\\dot\\varphi$ (`phidot`), $k$, $m$, $g$ and $R$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("T", "small-angle period", unit="s", points=1,
+                misconceptions=(
+                    Misconception("angular frequency given as the period",
+                                  lambda p: am.pendulum_natural_frequency(p.g, p.R),
+                                  "T = 2π/ω with ω = √(g/R)."),
+                    Misconception("sqrt(g/R) upside down", lambda p: 2 * np.pi * np.sqrt(p.g / p.R),
+                                  "T = 2π √(R/g)."),
+                )),
+        Numeric("phi_ddot", "angular acceleration", unit="rad/s^2", points=2,
+                misconceptions=(
+                    Misconception("drag forgotten", lambda p: -p.g / p.R * np.sin(p.phi),
+                                  "The drag torque −k R² φ̇ adds −(k/m) φ̇, eq. (1.149)."),
+                    Misconception("small-angle form at a large angle",
+                                  lambda p: -p.k / p.m * p.phidot - p.g / p.R * p.phi,
+                                  "sin φ ≈ φ only holds for |φ| ≪ 1."),
+                )),
+        Numeric("S", "string force", unit="N", points=1,
+                misconceptions=(
+                    Misconception("static string force", lambda p: p.m * p.g * np.cos(p.phi),
+                                  "The string also supplies the centripetal force m R φ̇²."),
+                )),
+        Symbolic("eom", "angular acceleration as a formula", points=1,
+                 expected="-(k/m)*phidot - (g/R)*sin(phi)",
+                 variables={"k": Variable(0.01, 1, "kg/s"), "m": Variable(0.1, 5, "kg"),
+                            "phidot": Variable(-3, 3, "rad/s"), "g": Variable(1, 20, "m/s^2"),
+                            "R": Variable(0.2, 5, "m"), "phi": Variable(-1.5, 1.5, "rad")},
+                 equals="phi_ddot",
+                 misconceptions=(
+                     Misconception("linearized", "-(k/m)*phidot - (g/R)*phi",
+                                   "Keep sin φ: the angle is not small."),
+                     Misconception("drag forgotten", "-(g/R)*sin(phi)",
+                                   "Add the drag term −(k/m) φ̇."),
+                 )),
+    ),
+)

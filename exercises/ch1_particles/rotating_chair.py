@@ -1,0 +1,78 @@
+"""A person on a freely rotating chair pulls a heavy mass towards the axis: conservation of
+angular momentum (Example 1.19; eqs. 1.135 and 1.139)."""
+
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
+                                Variable)
+from dynagrade.mechanics import angular_momentum as am
+
+
+def _inertia(p, r):
+    return p.I + am.particle_moment_of_inertia(p.m, r)
+
+
+def solve(p):
+    I0, I1 = _inertia(p, p.r0), _inertia(p, p.r1)
+    omega1 = am.conserved_angular_velocity(p.omega0, I0, I1)
+    return {"omega1": omega1,
+            "H": I0 * p.omega0,
+            "W": 0.5 * I1 * omega1**2 - 0.5 * I0 * p.omega0**2}
+
+
+EXERCISE = Exercise(
+    id="rotating-chair",
+    title="Heavy mass held on a rotating chair",
+    source="Example 1.19",
+    topics=("conservation of angular momentum", "moment of inertia"),
+    params=(
+        Uniform("I", 1.0, 4.0, step=0.1, unit="kg*m^2", symbol="I_0"),
+        Uniform("m", 2.0, 10.0, step=0.5, unit="kg", symbol="m"),
+        Uniform("r0", 0.5, 0.9, step=0.05, unit="m", symbol="r_0"),
+        Uniform("r1", 0.1, 0.3, step=0.05, unit="m", symbol="r_1"),
+        Uniform("omega0", 0.5, 3.0, step=0.1, unit="rad/s", symbol=r"\omega_0"),
+    ),
+    constraints=(
+        Constraint("the mass matters: m r0^2 is at least 20 % of I",
+                   lambda p: p.m * p.r0**2 > 0.2 * p.I),
+    ),
+    statement="""
+A person sits on a chair that turns without friction about a vertical axis. Person and
+chair together have the moment of inertia $I_0$ = {{ I }} about that axis. The person
+holds a heavy mass $m$ = {{ m }} (treat it as a particle) at the distance
+$r_0$ = {{ r0 }} from the axis while turning at $\\omega_0$ = {{ omega0 }}, then pulls it in
+to $r_1$ = {{ r1 }}.
+
+1. What is the angular velocity afterwards?
+2. What is the angular momentum of the whole system about the axis?
+3. How much work did the person do while pulling the mass in?
+4. Write the final angular velocity as a formula in $I_0$ (`I`), $m$, $r_0$, $r_1$ and $\\omega_0$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("omega1", "final angular velocity", unit="rad/s", points=2,
+                misconceptions=(
+                    Misconception("chair's inertia forgotten",
+                                  lambda p: p.omega0 * (p.r0 / p.r1) ** 2,
+                                  "Person and chair turn too: conserve (I0 + m r²) ω."),
+                    Misconception("energy conserved instead",
+                                  lambda p: p.omega0 * (_inertia(p, p.r0) / _inertia(p, p.r1)) ** 0.5,
+                                  "The person does work; only the angular momentum is conserved "
+                                  "(no torque about the axis, eq. 1.135)."),
+                )),
+        Numeric("H", "angular momentum", unit="kg*m^2/s", points=1,
+                misconceptions=(
+                    Misconception("mass only", lambda p: p.m * p.r0**2 * p.omega0,
+                                  "Include the person and chair, I0 ω0."),
+                )),
+        Numeric("W", "work done by the person", unit="J", points=1),
+        Symbolic("omega_formula", "final angular velocity as a formula", points=1,
+                 expected="(I + m*r0^2)*omega0/(I + m*r1^2)",
+                 variables={"I": Variable(0.5, 5, "kg*m^2"), "m": Variable(0.5, 20, "kg"),
+                            "r0": Variable(0.1, 1, "m"), "r1": Variable(0.05, 1, "m"),
+                            "omega0": Variable(0.1, 5, "rad/s")},
+                 equals="omega1",
+                 misconceptions=(
+                     Misconception("chair's inertia forgotten", "(r0/r1)^2*omega0",
+                                   "The chair and person turn too."),
+                 )),
+    ),
+)

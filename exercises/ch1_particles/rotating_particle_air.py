@@ -1,0 +1,77 @@
+"""A particle circling in air at constant radius: decay of the angular velocity by
+linear drag (Example 1.16, eqs. 1.142-1.144)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
+                                Variable)
+from dynagrade.mechanics import angular_momentum as am
+
+
+def solve(p):
+    return {
+        "M0": float(-am.drag_torque(p.k, p.R, p.omega0)),
+        "omega_t": float(am.drag_angular_velocity(p.t, p.omega0, p.k, p.m)),
+        "t_half": np.log(2.0) / am.rotation_decay_rate(p.k, p.m),
+        "phi_total": float(am.drag_rotation_angle(np.inf, p.omega0, p.k, p.m)),
+    }
+
+
+EXERCISE = Exercise(
+    id="rotating-particle-in-air",
+    title="Rotating particle slowed by air drag",
+    source="Example 1.16",
+    topics=("angular momentum balance", "viscous drag", "equation of motion"),
+    params=(
+        Uniform("m", 0.1, 2.0, step=0.05, unit="kg", symbol="m"),
+        Uniform("R", 0.2, 1.5, step=0.05, unit="m", symbol="R"),
+        Uniform("k", 0.01, 0.2, step=0.005, unit="kg/s", symbol="k"),
+        Uniform("omega0", 2.0, 20.0, step=0.5, unit="rad/s", symbol=r"\dot\varphi_0"),
+        Uniform("t", 1.0, 20.0, step=0.5, unit="s", symbol="t"),
+    ),
+    constraints=(
+        Constraint("the decay by time t is visible but not complete: 0.3 < k t/m < 2.5",
+                   lambda p: 0.3 < p.k * p.t / p.m < 2.5),
+        Constraint("R is not near 1 m, where R and R^2 agree", lambda p: abs(p.R - 1.0) > 0.1),
+    ),
+    statement="""
+A particle of mass $m$ = {{ m }} on a light rigid rod circles at the constant radius
+$R$ = {{ R }} about a fixed vertical axis (gravity is perpendicular to the plane of
+rotation and the bearing is frictionless). Air exerts the drag $\\boldsymbol F_d = -k\\boldsymbol v$
+with $k$ = {{ k }}. At $t = 0$ it turns at $\\dot\\varphi_0$ = {{ omega0 }}.
+
+1. What is the magnitude of the drag torque about the axis at $t = 0$?
+2. What is the angular velocity at $t$ = {{ t }}?
+3. After what time has the angular velocity halved?
+4. Through what total angle (in rad) does the particle turn before it stops?
+5. Write $\\dot\\varphi(t)$ as a formula in $\\dot\\varphi_0$ (write `omega0`), $k$, $m$ and $t$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("M0", "drag torque at t = 0", unit="N*m", points=1,
+                misconceptions=(
+                    Misconception("lever arm forgotten", lambda p: p.k * p.R * p.omega0,
+                                  "M = R × F_d with |F_d| = k R φ̇: M = k R² φ̇, eq. (1.143)."),
+                )),
+        Numeric("omega_t", "angular velocity at t", unit="rad/s", points=2,
+                misconceptions=(
+                    Misconception("decay rate k/(m R^2)",
+                                  lambda p: p.omega0 * np.exp(-p.k * p.t / (p.m * p.R**2)),
+                                  "R² cancels: m R² φ̈ = −k R² φ̇ gives φ̈ + (k/m) φ̇ = 0, eq. (1.144)."),
+                    Misconception("linear decrease",
+                                  lambda p: p.omega0 * (1 - p.k * p.t / p.m),
+                                  "Solve φ̈ = −(k/m) φ̇: the decay is exponential."),
+                )),
+        Numeric("t_half", "half-life of the angular velocity", unit="s", points=1),
+        Numeric("phi_total", "total angle", unit="rad", points=1),
+        Symbolic("omega_formula", "angular velocity as a formula", points=1,
+                 expected="omega0*exp(-k*t/m)",
+                 variables={"omega0": Variable(0.5, 30, "rad/s"), "k": Variable(0.005, 0.5, "kg/s"),
+                            "m": Variable(0.05, 3, "kg"), "t": Variable(0, 30, "s")},
+                 equals="omega_t",
+                 misconceptions=(
+                     Misconception("decay rate m/k", "omega0*exp(-m*t/k)",
+                                   "The rate is k/m (units 1/s)."),
+                 )),
+    ),
+)

@@ -1,0 +1,78 @@
+"""A particle circling on a frictionless table while its string is pulled in through a
+hole: conservation of angular momentum (Example 1.18, eqs. 1.151-1.155)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
+                                Variable)
+from dynagrade.mechanics import angular_momentum as am, energy
+
+
+def solve(p):
+    omega1 = am.pulled_string_angular_velocity(p.omega0, p.l0, p.l1)
+    v0, v1 = p.l0 * p.omega0, am.conserved_tangential_speed(p.l0 * p.omega0, p.l0, p.l1)
+    return {
+        "omega1": omega1,
+        "v_ratio": v1 / v0,
+        "W": float(energy.kinetic_energy(p.m, v1) - energy.kinetic_energy(p.m, v0)),
+    }
+
+
+EXERCISE = Exercise(
+    id="string-pulled-inward",
+    title="Circling mass on a string pulled inward",
+    source="Example 1.18",
+    topics=("angular momentum balance", "conservation of angular momentum"),
+    params=(
+        Uniform("m", 0.1, 2.0, step=0.05, unit="kg", symbol="m"),
+        Uniform("l0", 0.5, 1.5, step=0.05, unit="m", symbol="l(0)"),
+        Uniform("l1", 0.15, 0.9, step=0.05, unit="m", symbol="l_1"),
+        Uniform("omega0", 1.0, 6.0, step=0.25, unit="rad/s", symbol=r"\omega(0)"),
+    ),
+    constraints=(
+        Constraint("the string is pulled in by at least 20 %", lambda p: p.l1 < 0.8 * p.l0),
+    ),
+    statement="""
+A particle of mass $m$ = {{ m }} slides on a frictionless horizontal table, tied to a
+string that passes through a hole B in the table. It circles the hole at radius
+$l(0)$ = {{ l0 }} with angular velocity $\\omega(0)$ = {{ omega0 }}. The string is then
+slowly pulled down until the radius is $l_1$ = {{ l1 }}, and held there.
+
+1. What is the angular velocity at radius $l_1$?
+2. By what factor has the circumferential speed $v_t$ changed ($v_t(l_1)/v_t(0)$)?
+3. How much work did the pulling force do on the particle?
+4. Write the final angular velocity as a formula in $\\omega(0)$ (`omega0`), $l(0)$ (`l0`) and $l_1$ (`l1`).
+""",
+    solve=solve,
+    parts=(
+        Numeric("omega1", "final angular velocity", unit="rad/s", points=2,
+                misconceptions=(
+                    Misconception("speed kept constant", lambda p: p.omega0 * p.l0 / p.l1,
+                                  "It is l v_t that is conserved, and v_t = l ω: ω scales "
+                                  "with (l0/l)², eq. (1.155)."),
+                    Misconception("angular velocity kept", lambda p: p.omega0,
+                                  "No torque about B acts: the angular momentum m l² ω is "
+                                  "conserved, not ω."),
+                )),
+        Numeric("v_ratio", "speed ratio", points=1,
+                misconceptions=(
+                    Misconception("squared ratio", lambda p: (p.l0 / p.l1) ** 2,
+                                  "v_t ∝ 1/l, eq. (1.154); ω ∝ 1/l²."),
+                )),
+        Numeric("W", "work of the pulling force", unit="J", points=1,
+                misconceptions=(
+                    Misconception("no work", lambda p: 0.0,
+                                  "The kinetic energy grows: the pulling force does work, "
+                                  "W = T1 − T0."),
+                )),
+        Symbolic("omega_formula", "final angular velocity as a formula", points=1,
+                 expected="(l0/l1)^2*omega0",
+                 variables={"l0": Variable(0.2, 3, "m"), "l1": Variable(0.1, 3, "m"),
+                            "omega0": Variable(0.1, 10, "rad/s")},
+                 equals="omega1",
+                 misconceptions=(
+                     Misconception("speed kept constant", "(l0/l1)*omega0",
+                                   "ω scales with the square of the radius ratio."),
+                 )),
+    ),
+)
