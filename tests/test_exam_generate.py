@@ -218,3 +218,33 @@ def test_a_variant_that_cannot_discriminate_is_replaced_and_the_manifest_says_wh
     for redraw in redraws:
         assert exercise.variant(redraw["seed"]).params["x"] == 1.0
         assert any("not squared" in problem for problem in redraw["problems"])
+
+
+def test_vector_and_choice_parts_become_cloze_fields_with_their_answers(tmp_path, bank):
+    exam = tmp_path / "exam.toml"
+    exam.write_text('id = "m"\ntitle = "M & <Co>"\ndate = 2025-01-01\n'
+                    '[[exercise]]\nid = "release-under-gravity"\npoints = 4\n'
+                    '[[exercise]]\nid = "block-sliding-down-incline"\npoints = 4\n',
+                    encoding="utf-8")
+    roster = tmp_path / "roster.csv"
+    roster.write_text("student_id,name\nm1,A\nm2,B\n", encoding="utf-8")
+    generate_exam(exam, roster, tmp_path / "out", bank=bank, jobs=1, pdf=False)
+    manifest = json.loads((tmp_path / "out" / "manifest.json").read_text(encoding="utf-8"))
+    root = ET.parse(tmp_path / "out" / "moodle.xml").getroot()
+    assert root.find("question/category/text").text == "$course$/top/M & <Co>/release-under-gravity"
+    questions = {q.findtext("idnumber"): q.findtext("questiontext/text")
+                 for q in root.findall("question") if q.get("type") == "cloze"}
+    assert len(questions) == 4
+    for student in manifest["students"]:
+        for variant in student["variants"]:
+            text = questions[f"{variant['exercise']}-{variant['seed']}"]
+            exercise = bank.get(variant["exercise"])
+            for part in exercise.parts:
+                value = variant["answers"][part.name]
+                if part.kind == "vector":
+                    for component in value:
+                        tolerance = part.rtol * abs(component)
+                        assert f"NUMERICAL:={component!r}:{tolerance:.15g}}}" in text
+                elif part.kind == "choice":
+                    wanted = "~".join(f"={o}" if o == value else o for o in part.options)
+                    assert f"MULTICHOICE:{wanted}}}" in text
