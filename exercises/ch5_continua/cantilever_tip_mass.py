@@ -1,0 +1,65 @@
+"""A heavy beam carrying a tip mass: effective beam mass and Rayleigh's estimate (Section 5.2)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import continua, stiffness, vibrations
+
+
+def _k(p):
+    return stiffness.cantilever_tip_stiffness(p.E, stiffness.circle_second_moment(p.d), p.L)
+
+
+def _m_b(p):
+    return p.rho * stiffness.circle_area(p.d) * p.L
+
+
+def _f(m_extra, p):
+    return vibrations.frequency_in_hertz(continua.rayleigh_frequency(_k(p), p.m, m_extra))
+
+
+def solve(p):
+    return {"m_eff": continua.cantilever_effective_mass(_m_b(p)),
+            "f": _f(continua.cantilever_effective_mass(_m_b(p)), p)}
+
+
+EXERCISE = Exercise(
+    id="cantilever-tip-mass-rayleigh",
+    title="Cantilever with a tip mass: effective beam mass",
+    source="Section 5.2",
+    topics=("effective mass", "Rayleigh's method", "beam stiffness"),
+    params=(
+        Uniform("E", 70, 210, step=10, unit="GPa", symbol="E"),
+        Uniform("rho", 2700, 7900, step=100, unit="kg/m^3", symbol=r"\rho"),
+        Uniform("d", 10, 40, step=1, unit="mm", symbol="d"),
+        Uniform("L", 0.5, 2.0, step=0.05, unit="m", symbol="L"),
+        Uniform("m", 0.5, 10, step=0.1, unit="kg", symbol="m"),
+    ),
+    constraints=(
+        Constraint("the beam weighs 30 % to 300 % of the tip mass", lambda p: 0.3 <= _m_b(p) / p.m <= 3),
+    ),
+    statement="""
+A round bar (diameter $d$ = {{ d }}, length $L$ = {{ L }}, $E$ = {{ E }},
+density $\\rho$ = {{ rho }}) is clamped horizontally at one end and carries a small mass
+$m$ = {{ m }} at the other. Assume it vibrates in the shape of its static deflection under a
+tip load.
+
+1. Which effective mass does the bar add at its tip?
+2. Estimate the fundamental frequency (in Hz) of vertical vibrations.
+""",
+    solve=solve,
+    parts=(
+        Numeric("m_eff", "effective beam mass", unit="kg", points=2,
+                misconceptions=(
+                    Misconception("a third (as for a spring)", lambda p: _m_b(p) / 3,
+                                  "The static deflection of a cantilever is cubic: m_eff = 33/140 m_b."),
+                    Misconception("the whole beam", _m_b, "Most of the beam moves less than its tip."),
+                )),
+        Numeric("f", "fundamental frequency", unit="Hz", points=2,
+                misconceptions=(
+                    Misconception("beam mass forgotten", lambda p: _f(0.0, p), "Add 33/140 of the beam's mass."),
+                    Misconception("whole beam mass", lambda p: _f(_m_b(p), p), "Only 33/140 of the beam's mass is effective."),
+                    Misconception("omega for f", lambda p: 2 * np.pi * solve(p)["f"], "f = omega/(2 pi)."),
+                )),
+    ),
+)

@@ -1,0 +1,66 @@
+"""A mass on a spring whose own mass matters: Rayleigh's effective mass (Section 5.2)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform, Variable
+from dynagrade.mechanics import continua, rods, vibrations
+
+
+def omega(p):
+    return continua.rayleigh_frequency(p.k, p.m, continua.spring_effective_mass(p.m_s))
+
+
+def solve(p):
+    # the spring as a continuous bar with a tip mass: c = L sqrt(k/m_s), so omega = kL sqrt(k/m_s)
+    exact = rods.tip_mass_fundamental_frequency(np.sqrt(p.k / p.m_s), 1.0, p.m_s, p.m)
+    return {"m_eff": continua.spring_effective_mass(p.m_s), "f": vibrations.frequency_in_hertz(omega(p)),
+            "error": omega(p) / exact - 1, "omega": omega(p)}
+
+
+EXERCISE = Exercise(
+    id="effective-mass-of-a-spring",
+    title="Mass on a heavy spring: effective mass",
+    source="Section 5.2",
+    topics=("effective mass", "Rayleigh's method", "natural frequency"),
+    params=(
+        Uniform("m", 0.2, 5.0, step=0.1, unit="kg", symbol="m"),
+        Uniform("m_s", 0.05, 2.0, step=0.05, unit="kg", symbol="m_s"),
+        Uniform("k", 50, 3000, step=10, unit="N/m", symbol="k"),
+    ),
+    constraints=(
+        Constraint("the spring weighs 15 % to 80 % of the mass", lambda p: 0.15 <= p.m_s / p.m <= 0.8),
+    ),
+    statement="""
+A mass $m$ = {{ m }} hangs on a uniform helical spring of stiffness $k$ = {{ k }} whose own
+mass is $m_s$ = {{ m_s }}. Assume the spring's coils move with a velocity that grows
+linearly from the fixed end to the mass.
+
+1. What effective mass does the spring add to $m$?
+2. What are the natural frequency (in Hz) and the natural angular frequency of vertical vibrations?
+3. Treating the spring as a continuous elastic bar, the exact lowest frequency follows
+   from $\\kappa L\\tan(\\kappa L) = m_s/m$. By what relative amount does your estimate
+   exceed it ($\\omega_{\\text{est}}/\\omega_{\\text{exact}} - 1$)?
+4. Give $\\omega$ of part 2 as a formula in `k`, `m`, `m_s`.
+""",
+    solve=solve,
+    parts=(
+        Numeric("m_eff", "effective spring mass", unit="kg", points=1,
+                misconceptions=(Misconception("half the spring", lambda p: p.m_s / 2,
+                                              "T = int (m_s/L) (x'/L * xi)^2/2 dxi = (m_s/3) x'^2/2."),)),
+        Numeric("f", "natural frequency", unit="Hz", points=2,
+                misconceptions=(
+                    Misconception("spring mass forgotten", lambda p: vibrations.frequency_in_hertz(np.sqrt(p.k / p.m)),
+                                  "Add the spring's effective mass m_s/3."),
+                    Misconception("whole spring mass", lambda p: vibrations.frequency_in_hertz(np.sqrt(p.k / (p.m + p.m_s))),
+                                  "Only a third of the spring's mass is effective: its coils move slower than the mass."),
+                    Misconception("omega for f", omega, "f = omega/(2 pi)."),
+                )),
+        Numeric("error", "relative error of the estimate", points=1, rtol=0.02),
+        Symbolic("omega_formula", "omega as a formula", points=1, expected="sqrt(k/(m + m_s/3))",
+                 variables={"k": Variable(10, 1e4, "N/m"), "m": Variable(0.1, 10, "kg"), "m_s": Variable(0.01, 5, "kg")},
+                 equals="omega",
+                 misconceptions=(Misconception("spring mass forgotten", "sqrt(k/m)", "Add m_s/3."),)),
+        Numeric("omega", "natural angular frequency", unit="rad/s", points=1,
+                misconceptions=(Misconception("f for omega", lambda p: omega(p) / (2 * np.pi), "omega = 2 pi f."),)),
+    ),
+)

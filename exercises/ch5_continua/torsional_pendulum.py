@@ -1,0 +1,61 @@
+"""A disk on a wire or shaft: torsional stiffness and the torsional pendulum (Section 5.1)."""
+
+import numpy as np
+
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.mechanics import stiffness, vibrations
+
+
+def k_t(p, polar=True):
+    section = stiffness.circle_polar_moment(p.d) if polar else stiffness.circle_second_moment(p.d)
+    return stiffness.torsional_stiffness(stiffness.shear_modulus(p.E, p.nu), section, p.L)
+
+
+def solve(p):
+    J = p.m * p.R**2 / 2
+    return {"kt": k_t(p), "T": vibrations.period(vibrations.natural_frequency(k_t(p), J))}
+
+
+EXERCISE = Exercise(
+    id="torsional-pendulum-shaft",
+    title="Torsional pendulum: a disk on a shaft",
+    source="Section 5.1",
+    topics=("torsional stiffness", "shear modulus", "torsional vibration"),
+    params=(
+        Uniform("E", 70, 210, step=10, unit="GPa", symbol="E"),
+        Uniform("nu", 0.25, 0.35, step=0.01, symbol=r"\nu"),
+        Uniform("d", 2, 20, step=0.5, unit="mm", symbol="d"),
+        Uniform("L", 0.3, 2.0, step=0.05, unit="m", symbol="L"),
+        Uniform("m", 1, 30, step=0.5, unit="kg", symbol="m"),
+        Uniform("R", 0.05, 0.4, step=0.01, unit="m", symbol="R"),
+    ),
+    constraints=(
+        Constraint("a period between 0.05 s and 20 s",
+                   lambda p: 0.05 <= vibrations.period(vibrations.natural_frequency(k_t(p), p.m * p.R**2 / 2)) <= 20),
+    ),
+    statement="""
+A homogeneous disk (mass $m$ = {{ m }}, radius $R$ = {{ R }}) hangs at the lower end of a
+vertical circular rod of diameter $d$ = {{ d }} and length $L$ = {{ L }}, clamped at its
+top. The rod's material has $E$ = {{ E }} and Poisson's ratio $\\nu$ = {{ nu }}. Neglect
+the rod's mass.
+
+1. What is the torsional stiffness $k_t$ of the rod?
+2. What is the period of the disk's torsional oscillations?
+""",
+    solve=solve,
+    parts=(
+        Numeric("kt", "torsional stiffness", unit="N*m", points=2,
+                misconceptions=(
+                    Misconception("E for G", lambda p: stiffness.torsional_stiffness(p.E, stiffness.circle_polar_moment(p.d), p.L),
+                                  "Torsion is resisted by the shear modulus G = E/(2(1 + nu))."),
+                    Misconception("I for I_p", lambda p: k_t(p, polar=False), "Use the polar moment I_p = pi d^4/32."),
+                )),
+        Numeric("T", "period", unit="s", points=2,
+                misconceptions=(
+                    Misconception("J = m R^2", lambda p: vibrations.period(vibrations.natural_frequency(k_t(p), p.m * p.R**2)),
+                                  "A solid disk has J = m R^2/2."),
+                    Misconception("1/omega", lambda p: 1 / vibrations.natural_frequency(k_t(p), p.m * p.R**2 / 2),
+                                  "T = 2 pi / omega."),
+                )),
+    ),
+)
