@@ -1,0 +1,72 @@
+"""A ball dropped on a hard floor: rebound speed and height, energy lost, and the
+coefficient of restitution from measured heights (Section 1.2.4)."""
+
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, Variable)
+from dynagrade.mechanics import energy, impact
+
+
+def solve(p):
+    v_in = float(impact.impact_speed_after_fall(p.h0, p.g))
+    v_out = abs(impact.rebound_normal_velocity(v_in, p.e))
+    return {
+        "v_out": v_out,
+        "h1": impact.rebound_height(p.h0, p.e),
+        "dT": float(energy.kinetic_energy(p.m, v_in) - energy.kinetic_energy(p.m, v_out)),
+        "h3": impact.rebound_height(p.h0, p.e, 3),
+    }
+
+
+EXERCISE = Exercise(
+    id="bouncing-ball",
+    title="Bouncing ball: restitution, rebound height and energy lost",
+    source="Section 1.2.4",
+    topics=("particle impact", "coefficient of restitution", "conservation of energy"),
+    params=(
+        Uniform("m", 0.05, 0.6, step=0.01, unit="kg", symbol="m"),
+        Uniform("h0", 0.5, 3.0, step=0.1, unit="m", symbol="h_0"),
+        Uniform("e", 0.4, 0.9, step=0.02, symbol="e"),
+        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        Constraint("e and e^2 differ by more than 5 %", lambda p: p.e < 0.95),
+    ),
+    statement="""
+A ball of mass $m$ = {{ m }} is dropped from rest at the height $h_0$ = {{ h0 }} onto a
+rigid floor. The coefficient of restitution is $e$ = {{ e }}; $g$ = {{ g }}, no air drag.
+
+1. With what speed does it leave the floor after the first impact?
+2. How high does it rise after the first impact?
+3. How much kinetic energy is lost in the first impact?
+4. How high does it rise after the third impact?
+5. Write the height after the first impact as a formula in $h_0$ and $e$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("v_out", "rebound speed", unit="m/s", points=1),
+        Numeric("h1", "height after the first bounce", unit="m", points=2,
+                misconceptions=(
+                    Misconception("e applied to the height", lambda p: p.e * p.h0,
+                                  "e scales the speed; the height goes with the speed squared: "
+                                  "h1 = e² h0."),
+                )),
+        Numeric("dT", "kinetic energy lost", unit="J", points=1,
+                misconceptions=(
+                    Misconception("loss fraction 1 - e", lambda p: (1 - p.e) * p.m * p.g * p.h0,
+                                  "The kinetic energy keeps the fraction e², so (1 − e²) is lost."),
+                )),
+        Numeric("h3", "height after the third bounce", unit="m", points=1,
+                misconceptions=(
+                    Misconception("e^3 instead of e^6", lambda p: p.e**3 * p.h0,
+                                  "Each bounce multiplies the height by e²."),
+                )),
+        Symbolic("h1_formula", "height after the first bounce as a formula", points=1,
+                 expected="e^2*h0",
+                 variables={"e": Variable(0.05, 1.0), "h0": Variable(0.1, 10, "m")},
+                 equals="h1",
+                 misconceptions=(
+                     Misconception("e applied to the height", "e*h0",
+                                   "The height goes with the speed squared."),
+                 )),
+    ),
+)

@@ -1,0 +1,74 @@
+"""A puck hitting a smooth rigid wall at an angle: rebound angle and speed, energy lost
+(Section 1.2.4)."""
+
+import numpy as np
+
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform)
+from dynagrade.mechanics import impact
+
+
+def solve(p):
+    return {
+        "theta_out": float(impact.rebound_angle(p.theta, p.e)),
+        "v_out": float(impact.rebound_speed(p.v, p.theta, p.e)),
+        "dT": float(impact.impact_energy_loss(p.m, p.v, p.theta, p.e)),
+        "J": float(impact.wall_impulse(p.m, p.v * np.cos(p.theta), p.e)),
+    }
+
+
+EXERCISE = Exercise(
+    id="oblique-wall-impact",
+    title="Oblique impact on a smooth wall",
+    source="Section 1.2.4",
+    topics=("particle impact", "coefficient of restitution", "oblique impact"),
+    params=(
+        Uniform("m", 0.1, 1.0, step=0.05, unit="kg", symbol="m"),
+        Uniform("v", 2.0, 15.0, step=0.5, unit="m/s", symbol="v"),
+        Uniform("theta", 15, 65, step=1, unit="deg", symbol=r"\theta"),
+        Uniform("e", 0.3, 0.85, step=0.05, symbol="e"),
+    ),
+    constraints=(
+        Constraint("the incidence angle is clear of 45 degrees",
+                   lambda p: abs(p.theta - np.pi / 4) > np.radians(3)),
+    ),
+    statement="""
+A puck of mass $m$ = {{ m }} slides on smooth ice and hits a straight, rigid, smooth
+boards wall with speed $v$ = {{ v }}, its path making the angle $\\theta$ = {{ theta }}
+with the wall's normal. The coefficient of restitution is $e$ = {{ e }}.
+
+1. At what angle to the normal does it leave the wall (in degrees)?
+2. With what speed does it leave?
+3. How much kinetic energy is lost in the impact?
+4. What impulse does the wall give the puck (magnitude)?
+""",
+    solve=solve,
+    parts=(
+        Numeric("theta_out", "rebound angle", unit="deg", points=2,
+                misconceptions=(
+                    Misconception("mirror reflection", lambda p: p.theta,
+                                  "Only the normal component is reduced, by e: the puck leaves "
+                                  "flatter, tan θ' = tan θ / e."),
+                    Misconception("tangent multiplied by e",
+                                  lambda p: np.arctan(p.e * np.tan(p.theta)),
+                                  "The smooth wall keeps the tangential part; the normal part "
+                                  "shrinks: tan θ' = tan θ / e."),
+                )),
+        Numeric("v_out", "rebound speed", unit="m/s", points=1,
+                misconceptions=(
+                    Misconception("whole velocity scaled by e", lambda p: p.e * p.v,
+                                  "Only the normal component is scaled by e on a smooth wall."),
+                )),
+        Numeric("dT", "kinetic energy lost", unit="J", points=1,
+                misconceptions=(
+                    Misconception("whole kinetic energy scaled",
+                                  lambda p: (1 - p.e**2) * 0.5 * p.m * p.v**2,
+                                  "Only the normal part's energy m (v cos θ)²/2 is reduced."),
+                )),
+        Numeric("J", "impulse of the wall", unit="N*s", points=1,
+                misconceptions=(
+                    Misconception("factor (1 + e) missing",
+                                  lambda p: p.m * p.v * np.cos(p.theta),
+                                  "The normal velocity is reversed: Δv_n = (1 + e) v cos θ."),
+                )),
+    ),
+)
