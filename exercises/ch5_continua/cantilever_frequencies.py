@@ -1,0 +1,66 @@
+"""Natural frequencies of a cantilever from its characteristic equation (Section 5.3.3)."""
+
+import numpy as np
+
+from dynagrade.exercise import Exercise, Misconception, Numeric, Constraint, Uniform
+from dynagrade.mechanics import beams, stiffness, vibrations
+
+
+def _EI(p, b=None, h=None):
+    return p.E * stiffness.rectangle_second_moment(b or p.b, h or p.h)
+
+
+def _rhoA(p):
+    return p.rho * p.b * p.h
+
+
+def _f(p, support="cantilever", n=2, EI=None):
+    return vibrations.frequency_in_hertz(beams.beam_natural_frequencies(EI or _EI(p), _rhoA(p), p.L, support, n))
+
+
+def solve(p):
+    f = _f(p)
+    return {"beta1L": beams.beam_eigenvalues("cantilever", 1)[0], "f1": f[0], "f2": f[1]}
+
+
+EXERCISE = Exercise(
+    id="cantilever-natural-frequencies",
+    title="Natural frequencies of a cantilever",
+    source="Section 5.3.3",
+    topics=("flexural vibration", "Euler-Bernoulli beam", "characteristic equation"),
+    params=(
+        Uniform("E", 70, 210, step=5, unit="GPa", symbol="E"),
+        Uniform("rho", 2700, 7900, step=100, unit="kg/m^3", symbol=r"\rho"),
+        Uniform("b", 20, 80, step=1, unit="mm", symbol="b"),
+        Uniform("h", 2, 15, step=0.5, unit="mm", symbol="h"),
+        Uniform("L", 0.2, 2.0, step=0.05, unit="m", symbol="L"),
+    ),
+    constraints=(
+        Constraint("a flat strip (b at least 1.5 h)", lambda p: p.b >= 1.5 * p.h),
+    ),
+    statement="""
+A flat strip of width $b$ = {{ b }}, thickness $h$ = {{ h }} and length $L$ = {{ L }}
+($E$ = {{ E }}, $\\rho$ = {{ rho }}) is clamped at one end and free at the other, and
+vibrates in bending across its thickness (Euler–Bernoulli beam).
+
+1. What is the smallest positive root $\\beta_1 L$ of the characteristic equation
+   $\\cos(\\beta L)\\cosh(\\beta L) + 1 = 0$?
+2. What are the two lowest natural frequencies $f_1$ and $f_2$ (in Hz)?
+""",
+    solve=solve,
+    parts=(
+        Numeric("beta1L", "first root beta_1 L", points=1, rtol=1e-3,
+                misconceptions=(Misconception("pi/2", lambda p: np.pi / 2, "pi/2 is the root of cos alone; cosh shifts it to 1.875."),)),
+        Numeric("f1", "first natural frequency", unit="Hz", points=2,
+                misconceptions=(
+                    Misconception("simply supported", lambda p: _f(p, "simply supported")[0],
+                                  "The clamped-free beam has beta_1 L = 1.875, not pi."),
+                    Misconception("omega for f", lambda p: 2 * np.pi * _f(p)[0], "f = omega/(2 pi)."),
+                    Misconception("b and h swapped in I", lambda p: _f(p, EI=_EI(p, b=p.h, h=p.b))[0],
+                                  "Bending across the thickness: I = b h^3/12."),
+                )),
+        Numeric("f2", "second natural frequency", unit="Hz", points=1,
+                misconceptions=(Misconception("twice f1", lambda p: 2 * _f(p)[0],
+                                              "Beam frequencies are not harmonics: f2/f1 = (4.694/1.875)^2 = 6.27."),)),
+    ),
+)

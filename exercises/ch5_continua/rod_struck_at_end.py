@@ -1,0 +1,59 @@
+"""A free rod struck at one end: wave speed, arrival time, impact stress and the first
+natural frequencies (Section 5.3.1)."""
+
+import numpy as np
+
+from dynagrade.exercise import Exercise, Misconception, Numeric, Uniform, Vector
+from dynagrade.mechanics import rods, vibrations
+
+
+def c(p):
+    return rods.longitudinal_wave_speed(p.E, p.rho)
+
+
+def solve(p):
+    f = vibrations.frequency_in_hertz(rods.rod_natural_frequencies(c(p), p.L, 2, "free-free"))
+    return {"c": c(p), "t_arrival": rods.travel_time(p.L, c(p)),
+            "sigma": rods.impact_stress(p.rho, c(p), p.v), "f": tuple(f)}
+
+
+EXERCISE = Exercise(
+    id="rod-struck-at-end",
+    title="A rod struck at its end: longitudinal waves",
+    source="Section 5.3.1",
+    topics=("longitudinal waves", "wave speed", "impact stress", "natural frequencies"),
+    params=(
+        Uniform("E", 70, 210, step=5, unit="GPa", symbol="E"),
+        Uniform("rho", 2700, 8900, step=100, unit="kg/m^3", symbol=r"\rho"),
+        Uniform("L", 0.5, 5.0, step=0.1, unit="m", symbol="L"),
+        Uniform("v", 0.5, 5.0, step=0.1, unit="m/s", symbol="v"),
+    ),
+    statement="""
+A slender metal rod of length $L$ = {{ L }} (Young's modulus $E$ = {{ E }}, density
+$\\rho$ = {{ rho }}) lies free on soft supports. At $t = 0$ one end is suddenly given the
+velocity $v$ = {{ v }} along the rod by a hammer blow.
+
+1. With which speed does the disturbance travel along the rod?
+2. When does it reach the far end?
+3. What compressive stress does the wave carry?
+4. Give the first two natural frequencies (in Hz) of longitudinal vibration of the free rod as a vector $[f_1, f_2]$.
+""",
+    solve=solve,
+    parts=(
+        Numeric("c", "wave speed", unit="m/s", points=1),
+        Numeric("t_arrival", "arrival time at the far end", unit="ms", points=1,
+                misconceptions=(Misconception("there and back", lambda p: 2 * p.L / c(p),
+                                              "The front needs L/c to reach the far end; 2L/c is the round trip."),)),
+        Numeric("sigma", "stress in the wave", unit="MPa", points=2,
+                misconceptions=(Misconception("dynamic pressure rho v^2", lambda p: p.rho * p.v**2,
+                                              "Behind the front the strain is v/c: sigma = E v / c = rho c v."),)),
+        Vector("f", "first two natural frequencies", unit="Hz", size=2, points=2,
+               misconceptions=(
+                   Misconception("fixed-free", lambda p: tuple(vibrations.frequency_in_hertz(
+                       rods.rod_natural_frequencies(c(p), p.L, 2, "fixed-free"))),
+                                 "Both ends are free: f_n = n c / (2L)."),
+                   Misconception("omega for f", lambda p: tuple(rods.rod_natural_frequencies(c(p), p.L, 2, "free-free")),
+                                 "omega_n = n pi c / L is in rad/s; f_n = n c/(2L)."),
+               )),
+    ),
+)
