@@ -5,7 +5,7 @@ import numpy as np
 import sympy as sp
 
 from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
-from dynagrade.mechanics import equilibrium, lagrange, multi_dof
+from dynagrade.mechanics import equilibrium, multi_dof
 
 _t = sp.Symbol("t")
 _x, _phi = sp.Function("x")(_t), sp.Function("phi")(_t)
