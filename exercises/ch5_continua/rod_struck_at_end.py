@@ -1,7 +1,6 @@
 """A free rod struck at one end: wave speed, arrival time, impact stress and the first
 natural frequencies (Section 5.3.1)."""
 
-
 from dynagrade.exercise import Exercise, Misconception, Numeric, Uniform, Vector
 from dynagrade.mechanics import rods, vibrations
 

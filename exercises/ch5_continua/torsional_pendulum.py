@@ -1,6 +1,5 @@
 """A disk on a wire or shaft: torsional stiffness and the torsional pendulum (Section 5.1)."""
 
-
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
 from dynagrade.mechanics import stiffness, vibrations
 
