@@ -119,10 +119,9 @@ def rocket_speed_at_height(x, v0, g, R):
 def rocket_peak_height(v0, g, R):
     """Greatest height reached under g(x) = g R^2/(R+x)^2, where v of eq. (1.17) vanishes:
     h = R v0^2 / (2 g R - v0^2); infinite at or above the escape speed."""
-    denominator = 2.0 * g * R - v0**2
-    with np.errstate(divide="ignore"):
-        return np.where(denominator > 0.0, R * v0**2 / np.where(denominator > 0, denominator, 1.0),
-                        np.inf)
+    denominator = np.asarray(2.0 * g * R - v0**2, dtype=float)
+    safe = np.where(denominator > 0.0, denominator, 1.0)
+    return np.where(denominator > 0.0, R * v0**2 / safe, np.inf)
 
 
 def escape_speed(g, R):
