@@ -3,7 +3,8 @@ motion along the floor (Example 1.7, component-wise balance 1.69)."""
 
 import numpy as np
 
-from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Uniform)
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, Variable)
 from dynagrade.mechanics import particle
 
 
@@ -50,6 +51,7 @@ the constant force $F$ = {{ F }} at the angle $\\theta$ = {{ theta }} above the 
 2. What is the block's acceleration along the floor?
 3. What is its speed at $t$ = {{ t }}?
 4. What would the normal force be without the rope?
+5. Write the normal force with the rope as a formula in $m$, $g$, $F$ and $\\theta$ (`theta`).
 """,
     solve=solve,
     parts=(
@@ -68,5 +70,14 @@ the constant force $F$ = {{ F }} at the angle $\\theta$ = {{ theta }} above the 
                 )),
         Numeric("v_t", "speed at t", unit="m/s", points=1),
         Numeric("N_free", "normal force without the rope", unit="N", points=1),
+        Symbolic("N_formula", "normal force as a formula", points=1,
+                 expected="m*g - F*sin(theta)",
+                 variables={"m": Variable(0.5, 50, "kg"), "g": Variable(1, 20, "m/s^2"),
+                            "F": Variable(0, 100, "N"), "theta": Variable(0, 1.5, "rad")},
+                 equals="N",
+                 misconceptions=(
+                     Misconception("cos for sin", "m*g - F*cos(theta)",
+                                   "The vertical component of the rope force is F sin θ."),
+                 )),
     ),
 )

@@ -3,7 +3,8 @@
 
 import numpy as np
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform)
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
+                                Variable)
 from dynagrade.mechanics import impact
 
 
@@ -40,6 +41,7 @@ with the wall's normal. The coefficient of restitution is $e$ = {{ e }}.
 2. With what speed does it leave?
 3. How much kinetic energy is lost in the impact?
 4. What impulse does the wall give the puck (magnitude)?
+5. Write the rebound angle as a formula in $\\theta$ (`theta`) and $e$.
 """,
     solve=solve,
     parts=(
@@ -70,5 +72,13 @@ with the wall's normal. The coefficient of restitution is $e$ = {{ e }}.
                                   lambda p: p.m * p.v * np.cos(p.theta),
                                   "The normal velocity is reversed: Δv_n = (1 + e) v cos θ."),
                 )),
+        Symbolic("theta_formula", "rebound angle as a formula", points=1,
+                 expected="atan(tan(theta)/e)",
+                 variables={"theta": Variable(0.05, 1.5, "rad"), "e": Variable(0.1, 1.0)},
+                 equals="theta_out",
+                 misconceptions=(
+                     Misconception("tangent multiplied by e", "atan(e*tan(theta))",
+                                   "The normal component shrinks, so the tangent grows: tan θ' = tan θ / e."),
+                 )),
     ),
 )
