@@ -11,24 +11,17 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-
-@lru_cache(maxsize=1)
-def _registry():
-    import pint  # imported on first use: pint costs a few hundred ms to load
-
-    return pint.UnitRegistry()
+from ..grading import units as _dimensions
+from ..grading.quantity import unit_info
 
 
-@lru_cache(maxsize=256)
 def si_factor(unit: str | None) -> float:
-    """The factor that turns a value in ``unit`` into SI base units (radian for angles)."""
-    if not unit:
-        return 1.0
-    try:
-        quantity = _registry().Quantity(1.0, unit).to_base_units()
-    except Exception as error:  # pint raises several unrelated types for a bad unit
-        raise ValueError(f"unknown unit {unit!r}: {error}") from None
-    return float(quantity.magnitude)
+    """The factor that turns a value in ``unit`` into SI base units (radian for angles).
+
+    Units are read by the grader's unit table, so parameters, answers and students'
+    units share one definition; ``ValueError`` for a unit it does not know.
+    """
+    return unit_info(unit)[0]
 
 
 def to_si(value: float, unit: str | None) -> float:
@@ -66,16 +59,9 @@ def with_unit(number: str, unit: str | None) -> str:
 
 def convert(value: float, from_unit: str | None, to_unit: str | None) -> float:
     """``value`` in ``from_unit`` expressed in ``to_unit``; ``ValueError`` when the
-    dimensions differ (angles count as their own dimension here)."""
-    if (from_unit or "") == (to_unit or ""):
-        return value
-    registry = _registry()
-    source, target = registry.Unit(from_unit or ""), registry.Unit(to_unit or "")
-    if source.dimensionality != target.dimensionality or _is_angle(source) != _is_angle(target):
-        raise ValueError(f"cannot convert {from_unit or 'a bare number'} to {to_unit or 'a bare number'}")
-    return float(registry.Quantity(value, source).to(target).magnitude)
-
-
-def _is_angle(unit) -> bool:
-    """Whether ``unit`` measures angles (pint reduces radian to a dimensionless unit)."""
-    return "radian" in str((1 * unit).to_base_units().units)
+    dimensions differ (the angle counts as a dimension of its own)."""
+    (source, source_dim), (target, target_dim) = unit_info(from_unit), unit_info(to_unit)
+    if not _dimensions.same(source_dim, target_dim):
+        raise ValueError(f"cannot convert {from_unit or 'a bare number'} "
+                         f"to {to_unit or 'a bare number'}")
+    return value * source / target

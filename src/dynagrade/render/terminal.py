@@ -5,7 +5,6 @@ from __future__ import annotations
 from typing import Callable, Sequence
 
 from rich.console import Console
-from rich.markdown import Markdown
 from rich.panel import Panel
 from rich.progress import Progress
 from rich.table import Table
@@ -51,6 +50,8 @@ def answers_table(exercise, variant) -> None:
 
 
 def variant_panel(exercise, variant, with_answers: bool) -> None:
+    from rich.markdown import Markdown  # only `show` needs it; `grade` starts faster
+
     console = _console()
     console.print(Panel(Markdown(variant.statement),
                         title=f"{exercise.title} ({exercise.source})",
