@@ -5,8 +5,9 @@ Usage::
     PYTHONPATH=src python bench/exam.py                              # 20 students x 3
     PYTHONPATH=src python bench/exam.py --students 500 --exercises 6 --jobs 2
 
-Prints the time of each stage. The exercises are the first K of the chapter-1 bank (in
-bank order, then chapter 2 if chapter 1 has fewer), each worth 10 points; the submissions
+Prints the time of each stage. The exercises are the first K of those in
+``examples/exam.toml`` (three of them draw figures), then of the rest of chapters 1-2 of
+the bank, each worth 10 points; the submissions
 are those of ``examples/make_submissions.py`` (correct, half-correct, empty, corrupt,
 duplicate, CSV, strangers) for every student, cycling through the kinds.
 """
@@ -46,8 +47,13 @@ def main(argv=None) -> None:
     from dynagrade.exam.generate import generate_exam
     from dynagrade.exercise.loader import open_bank
 
+    import tomllib
+
     bank = open_bank()
-    exercises = [e for e in bank.all() if e.chapter in (1, 2)][:args.exercises]
+    with open(ROOT / "examples" / "exam.toml", "rb") as handle:
+        preferred = [item["id"] for item in tomllib.load(handle)["exercise"]]
+    others = [e.id for e in bank.all() if e.chapter in (1, 2) and e.id not in preferred]
+    exercises = [bank.get(i) for i in (preferred + others)[:args.exercises]]
     if len(exercises) < args.exercises:
         print(f"only {len(exercises)} exercises in chapters 1-2 of the bank", file=sys.stderr)
     folder = Path(args.keep) if args.keep else Path(tempfile.mkdtemp(prefix="dynagrade-bench-"))
