@@ -36,7 +36,9 @@ def figure_svg(exercise: Exercise, variant: Variant) -> str | None:
     figure = exercise.figure(exercise.si(variant.params))
     buffer = io.StringIO()
     with matplotlib.rc_context(SVG_SETTINGS):
-        figure.savefig(buffer, format="svg", metadata={"Date": None, "Creator": "dynagrade"})
+        # "tight" keeps labels that reach past the axes in the picture
+        figure.savefig(buffer, format="svg", bbox_inches="tight", pad_inches=0.04,
+                       metadata={"Date": None, "Creator": "dynagrade"})
     _close(figure)
     return buffer.getvalue()
 
