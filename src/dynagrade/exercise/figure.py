@@ -108,3 +108,119 @@ def ground(axes, x_start: float, x_end: float, y: float = 0.0, hatch: float = 0.
     xs = np.column_stack([starts + size, starts, np.full_like(starts, np.nan)]).ravel()
     ys = np.tile([y, y - size, np.nan], len(starts))
     axes.plot(xs, ys, color="0.4", lw=0.6)
+
+
+def dimension(axes, start, end, label: str = "", offset: float = 0.0, tick: float = 0.0,
+              side: float = 1.0) -> None:
+    """A dimension line with arrow heads at both ends from ``start`` to ``end``, shifted by
+    ``offset`` normal to it (to the left of start -> end for positive values), with thin
+    extension lines back to the measured points and ``label`` beside its middle on the
+    ``side`` (+1 left of start -> end, -1 right)."""
+    import numpy as np
+
+    a, b = np.asarray(start, float), np.asarray(end, float)
+    length = float(np.hypot(*(b - a)))
+    normal = np.array([-(b - a)[1], (b - a)[0]]) / length
+    shift = offset * normal
+    if offset:
+        for point in (a, b):
+            axes.plot(*zip(point, point + shift + 0.04 * length * np.sign(offset) * normal),
+                      color="0.5", lw=0.5)
+    axes.annotate("", xy=tuple(b + shift), xytext=tuple(a + shift),
+                  arrowprops={"arrowstyle": "<|-|>", "color": "0.2", "lw": 0.8,
+                              "shrinkA": 0, "shrinkB": 0, "mutation_scale": 8})
+    if label:
+        gap = (tick or 0.06 * length) * side
+        middle = (a + b) / 2 + shift + gap * normal
+        axes.text(*middle, label, ha="center", va="center", fontsize=10)
+
+
+def spring(axes, start, end, coils: int = 6, width: float | None = None,
+           color="0.1") -> None:
+    """A linear spring drawn as a zig-zag from ``start`` to ``end``: straight leads of a
+    sixth of the length at each end and ``coils`` zig-zags of ``width`` between (a fifth
+    of the length unless given)."""
+    import numpy as np
+
+    a, b = np.asarray(start, float), np.asarray(end, float)
+    length = float(np.hypot(*(b - a)))
+    along, normal = (b - a) / length, np.array([-(b - a)[1], (b - a)[0]]) / length
+    width = width if width is not None else length / 5
+    s = np.linspace(length / 6, 5 * length / 6, 2 * coils + 1)
+    side = np.zeros_like(s)
+    side[1:-1:2], side[2:-1:2] = 0.5 * width, -0.5 * width
+    s, side = np.concatenate([[0.0], s, [length]]), np.concatenate([[0.0], side, [0.0]])
+    points = a + np.outer(s, along) + np.outer(side, normal)
+    axes.plot(points[:, 0], points[:, 1], color=color, lw=1.0)
+
+
+def damper(axes, start, end, width: float | None = None, color="0.1") -> None:
+    """A viscous damper (dashpot) from ``start`` to ``end``: an open cylinder of ``width``
+    (a quarter of the length unless given) on the start side and the piston on the end side."""
+    import numpy as np
+
+    a, b = np.asarray(start, float), np.asarray(end, float)
+    length = float(np.hypot(*(b - a)))
+    along, normal = (b - a) / length, np.array([-(b - a)[1], (b - a)[0]]) / length
+    half = 0.5 * (width if width is not None else length / 4)
+
+    def at(s, n):
+        return a + s * along + n * normal
+
+    bottom, top = 0.3 * length, 0.75 * length
+    cylinder = [at(top, half), at(bottom, half), at(bottom, -half), at(top, -half)]
+    axes.plot(*zip(a, at(bottom, 0.0)), color=color, lw=1.0)
+    axes.plot(*zip(*cylinder), color=color, lw=1.0)
+    axes.plot(*zip(at(0.55 * length, 0.75 * half), at(0.55 * length, -0.75 * half)),
+              color=color, lw=1.6)
+    axes.plot(*zip(at(0.55 * length, 0.0), b), color=color, lw=1.0)
+
+
+def wall(axes, x: float, y_start: float, y_end: float, side: float = -1.0,
+         hatch: float = 0.0) -> None:
+    """A vertical wall at ``x`` from ``y_start`` to ``y_end`` with short hatch strokes on
+    its ``side`` (-1 left of the line, +1 right), the counterpart of :func:`ground`."""
+    import numpy as np
+
+    axes.plot([x, x], [y_start, y_end], color="0.1", lw=1.2)
+    size = hatch or (y_end - y_start) / 20
+    starts = np.arange(y_start, y_end, size * 1.5)
+    xs = np.tile([x, x + side * size, np.nan], len(starts))
+    ys = np.column_stack([starts + size, starts, np.full_like(starts, np.nan)]).ravel()
+    axes.plot(xs, ys, color="0.4", lw=0.6)
+
+
+def block(axes, center, width: float, height: float, label: str = "", angle: float = 0.0,
+          color="C0") -> None:
+    """A rigid block: a ``width`` x ``height`` rectangle centred at ``center``, turned by
+    ``angle`` (rad, counter-clockwise), with ``label`` written inside."""
+    import numpy as np
+    from matplotlib.patches import Polygon
+
+    c, s = np.cos(angle), np.sin(angle)
+    corners = [(-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5)]
+    points = [(center[0] + c * u * width - s * v * height,
+               center[1] + s * u * width + c * v * height) for u, v in corners]
+    axes.add_patch(Polygon(points, closed=True, facecolor=color, edgecolor="0.1", lw=1.0))
+    if label:
+        axes.text(center[0], center[1], label, color="white", ha="center", va="center",
+                  fontsize=9, rotation=np.degrees(angle), rotation_mode="anchor")
+
+
+def pivot(axes, point, size: float) -> None:
+    """A fixed pin support at ``point``: the pin as a small circle on a triangle of height
+    ``size`` hanging from a hatched base above it (for bodies hanging from the pin)."""
+    import numpy as np
+    from matplotlib.patches import Circle, Polygon
+
+    x, y = point
+    axes.add_patch(Polygon([(x, y), (x - 0.6 * size, y + size), (x + 0.6 * size, y + size)],
+                           closed=True, facecolor="0.85", edgecolor="0.1", lw=1.0))
+    top, step = y + size, 0.25 * size
+    axes.plot([x - size, x + size], [top, top], color="0.1", lw=1.2)
+    starts = np.arange(x - size, x + size, 1.5 * step)
+    xs = np.column_stack([starts, starts + step, np.full_like(starts, np.nan)]).ravel()
+    ys = np.tile([top, top + step, np.nan], len(starts))
+    axes.plot(xs, ys, color="0.4", lw=0.6)
+    axes.add_patch(Circle((x, y), 0.18 * size, facecolor="white", edgecolor="0.1", lw=1.0,
+                          zorder=3))
