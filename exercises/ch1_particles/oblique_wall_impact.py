@@ -5,7 +5,39 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
                                 Variable)
+from dynagrade.exercise.figure import angle_arc, arrow, new_drawing, wall
+from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import impact
+
+
+def figure(p):
+    """Top view: the smooth wall, its normal at the point of impact and the puck coming in
+    at the angle theta to the normal with speed v (Section 1.2.4). The rebound is left for
+    the student to find."""
+    from matplotlib.patches import Circle
+
+    drawing, axes = new_drawing(4.2, 3.6)
+    wall(axes, 0.0, -1.15, 0.25, side=1.0, hatch=0.06)
+    axes.plot([-1.3, 0.0], [0.0, 0.0], color="0.4", lw=0.8, ls="-.")
+    axes.text(-1.3, 0.06, "normal", ha="left", va="bottom", fontsize=9, color="0.3")
+    incoming = np.array([np.cos(p.theta), np.sin(p.theta)])   # direction of travel
+    start = -1.2 * incoming
+    axes.plot([start[0], 0.0], [start[1], 0.0], color="0.5", lw=0.8, ls="--")
+    axes.add_patch(Circle(tuple(start), 0.07, facecolor="C0", edgecolor="0.1", lw=1.0))
+    tail = start + 0.12 * incoming
+    arrow(axes, tuple(tail), tuple(tail + 0.45 * incoming), color="C3")
+    normal_left = np.array([-np.sin(p.theta), np.cos(p.theta)])
+    axes.text(*(tail + 0.25 * incoming - 0.14 * normal_left), f"v = {format_number(p.v)} m/s",
+              color="C3", ha="center", va="center", fontsize=10,
+              rotation=np.degrees(p.theta), rotation_mode="anchor")
+    axes.text(*(start + 0.16 * normal_left - 0.05 * incoming),
+              f"m = {format_number(p.m)} kg", ha="center", va="bottom", fontsize=10)
+    angle_arc(axes, (0.0, 0.0), 0.35, np.pi, np.pi + p.theta,
+              f"θ = {format_number(np.degrees(p.theta))}°", label_radius=0.62)
+    axes.text(0.12, -0.95, f"e = {format_number(p.e)}", ha="left", va="bottom", fontsize=10)
+    axes.set_xlim(-1.45, 0.55)
+    axes.set_ylim(-1.25, 0.3)
+    return drawing
 
 
 def solve(p):
@@ -44,6 +76,7 @@ with the wall's normal. The coefficient of restitution is $e$ = {{ e }}.
 5. Write the rebound angle as a formula in $\\theta$ (`theta`) and $e$.
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("theta_out", "rebound angle", unit="deg", points=2,
                 misconceptions=(

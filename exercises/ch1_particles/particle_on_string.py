@@ -5,7 +5,41 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
                                 Variable)
+from dynagrade.exercise.figure import dimension, new_drawing
+from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import particle
+
+
+def figure(p):
+    """Top view of the table to scale: the fixed point O, the string of length l and the
+    particle on its circle, turning counter-clockwise at n (Example 1.10)."""
+    from matplotlib.patches import Circle
+
+    l = p.l
+    rpm = p.n * 60 / (2 * np.pi)
+    drawing, axes = new_drawing(4.0, 4.0)
+    axes.add_patch(Circle((0.0, 0.0), l, fill=False, edgecolor="0.5", lw=0.8, ls="--"))
+    where = np.radians(35)
+    mass = l * np.array([np.cos(where), np.sin(where)])
+    axes.plot([0.0, mass[0]], [0.0, mass[1]], color="0.1", lw=1.2)
+    axes.plot([0.0], [0.0], "o", color="0.1", ms=5)
+    axes.text(-0.06 * l, -0.06 * l, "O", ha="right", va="top", fontsize=10)
+    axes.plot(*mass, "o", color="C0", ms=11)
+    axes.text(*(1.16 * mass), f"m = {format_number(p.m)} kg", ha="left", va="bottom",
+              fontsize=10)
+    dimension(axes, (0.0, 0.0), tuple(mass), f"l = {format_number(l)} m", offset=-0.12 * l,
+              tick=0.04 * l, side=-1.0)
+    start, end = np.radians(100), np.radians(150)
+    axes.annotate("", xy=(l * np.cos(end), l * np.sin(end)),
+                  xytext=(l * np.cos(start), l * np.sin(start)),
+                  arrowprops={"arrowstyle": "-|>", "color": "C3", "lw": 1.5,
+                              "connectionstyle": "arc3,rad=0.15", "shrinkA": 0,
+                              "shrinkB": 0})
+    axes.text(-0.5 * l, 1.0 * l, f"n = {format_number(rpm)} rpm", color="C3",
+              ha="right", va="bottom", fontsize=10)
+    axes.set_xlim(-1.2 * l, 1.2 * l)
+    axes.set_ylim(-1.1 * l, 1.2 * l)
+    return drawing
 
 
 def solve(p):
@@ -42,6 +76,7 @@ minute. Gravity acts perpendicular to the table.
 4. Write the string force as a formula in $m$, $l$ and the angular velocity $\\omega$.
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("S", "string force", unit="N", points=2,
                 misconceptions=(

@@ -5,7 +5,42 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
                                 Variable)
+from dynagrade.exercise.figure import dimension, ground, new_drawing, spring
+from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import energy
+
+
+def figure(p):
+    """The slingshot to scale in centimetres: the fixed point at height l0 above the floor,
+    the particle pulled sideways by dx on the spring, and its position below the fixed point
+    (dashed) that it passes after the release (Example 1.14)."""
+    from matplotlib.patches import Circle
+
+    l0, dx = 100 * p.l0, 100 * p.dx
+    size = max(l0, dx)
+    drawing, axes = new_drawing(5.0, 1.4 + 2.6 * l0 / max(size, dx + 0.3 * size))
+    ground(axes, -0.35 * size, dx + 0.2 * size, hatch=size / 40)
+    top = (0.0, l0)
+    axes.add_patch(Circle(top, 0.025 * size, facecolor="white", edgecolor="0.1", lw=1.0,
+                          zorder=3))
+    axes.plot([-0.06 * size, 0.06 * size], [l0 + 0.025 * size] * 2, color="0.1", lw=1.6)
+    radius = 0.04 * size
+    spring(axes, top, (dx, radius), coils=7, width=0.06 * size)
+    axes.add_patch(Circle((dx, radius), radius, facecolor="C0", edgecolor="0.1", lw=1.0,
+                          zorder=3))
+    axes.add_patch(Circle((0.0, radius), radius, fill=False, edgecolor="0.5", lw=0.8,
+                          ls="--"))
+    axes.text(dx + 1.6 * radius, 2.2 * radius, f"m = {format_number(p.m)} kg",
+              ha="left", va="bottom", fontsize=10)
+    axes.text(0.55 * dx + 0.08 * size, 0.5 * l0 + 0.06 * size, f"k = {format_number(p.k)} N/m",
+              ha="left", va="bottom", fontsize=10)
+    dimension(axes, (0.0, 0.0), top, f"l₀ = {format_number(l0)} cm", offset=0.12 * size,
+              tick=0.02 * size)
+    dimension(axes, (0.0, 0.0), (dx, 0.0), f"Δx = {format_number(dx)} cm",
+              offset=-0.1 * size, tick=0.02 * size, side=-1.0)
+    axes.set_xlim(-0.4 * size, dx + 0.25 * size)
+    axes.set_ylim(-0.25 * size, l0 + 0.08 * size)
+    return drawing
 
 
 def solve(p):
@@ -41,6 +76,7 @@ sideways along the floor by $\\Delta x$ = {{ dx }} and released from rest.
 4. Write that speed as a formula in $k$, $m$, $\\Delta x$ (write `dx`) and $l_0$.
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("stretch", "stretch of the spring", unit="cm", points=1,
                 misconceptions=(

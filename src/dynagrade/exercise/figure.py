@@ -115,7 +115,8 @@ def dimension(axes, start, end, label: str = "", offset: float = 0.0, tick: floa
     """A dimension line with arrow heads at both ends from ``start`` to ``end``, shifted by
     ``offset`` normal to it (to the left of start -> end for positive values), with thin
     extension lines back to the measured points and ``label`` beside its middle on the
-    ``side`` (+1 left of start -> end, -1 right)."""
+    ``side`` (+1 left of start -> end, -1 right), ``tick`` away from the line and aligned
+    so that it reaches away from it."""
     import numpy as np
 
     a, b = np.asarray(start, float), np.asarray(end, float)
@@ -130,9 +131,11 @@ def dimension(axes, start, end, label: str = "", offset: float = 0.0, tick: floa
                   arrowprops={"arrowstyle": "<|-|>", "color": "0.2", "lw": 0.8,
                               "shrinkA": 0, "shrinkB": 0, "mutation_scale": 8})
     if label:
-        gap = (tick or 0.06 * length) * side
-        middle = (a + b) / 2 + shift + gap * normal
-        axes.text(*middle, label, ha="center", va="center", fontsize=10)
+        away = side * normal
+        middle = (a + b) / 2 + shift + (tick or 0.03 * length) * away
+        ha = "left" if away[0] > 0.38 else "right" if away[0] < -0.38 else "center"
+        va = "bottom" if away[1] > 0.38 else "top" if away[1] < -0.38 else "center"
+        axes.text(*middle, label, fontsize=10, ha=ha, va=va)
 
 
 def spring(axes, start, end, coils: int = 6, width: float | None = None,
