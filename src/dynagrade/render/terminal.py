@@ -118,16 +118,21 @@ class progress_reporter:
         return self._progress.__exit__(*exc)
 
 
+def _points(value: float) -> str:
+    """Points as a person reads them on screen: two decimals at most (grades.csv keeps more)."""
+    return format_number(round(value, 2))
+
+
 def gradebook_table(outcome) -> None:
     """The class's grades, one row per roster student."""
     table = Table(title=f"{outcome.exam_title}: {len(outcome.rows)} students")
     numbers = [str(n) for n in range(1, len(outcome.exercise_ids) + 1)]
     for column in ("student", *numbers, "total", "%", "status"):
-        table.add_column(column, overflow="fold", justify="left" if column in
+        table.add_column(column, no_wrap=column == "status", justify="left" if column in
                          ("student", "status") else "right")
     table.caption = "  ".join(f"{n}: {e}" for n, e in zip(numbers, outcome.exercise_ids))
     for row in outcome.rows:
-        table.add_row(row["student_id"], *(format_number(row[e]) for e in outcome.exercise_ids),
-                      f"{format_number(row['total'])} / {format_number(row['max_total'])}",
-                      format_number(row["percent"], 4), row["status"])
+        table.add_row(row["student_id"], *(_points(row[e]) for e in outcome.exercise_ids),
+                      f"{_points(row['total'])} / {_points(row['max_total'])}",
+                      _points(row["percent"]), row["status"])
     _console().print(table)
