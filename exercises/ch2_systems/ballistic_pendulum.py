@@ -4,12 +4,39 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform, Variable)
+from dynagrade.exercise.figure import arrow, block, ceiling, new_drawing
+from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import collisions, projectile
 
 
 def _energy_conserving_speed(p):
     """The wrong route: kinetic energy of the bullet shared by bullet and block."""
     return p.v * np.sqrt(p.m / (p.m + p.M))
+
+
+def figure(p):
+    """The block hanging at rest on its two strings and the bullet flying at it
+    horizontally (Section 2.3.1); the strings' length is not given and is drawn long."""
+    from matplotlib.patches import Ellipse
+
+    drawing, axes = new_drawing(5.0, 2.6)
+    width, height, hang = 0.5, 0.25, 1.0
+    ceiling(axes, -0.45, 0.45, hang, hatch=0.04)
+    for x in (-0.18, 0.18):
+        axes.plot([x, x], [hang, height / 2], color="0.2", lw=0.9)
+    block(axes, (0.0, 0.0), width, height, "M", color="#a0724a")
+    axes.text(width / 2 + 0.06, -0.02, f"M = {format_number(p.M)} kg", ha="left",
+              va="center", fontsize=10)
+    bullet = (-1.3, 0.0)
+    axes.add_patch(Ellipse(bullet, 0.09, 0.035, facecolor="0.25", edgecolor="0.1"))
+    axes.text(bullet[0], 0.06, f"m = {format_number(1000 * p.m)} g", ha="center",
+              va="bottom", fontsize=10)
+    arrow(axes, (bullet[0] + 0.1, 0.0), (bullet[0] + 0.55, 0.0), color="C3")
+    axes.text(bullet[0] + 0.33, -0.06, f"v = {format_number(p.v)} m/s", color="C3",
+              ha="center", va="top", fontsize=10)
+    axes.set_xlim(-1.5, 1.1)
+    axes.set_ylim(-0.3, hang + 0.08)
+    return drawing
 
 
 def solve(p):
@@ -45,6 +72,7 @@ Treat bullet and block as particles; $g$ = {{ g }}.
 4. Give $V$ as a formula in $m$, $M$ and $v$.
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("V", "speed just after the impact", unit="m/s", points=2,
                 misconceptions=(

@@ -2,11 +2,52 @@
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform, Variable)
+from dynagrade.exercise.figure import arrow, block, ground, new_drawing
+from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import collisions
 
 
 def _after(p, e):
     return collisions.velocities_after_central_impact(p.m1, p.m2, p.v1, p.v2, e)
+
+
+def _cart(axes, left, width, name):
+    """A cart: a body of ``width`` with two wheels, standing on the track at ``left``."""
+    from matplotlib.patches import Circle
+
+    wheel = 0.06
+    for x in (left + 0.22 * width, left + 0.78 * width):
+        axes.add_patch(Circle((x, wheel), wheel, facecolor="0.3", edgecolor="0.1", lw=0.8))
+    block(axes, (left + width / 2, 2 * wheel + 0.14), width, 0.28, name)
+
+
+def figure(p):
+    """The two carts on their track just before the impact, with velocity arrows drawn to a
+    common scale in the direction of motion (Section 2.3.1). A cart's width grows with the
+    cube root of its mass, like that of a solid body."""
+    w1, w2 = 0.5 * p.m1 ** (1 / 3), 0.5 * p.m2 ** (1 / 3)
+    scale = 0.12                                   # arrow length per m/s
+    gap = 1.2
+    x1, x2 = 0.0, w1 + gap
+    drawing, axes = new_drawing(5.0, 2.0)
+    ground(axes, -0.3 - scale * 3, x2 + w2 + 0.9, hatch=0.06)
+    _cart(axes, x1, w1, "1")
+    _cart(axes, x2, w2, "2")
+    for left, width, m, v, name in ((x1, w1, p.m1, p.v1, "₁"), (x2, w2, p.m2, p.v2, "₂")):
+        centre = left + width / 2
+        axes.text(centre, 0.52, f"m{name} = {format_number(m)} kg", ha="center",
+                  va="bottom", fontsize=10)
+        if abs(v) > 1e-12:
+            arrow(axes, (centre, 0.9), (centre + scale * v, 0.9), color="C3")
+        axes.text(centre, 1.0, f"v{name} = {format_number(v)} m/s", color="C3",
+                  ha="center", va="bottom", fontsize=10)
+    arrow(axes, (x2 + w2 + 0.3, 0.25), (x2 + w2 + 0.75, 0.25), color="0.3")
+    axes.text(x2 + w2 + 0.52, 0.32, "+", ha="center", va="bottom", fontsize=10, color="0.3")
+    axes.text(x1 + w1 + gap / 2, -0.2, f"e = {format_number(p.e)}", ha="center", va="top",
+              fontsize=10)
+    axes.set_xlim(-0.3 - scale * 3, x2 + w2 + 0.95)
+    axes.set_ylim(-0.4, 1.3)
+    return drawing
 
 
 def solve(p):
@@ -55,6 +96,7 @@ restitution is $e$ = {{ e }}. Treat the carts as particles and neglect friction.
 4. Give the energy lost as a formula in $m_1$, $m_2$, $v_1$, $v_2$ and $e$.
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("v1_after", "velocity of cart 1 after the impact", unit="m/s", points=2,
                 misconceptions=(

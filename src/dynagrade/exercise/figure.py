@@ -227,3 +227,16 @@ def pivot(axes, point, size: float) -> None:
     axes.plot(xs, ys, color="0.4", lw=0.6)
     axes.add_patch(Circle((x, y), 0.18 * size, facecolor="white", edgecolor="0.1", lw=1.0,
                           zorder=3))
+
+
+def ceiling(axes, x_start: float, x_end: float, y: float, hatch: float = 0.0) -> None:
+    """A ceiling line from ``x_start`` to ``x_end`` at ``y`` with short hatch strokes above
+    it, the counterpart of :func:`ground` for bodies hanging from it."""
+    import numpy as np
+
+    axes.plot([x_start, x_end], [y, y], color="0.1", lw=1.2)
+    size = hatch or (x_end - x_start) / 40
+    starts = np.arange(x_start, x_end, size * 1.5)
+    xs = np.column_stack([starts, starts + size, np.full_like(starts, np.nan)]).ravel()
+    ys = np.tile([y, y + size, np.nan], len(starts))
+    axes.plot(xs, ys, color="0.4", lw=0.6)
