@@ -70,3 +70,32 @@ def test_unanswered_and_unreadable_parts_get_a_verdict_each():
 def test_hostile_answers_are_wrong_with_a_message(hostile):
     part = _grade({"a": hostile}).parts[0]
     assert part.status == "wrong" and part.feedback
+
+
+def test_a_part_can_require_the_unit_to_be_written():
+    exercise = Exercise(
+        id="with-unit", title="Unit", source="Example 1.1",
+        params=(Uniform("x", 1, 9, step=1, unit="m"),), statement="x = {{ x }}",
+        solve=lambda p: {"d": p.x},
+        parts=(Numeric("d", unit="m", require_unit=True),))
+    variant = exercise.variant(0, {"x": 4})
+    bare, written = (grade_variant(exercise, variant, {"d": text}).parts[0]
+                     for text in ("4", "400 cm"))
+    assert not bare.correct and "unit" in bare.feedback.lower()
+    assert written.correct
+
+
+def test_a_form_test_gives_partial_credit_to_an_equivalent_answer_of_the_wrong_form():
+    from dynagrade.exercise import Symbolic, Variable
+
+    exercise = Exercise(
+        id="half", title="Half", source="Example 1.1",
+        params=(Uniform("x", 1, 9, step=1),), statement="x = {{ x }}",
+        solve=lambda p: {},
+        parts=(Symbolic("h", expected="x/2", variables={"x": Variable(1, 9)},
+                        form=("no_decimals",), form_credit=0.5),))
+    variant = exercise.variant(0)
+    exact, decimal = (grade_variant(exercise, variant, {"h": text}).parts[0]
+                      for text in ("x/2", "0.5 x"))
+    assert exact.correct and exact.score == 1
+    assert not decimal.correct and decimal.score == 0.5

@@ -86,7 +86,8 @@ class Numeric(Part):
 
     ``follow_through(p, answers)`` recomputes the reference (in SI) from the student's
     earlier answers (``answers[name]`` in SI), so a part is not lost for an error made
-    before it.
+    before it. ``require_unit`` makes a bare number wrong; ``unit_credit`` (0..1) is the
+    share of the points that the unit alone earns (docs/grading.md).
     """
 
     unit: str | None = None
@@ -95,6 +96,8 @@ class Numeric(Part):
     sigfigs: int | None = None
     follow_through: Callable[[ParamValues, Mapping[str, float]], float] | None = None
     uses: tuple[str, ...] = ()
+    require_unit: bool = False
+    unit_credit: float | None = None
 
     kind = "numeric"
 
@@ -103,7 +106,8 @@ class Numeric(Part):
 
     def spec(self, params):
         return NumericSpec(unit=self.unit, rtol=self.rtol, atol=self.atol,
-                           sigfigs=self.sigfigs, misconceptions=self._known_wrong(params))
+                           sigfigs=self.sigfigs, misconceptions=self._known_wrong(params),
+                           require_unit=self.require_unit, unit_credit=self.unit_credit)
 
 
 @dataclass(frozen=True)
@@ -135,12 +139,16 @@ class Symbolic(Part):
 
     ``expected`` is the reference expression (the exercise's own text); ``equals`` names a
     numeric part that this expression must reproduce at the variant's parameters, which
-    ``dynagrade verify`` checks against the mechanics core.
+    ``dynagrade verify`` checks against the mechanics core. ``form`` lists form tests
+    (``"no_decimals"``, ``"simplified"``, ``"no_functions"``) graded apart from
+    equivalence: an equivalent answer that fails one earns ``form_credit``.
     """
 
     expected: str = ""
     variables: Mapping[str, Variable] = field(default_factory=dict)
     equals: str | None = None
+    form: tuple[str, ...] = ()
+    form_credit: float = 0.5
 
     kind = "symbolic"
 
@@ -150,7 +158,8 @@ class Symbolic(Part):
     def spec(self, params):
         known = tuple(KnownWrong(m.name, m.value, m.feedback, m.score)
                       for m in self.misconceptions)
-        return SymbolicSpec(variables=dict(self.variables), misconceptions=known)
+        return SymbolicSpec(variables=dict(self.variables), misconceptions=known,
+                            form=tuple(self.form), form_credit=self.form_credit)
 
 
 @dataclass(frozen=True)
