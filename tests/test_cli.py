@@ -55,6 +55,7 @@ def test_set_accepts_a_value_with_its_own_unit(run):
     (("solve", "projectile-range", "--set", "speed=3"), "no parameter"),
     (("solve", "projectile-range", "--set", "v0=fast"), "v0=fast"),
     (("solve", "projectile-range", "--set", "v0=3 kg"), "cannot convert"),
+    (("show", "projectile-range", "--seed", "-1"), "--seed"),
 ])
 def test_bad_requests_get_a_clear_error(run, args, message):
     result = run(main, *args)
@@ -105,6 +106,14 @@ def test_grading_a_file_that_is_not_a_sheet_is_a_clear_error(run, tmp_path):
     path.write_text("print('hello')\n")
     result = run(grade_main, path)
     assert result.exit_code != 0 and "not a dynagrade sheet" in result.output
+
+
+def test_a_sheet_with_a_negative_seed_is_a_clear_error(run, tmp_path):
+    path = tmp_path / "exercise.py"
+    path.write_text('EXERCISE = "projectile-range"\nSEED = -5\nx_max = 3\n')
+    result = run(grade_main, path)
+    assert result.exit_code == 1 and result.exception is not None
+    assert isinstance(result.exception, SystemExit) and "SEED" in result.output
 
 
 def test_compare_answers_each_line_in_order_and_survives_bad_lines(run):

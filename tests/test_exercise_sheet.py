@@ -65,6 +65,9 @@ def test_nothing_in_a_sheet_is_ever_run(tmp_path):
     ("a = 1\n", "not a dynagrade sheet"),
     ('EXERCISE = "x"\n', "SEED"),
     ('EXERCISE = "x"\nSEED = "abc"\n', "SEED"),
+    ('EXERCISE = "x"\nSEED = -5\n', "SEED"),
+    ('EXERCISE = "x"\nSEED = "\u00b3"\n', "SEED"),
+    ('EXERCISE = "x"\nSEED = ' + "9" * 5000 + "\n", "line 2"),
 ])
 def test_files_that_are_not_sheets_get_a_clear_error(text, message):
     with pytest.raises(SheetError, match=message):

@@ -81,7 +81,7 @@ def list_command(context, as_json):
 
 @main.command()
 @click.argument("exercise_id")
-@click.option("--seed", type=int, help="The variant's seed (default 0).")
+@click.option("--seed", type=click.IntRange(0), help="The variant's seed (default 0).")
 @click.option("--student", help="Show this student's variant (seed from the student id).")
 @click.option("--set", "settings", multiple=True, metavar="NAME=VALUE",
               help="Fix a parameter, in its unit or with one (alpha=30 or 'alpha=0.5 rad').")
@@ -105,7 +105,7 @@ def show(context, exercise_id, seed, student, settings, answers, as_json):
 
 @main.command()
 @click.argument("exercise_id")
-@click.option("--seed", type=int, default=0, show_default=True,
+@click.option("--seed", type=click.IntRange(0), default=0, show_default=True,
               help="Seed for the parameters not set.")
 @click.option("--set", "settings", multiple=True, metavar="NAME=VALUE",
               help="Fix a parameter, in its unit or with one.")
@@ -246,6 +246,7 @@ def grade_main(file, as_json, folders):
 
 
 def _grade_files(context, files, as_json):
+    from .exercise.model import ConstraintError
     from .exercise.scoring import grade_variant
     from .exercise.seeds import student_seed
     from .exercise.sheet import SheetError, read_sheet
@@ -264,7 +265,10 @@ def _grade_files(context, files, as_json):
                          f"{sheet.student!r}; graded the variant of SEED {sheet.seed}")
         for note in notes:
             click.echo(f"warning: {note}", err=True)
-        variant = exercise.variant(sheet.seed)
+        try:
+            variant = exercise.variant(sheet.seed)
+        except ConstraintError as error:
+            raise click.ClickException(f"{file}: {error}") from None
         result = grade_variant(exercise, variant, sheet.answers, sheet.problems)
         results.append((exercise, result))
     if as_json:

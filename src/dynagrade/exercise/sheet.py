@@ -9,6 +9,7 @@ error for that part alone.
 from __future__ import annotations
 
 import ast
+import re
 import textwrap
 from dataclasses import dataclass
 from pathlib import Path
@@ -16,6 +17,7 @@ from pathlib import Path
 from .model import Exercise, Variant
 
 MAX_SHEET_BYTES = 1_000_000
+_SEED = re.compile(r"[0-9]{1,20}")
 
 GUIDE = """\
 How to answer: replace None by your answer, then run `grade {filename}`.
@@ -115,7 +117,9 @@ def parse_sheet(text: str, where: str = "<sheet>") -> Sheet:
     if not isinstance(exercise_id, str):
         raise SheetError(f"{where}: not a dynagrade sheet (no line EXERCISE = \"<id>\"); "
                          "make one with `dynagrade sheet ID --student S -o exercise.py`")
-    if not isinstance(seed, str) or not seed.lstrip("-").isdigit():
+    # A seed is what `dynagrade sheet` wrote: ASCII digits, no sign (numpy refuses negative
+    # seeds, and int() would read other scripts' digits or refuse very long ones).
+    if not isinstance(seed, str) or not _SEED.fullmatch(seed):
         raise SheetError(f"{where}: the line SEED = <whole number> is missing or changed")
     student = header.get("STUDENT")
     return Sheet(exercise_id, int(seed), student if isinstance(student, str) else None,
