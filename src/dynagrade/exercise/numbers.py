@@ -2,16 +2,10 @@
 
 from __future__ import annotations
 
-import math
+from ..grading.feedback import show_number
 
 
 def format_number(value: float, digits: int = 6) -> str:
     """``value`` with ``digits`` significant figures, without trailing zeros or a float's
-    noise (``0.30000000000000004`` prints as ``0.3``)."""
-    if value == 0 or not math.isfinite(value):
-        return "0" if value == 0 else str(value)
-    text = f"{value:.{digits}g}"
-    if "e" in text:
-        mantissa, exponent = text.split("e")
-        return f"{mantissa}e{int(exponent)}"
-    return text
+    noise (``0.30000000000000004`` prints as ``0.3``); the grader's formatter at 6 figures."""
+    return show_number(value, digits)

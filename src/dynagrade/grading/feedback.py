@@ -2,20 +2,34 @@
 
 from __future__ import annotations
 
+import math
+
 from .nodes import BinOp, Expr, walk
 
 
 def show_number(value: float, digits: int = 4) -> str:
-    """A number for feedback: 4 significant figures, no float noise."""
+    """``value`` to ``digits`` significant figures, without trailing zeros, a float's noise
+    or a padded exponent (``0.30000000000000004`` -> ``0.3``, ``1.2e+05`` -> ``1.2e5``).
+
+    The one number formatter of dynagrade: feedback uses 4 figures, sheets and keys
+    (:func:`dynagrade.exercise.numbers.format_number`) 6.
+    """
+    if value == 0 or not math.isfinite(value):
+        return "0" if value == 0 else str(value)
     text = f"{value:.{digits}g}"
-    return text.replace("e+0", "e").replace("e-0", "e-").replace("e+", "e")
+    if "e" in text:
+        mantissa, exponent = text.split("e")
+        return f"{mantissa}e{int(exponent)}"
+    return text
 
 
 def show_value(value: float, unit: str | None) -> str:
+    """A number for feedback followed by its unit."""
     return f"{show_number(value)} {unit}" if unit else show_number(value)
 
 
 def show_tolerance(rtol: float, atol: float | None, unit: str | None) -> str:
+    """A part's tolerance in words: ``1 %``, ``0.01 m``, ``1 % or 0.01 m``, ``exactly``."""
     parts = []
     if rtol > 0:
         parts.append(f"{show_number(rtol * 100, 3)} %")
