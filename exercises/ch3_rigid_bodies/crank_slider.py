@@ -4,12 +4,73 @@
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise.figure import angle_arc, block, ground, new_drawing
+from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import rigid_kinematics as rk
 
 
 def _crank_rate(p):
     """Angular velocity of the crank from its speed in revolutions per time."""
     return 2 * np.pi * p.n
+
+
+def figure(p):
+    """The mechanism to scale at the instant considered: crank OA at theta, rod AB at the
+    angle of Section 3.1.1 (l sin beta = r sin theta) and the slider B on the line through O.
+    The crank is short beside the rod, so the drawing names r, l, theta and n and lists
+    their values underneath."""
+    from matplotlib.patches import Circle, Polygon
+
+    beta = rk.connecting_rod_angle(p.r, p.l, p.theta)
+    a = p.r * np.array([np.cos(p.theta), np.sin(p.theta)])
+    b = np.array([a[0] + p.l * np.cos(beta), 0.0])
+    size = p.r + p.l
+    drawing, axes = new_drawing(5.0, 2.2)
+    pin = 0.025 * size
+    axes.add_patch(Polygon([(0, 0), (-1.6 * pin, -2.6 * pin), (1.6 * pin, -2.6 * pin)],
+                           closed=True, facecolor="0.85", edgecolor="0.1", lw=1.0))
+    ground(axes, -3 * pin, 3 * pin, -2.6 * pin, hatch=0.8 * pin)
+    slider_h = 0.09 * size
+    ground(axes, b[0] - 0.2 * size, b[0] + 0.2 * size, -slider_h / 2, hatch=0.8 * pin)
+    block(axes, tuple(b), 0.14 * size, slider_h, color="0.6")
+    axes.plot([0.0, a[0]], [0.0, a[1]], color="C0", lw=3.5, solid_capstyle="round")
+    axes.plot([a[0], b[0]], [a[1], b[1]], color="C2", lw=3, solid_capstyle="round")
+    for point in ((0.0, 0.0), tuple(a), tuple(b)):
+        axes.add_patch(Circle(point, 0.5 * pin, facecolor="white", edgecolor="0.1",
+                              lw=1.0, zorder=3))
+    axes.plot([0.0, b[0] + 0.25 * size], [0.0, 0.0], color="0.5", lw=0.6, ls="-.")
+    axes.text(-2.6 * pin, -1.2 * pin, "O", ha="right", va="center", fontsize=10)
+    radial = np.array([np.cos(p.theta), np.sin(p.theta)])
+    axes.text(*(a + 2.6 * pin * radial), "A", ha="center", va="center", fontsize=10)
+    axes.text(b[0], b[1] + 0.6 * slider_h, "B", ha="center", va="bottom", fontsize=10)
+    away = np.array([-np.sin(p.theta), np.cos(p.theta)])     # off the crank, away from B
+    axes.text(*(a / 2 + 2.2 * pin * away), "r", ha="center", va="center", fontsize=10,
+              color="C0")
+    along = (b - a) / p.l
+    axes.text(*(a + 0.55 * (b - a) + 2.2 * pin * np.array([-along[1], along[0]])), "l",
+              ha="center", va="center", fontsize=10, color="C2")
+    angle_arc(axes, (0.0, 0.0), 0.3 * p.r, 0.0, p.theta)
+    bisector = np.array([np.cos(p.theta / 2), np.sin(p.theta / 2)])
+    # where the bisector of theta meets the rod: label inside the angle when there is room
+    reach = np.cross(a, b - a) / np.cross(bisector, b - a)
+    label_at = 0.6 * p.r if reach > 0.9 * p.r else reach + 3 * pin
+    axes.text(*(label_at * bisector), "θ", ha="center", va="center", fontsize=10)
+    turn = p.r + 0.08 * size
+    start, end = p.theta + 0.4, p.theta + 1.1
+    axes.annotate("", xy=(turn * np.cos(end), turn * np.sin(end)),
+                  xytext=(turn * np.cos(start), turn * np.sin(start)),
+                  arrowprops={"arrowstyle": "-|>", "color": "C3", "lw": 1.3,
+                              "connectionstyle": "arc3,rad=0.2", "shrinkA": 0, "shrinkB": 0})
+    middle = (start + end) / 2
+    axes.text(*((turn + 3 * pin) * np.array([np.cos(middle), np.sin(middle)])), "n",
+              color="C3", ha="center", va="center", fontsize=10)
+    values = (f"r = {format_number(p.r)} m,   l = {format_number(p.l)} m,   "
+              f"θ = {format_number(np.degrees(p.theta))}°,   n = {format_number(60 * p.n)} 1/min")
+    low = min(-0.1 * size, turn * np.sin(end) - 4 * pin)
+    axes.text((b[0] - p.r) / 2, low, values, ha="center", va="top", fontsize=10)
+    axes.set_xlim(-turn - 4 * pin, b[0] + 0.26 * size)
+    axes.set_ylim(low, turn + 4 * pin)
+    return drawing
 
 
 def solve(p):
@@ -59,6 +120,7 @@ the angle $\theta$ = {{ theta }} with the line OB (measured from OB, toward the 
 2. What is the angular speed of the connecting rod?
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("v_B", "slider velocity", unit="m/s", points=2,
                 misconceptions=(

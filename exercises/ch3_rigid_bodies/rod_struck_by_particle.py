@@ -1,6 +1,10 @@
 """A hanging rod struck by a particle: eccentric impact on a pinned body (Section 3.3)."""
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+import numpy as np
+
+from dynagrade.exercise.figure import arrow, block, dimension, new_drawing, pivot
+from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import inertia, rigid_impact
 
 
@@ -11,6 +15,37 @@ def _moment_pivot(p):
 def _impulse(p, moment):
     w_rod = rigid_impact.inverse_effective_mass_pinned_body(moment, p.d)
     return rigid_impact.eccentric_impact_impulse(1.0 / p.m, w_rod, p.v, p.e)
+
+
+def figure(p):
+    """The rod to scale hanging from its pivot O and the ball arriving horizontally at the
+    depth d below O (Section 3.3)."""
+    from matplotlib.patches import Circle
+
+    L = p.L
+    drawing, axes = new_drawing(4.0, 3.6)
+    pivot(axes, (0.0, 0.0), 0.08 * L)
+    block(axes, (0.0, -L / 2), 0.035 * L, L, color="#a0724a")
+    axes.text(0.0, -1.03 * L, f"M = {format_number(p.M)} kg", ha="center", va="top",
+              fontsize=10)
+    axes.text(-0.12 * L, 0.0, "O", ha="right", va="bottom", fontsize=10)
+    ball = np.array([-0.5 * L, -p.d])
+    radius = 0.035 * L
+    axes.add_patch(Circle(tuple(ball), radius, facecolor="C0", edgecolor="0.1", lw=1.0))
+    axes.text(ball[0], ball[1] + 1.6 * radius, f"m = {format_number(p.m)} kg", ha="center",
+              va="bottom", fontsize=10)
+    arrow(axes, (ball[0] + 1.5 * radius, ball[1]), (-0.06 * L, ball[1]), color="C3")
+    axes.text(ball[0] + 0.22 * L, ball[1] - 0.04 * L, f"v = {format_number(p.v)} m/s",
+              color="C3", ha="center", va="top", fontsize=10)
+    dimension(axes, (0.0, 0.0), (0.0, -p.d), f"d = {format_number(p.d)} m", offset=0.15 * L,
+              tick=0.03 * L, side=1.0)
+    dimension(axes, (0.0, 0.0), (0.0, -L), f"L = {format_number(L)} m", offset=0.65 * L,
+              tick=0.03 * L, side=1.0)
+    axes.text(-0.85 * L, -1.03 * L, f"e = {format_number(p.e)}", ha="left", va="top",
+              fontsize=10)
+    axes.set_xlim(-0.9 * L, 0.9 * L)
+    axes.set_ylim(-1.05 * L, 0.12 * L)
+    return drawing
 
 
 def solve(p):
@@ -71,6 +106,7 @@ restitution is $e$ = {{ e }}. Gravity plays no part during the short impact.
 4. At which distance below O would the blow cause no impulse at the pivot?
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("omega", "angular speed of the rod", unit="rad/s", points=2,
                 misconceptions=(

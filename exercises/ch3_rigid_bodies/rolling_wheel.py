@@ -5,12 +5,48 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform, Variable, Vector)
+from dynagrade.exercise.figure import angle_arc, arrow, dimension, ground, new_drawing
+from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import rigid_kinematics as rk
 
 
 def _rim_position(p):
     """Rim point relative to the hub, at the angle phi from the contact point."""
     return p.R * np.array([np.sin(p.phi), -np.cos(p.phi)])
+
+
+def figure(p):
+    """The wheel to scale on the ground with the hub's velocity, the contact point and the
+    rim point P at the angle phi from it, counter-clockwise about the hub (Section 3.1.1)."""
+    from matplotlib.patches import Circle
+
+    R = p.R
+    hub = np.array([0.0, R])
+    point = hub + _rim_position(p)
+    drawing, axes = new_drawing(4.4, 3.2)
+    ground(axes, -1.6 * R, 1.7 * R, hatch=R / 14)
+    axes.add_patch(Circle(tuple(hub), R, facecolor="0.93", edgecolor="0.1", lw=1.4))
+    axes.plot([0.0, 0.0], [R, 0.0], color="0.4", lw=0.8, ls=":")
+    axes.plot([0.0, point[0]], [R, point[1]], color="0.4", lw=0.8, ls=":")
+    axes.plot(*hub, "o", color="0.1", ms=4)
+    axes.plot(*point, "o", color="C0", ms=7, zorder=3)
+    axes.text(*(hub + 1.15 * _rim_position(p)), "P", ha="center", va="center", fontsize=10)
+    axes.text(0.06 * R, -0.08 * R, "contact", ha="left", va="top", fontsize=9, color="0.3")
+    angle_arc(axes, tuple(hub), 0.22 * R, -np.pi / 2, p.phi - np.pi / 2)
+    middle = (p.phi - np.pi) / 2          # the arc's middle, measured from e1
+    if abs(middle) < np.radians(35):      # keep the label off the hub's velocity arrow
+        middle = np.copysign(np.radians(35), middle)
+    axes.text(*(hub + 0.5 * R * np.array([np.cos(middle), np.sin(middle)])),
+              f"φ = {format_number(np.degrees(p.phi))}°", ha="center", va="center",
+              fontsize=10)
+    arrow(axes, tuple(hub), (1.0 * R, R), color="C3")
+    axes.text(1.05 * R, 1.08 * R, f"v = {format_number(p.v)} m/s", color="C3", ha="left",
+              va="bottom", fontsize=10)
+    dimension(axes, (-1.2 * R, 0.0), (-1.2 * R, R), f"R = {format_number(R)} m",
+              tick=0.05 * R)
+    axes.set_xlim(-1.65 * R, 1.75 * R)
+    axes.set_ylim(-0.15 * R, 2.1 * R)
+    return drawing
 
 
 def solve(p):
@@ -56,6 +92,7 @@ $\varphi$ = {{ phi }} from the contact point, measured about the hub counter-clo
 5. Give the speed of P as a formula in $v$ and $\varphi$.
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("omega", "angular speed", unit="rad/s", points=1),
         Vector("v_P", "velocity of P", unit="m/s", size=2, points=2,
