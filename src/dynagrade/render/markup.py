@@ -17,7 +17,7 @@ import html
 import re
 from dataclasses import dataclass
 
-from .mathtex import to_mathml, to_typst, unknown_commands
+from .mathtex import to_mathml, to_typst, typst_string, unknown_commands
 
 __all__ = ["markdown_to_html", "markdown_to_typst", "math_warnings", "Block", "parse_blocks"]
 
@@ -168,7 +168,7 @@ def inline_typst(text: str) -> str:
         elif kind == "em":
             out.append(f"#emph[{inline_typst(content)}]")
         elif kind == "code":
-            out.append(f"#raw(\"{_typst_string(content)}\")")
+            out.append(f"#raw(\"{typst_string(content)}\")")
         else:
             out.append(typst_text(_unescape_dollars(content)))
     return "".join(out)
@@ -191,10 +191,6 @@ def markdown_to_typst(markdown: str, heading_offset: int = 0) -> str:
         else:
             out.append(inline_typst(block.text))
     return "\n\n".join(out)
-
-
-def _typst_string(text: str) -> str:
-    return text.replace("\\", "\\\\").replace('"', '\\"')
 
 
 def math_warnings(markdown: str) -> list[str]:

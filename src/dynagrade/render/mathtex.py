@@ -343,7 +343,7 @@ def _typst(node: MathNode) -> str:
         if node.style == "function":
             return f'op("{text}")'
         if len(text) > 1:
-            shown = f'"{_typst_string(text)}"'
+            shown = f'"{typst_string(text)}"'
             return f"bold({shown})" if node.style == "bold" else shown
         if node.style == "bold":
             return f"bold({text})"
@@ -355,7 +355,7 @@ def _typst(node: MathNode) -> str:
     if kind == "op":
         return "".join("\\" + c if c in _TYPST_SPECIAL else c for c in node.text)
     if kind == "text":
-        return f'"{_typst_string(node.text)}"'
+        return f'"{typst_string(node.text)}"'
     if kind == "space":
         if node.width <= 0:
             return ""
@@ -387,5 +387,7 @@ def _typst_arg(node: MathNode) -> str:
     return text if text.strip() else '""'
 
 
-def _typst_string(text: str) -> str:
-    return text.replace("\\", "\\\\").replace('"', '\\"')
+def typst_string(text: str) -> str:
+    """``text`` as the inside of a typst string literal (the one escaper of the renderers)."""
+    return (text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
+            .replace("\r", "\\r"))

@@ -23,6 +23,7 @@ from markupsafe import Markup
 from ..exercise.figure import inline_svg
 from ..exercise.numbers import format_number
 from .markup import inline_html, inline_typst, markdown_to_html, markdown_to_typst, typst_text
+from .mathtex import typst_string
 
 TEMPLATES = Path(__file__).resolve().parent.parent / "templates"
 
@@ -101,12 +102,6 @@ def render_template(name: str, **context) -> str:
     """Render ``templates/<name>``; ``.html`` templates escape HTML automatically."""
     kind = "html" if name.endswith(".html") else "text"
     return _environment(kind).get_template(name).render(**context)
-
-
-def typst_string(text: str) -> str:
-    """``text`` as the inside of a typst string literal."""
-    return (text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
-            .replace("\r", "\\r"))
 
 
 def sheet_markdown(sheet: StudentSheet) -> str:
