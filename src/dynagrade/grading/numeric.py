@@ -7,7 +7,7 @@ import math
 from . import units
 from .errors import AnswerError, SpecError
 from .feedback import show_number, show_tolerance, show_value
-from .misconceptions import TWO_PI, numeric_candidates
+from .misconceptions import numeric_candidates
 from .quantity import Quantity, read_quantity, unit_info
 from .spec import NumericSpec
 from .tolerance import count_sigfigs, digits_needed, is_close, round_sig, same_sigfigs
@@ -15,6 +15,7 @@ from .verdict import Verdict, unreadable
 
 
 def expected_value(expected) -> float:
+    """A numeric part's reference as a finite float; :class:`SpecError` otherwise."""
     if isinstance(expected, bool) or not isinstance(expected, (int, float)):
         try:
             import numpy as np
@@ -32,6 +33,7 @@ def expected_value(expected) -> float:
 
 
 def grade_numeric(spec: NumericSpec, expected, answer: str) -> Verdict:
+    """The verdict on a number answer (see :func:`dynagrade.grading.grade`)."""
     e = expected_value(expected)
     part_factor, part_dim = unit_info(spec.unit)
     try:
@@ -125,8 +127,6 @@ def _misconception(spec: NumericSpec, e: float, value: float, q: Quantity):
     rotational = units.has_angle(part_dim) or (
         units.same(part_dim, (0, 0, -1, 0, 0, 0, 0, 0), ignore_angle=True))
     for name, wrong, feedback in numeric_candidates(e, angle_unit=angle_unit, rotational=rotational):
-        if name == TWO_PI and not rotational:
-            continue
         if math.isfinite(wrong) and not _close(spec, wrong, e) and _close(spec, value, wrong):
             return name, feedback, 0.0
     return None

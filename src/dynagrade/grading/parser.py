@@ -45,7 +45,7 @@ class Vocabulary:
     quantity: bool = False
 
 
-def parse_expression(text: str, variables=(), *, rewrite_equals: bool = True) -> Expr:
+def parse_expression(text: str, variables=()) -> Expr:
     """Parse a formula in the declared ``variables`` (expression mode)."""
     return _parse(text, Vocabulary(frozenset(variables), quantity=False), decimal_comma=False)
 
@@ -93,7 +93,7 @@ def parse_vector(text: str) -> tuple[list[Expr], Expr | None]:
             unit = parser.expression(0)
     parser.expect_end()
     for part in components + ([unit] if unit is not None else []):
-        _check_depth(part, text)
+        _check_depth(part)
     return components, unit
 
 
@@ -131,11 +131,11 @@ def _parse(text: str, vocabulary: Vocabulary, *, decimal_comma: bool) -> Expr:
         raise AnswerError("the answer is empty")
     tree = parser.expression(0)
     parser.expect_end()
-    _check_depth(tree, text)
+    _check_depth(tree)
     return tree
 
 
-def _check_depth(tree: Expr, text: str) -> None:
+def _check_depth(tree: Expr) -> None:
     if depth(tree) > MAX_DEPTH:
         raise AnswerError(f"the expression is too complex (nested more than {MAX_DEPTH} levels)")
 

@@ -70,9 +70,7 @@ def _reference(spec: SymbolicSpec, expected: str) -> _Reference:
         dims[name] = dim
     all_dims = None if any(d is None for d in dims.values()) else dims
     env, values = _sample(spec, expected, tree, factors)
-    scale = float(np.median(np.abs(values)))
-    floor = 1e-3 * scale if scale > 0 else 1e-12 / max(spec.rtol, 1e-300)
-    tol = spec.rtol * np.maximum(np.abs(values), floor)
+    tol = _tolerance(values, spec.rtol)
     ref_dim = None
     if all_dims is not None:
         try:
@@ -130,6 +128,7 @@ def _swap_sin_cos(tree: Expr) -> Expr:
 
 
 def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
+    """The verdict on a formula answer (see :func:`dynagrade.grading.grade`)."""
     deadline = Deadline()
     ref = _reference(spec, expected)
     try:
@@ -184,13 +183,18 @@ def _form_verdict(spec: SymbolicSpec, ref: _Reference, tree: Expr) -> Verdict:
     return Verdict(True, 1.0, "Correct.")
 
 
+def _tolerance(target: np.ndarray, rtol: float) -> np.ndarray:
+    """Per point ``rtol * max(|t_i|, 1e-3*M)``, M the median of |t| (the module's rule)."""
+    scale = float(np.median(np.abs(target)))
+    floor = 1e-3 * scale if scale > 0 else 1e-12 / max(rtol, 1e-300)
+    return rtol * np.maximum(np.abs(target), floor)
+
+
 def _agrees(values: np.ndarray, target: np.ndarray, ref: _Reference) -> bool:
     """Whether ``values`` match ``target`` under the reference's tolerance rule."""
     if not np.all(np.isfinite(target)):
         return False
-    scale = float(np.median(np.abs(target)))
-    floor = 1e-3 * scale if scale > 0 else 1e-12 / max(ref.rtol, 1e-300)
-    return bool(np.all(np.abs(values - target) <= ref.rtol * np.maximum(np.abs(target), floor)))
+    return bool(np.all(np.abs(values - target) <= _tolerance(target, ref.rtol)))
 
 
 def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray):
