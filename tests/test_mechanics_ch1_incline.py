@@ -8,18 +8,32 @@ from scipy.integrate import solve_ivp
 from dynagrade.mechanics import incline
 
 
-def _slide_up(v0, alpha, mu, g):
-    """Integrate x'' = -g sin(a) - mu g cos(a) (x up-slope; friction opposes the upward
-    motion, eq. 1.74) until v = 0 (terminal event; the friction direction would flip after)."""
+def _slide_until_rest(v0, acceleration):
+    """Integrate x'' = acceleration (constant, < 0: friction and gravity against the motion)
+    from x = 0, x' = v0 until v = 0 (terminal event; the friction direction would flip after).
+
+    The run ends a little after the hand-computed stopping time v0/|a|, with steps of at
+    most a tenth of it, so a missed event cannot send the solver on a long integration;
+    the event is asserted to have fired."""
     def rhs(t, y):
-        return [y[1], -g * np.sin(alpha) - mu * g * np.cos(alpha)]
+        return [y[1], acceleration]
 
     def stops(t, y):
         return y[1]
 
     stops.terminal = True
     stops.direction = -1
-    return solve_ivp(rhs, (0.0, 1e3), [0.0, v0], events=stops, rtol=1e-10, atol=1e-12)
+    t_stop = v0 / abs(acceleration)
+    sol = solve_ivp(rhs, (0.0, 1.5 * t_stop), [0.0, v0], events=stops, rtol=1e-10, atol=1e-12,
+                    max_step=0.1 * t_stop)
+    assert sol.status == 1 and len(sol.t_events[0]) == 1
+    return sol
+
+
+def _slide_up(v0, alpha, mu, g):
+    """Block moving up the slope: x'' = -g sin(a) - mu g cos(a) (x up-slope; friction opposes
+    the upward motion, eq. 1.74)."""
+    return _slide_until_rest(v0, -g * np.sin(alpha) - mu * g * np.cos(alpha))
 
 
 @settings(max_examples=25, deadline=None)
@@ -56,15 +70,8 @@ def test_block_sliding_down_with_mu_above_tan_alpha_stops_where_integration_says
     mu = np.tan(alpha) + extra
     assert incline.decelerates_down_slope(alpha, mu)
 
-    def rhs(t, y):   # moving down-slope (v > 0) until the terminal event at v = 0
-        return [y[1], g * np.sin(alpha) - mu * g * np.cos(alpha)]
-
-    def stops(t, y):
-        return y[1]
-
-    stops.terminal = True
-    stops.direction = -1
-    sol = solve_ivp(rhs, (0.0, 1e4), [0.0, v0], events=stops, rtol=1e-10, atol=1e-12)
+    # moving down-slope (v > 0) until rest: x'' = g sin(a) - mu g cos(a) < 0
+    sol = _slide_until_rest(v0, g * np.sin(alpha) - mu * g * np.cos(alpha))
     assert incline.stopping_distance_down_slope(v0, alpha, mu, g) == pytest.approx(
         sol.y_events[0][0][0], rel=1e-7)
 
