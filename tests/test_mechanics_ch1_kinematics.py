@@ -51,6 +51,7 @@ def test_linear_drag_closed_forms_match_integration(v0, k, frac):
 
     reached.terminal = True
     sol = _integrate_1d(lambda x, v: -k * v, v0, 100.0 / k, (reached,))
+    assert sol.status == 1
     t_hit, x_hit = sol.t_events[0][0], sol.y_events[0][0][0]
     assert kin.linear_drag_time_to_speed(v0, v_target, k) == pytest.approx(t_hit, rel=1e-7)
     assert kin.linear_drag_distance_to_speed(v0, v_target, k) == pytest.approx(x_hit, rel=1e-7)
@@ -70,7 +71,10 @@ def test_quadratic_drag_closed_forms_match_integration(v0, k, frac):
         return y[1] - v_target
 
     reached.terminal = True
-    sol = _integrate_1d(lambda x, v: -k * v * abs(v), v0, 1e4, (reached,))
+    # by hand, 1/v - 1/v0 = k t: the target speed is reached at (1/v - 1/v0)/k
+    t_reach = (1.0 / v_target - 1.0 / v0) / k
+    sol = _integrate_1d(lambda x, v: -k * v * abs(v), v0, 1.5 * t_reach, (reached,))
+    assert sol.status == 1
     t_hit, x_hit = sol.t_events[0][0], sol.y_events[0][0][0]
     assert kin.quadratic_drag_velocity(t_hit, v0, k) == pytest.approx(v_target, rel=1e-7)
     assert kin.quadratic_drag_position(t_hit, v0, k) == pytest.approx(x_hit, rel=1e-7)
@@ -87,7 +91,9 @@ def test_rocket_with_height_dependent_gravity_peaks_where_integration_stops(frac
 
     peak.terminal = True
     t_scale = v0 / g
-    sol = _integrate_1d(lambda x, v: -kin.gravity_at_height(x, g, R), v0, 1e4 * t_scale, (peak,))
+    # the climb lasts about 27 v0/g at 95 % of the escape speed: 100 v0/g is past every peak
+    sol = _integrate_1d(lambda x, v: -kin.gravity_at_height(x, g, R), v0, 100.0 * t_scale, (peak,))
+    assert sol.status == 1
     h = sol.y_events[0][0][0]
     assert kin.rocket_peak_height(v0, g, R) == pytest.approx(h, rel=1e-6)
     # the general route of eq. (1.17): speed from quadrature of a(x)
