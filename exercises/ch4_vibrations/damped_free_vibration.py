@@ -4,11 +4,38 @@ and the damping regime (Section 4.3.2)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Options, Uniform
+from dynagrade.exercise.figure import arrow, block, damper, ground, new_drawing, spring, wall
+from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import vibrations
 
 
 def zeta(p):
     return vibrations.damping_ratio(p.c, p.k, p.m)
+
+
+def figure(p):
+    """The oscillator of Section 4.3.2: a mass on a smooth floor tied to a wall by a spring
+    and a viscous damper in parallel, with its displacement x from the rest position.
+    Nothing here has a given length, so the sketch is drawn in fixed proportions."""
+    drawing, axes = new_drawing(4.4, 1.9)
+    wall(axes, 0.0, 0.0, 1.2, side=-1.0, hatch=0.08)
+    ground(axes, 0.0, 3.6, hatch=0.08)
+    left, size = 2.0, 1.0
+    spring(axes, (0.0, 0.78), (left, 0.78), coils=6, width=0.22)
+    damper(axes, (0.0, 0.42), (left, 0.42), width=0.24)
+    block(axes, (left + size / 2, size / 2), size, size, f"m = {format_number(p.m)} kg")
+    axes.text(left / 2, 0.93, f"k = {format_number(p.k)} N/m", ha="center", va="bottom",
+              fontsize=10)
+    axes.text(left / 2, 0.27, f"c = {format_number(p.c)} N·s/m", ha="center", va="top",
+              fontsize=10)
+    axes.plot([left + size / 2] * 2, [size + 0.05, size + 0.3], color="0.3", lw=0.8)
+    arrow(axes, (left + size / 2, size + 0.2), (left + size / 2 + 0.6, size + 0.2),
+          color="C3")
+    axes.text(left + size / 2 + 0.68, size + 0.2, "x", color="C3", ha="left", va="center",
+              fontsize=10)
+    axes.set_xlim(-0.2, 3.7)
+    axes.set_ylim(-0.15, 1.3)
+    return drawing
 
 
 def solve(p):
@@ -43,6 +70,7 @@ damper with coefficient $c$ = {{ c }}. It is displaced and released.
 4. What is the logarithmic decrement $\\delta$ between successive peaks?
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("omega_n", "natural angular frequency", unit="rad/s", points=1,
                 misconceptions=(Misconception("f for omega", lambda p: np.sqrt(p.k / p.m) / (2 * np.pi),

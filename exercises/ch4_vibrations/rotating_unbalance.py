@@ -4,6 +4,8 @@ operating speed and the force passed to the floor (Section 4.3.3)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise.figure import block, damper, dimension, ground, new_drawing, spring
+from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import vibrations
 
 
@@ -17,6 +19,50 @@ def amplitude(p, Omega=None):
     if Omega is not None:
         eta = Omega / w
     return vibrations.unbalance_amplitude(p.m_u, p.e, p.M, eta, p.zeta)
+
+
+def figure(p):
+    """The machine on its mounting: springs and dampers under the frame and the rotor with
+    the unbalance at the eccentricity e, turning at n (Section 4.3.3). Only e is a given
+    length: the rotor is drawn with radius 3 e and the machine around it."""
+    from matplotlib.patches import Circle
+
+    e = p.e
+    width, height, mount = 16 * e, 9 * e, 6 * e
+    rpm = p.n * 60 / (2 * np.pi)
+    drawing, axes = new_drawing(4.4, 3.6)
+    ground(axes, -0.2 * width, 1.2 * width, hatch=0.4 * e)
+    spring(axes, (0.25 * width, 0.0), (0.25 * width, mount), coils=5, width=2 * e)
+    damper(axes, (0.75 * width, 0.0), (0.75 * width, mount), width=2 * e)
+    centre = np.array([0.5 * width, mount + 0.5 * height])
+    block(axes, tuple(centre), width, height, color="0.85")
+    axes.add_patch(Circle(tuple(centre), 3 * e, facecolor="white", edgecolor="0.1", lw=1.0))
+    where = np.radians(40)
+    mass = centre + e * np.array([np.cos(where), np.sin(where)])
+    axes.plot([centre[0], mass[0]], [centre[1], mass[1]], color="0.1", lw=0.8)
+    axes.plot(*centre, "o", color="0.1", ms=3)
+    axes.plot(*mass, "o", color="C3", ms=7)
+    axes.text(centre[0] + 3.4 * e, mass[1], f"mᵤ = {format_number(p.m_u)} kg",
+              ha="left", va="center", fontsize=10)
+    axes.plot([mass[0], centre[0] + 3.3 * e], [mass[1], mass[1]], color="0.4", lw=0.6)
+    axes.text(centre[0] - 3.4 * e, centre[1] - 1.0 * e, f"e = {format_number(1000 * e)} mm",
+              ha="right", va="center", fontsize=10)
+    turn, start, end = 3.6 * e, np.radians(100), np.radians(170)
+    axes.annotate("", xy=tuple(centre + turn * np.array([np.cos(end), np.sin(end)])),
+                  xytext=tuple(centre + turn * np.array([np.cos(start), np.sin(start)])),
+                  arrowprops={"arrowstyle": "-|>", "color": "C3", "lw": 1.3,
+                              "connectionstyle": "arc3,rad=0.3", "shrinkA": 0, "shrinkB": 0})
+    axes.text(centre[0] - 3.6 * e, centre[1] + 3.4 * e, f"n = {format_number(rpm)} rpm",
+              color="C3", ha="right", va="bottom", fontsize=10)
+    axes.text(0.5 * width, mount + height + 0.5 * e, f"M = {format_number(p.M)} kg",
+              ha="center", va="bottom", fontsize=10)
+    axes.text(0.25 * width - 1.6 * e, 0.5 * mount, f"k = {format_number(p.k)} N/m",
+              ha="right", va="center", fontsize=10)
+    axes.text(0.75 * width + 1.6 * e, 0.5 * mount, f"ζ = {format_number(p.zeta)}",
+              ha="left", va="center", fontsize=10)
+    axes.set_xlim(-0.25 * width, 1.25 * width)
+    axes.set_ylim(-0.8 * e, mount + height + 2.5 * e)
+    return drawing
 
 
 def solve(p):
@@ -62,6 +108,7 @@ motion is possible.
 3. What is the amplitude of the force transmitted to the floor through springs and dampers?
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("n_crit", "critical speed", unit="rpm", points=1,
                 misconceptions=(Misconception("rad/s read as rpm", lambda p: np.sqrt(p.k / p.M) * 2 * np.pi / 60,

@@ -4,6 +4,8 @@ mode shapes (Section 4.4.2, with the column stiffness of Section 5.1)."""
 import numpy as np
 
 from dynagrade.exercise import Choice, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise.figure import arrow, block, dimension, ground, new_drawing
+from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import multi_dof, stiffness, vibrations
 
 
@@ -15,6 +17,38 @@ def storey_stiffness(p, per_column=None):
 def matrices(p, per_column=None):
     k = storey_stiffness(p, per_column)
     return multi_dof.chain_stiffness_matrix([k, k]), multi_dof.lumped_mass_matrix([p.m1, p.m2])
+
+
+def figure(p):
+    """The frame in elevation, storey heights to scale: two rigid floors on columns clamped
+    into the ground and the floors, with the floor displacements x1, x2 (Section 4.4.2).
+    The floors' width is not given and is drawn as 1.6 h."""
+    h = p.h
+    width, slab = 1.6 * h, 0.12 * h
+    drawing, axes = new_drawing(4.4, 4.2)
+    ground(axes, -0.35 * h, width + 0.35 * h, hatch=h / 25)
+    for storey, (mass, name) in enumerate(((p.m1, "₁"), (p.m2, "₂"))):
+        bottom = storey * h
+        for x in (0.06 * h, width - 0.06 * h):
+            axes.plot([x, x], [bottom, bottom + h - slab / 2], color="0.2", lw=2.0)
+        block(axes, (width / 2, bottom + h), width, slab, color="0.55")
+        axes.text(width / 2, bottom + h + slab / 2 + 0.04 * h,
+                  f"m{name} = {format_number(mass)} kg", ha="center", va="bottom",
+                  fontsize=10)
+        arrow(axes, (width + 0.08 * h, bottom + h), (width + 0.45 * h, bottom + h),
+              color="C3")
+        axes.text(width + 0.5 * h, bottom + h, f"x{name}", color="C3", ha="left",
+                  va="center", fontsize=10)
+    dimension(axes, (0.0, 0.0), (0.0, h), f"h = {format_number(h)} m", offset=0.2 * h,
+              tick=0.04 * h)
+    dimension(axes, (0.0, h), (0.0, 2 * h), f"h = {format_number(h)} m", offset=0.2 * h,
+              tick=0.04 * h)
+    columns = (f"{int(p.n_col)} columns per storey, E = {format_number(p.E / 1e9)} GPa, "
+               f"I = {format_number(p.I)} m⁴")
+    axes.text(width / 2, -0.12 * h, columns, ha="center", va="top", fontsize=10)
+    axes.set_xlim(-0.45 * h, width + 0.7 * h)
+    axes.set_ylim(-0.3 * h, 2 * h + 0.35 * h)
+    return drawing
 
 
 def solve(p):
@@ -58,6 +92,7 @@ consider horizontal floor displacements $x_1$, $x_2$ only.
 3. For each mode, give the amplitude ratio $x_2/x_1$ (roof over first floor).
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("k", "storey stiffness", unit="N/m", points=1,
                 misconceptions=(
