@@ -2,11 +2,39 @@
 natural frequencies (Section 5.3.1)."""
 
 from dynagrade.exercise import Exercise, Misconception, Numeric, Uniform, Vector
+from dynagrade.exercise.figure import arrow, block, dimension, new_drawing
+from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import rods, vibrations
 
 
 def c(p):
     return rods.longitudinal_wave_speed(p.E, p.rho)
+
+
+def figure(p):
+    """The free rod of length L on soft supports and the hammer blow giving its left end the
+    velocity v along the rod (Section 5.3.1); the rod's thickness is not given and is drawn
+    as a fortieth of its length."""
+    from matplotlib.patches import Rectangle
+
+    L = p.L
+    thick = L / 40
+    drawing, axes = new_drawing(5.0, 1.6)
+    block(axes, (L / 2, thick / 2), L, thick, color="0.6")
+    for x in (0.2 * L, 0.8 * L):
+        axes.add_patch(Rectangle((x - 0.04 * L, -0.03 * L), 0.08 * L, 0.03 * L,
+                                 facecolor="#e6d8a8", edgecolor="0.3", lw=0.6))
+    arrow(axes, (-0.2 * L, thick / 2), (-0.01 * L, thick / 2), color="C3")
+    axes.text(-0.11 * L, thick + 0.02 * L, f"v = {format_number(p.v)} m/s", color="C3",
+              ha="center", va="bottom", fontsize=10)
+    axes.text(L / 2, thick + 0.03 * L,
+              f"E = {format_number(p.E / 1e9)} GPa,   ρ = {format_number(p.rho)} kg/m³",
+              ha="center", va="bottom", fontsize=10)
+    dimension(axes, (0.0, 0.0), (L, 0.0), f"L = {format_number(L)} m", offset=-0.07 * L,
+              tick=0.01 * L, side=-1.0)
+    axes.set_xlim(-0.22 * L, 1.02 * L)
+    axes.set_ylim(-0.12 * L, 0.1 * L)
+    return drawing
 
 
 def solve(p):
@@ -37,6 +65,7 @@ velocity $v$ = {{ v }} along the rod by a hammer blow.
 4. Give the first two natural frequencies (in Hz) of longitudinal vibration of the free rod as a vector $[f_1, f_2]$.
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("c", "wave speed", unit="m/s", points=1),
         Numeric("t_arrival", "arrival time at the far end", unit="ms", points=1,
