@@ -3,28 +3,23 @@ SI units; vectors as numpy arrays (2D vectors are taken in the e1-e2 plane).
 """
 import numpy as np
 
-
-def _as_3d(vector):
-    vector = np.asarray(vector, dtype=float)
-    if vector.shape[-1] == 2:
-        vector = np.concatenate([vector, np.zeros(vector.shape[:-1] + (1,))], axis=-1)
-    return vector
+from dynagrade.mechanics.kinematics import spatial_vector
 
 
 def angular_momentum(r_BP, m, v_P):
     """Angular momentum about B, H_B = r_BP x m v_P, eq. (1.129) (3D vector)."""
-    return np.cross(_as_3d(r_BP), m * _as_3d(v_P))
+    return np.cross(spatial_vector(r_BP), m * spatial_vector(v_P))
 
 
 def torque(r_BP, F):
     """Resultant torque about B of the force F acting at P, M_B = r_BP x F, eq. (1.131)."""
-    return np.cross(_as_3d(r_BP), _as_3d(F))
+    return np.cross(spatial_vector(r_BP), spatial_vector(F))
 
 
 def angular_momentum_rate(M_B, v_B, P):
     """Rate of change of H_B from the angular momentum balance M_B = H_B' + v_B x P,
     eq. (1.132): H_B' = M_B - v_B x P."""
-    return _as_3d(M_B) - np.cross(_as_3d(v_B), _as_3d(P))
+    return spatial_vector(M_B) - np.cross(spatial_vector(v_B), spatial_vector(P))
 
 
 def planar_angular_momentum(m, r, phidot):

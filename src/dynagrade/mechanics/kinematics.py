@@ -206,7 +206,9 @@ def parabola_radius_of_curvature(c, x1):
     return radius_of_curvature_of_graph(2.0 * c * np.asarray(x1, dtype=float), 2.0 * c)
 
 
-def _as_3d(vector):
+def spatial_vector(vector):
+    """Three Cartesian components of a vector; a planar (2-component) vector is taken in the
+    e1-e2 plane with zero e3 component (the convention of eqs. (1.52) and (1.129))."""
     vector = np.asarray(vector, dtype=float)
     if vector.shape[-1] == 2:
         vector = np.concatenate([vector, np.zeros(vector.shape[:-1] + (1,))], axis=-1)
@@ -226,7 +228,7 @@ def tangential_acceleration(v, a):
 
 def normal_acceleration(v, a):
     """Magnitude of the acceleration normal to the path, v^2/rho = |v x a|/|v|, eq. (1.51)."""
-    cross = np.cross(_as_3d(v), _as_3d(a))
+    cross = np.cross(spatial_vector(v), spatial_vector(a))
     return np.linalg.norm(cross, axis=-1) / np.linalg.norm(np.asarray(v, dtype=float), axis=-1)
 
 
@@ -241,7 +243,7 @@ def principal_normal(v, a):
 
 def binormal(v, a):
     """Binormal e_b = e_t x e_n, eq. (1.52) (3D components)."""
-    return np.cross(_as_3d(unit_tangent(v)), _as_3d(principal_normal(v, a)))
+    return np.cross(spatial_vector(unit_tangent(v)), spatial_vector(principal_normal(v, a)))
 
 
 def radius_of_curvature(v, a):
@@ -249,7 +251,7 @@ def radius_of_curvature(v, a):
     (any parametrisation in time), rho = |v|^3 / |v x a|, from eq. (1.51)."""
     speed = np.linalg.norm(np.asarray(v, dtype=float), axis=-1)
     with np.errstate(divide="ignore"):
-        return speed**3 / np.linalg.norm(np.cross(_as_3d(v), _as_3d(a)), axis=-1)
+        return speed**3 / np.linalg.norm(np.cross(spatial_vector(v), spatial_vector(a)), axis=-1)
 
 
 @dataclass(frozen=True)

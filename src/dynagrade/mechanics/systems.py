@@ -5,6 +5,8 @@ shape (N, d) with d = 2 or 3. All quantities in SI units.
 """
 import numpy as np
 
+from dynagrade.mechanics.kinematics import spatial_vector
+
 
 def _as_masses(masses):
     return np.asarray(masses, dtype=float)
@@ -19,13 +21,7 @@ def _as_vectors(vectors, n):
 
 def _cross3(a, b):
     """Cross product with planar (2-component) vectors taken in the e1-e2 plane."""
-    a = np.asarray(a, dtype=float)
-    b = np.asarray(b, dtype=float)
-    if a.shape[-1] == 2:
-        a = np.concatenate([a, np.zeros(a.shape[:-1] + (1,))], axis=-1)
-    if b.shape[-1] == 2:
-        b = np.concatenate([b, np.zeros(b.shape[:-1] + (1,))], axis=-1)
-    return np.cross(a, b)
+    return np.cross(spatial_vector(a), spatial_vector(b))
 
 
 def total_mass(masses):
