@@ -176,6 +176,9 @@ def _form_verdict(spec: SymbolicSpec, ref: _Reference, tree: Expr) -> Verdict:
     if "simplified" in spec.form:
         if sum(1 for _ in walk(tree)) > sum(1 for _ in walk(ref.tree)) + 2:
             problems.append("simplify your expression further")
+    if "no_functions" in spec.form:
+        if any(isinstance(n, Call) for n in walk(tree)):
+            problems.append("write it without functions (no sin, sqrt, exp, …)")
     if problems:
         return Verdict(False, spec.form_credit,
                        "Your expression is equivalent, but " + " and ".join(problems) + ".",
