@@ -58,7 +58,7 @@ class Part:
     def reference(self, solved: Mapping[str, Any]) -> Any:
         """This part's reference answer, in the part's unit, from the solver's SI output."""
         try:
-            return self._from_si(solved[self.name])
+            return self.in_part_unit(solved[self.name])
         except KeyError:
             raise KeyError(f"the solver returned no answer for part {self.name!r}") from None
 
@@ -66,12 +66,13 @@ class Part:
         """The grader's specification for this part in the variant with ``params``."""
         raise TypeError(f"{type(self).__name__} has no grading specification")
 
-    def _from_si(self, value):
+    def in_part_unit(self, value):
+        """A value the solver gives in SI, as this part states and grades it."""
         return value
 
     def _known_wrong(self, params: ParamValues) -> tuple[KnownWrong, ...]:
         return tuple(
-            KnownWrong(m.name, self._from_si(m.value(params)), m.feedback, m.score)
+            KnownWrong(m.name, self.in_part_unit(m.value(params)), m.feedback, m.score)
             for m in self.misconceptions
         )
 
@@ -101,7 +102,7 @@ class Numeric(Part):
 
     kind = "numeric"
 
-    def _from_si(self, value):
+    def in_part_unit(self, value):
         return from_si(float(value), self.unit)
 
     def spec(self, params):
@@ -121,7 +122,7 @@ class Vector(Part):
 
     kind = "vector"
 
-    def _from_si(self, value):
+    def in_part_unit(self, value):
         values = tuple(from_si(float(v), self.unit) for v in value)
         if len(values) != self.size:
             raise ValueError(f"part {self.name!r} expects {self.size} components, "
@@ -171,7 +172,7 @@ class Options(Part):
 
     kind = "choice"
 
-    def _from_si(self, value):
+    def in_part_unit(self, value):
         chosen = (value,) if isinstance(value, str) else tuple(value)
         unknown = [c for c in chosen if c not in self.options]
         if unknown:

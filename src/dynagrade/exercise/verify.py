@@ -75,7 +75,7 @@ def variant_problems(exercise: Exercise, variant: Variant) -> list[str]:
                 problems.append(f"part {part.name}: {what} is accepted")
         for misconception in part.misconceptions:
             value = misconception.value
-            wrong = value if isinstance(value, str) else _as_text(part, part._from_si(value(params)))
+            wrong = value if isinstance(value, str) else _as_text(part, part.in_part_unit(value(params)))
             if grade(spec, expected, wrong).correct:
                 problems.append(f"part {part.name}: the misconception "
                                 f"'{misconception.name}' gives the right answer")
