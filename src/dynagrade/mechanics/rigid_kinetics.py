@@ -5,12 +5,15 @@ planar helpers take scalar moments of inertia about the axis normal to the plane
 """
 import numpy as np
 
+from dynagrade.mechanics import particle
+from dynagrade.mechanics.angular_momentum import angular_acceleration
+from dynagrade.mechanics.energy import kinetic_energy as translational_kinetic_energy
 from dynagrade.mechanics.systems import angular_momentum_transfer
 
 
 def linear_momentum(mass, v_c):
     """Linear momentum of a rigid body, P = m v_C (Section 3.2.1)."""
-    return mass * np.asarray(v_c, dtype=float)
+    return particle.linear_momentum(mass, v_c)
 
 
 def angular_momentum(inertia, omega):
@@ -28,7 +31,7 @@ def angular_momentum_about_point(inertia_centre, omega, mass, r_bc, v_c):
 def angular_acceleration_about_fixed_axis(moment, moment_of_inertia):
     """Angular acceleration of a body rotating about a fixed axis, omega_dot = M / I with
     M and I about that axis (balance of angular momentum, Section 3.2.2)."""
-    return moment / moment_of_inertia
+    return angular_acceleration(moment, moment_of_inertia)
 
 
 def rotational_kinetic_energy(inertia, omega):
@@ -40,8 +43,8 @@ def rotational_kinetic_energy(inertia, omega):
 def kinetic_energy(mass, v_c, inertia_centre, omega):
     """Kinetic energy of a rigid body, T = 1/2 m |v_C|^2 + 1/2 omega . I_C omega
     (translation of the centre of mass plus rotation about it, Section 3.2.5)."""
-    v_c = np.asarray(v_c, dtype=float)
-    return 0.5 * mass * float(v_c @ v_c) + rotational_kinetic_energy(inertia_centre, omega)
+    return (float(translational_kinetic_energy(mass, v_c))
+            + rotational_kinetic_energy(inertia_centre, omega))
 
 
 def rolling_acceleration_on_incline(alpha, g, mass, radius, moment_centre):

@@ -5,6 +5,7 @@ shape (N, d) with d = 2 or 3. All quantities in SI units.
 """
 import numpy as np
 
+from dynagrade.mechanics.energy import kinetic_energy as particle_kinetic_energy
 from dynagrade.mechanics.kinematics import spatial_vector
 
 
@@ -53,8 +54,7 @@ def centre_of_mass_acceleration(total_external_force, mass):
 def kinetic_energy(masses, velocities):
     """Kinetic energy T = sum 1/2 m_i |v_i|^2 of a system of particles (Section 2.2.2)."""
     m = _as_masses(masses)
-    v = _as_vectors(velocities, m.size)
-    return float(0.5 * np.sum(m * np.sum(v * v, axis=1)))
+    return float(np.sum(particle_kinetic_energy(m, _as_vectors(velocities, m.size))))
 
 
 def kinetic_energy_relative_to_centre_of_mass(masses, velocities):

@@ -9,6 +9,8 @@ arrays that broadcast together.
 """
 import numpy as np
 
+from dynagrade.mechanics.energy import kinetic_energy, spring_potential
+
 
 # --- Section 4.3.1: definitions, equivalent mass and stiffness -------------------
 
@@ -62,7 +64,7 @@ def equivalent_stiffness(stiffnesses, ratios):
 
 def mechanical_energy(x, v, k, m):
     """Total mechanical energy E = m v^2/2 + k x^2/2 of the oscillator, Section 4.3.1."""
-    return 0.5 * m * np.asarray(v) ** 2 + 0.5 * k * np.asarray(x) ** 2
+    return kinetic_energy(m, v) + spring_potential(k, x)
 
 
 # --- Section 4.3.2: free vibrations ------------------------------------------------
