@@ -17,3 +17,28 @@ def bank():
     from dynagrade.exercise import open_bank
 
     return open_bank()
+
+
+@pytest.fixture(scope="session")
+def exam_toml():
+    """A three-exercise exam spec shared by the exam tests."""
+    return """\
+id = "dynamics-test-exam"
+title = "Dynamics: test exam"
+date = 2025-04-14
+instructions = "Answer every part."
+
+[[exercise]]
+id = "projectile-range"
+points = 6
+
+[[exercise]]
+id = "sliding-up-a-slope"
+points = 6
+
+[[exercise]]
+id = "car-in-a-looping"
+points = 8
+[exercise.set]
+g = 9.81
+"""

@@ -22,41 +22,16 @@ from dynagrade.exercise.numbers import format_number
 from dynagrade.exercise.seeds import exam_seed
 
 ROOT = Path(__file__).resolve().parent.parent
-EXAM_TOML = """\
-id = "dynamics-test-exam"
-title = "Dynamics: test exam"
-date = 2025-04-14
-instructions = "Answer every part."
-
-[[exercise]]
-id = "projectile-range"
-points = 6
-
-[[exercise]]
-id = "sliding-up-a-slope"
-points = 6
-
-[[exercise]]
-id = "car-in-a-looping"
-points = 8
-[exercise.set]
-g = 9.81
-"""
 ROSTER = "student_id,name\nq-001,Emmy Noether\nq-002,Leonhard Euler\nq-003,Sophie Germain\n"
 
 
 @pytest.fixture(scope="module")
-def bank():
-    return open_bank()
-
-
-@pytest.fixture(scope="module")
-def exam(tmp_path_factory, bank):
+def exam(tmp_path_factory, bank, exam_toml):
     folder = tmp_path_factory.mktemp("exam")
     roster = folder / "roster.csv"
     roster.write_text(ROSTER, encoding="utf-8")
     exam = folder / "exam.toml"
-    exam.write_text(EXAM_TOML, encoding="utf-8")
+    exam.write_text(exam_toml, encoding="utf-8")
     out = folder / "out"
     generate_exam(exam, roster, out, bank=bank, jobs=1)
     manifest = json.loads((out / "manifest.json").read_text(encoding="utf-8"))

@@ -16,29 +16,8 @@ from click.testing import CliRunner
 from dynagrade.cli import grade_main, main
 from dynagrade.exam.classgrade import grade_class
 from dynagrade.exam.generate import generate_exam
-from dynagrade.exercise.loader import open_bank
 
 ROOT = Path(__file__).resolve().parent.parent
-EXAM_TOML = """\
-id = "dynamics-test-exam"
-title = "Dynamics: test exam"
-date = 2025-04-14
-instructions = "Answer every part."
-
-[[exercise]]
-id = "projectile-range"
-points = 6
-
-[[exercise]]
-id = "sliding-up-a-slope"
-points = 6
-
-[[exercise]]
-id = "car-in-a-looping"
-points = 8
-[exercise.set]
-g = 9.81
-"""
 KINDS = ["correct", "half", "empty", "corrupt", "duplicate", "csv"]
 ROSTER_IDS = [f"c-{i}" for i in range(8)]  # the last two are absent
 
@@ -53,18 +32,13 @@ def _make_submissions():
 
 
 @pytest.fixture(scope="module")
-def bank():
-    return open_bank()
-
-
-@pytest.fixture(scope="module")
-def graded(tmp_path_factory, bank):
+def graded(tmp_path_factory, bank, exam_toml):
     folder = tmp_path_factory.mktemp("class")
     roster = folder / "roster.csv"
     roster.write_text("student_id,name\n" + "".join(f"{s},Student {s}\n" for s in ROSTER_IDS),
                       encoding="utf-8")
     exam = folder / "exam.toml"
-    exam.write_text(EXAM_TOML, encoding="utf-8")
+    exam.write_text(exam_toml, encoding="utf-8")
     out = folder / "out"
     generate_exam(exam, roster, out, bank=bank, jobs=1, pdf=False)
     _make_submissions().main(str(out))
@@ -216,9 +190,9 @@ def test_response_csvs_report_bad_rows_and_let_a_later_row_win(graded, tmp_path)
                         ("row 7", "error", "skipped"), ("row 1", "error", "corrupt, skipped")]
 
 
-def test_the_exam_command_reports_a_malformed_roster_and_writes_nothing(tmp_path):
+def test_the_exam_command_reports_a_malformed_roster_and_writes_nothing(tmp_path, exam_toml):
     exam = tmp_path / "exam.toml"
-    exam.write_text(EXAM_TOML, encoding="utf-8")
+    exam.write_text(exam_toml, encoding="utf-8")
     roster = tmp_path / "roster.csv"
     roster.write_text("student_id,name\ns1,A\ns1,B\n", encoding="utf-8")
     result = CliRunner().invoke(main, ["exam", str(exam), "--roster", str(roster), "-o",

@@ -10,12 +10,6 @@ import pytest
 from matplotlib.patches import Circle, Polygon
 
 from dynagrade.exercise.figure import figure_svg, inline_svg
-from dynagrade.exercise.loader import open_bank
-
-
-@pytest.fixture(scope="module")
-def bank():
-    return open_bank()
 
 
 @pytest.mark.parametrize("seed", [0, 7, 31])
