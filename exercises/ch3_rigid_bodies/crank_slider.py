@@ -52,7 +52,8 @@ def figure(p):
     angle_arc(axes, (0.0, 0.0), 0.3 * p.r, 0.0, p.theta)
     bisector = np.array([np.cos(p.theta / 2), np.sin(p.theta / 2)])
     # where the bisector of theta meets the rod: label inside the angle when there is room
-    reach = np.cross(a, b - a) / np.cross(bisector, b - a)
+    rod = b - a
+    reach = (a[0] * rod[1] - a[1] * rod[0]) / (bisector[0] * rod[1] - bisector[1] * rod[0])
     label_at = 0.6 * p.r if reach > 0.9 * p.r else reach + 3 * pin
     axes.text(*(label_at * bisector), "θ", ha="center", va="center", fontsize=10)
     turn = p.r + 0.08 * size
