@@ -64,7 +64,8 @@ def equivalent_stiffness(stiffnesses, ratios):
 
 def mechanical_energy(x, v, k, m):
     """Total mechanical energy E = m v^2/2 + k x^2/2 of the oscillator, Section 4.3.1."""
-    return kinetic_energy(m, v) + spring_potential(k, x)
+    # v is a (possibly time-sampled) scalar velocity: one component per sample
+    return kinetic_energy(m, np.asarray(v, dtype=float)[..., None]) + spring_potential(k, x)
 
 
 # --- Section 4.3.2: free vibrations ------------------------------------------------
