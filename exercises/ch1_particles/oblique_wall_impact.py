@@ -30,8 +30,8 @@ def figure(p):
     axes.text(*(tail + 0.25 * incoming - 0.14 * normal_left), f"v = {format_number(p.v)} m/s",
               color="C3", ha="center", va="center", fontsize=10,
               rotation=np.degrees(p.theta), rotation_mode="anchor")
-    axes.text(*(start + 0.16 * normal_left - 0.05 * incoming),
-              f"m = {format_number(p.m)} kg", ha="center", va="bottom", fontsize=10)
+    axes.text(start[0] - 0.11, start[1], f"m = {format_number(p.m)} kg", ha="right",
+              va="center", fontsize=10)
     angle_arc(axes, (0.0, 0.0), 0.35, np.pi, np.pi + p.theta,
               f"θ = {format_number(np.degrees(p.theta))}°", label_radius=0.62)
     axes.text(0.12, -0.95, f"e = {format_number(p.e)}", ha="left", va="bottom", fontsize=10)
