@@ -4,6 +4,9 @@ included in our copy).  SI units; angles in rad measured from the wall normal.
 """
 import numpy as np
 
+from dynagrade.mechanics.collisions import impact_impulse
+from dynagrade.mechanics.energy import kinetic_energy
+
 
 def rebound_normal_velocity(v_n, e):
     """Normal velocity component after impact on a fixed wall, v_n' = -e v_n (Section 1.2.4)."""
@@ -40,7 +43,9 @@ def rebound_velocity(v, normal, e):
     v = np.asarray(v, dtype=float)
     n = np.asarray(normal, dtype=float)
     n = n / np.linalg.norm(n)
-    return v - (1.0 + e) * np.sum(v * n, axis=-1, keepdims=True) * n
+    # the wall is immovable (inverse mass 0); per unit particle mass (inverse mass 1)
+    impulse_per_mass = impact_impulse(1.0, 0.0, np.sum(v * n, axis=-1, keepdims=True), e)
+    return v - impulse_per_mass * n
 
 
 def rebound_angle(theta, e):
@@ -64,13 +69,14 @@ def normal_energy_loss_fraction(e):
 def impact_energy_loss(m, v, theta, e):
     """Kinetic energy lost in an oblique impact on a smooth wall,
     (1 - e^2) m (v cos theta)^2 / 2 (Section 1.2.4)."""
-    return normal_energy_loss_fraction(e) * 0.5 * m * (v * np.cos(theta)) ** 2
+    normal_speed = np.asarray(v * np.cos(theta), dtype=float)[..., None]   # one-component vector
+    return normal_energy_loss_fraction(e) * kinetic_energy(m, normal_speed)
 
 
 def wall_impulse(m, v_n, e):
     """Magnitude of the impulse the wall gives the particle, m (1 + e) |v_n| (Section 1.2.4,
-    linear momentum balance integrated over the impact)."""
-    return m * (1.0 + e) * np.abs(v_n)
+    the two-body impulse of Section 2.3.1 with an immovable wall)."""
+    return impact_impulse(1.0 / m, 0.0, np.abs(v_n), e)
 
 
 def bouncing_time(h0, e, g):
