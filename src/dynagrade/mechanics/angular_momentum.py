@@ -4,6 +4,7 @@ SI units; vectors as numpy arrays (2D vectors are taken in the e1-e2 plane).
 import numpy as np
 
 from dynagrade.mechanics.kinematics import spatial_vector
+from dynagrade.mechanics.vibrations import period
 
 
 def angular_momentum(r_BP, m, v_P):
@@ -102,7 +103,7 @@ def pendulum_natural_frequency(g, R):
 
 def pendulum_small_angle_period(g, R):
     """Period of small pendulum oscillations, 2 pi sqrt(R/g), from eq. (1.147)."""
-    return 2.0 * np.pi / pendulum_natural_frequency(g, R)
+    return period(pendulum_natural_frequency(g, R))
 
 
 def pendulum_string_force(m, R, g, phi, phidot):

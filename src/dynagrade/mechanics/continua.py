@@ -13,6 +13,8 @@ omega^2 <= integral EI w''^2 dx / integral rho A w^2 dx holds for any admissible
 import numpy as np
 from scipy.integrate import quad
 
+from dynagrade.mechanics.vibrations import natural_frequency
+
 
 def effective_mass(line_density, shape, L):
     """Effective mass m_eff = int_0^L mu psi(x)^2 dx of a body moving in the shape psi, Section 5.2.
@@ -51,7 +53,7 @@ def rod_effective_mass(m_r):
 
 def rayleigh_frequency(k, m, m_eff):
     """Rayleigh's estimate omega = sqrt(k / (m + m_eff)) of the fundamental frequency, Section 5.2."""
-    return np.sqrt(k / (m + m_eff))
+    return natural_frequency(k, m + m_eff)
 
 
 def beam_rayleigh_quotient(EI, rhoA, w, w_xx, L):

@@ -13,6 +13,7 @@ import sympy as sp
 from scipy.optimize import brentq
 
 from dynagrade.mechanics import lagrange, vibrations
+from dynagrade.mechanics.angular_momentum import pendulum_natural_frequency
 
 
 def _plain(q):
@@ -104,8 +105,9 @@ def linearized_frequency_squared(T, V, q, t, q_eq):
 # point.  T = m R^2 (theta'^2 + Omega^2 sin^2 theta) / 2, V = -m g R cos theta.
 
 def hoop_critical_spin_rate(R, g):
-    """Spin rate Omega_c = sqrt(g/R) above which the lowest point of the hoop is unstable, Section 4.2."""
-    return np.sqrt(g / R)
+    """Spin rate Omega_c = sqrt(g/R) above which the lowest point of the hoop is unstable, Section 4.2:
+    the small-oscillation frequency of a pendulum of length R (eq. 1.147)."""
+    return pendulum_natural_frequency(g, R)
 
 
 def hoop_equilibrium_angle(R, Omega, g):
@@ -129,6 +131,6 @@ def hoop_oscillation_frequency(R, Omega, g):
     sqrt(g/R - Omega^2) about the lowest point for Omega < sqrt(g/R); Omega sin(theta*)
     about the off-axis equilibrium otherwise.
     """
-    theta = 0.0 if Omega**2 <= g / R else hoop_equilibrium_angle(R, Omega, g)
+    theta = 0.0 if abs(Omega) <= hoop_critical_spin_rate(R, g) else hoop_equilibrium_angle(R, Omega, g)
     # k_eq = V*''(theta), m_eq = m R^2 (unit mass: the frequency does not depend on m)
     return vibrations.natural_frequency(hoop_potential_curvature(theta, 1.0, R, Omega, g), R**2)
