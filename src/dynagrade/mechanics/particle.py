@@ -7,6 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from dynagrade.mechanics.incline import time_up_slope
+
 
 def linear_momentum(m, v):
     """Linear momentum P = m v, eq. (1.59)."""
@@ -61,8 +63,9 @@ def string_tension(m, l, omega):
 
 def sliding_stop_time(v0, mu, g):
     """Time for Coulomb friction to stop a particle sliding on a horizontal floor,
-    v0/(mu g), eq. (1.73) with alpha = 0 integrated as in Example 1.1."""
-    return v0 / (mu * g)
+    v0/(mu g), eq. (1.73) with alpha = 0 integrated as in Example 1.1 (the slope's time to
+    rest with a level slope)."""
+    return time_up_slope(v0, 0.0, mu, g)
 
 
 @dataclass(frozen=True)

@@ -6,6 +6,8 @@ exhaust leaves at relative speed u backwards, so the thrust is u |m_dot|.
 """
 import numpy as np
 
+from dynagrade.mechanics.impact import impact_speed_after_fall
+
 
 def thrust(exhaust_speed, mass_flow_rate):
     """Thrust of a rocket, F = u q with exhaust speed u relative to the rocket and the
@@ -58,6 +60,6 @@ def chain_on_scale_force(mass_per_length, fallen_length, g):
     """Reading of a scale onto which a chain falls freely from rest (hanging vertically
     and released): the weight of the piled part lambda g x plus the momentum flux of the
     arriving links lambda v^2 = 2 lambda g x, in total F = 3 lambda g x (Section 2.3.2)."""
-    speed = np.sqrt(2.0 * g * fallen_length)
+    speed = impact_speed_after_fall(fallen_length, g)
     momentum_flux = force_to_keep_speed_while_accreting(mass_per_length * speed, speed)
     return mass_per_length * g * fallen_length + momentum_flux
