@@ -90,12 +90,6 @@ def test_core_reproduces_the_notes_result_throughout_the_domain(entry, data):
 CROSS = [e for e in ENTRIES if "exercise" in e]
 
 
-@pytest.fixture(scope="module")
-def bank():
-    from dynagrade.exercise.loader import open_bank
-    return open_bank()
-
-
 @pytest.mark.parametrize("entry", CROSS, ids=[f"{e['exercise']}:{e['part']}" for e in CROSS])
 def test_exercise_answer_equals_the_notes_result(entry, bank):
     exercise = bank.get(entry["exercise"])
