@@ -205,3 +205,34 @@ def test_circular_motion_in_the_space_curve_frame_of_example_1_6():
     assert kin.radius_of_curvature(v, a) == pytest.approx(R)
     assert kin.centripetal_acceleration(R * phd, R) == pytest.approx(R * phd**2)
     assert kin.radius_of_curvature_of_graph(0.3, 0.0) == np.inf      # straight line
+
+
+@settings(max_examples=20, deadline=None)
+@given(v0=st.floats(0.0, 20.0), a=st.floats(0.5, 10.0), t=st.floats(0.1, 5.0))
+def test_constant_acceleration_speed_and_distance_match_integration_of_x_double_dot(v0, a, t):
+    # x'' = a from x(0) = 0, x'(0) = v0 integrated numerically (eqs. 1.9, 1.10)
+    sol = solve_ivp(lambda _, y: [y[1], a], (0.0, t), [0.0, v0], rtol=1e-11, atol=1e-12)
+    assert kin.distance_at_constant_acceleration(t, v0, a) == pytest.approx(sol.y[0, -1], rel=1e-8)
+    assert kin.speed_at_constant_acceleration(t, v0, a) == pytest.approx(sol.y[1, -1], rel=1e-8)
+
+
+@settings(max_examples=20, deadline=None)
+@given(s=st.floats(0.1, 50.0), a=st.floats(0.2, 20.0))
+def test_time_from_rest_is_when_a_started_particle_reaches_the_distance(s, a):
+    t = kin.time_from_rest_over_distance(s, a)
+    # a solve_ivp event at x = s, and the identity v^2 = 2 a s at that instant
+    hit = lambda _, y: y[0] - s
+    hit.terminal = True
+    sol = solve_ivp(lambda _, y: [y[1], a], (0.0, 10 * t), [0.0, 0.0], events=hit,
+                    rtol=1e-11, atol=1e-12)
+    assert t == pytest.approx(sol.t_events[0][0], rel=1e-8)
+    assert (a * t) ** 2 == pytest.approx(2 * a * s, rel=1e-12)
+
+
+def test_half_life_halves_an_exponential_decay():
+    # exp(-k t_half) = 1/2 for k = 0.37 1/s by hand: t_half = 0.6931472/0.37 = 1.8733708 s
+    k = 0.37
+    t_half = kin.half_life(k)
+    assert np.exp(-k * t_half) == pytest.approx(0.5, rel=1e-14)
+    assert t_half == pytest.approx(1.8733708, rel=1e-7)
+    assert kin.linear_drag_velocity(2 * t_half, 8.0, k) == pytest.approx(2.0, rel=1e-12)

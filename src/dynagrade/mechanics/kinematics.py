@@ -40,6 +40,25 @@ def release_position(t, r0, v0, g):
             + 0.5 * np.asarray(g, dtype=float) * t**2)
 
 
+def speed_at_constant_acceleration(t, v0, a):
+    """Speed (or path velocity s') after a time t under a constant acceleration a (or constant
+    tangential acceleration a_t = s''), eq. (1.9) with a = const (cf. eq. 1.11): v = v0 + a t."""
+    return v0 + a * t
+
+
+def distance_at_constant_acceleration(t, v0, a):
+    """Distance (or path length s along a space curve) covered in a time t from the speed v0
+    under a constant (tangential) acceleration a, eq. (1.10) with a = const (cf. eq. 1.12):
+    s = v0 t + a t^2 / 2."""
+    return v0 * t + 0.5 * a * t**2
+
+
+def time_from_rest_over_distance(s, a):
+    """Time to cover the distance s from rest under a constant acceleration a > 0, eq. (1.12)
+    solved for t: s = a t^2 / 2, so t = sqrt(2 s / a)."""
+    return np.sqrt(2.0 * s / a)
+
+
 def linear_drag_velocity(t, v0, k):
     """Velocity under linear (Stokes) drag a = -k v, eq. (1.14): v(t) = v0 exp(-k t).
     Component-wise for vectors, eq. (1.15)."""
@@ -62,6 +81,12 @@ def linear_drag_distance_to_speed(v0, v, k):
     """Distance covered while linear drag slows the particle from v0 to v, from
     a(x) = v dv/dx = -k v (eq. 1.17): x = (v0 - v)/k."""
     return (v0 - v) / k
+
+
+def half_life(decay_rate):
+    """Half-life ln(2) / k of a quantity decaying as exp(-k t), eq. (1.14): the time for
+    linear drag to halve the speed."""
+    return linear_drag_time_to_speed(1.0, 0.5, decay_rate)
 
 
 def linear_drag_coasting_distance(v0, k):
