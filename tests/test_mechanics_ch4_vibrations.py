@@ -167,3 +167,24 @@ def test_rotating_unbalance_amplitude_and_transmitted_force_match_simulation():
     Xc = vibrations.unbalance_amplitude(m_u, e, M, 1.8, zeta)
     assert vibrations.transmitted_force_amplitude(Xc, k, c, Omega) == pytest.approx(
         vibrations.transmissibility(1.8, zeta) * m_u * e * Omega**2, rel=1e-12)
+
+
+@SETTINGS
+@given(m=st.floats(0.1, 50), omega=st.floats(0.5, 200))
+def test_stiffness_from_frequency_gives_back_the_frequency_and_the_period(m, omega):
+    k = vibrations.stiffness_from_natural_frequency(m, omega)
+    # an oscillator with this k, started from x0 = 1, is back at 1 after T = 2 pi / omega
+    T = vibrations.period(omega)
+    sol = integrate(m, 0.0, k, 1.0, 0.0, T)
+    assert sol.y[0, -1] == pytest.approx(1.0, abs=1e-7)
+    assert vibrations.angular_frequency_from_period(T) == pytest.approx(omega, rel=1e-12)
+
+
+def test_road_forcing_frequency_by_hand():
+    # v = 72 km/h = 20 m/s over humps lambda = 8 m apart: 2.5 humps per second,
+    # Omega = 2 pi 2.5 = 15.70796... rad/s; back to the speed for that Omega
+    Omega = vibrations.road_forcing_frequency(20.0, 8.0)
+    assert Omega == pytest.approx(15.707963268, rel=1e-10)
+    assert vibrations.road_speed_for_forcing_frequency(Omega, 8.0) == pytest.approx(20.0, rel=1e-14)
+    # the base y = Y cos(2 pi x / lambda) with x = v t repeats after lambda / v = 0.4 s
+    assert vibrations.period(Omega) == pytest.approx(0.4, rel=1e-14)

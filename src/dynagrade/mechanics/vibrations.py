@@ -29,6 +29,17 @@ def period(omega):
     return 2.0 * np.pi / omega
 
 
+def angular_frequency_from_period(T):
+    """Angular frequency omega = 2 pi / T in rad/s of a vibration with period T, Section 4.3.1."""
+    return 2.0 * np.pi / T
+
+
+def stiffness_from_natural_frequency(m, omega_n):
+    """Stiffness k = m omega_n^2 that gives the mass m the natural frequency omega_n,
+    omega_n = sqrt(k/m) solved for k, Section 4.3.1."""
+    return m * omega_n**2
+
+
 def static_deflection(m, k, g):
     """Static deflection delta_st = m g / k of a mass hanging on a spring, Section 4.3.1."""
     return m * g / k
@@ -223,6 +234,18 @@ def transmissibility(eta, zeta):
     equally of the force transmitted to the foundation to the applied force amplitude.
     """
     return np.sqrt(1.0 + (2.0 * zeta * eta) ** 2) * amplification_factor(eta, zeta)
+
+
+def road_forcing_frequency(v, wavelength):
+    """Forcing frequency Omega = 2 pi v / lambda of the base of a vehicle driving at speed v over
+    a wavy road of wavelength lambda (base excitation y = Y cos(Omega t)), Section 4.3.3."""
+    return 2 * np.pi * v / wavelength
+
+
+def road_speed_for_forcing_frequency(Omega, wavelength):
+    """Driving speed v = Omega lambda / (2 pi) at which a wavy road of wavelength lambda excites
+    the base with the frequency Omega (road_forcing_frequency solved for v), Section 4.3.3."""
+    return Omega * wavelength / (2 * np.pi)
 
 
 def base_excitation_amplitude(Y, eta, zeta):
