@@ -280,3 +280,14 @@ if __name__ == "__main__":
         print(np.array2string(errors, precision=3))
         print("observed order log2(e_N / e_2N):")
         print(np.array2string(orders, precision=3))
+
+
+@SETTINGS
+@given(omega=st.floats(10, 5000), EI=st.floats(1, 1e4), rhoA=st.floats(0.1, 50))
+def test_flexural_wave_repeats_after_one_wavelength(omega, EI, rhoA):
+    k = beams.flexural_wavenumber(omega, EI, rhoA)
+    lam = beams.wavelength(k)
+    # cos(k x) over one wavelength: phase 2 pi; and lambda = c_p T (phase speed times period)
+    assert np.cos(k * (0.3 + lam)) == pytest.approx(np.cos(k * 0.3), abs=1e-9)
+    assert lam == pytest.approx(beams.flexural_phase_speed(omega, EI, rhoA) * 2 * np.pi / omega,
+                                rel=1e-12)

@@ -19,6 +19,12 @@ def bending_wave_parameter(EI, rhoA):
     return np.sqrt(EI / rhoA)
 
 
+def wavelength(k):
+    """Wavelength lambda = 2 pi / k of a harmonic wave exp(i (k x - omega t)) of wavenumber k,
+    Section 5.3."""
+    return 2 * np.pi / k
+
+
 def flexural_frequency(k, EI, rhoA):
     """Angular frequency omega = k^2 sqrt(EI / (rho A)) of a flexural wave of wavenumber k, Section 5.3.3."""
     return k**2 * bending_wave_parameter(EI, rhoA)
