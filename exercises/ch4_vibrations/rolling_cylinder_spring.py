@@ -4,12 +4,13 @@ system and its natural frequency (Section 4.3.1)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform, Variable
-from dynagrade.mechanics import vibrations
+from dynagrade.mechanics import inertia, vibrations
 
 
 def m_eq(p):
     # x' for the translation, phi' = x'/r for the rotation (J = m r^2 / 2)
-    return vibrations.equivalent_mass([p.m, p.m * p.r**2 / 2], [1.0, 1.0 / p.r])
+    return vibrations.equivalent_mass([p.m, inertia.inertia_tensor_disk(p.m, p.r)[2, 2]],
+                                      [1.0, 1.0 / p.r])
 
 
 def k_eq(p):

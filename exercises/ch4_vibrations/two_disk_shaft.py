@@ -4,11 +4,11 @@ the node of the mode (Section 4.4.2)."""
 import numpy as np
 
 from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
-from dynagrade.mechanics import multi_dof, stiffness, vibrations
+from dynagrade.mechanics import inertia, multi_dof, stiffness, vibrations
 
 
 def _J(m, R):
-    return m * R**2 / 2
+    return inertia.inertia_tensor_disk(m, R)[2, 2]
 
 
 def _system(p):

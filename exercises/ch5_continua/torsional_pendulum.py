@@ -1,7 +1,7 @@
 """A disk on a wire or shaft: torsional stiffness and the torsional pendulum (Section 5.1)."""
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
-from dynagrade.mechanics import stiffness, vibrations
+from dynagrade.mechanics import inertia, stiffness, vibrations
 
 
 def k_t(p, polar=True):
@@ -9,9 +9,16 @@ def k_t(p, polar=True):
     return stiffness.torsional_stiffness(stiffness.shear_modulus(p.E, p.nu), section, p.L)
 
 
+def _J(p):
+    return inertia.inertia_tensor_disk(p.m, p.R)[2, 2]
+
+
+def _period(p):
+    return vibrations.period(vibrations.natural_frequency(k_t(p), _J(p)))
+
+
 def solve(p):
-    J = p.m * p.R**2 / 2
-    return {"kt": k_t(p), "T": vibrations.period(vibrations.natural_frequency(k_t(p), J))}
+    return {"kt": k_t(p), "T": _period(p)}
 
 
 EXERCISE = Exercise(
@@ -29,7 +36,7 @@ EXERCISE = Exercise(
     ),
     constraints=(
         Constraint("a period between 0.05 s and 20 s",
-                   lambda p: 0.05 <= vibrations.period(vibrations.natural_frequency(k_t(p), p.m * p.R**2 / 2)) <= 20),
+                   lambda p: 0.05 <= _period(p) <= 20),
     ),
     statement="""
 A homogeneous disk (mass $m$ = {{ m }}, radius $R$ = {{ R }}) hangs at the lower end of a
