@@ -4,6 +4,7 @@ angular momentum (Example 1.19; eqs. 1.135 and 1.139)."""
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
                                 Variable)
 from dynagrade.mechanics import angular_momentum as am
+from dynagrade.mechanics import rigid_kinetics
 
 
 def _inertia(p, r):
@@ -13,9 +14,11 @@ def _inertia(p, r):
 def solve(p):
     I0, I1 = _inertia(p, p.r0), _inertia(p, p.r1)
     omega1 = am.conserved_angular_velocity(p.omega0, I0, I1)
+    # rotation about the fixed vertical axis: 1x1 moment of inertia, one rate
     return {"omega1": omega1,
-            "H": I0 * p.omega0,
-            "W": 0.5 * I1 * omega1**2 - 0.5 * I0 * p.omega0**2}
+            "H": float(rigid_kinetics.angular_momentum([[I0]], [p.omega0])[0]),
+            "W": (rigid_kinetics.rotational_kinetic_energy([[I1]], [omega1])
+                  - rigid_kinetics.rotational_kinetic_energy([[I0]], [p.omega0]))}
 
 
 EXERCISE = Exercise(

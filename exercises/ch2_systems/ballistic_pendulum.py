@@ -6,7 +6,7 @@ from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symb
                                 Uniform, Variable)
 from dynagrade.exercise.figure import arrow, block, ceiling, new_drawing
 from dynagrade.exercise.numbers import format_number
-from dynagrade.mechanics import collisions, projectile
+from dynagrade.mechanics import collisions, energy, projectile
 
 
 def _energy_conserving_speed(p):
@@ -46,7 +46,7 @@ def solve(p):
         "V": common,
         # the block swings up like a vertical throw with the speed V: h = V^2 / (2 g)
         "h": projectile.peak_height(common, np.pi / 2, p.g),
-        "fraction_lost": lost / (0.5 * p.m * p.v**2),
+        "fraction_lost": lost / energy.kinetic_energy(p.m, p.v),
     }
 
 

@@ -4,7 +4,7 @@
 import numpy as np
 
 from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
-from dynagrade.mechanics import gyro, inertia
+from dynagrade.mechanics import gyro, inertia, rigid_kinetics, vibrations
 
 
 def _spin(p):
@@ -13,9 +13,11 @@ def _spin(p):
 
 
 def solve(p):
-    i3 = inertia.inertia_tensor_disk(p.m, p.R)[2, 2]
-    rate = gyro.fast_top_precession_rate(p.m, p.g, p.l, i3, _spin(p))
-    return {"H": i3 * _spin(p), "psi_dot": rate, "T": 2 * np.pi / rate}
+    disk = inertia.inertia_tensor_disk(p.m, p.R)
+    rate = gyro.fast_top_precession_rate(p.m, p.g, p.l, disk[2, 2], _spin(p))
+    spin_momentum = rigid_kinetics.angular_momentum(disk, [0.0, 0.0, _spin(p)])[2]
+    # one precession revolution takes the period of the rotation at the rate psi_dot
+    return {"H": float(spin_momentum), "psi_dot": rate, "T": vibrations.period(rate)}
 
 
 EXERCISE = Exercise(
