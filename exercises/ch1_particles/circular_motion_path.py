@@ -8,8 +8,8 @@ from dynagrade.mechanics import kinematics
 
 
 def solve(p):
-    v = p.v0 + p.at * p.t                       # s'' = a_t constant
-    s = p.v0 * p.t + 0.5 * p.at * p.t**2
+    v = kinematics.speed_at_constant_acceleration(p.t, p.v0, p.at)      # s'' = a_t constant
+    s = kinematics.distance_at_constant_acceleration(p.t, p.v0, p.at)
     return {
         "v": v,
         "a_n": kinematics.centripetal_acceleration(v, p.R),

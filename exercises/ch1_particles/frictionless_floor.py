@@ -5,7 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform, Variable)
-from dynagrade.mechanics import particle
+from dynagrade.mechanics import kinematics, particle
 
 
 def _forces(p):
@@ -17,7 +17,7 @@ def solve(p):
     pull, weight = _forces(p)
     N = -(pull[1] + weight[1])                # no motion normal to the floor: x2'' = 0
     a = particle.acceleration(p.m, pull, weight, (0.0, N))
-    return {"N": N, "a": float(a[0]), "v_t": p.v0 + float(a[0]) * p.t,
+    return {"N": N, "a": float(a[0]), "v_t": kinematics.speed_at_constant_acceleration(p.t, p.v0, float(a[0])),
             "N_free": particle.floor_normal_force(p.m, p.g)}
 
 

@@ -6,13 +6,14 @@ import numpy as np
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
                                 Variable)
 from dynagrade.mechanics import angular_momentum as am
+from dynagrade.mechanics import kinematics
 
 
 def solve(p):
     return {
         "M0": float(-am.drag_torque(p.k, p.R, p.omega0)),
         "omega_t": float(am.drag_angular_velocity(p.t, p.omega0, p.k, p.m)),
-        "t_half": np.log(2.0) / am.rotation_decay_rate(p.k, p.m),
+        "t_half": kinematics.half_life(am.rotation_decay_rate(p.k, p.m)),
         "phi_total": float(am.drag_rotation_angle(np.inf, p.omega0, p.k, p.m)),
     }
 

@@ -5,7 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Options, Symbolic,
                                 Uniform, Variable)
-from dynagrade.mechanics import inertia, rigid_kinetics
+from dynagrade.mechanics import inertia, kinematics, rigid_kinetics
 
 
 def _moments(p):
@@ -23,7 +23,8 @@ def _acceleration(p, body):
 
 
 def solve(p):
-    times = {body: np.sqrt(2 * p.s / _acceleration(p, body)) for body in _moments(p)}
+    times = {body: kinematics.time_from_rest_over_distance(p.s, _acceleration(p, body))
+             for body in _moments(p)}
     height = p.s * np.sin(p.alpha)
     return {
         "a_cyl": _acceleration(p, "cylinder"),
