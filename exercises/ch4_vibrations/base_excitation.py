@@ -11,13 +11,13 @@ def _omega_n(p):
 
 
 def _eta(p):
-    return vibrations.frequency_ratio(2 * np.pi * p.v / p.lam, _omega_n(p))
+    return vibrations.frequency_ratio(vibrations.road_forcing_frequency(p.v, p.lam), _omega_n(p))
 
 
 def solve(p):
-    Omega = 2 * np.pi * p.v / p.lam
+    Omega = vibrations.road_forcing_frequency(p.v, p.lam)
     zeta = vibrations.damping_ratio(p.c, p.k, p.m)
-    return {"Omega": Omega, "v_res": _omega_n(p) * p.lam / (2 * np.pi),
+    return {"Omega": Omega, "v_res": vibrations.road_speed_for_forcing_frequency(_omega_n(p), p.lam),
             "X": vibrations.base_excitation_amplitude(p.Y, _eta(p), zeta)}
 
 

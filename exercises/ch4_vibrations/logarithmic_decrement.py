@@ -10,13 +10,13 @@ from dynagrade.mechanics import vibrations
 def _identified(p):
     delta = vibrations.logarithmic_decrement_from_amplitudes(p.x0, p.xn, p.n)
     zeta = vibrations.damping_ratio_from_decrement(delta)
-    w = vibrations.natural_frequency_from_damped(2 * np.pi / p.Td, zeta)
+    w = vibrations.natural_frequency_from_damped(vibrations.angular_frequency_from_period(p.Td), zeta)
     return delta, zeta, w
 
 
 def solve(p):
     delta, zeta, w = _identified(p)
-    k = p.m * w**2
+    k = vibrations.stiffness_from_natural_frequency(p.m, w)
     return {"delta": delta, "zeta": zeta, "omega_n": w, "k": k,
             "c": vibrations.damping_coefficient(zeta, k, p.m)}
 

@@ -13,7 +13,7 @@ def _args(p):
 def solve(p):
     w, EI, rhoA = _args(p)
     k = beams.flexural_wavenumber(w, EI, rhoA)
-    return {"lam": 2 * np.pi / k, "c_p": beams.flexural_phase_speed(w, EI, rhoA),
+    return {"lam": beams.wavelength(k), "c_p": beams.flexural_phase_speed(w, EI, rhoA),
             "c_g": beams.flexural_group_speed(w, EI, rhoA)}
 
 
