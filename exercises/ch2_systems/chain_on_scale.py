@@ -2,7 +2,7 @@
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform, Variable)
-from dynagrade.mechanics import variable_mass
+from dynagrade.mechanics import particle, variable_mass
 
 
 def solve(p):
@@ -10,7 +10,7 @@ def solve(p):
     return {
         "F_x": variable_mass.chain_on_scale_force(lam, p.x, p.g),
         "F_max": variable_mass.chain_on_scale_force(lam, p.L, p.g),
-        "F_end": lam * p.L * p.g,
+        "F_end": float(particle.weight(lam * p.L, p.g)),
     }
 
 

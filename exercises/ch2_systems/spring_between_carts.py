@@ -4,11 +4,12 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform, Variable)
-from dynagrade.mechanics import systems
+from dynagrade.mechanics import energy, systems
 
 
 def _relative_speed(p):
-    return systems.relative_speed_from_internal_work(p.m1, p.m2, 0.5 * p.k * p.delta**2)
+    spring_work = float(energy.spring_potential_of_stretch(p.k, p.delta))
+    return systems.relative_speed_from_internal_work(p.m1, p.m2, spring_work)
 
 
 def solve(p):
