@@ -25,6 +25,7 @@ Every error names the file, and the line and field (or row and column) at fault.
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import datetime as dt
 import io
@@ -206,10 +207,8 @@ def _date(value, where, line) -> str:
     if isinstance(value, dt.date):
         return value.isoformat()
     if isinstance(value, str):
-        try:
+        with contextlib.suppress(ValueError):  # not ISO: reported below like any bad date
             return dt.date.fromisoformat(value.strip()).isoformat()
-        except ValueError:
-            pass
     raise ExamSpecError(f"{where}, line {line}, field 'date': "
                         f"{'missing' if value is None else repr(value)}; give a date "
                         "YYYY-MM-DD (it is printed on the sheets and dates the PDFs)")
