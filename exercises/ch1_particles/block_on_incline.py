@@ -5,7 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Options,
                                 Symbolic, Uniform, Variable)
-from dynagrade.exercise.figure import angle_arc, block, ground, new_drawing
+from dynagrade.exercise.figure import block, inclined_plane
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import incline
 
@@ -13,15 +13,7 @@ from dynagrade.mechanics import incline
 def figure(p):
     """The rough plane to scale at its angle with the block on it (Example 1.8); the slope
     is one unit long, the block a tenth of that."""
-    from matplotlib.patches import Polygon
-
-    along = np.array([np.cos(p.alpha), np.sin(p.alpha)])
-    normal = np.array([-np.sin(p.alpha), np.cos(p.alpha)])
-    drawing, axes = new_drawing(5.0, 1.2 + 3.0 * np.sin(p.alpha))
-    top = along
-    axes.add_patch(Polygon([(0, 0), (top[0], 0), tuple(top)], closed=True,
-                           facecolor="0.9", edgecolor="0.1", lw=1.2))
-    ground(axes, -0.1, top[0] + 0.1, hatch=0.02)
+    drawing, axes, along, normal = inclined_plane(p.alpha)
     size = 0.11
     block(axes, tuple(0.72 * along + 0.5 * size * normal), 1.4 * size, size, "m",
           angle=p.alpha)
@@ -31,10 +23,7 @@ def figure(p):
     axes.text(*(0.42 * along + 0.045 * normal), f"μ = {format_number(p.mu)}",
               ha="center", va="center", fontsize=10, rotation=np.degrees(p.alpha),
               rotation_mode="anchor")
-    angle_arc(axes, (0.0, 0.0), 0.14, 0.0, p.alpha,
-              f"α = {format_number(np.degrees(p.alpha))}°", label_radius=0.3)
-    axes.set_xlim(-0.12, top[0] + 0.12)
-    axes.set_ylim(-0.05, top[1] + 0.2)
+    axes.set_ylim(-0.05, along[1] + 0.2)
     return drawing
 
 

@@ -4,7 +4,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform, Variable)
-from dynagrade.exercise.figure import angle_arc, arrow, ground, new_drawing
+from dynagrade.exercise.figure import arrow, block, inclined_plane
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import incline
 
@@ -12,32 +12,17 @@ from dynagrade.mechanics import incline
 def figure(p):
     """The slope to scale at its angle, the block near its foot and the launch velocity
     up the slope (Example 1.15)."""
-    from matplotlib.patches import Polygon
-
-    length = 1.0
-    along = np.array([np.cos(p.alpha), np.sin(p.alpha)])
-    normal = np.array([-np.sin(p.alpha), np.cos(p.alpha)])
-    drawing, axes = new_drawing(5.0, 1.2 + 3.0 * np.sin(p.alpha))
-    top = length * along
-    axes.add_patch(Polygon([(0, 0), (top[0], 0), tuple(top)], closed=True,
-                           facecolor="0.9", edgecolor="0.1", lw=1.2))
-    ground(axes, -0.1, top[0] + 0.1, hatch=0.02)
-    foot, size = 0.18 * along, 0.09
-    corners = [foot, foot + size * along, foot + size * (along + normal), foot + size * normal]
-    axes.add_patch(Polygon([tuple(c) for c in corners], closed=True, facecolor="C0",
-                           edgecolor="0.1", lw=1.0))
-    axes.text(*(foot + size * (0.5 * along + 0.5 * normal)), "m", color="white",
-              ha="center", va="center", fontsize=9)
+    drawing, axes, along, normal = inclined_plane(p.alpha)
+    size = 0.09
+    foot = 0.18 * along
+    block(axes, tuple(foot + 0.5 * size * (along + normal)), size, size, "m", angle=p.alpha)
     start = foot + size * (along + 0.5 * normal)
     arrow(axes, tuple(start), tuple(start + 0.3 * along),
           f"v₀ = {format_number(p.v0)} m/s", offset=tuple(0.09 * normal), color="C3")
     axes.text(*(0.62 * along - 0.07 * normal), f"μ = {format_number(p.mu)}",
               ha="center", va="center", fontsize=10, rotation=np.degrees(p.alpha),
               rotation_mode="anchor")
-    angle_arc(axes, (0.0, 0.0), 0.14, 0.0, p.alpha,
-              f"α = {format_number(np.degrees(p.alpha))}°", label_radius=0.3)
-    axes.set_xlim(-0.12, top[0] + 0.12)
-    axes.set_ylim(-0.05, top[1] + 0.12)
+    axes.set_ylim(-0.05, along[1] + 0.12)
     return drawing
 
 

@@ -240,3 +240,27 @@ def ceiling(axes, x_start: float, x_end: float, y: float, hatch: float = 0.0) ->
     xs = np.column_stack([starts, starts + size, np.full_like(starts, np.nan)]).ravel()
     ys = np.tile([y, y + size, np.nan], len(starts))
     axes.plot(xs, ys, color="0.4", lw=0.6)
+
+
+def inclined_plane(alpha: float, length: float = 1.0):
+    """A new drawing of a wedge rising at ``alpha`` (rad) over ``length``, on hatched
+    ground, its angle marked and labelled in degrees.
+
+    Returns ``(figure, axes, along, normal)``: the unit vectors up the slope and normal
+    to it, for placing a block or labels on the slope. The caller sets the y-limits."""
+    import numpy as np
+    from matplotlib.patches import Polygon
+
+    from .numbers import format_number
+
+    along = np.array([np.cos(alpha), np.sin(alpha)])
+    normal = np.array([-np.sin(alpha), np.cos(alpha)])
+    figure, axes = new_drawing(5.0, 1.2 + 3.0 * np.sin(alpha))
+    top = length * along
+    axes.add_patch(Polygon([(0, 0), (top[0], 0), tuple(top)], closed=True,
+                           facecolor="0.9", edgecolor="0.1", lw=1.2))
+    ground(axes, -0.1, top[0] + 0.1, hatch=0.02)
+    angle_arc(axes, (0.0, 0.0), 0.14, 0.0, alpha,
+              f"α = {format_number(np.degrees(alpha))}°", label_radius=0.3)
+    axes.set_xlim(-0.12, top[0] + 0.12)
+    return figure, axes, along, normal
