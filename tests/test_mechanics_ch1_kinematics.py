@@ -236,3 +236,33 @@ def test_half_life_halves_an_exponential_decay():
     assert np.exp(-k * t_half) == pytest.approx(0.5, rel=1e-14)
     assert t_half == pytest.approx(1.8733708, rel=1e-7)
     assert kin.linear_drag_velocity(2 * t_half, 8.0, k) == pytest.approx(2.0, rel=1e-12)
+
+
+def test_circular_speed_is_radius_times_angular_rate_by_hand():
+    # r = 2.2 m, phi' = 1.65 rad/s: v = 3.63 m/s, also when turning clockwise (eq. 1.19)
+    assert kin.circular_speed(2.2, 1.65) == pytest.approx(3.63, rel=1e-12)
+    assert kin.circular_speed(2.2, -1.65) == pytest.approx(3.63, rel=1e-12)
+
+
+def test_circular_speed_equals_length_of_differentiated_position():
+    t = sp.Symbol("t")
+    r, phi = 1.3, 0.7 * t**2 - 0.4 * t
+    x = sp.Matrix([r * sp.cos(phi), r * sp.sin(phi)])
+    for t_val in (0.1, 0.9, 2.0):
+        speed = float(x.diff(t).subs(t, t_val).norm())
+        phidot = float(phi.diff(t).subs(t, t_val))
+        assert kin.circular_speed(r, phidot) == pytest.approx(speed, rel=1e-12)
+
+
+def test_angle_from_arc_length_of_a_quarter_circle_is_a_right_angle():
+    R = 50.0
+    assert kin.angle_from_arc_length(np.pi * R / 2, R) == pytest.approx(np.pi / 2, rel=1e-12)
+
+
+def test_acceleration_magnitude_matches_the_cartesian_acceleration_on_a_circle():
+    # a_t = r phi'', a_n = r phi'^2 (eq. 1.54) against |a| of the Cartesian vector (1.20)
+    r, phi, phidot, phiddot = 2.2, 0.41, 1.65, 3.3
+    cartesian = np.linalg.norm(kin.circular_acceleration(r, phi, phidot, phiddot))
+    assert kin.acceleration_magnitude(r * phiddot, r * phidot**2) == pytest.approx(cartesian,
+                                                                                    rel=1e-12)
+    assert kin.acceleration_magnitude(3.0, 4.0) == pytest.approx(5.0, rel=1e-12)

@@ -210,6 +210,18 @@ def circular_acceleration(r, phi, phidot, phiddot):
     return polar_to_cartesian(*polar_acceleration(r, 0.0, 0.0, phidot, phiddot), phi)
 
 
+def circular_speed(r, phidot):
+    """Speed on a circle of constant radius r at angular rate phi', v = r |phi'|,
+    eqs. (1.19) and (1.53)."""
+    return r * np.abs(phidot)
+
+
+def angle_from_arc_length(s, R):
+    """Angle swept on a circle of radius R along the path length s, phi = s/R
+    (s = R phi, Example 1.6, eq. (1.53))."""
+    return s / R
+
+
 def centripetal_acceleration(v, rho):
     """Magnitude of the acceleration towards the centre of curvature, v^2/rho, eqs. (1.37), (1.51)."""
     return v**2 / rho
@@ -277,6 +289,12 @@ def radius_of_curvature(v, a):
     speed = np.linalg.norm(np.asarray(v, dtype=float), axis=-1)
     with np.errstate(divide="ignore"):
         return speed**3 / np.linalg.norm(np.cross(spatial_vector(v), spatial_vector(a)), axis=-1)
+
+
+def acceleration_magnitude(tangential, normal):
+    """Magnitude of the acceleration from its space-curve components,
+    |a| = sqrt(s''^2 + (v^2/rho)^2), e_t and e_n being orthonormal in eq. (1.51)."""
+    return np.hypot(tangential, normal)
 
 
 @dataclass(frozen=True)
