@@ -195,3 +195,26 @@ def test_height_gain_by_energy_equals_the_integrated_peak_of_example_1_12():
     from dynagrade.mechanics import projectile
     assert energy.height_gain(v0, v0 * np.cos(alpha), g) == pytest.approx(projectile.peak_height(v0, alpha, g))
     assert kin.rocket_peak_height(v0, g, 1e15) == pytest.approx(energy.height_gain(v0, 0.0, g), rel=1e-9)
+
+
+def test_resultant_force_by_hand_and_back_to_the_acceleration():
+    # m = 2 kg, a = (3, -4) m/s^2: F = (6, -8) N, and F/m gives a again (eq. 1.63)
+    force = particle.resultant_force(2.0, [3.0, -4.0])
+    assert force == pytest.approx([6.0, -8.0])
+    assert particle.acceleration(2.0, force) == pytest.approx([3.0, -4.0])
+
+
+def test_normal_force_under_an_inclined_pull_by_hand():
+    # m = 10 kg, g = 9.81, F = 50 N at 30 deg: N = 98.1 - 25 = 73.1 N
+    assert particle.floor_normal_force_under_pull(10.0, 9.81, 50.0, np.radians(30)) == \
+        pytest.approx(73.1, rel=1e-12)
+
+
+@settings(max_examples=20, deadline=None)
+@given(m=st.floats(0.5, 20.0), g=st.floats(1.0, 15.0), F=st.floats(0.0, 50.0),
+       theta=st.floats(-1.2, 1.2))
+def test_pulled_block_does_not_accelerate_normal_to_the_floor(m, g, F, theta):
+    N = particle.floor_normal_force_under_pull(m, g, F, theta)
+    pull = (F * np.cos(theta), F * np.sin(theta))
+    a = particle.acceleration(m, pull, particle.weight(m, (0.0, -g)), (0.0, N))
+    assert a[1] == pytest.approx(0.0, abs=1e-9)

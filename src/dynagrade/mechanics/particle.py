@@ -20,6 +20,12 @@ def acceleration(m, *forces):
     return np.sum([np.asarray(f, dtype=float) for f in forces], axis=0) / m
 
 
+def resultant_force(m, a):
+    """Resultant force that gives a particle of constant mass m the acceleration a,
+    sum F = m a, eq. (1.63)."""
+    return m * np.asarray(a, dtype=float)
+
+
 def weight(m, g):
     """Weight m g for the gravity vector g (e.g. (0, -9.81)), eq. (1.96)."""
     return m * np.asarray(g, dtype=float)
@@ -53,6 +59,14 @@ def quadratic_drag_force(v, c):
 def floor_normal_force(m, g):
     """Normal force on a particle sliding on a horizontal floor, N = m g, eq. (1.70)."""
     return m * g
+
+
+def floor_normal_force_under_pull(m, g, F, theta):
+    """Normal force on a particle kept on a horizontal floor while a force F pulls it at the
+    angle theta above the floor: no acceleration normal to the floor, so
+    N = m g - F sin(theta) (the e2 component of the balance, eqs. (1.68)-(1.69), with the
+    pull added; N = m g of eq. (1.70) for theta = 0). Negative N means the particle lifts off."""
+    return floor_normal_force(m, g) - F * np.sin(theta)
 
 
 def string_tension(m, l, omega):
