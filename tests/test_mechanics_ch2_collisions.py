@@ -76,3 +76,15 @@ def test_billiard_balls_leave_at_right_angles_in_elastic_oblique_impact():
     after = collisions.velocities_after_oblique_impact(0.17, 0.17, v1, np.zeros(3), n, 1.0)
     assert after.v1 @ after.v2 == pytest.approx(0.0, abs=1e-12)
     assert after.v2 / np.linalg.norm(after.v2) == pytest.approx(n)
+
+
+def test_velocity_after_impulse_by_hand():
+    # 0.2 kg at 5 m/s receives -1.5 N s: v' = 5 - 7.5 = -2.5 m/s
+    assert collisions.velocity_after_impulse(0.2, 5.0, -1.5) == pytest.approx(-2.5, rel=1e-12)
+
+
+@settings(max_examples=30, deadline=None)
+@given(mass, speed, st.floats(-50.0, 50.0))
+def test_momentum_changes_by_the_impulse(m, v, impulse):
+    v_after = collisions.velocity_after_impulse(m, v, impulse)
+    assert m * v_after - m * v == pytest.approx(impulse, abs=1e-9)

@@ -28,12 +28,20 @@ def impact_impulse(w1, w2, approach_speed, e):
     return (1.0 + e) * approach_speed / (w1 + w2)
 
 
+def velocity_after_impulse(m, v, impulse):
+    """Velocity of a particle of mass m after the impulse F_hat acted on it in its direction
+    of motion, v' = v + F_hat/m (linear momentum balance integrated over the short impact,
+    Section 2.3.1)."""
+    return v + impulse / m
+
+
 def velocities_after_central_impact(m1, m2, v1, v2, e):
     """Velocities after a central (head-on) collision on a line:
     v1' = v1 - (1+e) m2/(m1+m2) (v1 - v2), v2' = v2 + (1+e) m1/(m1+m2) (v1 - v2)
     (Section 2.3.1). Scalars along the line, positive in the same direction."""
     impulse = impact_impulse(1.0 / m1, 1.0 / m2, v1 - v2, e)
-    return PairVelocities(v1 - impulse / m1, v2 + impulse / m2)
+    return PairVelocities(velocity_after_impulse(m1, v1, -impulse),
+                          velocity_after_impulse(m2, v2, impulse))
 
 
 def velocities_after_oblique_impact(m1, m2, v1, v2, n, e):
