@@ -134,3 +134,20 @@ def test_spring_released_between_carts_by_momentum_and_energy():
     # carts 2 kg and 6 kg at rest, spring energy 12 J: momentum 2 v1 = 6 v2,
     # energy 1/2 2 v1^2 + 1/2 6 v2^2 = 12 -> v1 = 3, v2 = 1, relative speed 4
     assert systems.relative_speed_from_internal_work(2.0, 6.0, 12.0) == pytest.approx(4.0)
+
+
+def test_relative_speed_split_by_hand():
+    # 1 kg and 3 kg separating at 4 m/s with the centre of mass at rest: 3 m/s and 1 m/s
+    speeds = systems.speeds_relative_to_centre_of_mass(1.0, 3.0, 4.0)
+    assert (speeds.v1, speeds.v2) == pytest.approx((3.0, 1.0), rel=1e-12)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.floats(0.1, 10.0), st.floats(0.1, 10.0), st.floats(0.0, 20.0))
+def test_split_speeds_carry_zero_momentum_and_the_relative_kinetic_energy(m1, m2, v_rel):
+    speeds = systems.speeds_relative_to_centre_of_mass(m1, m2, v_rel)
+    assert speeds.v1 + speeds.v2 == pytest.approx(v_rel, abs=1e-9)
+    assert m1 * speeds.v1 - m2 * speeds.v2 == pytest.approx(0.0, abs=1e-9)
+    kinetic = systems.kinetic_energy([m1, m2], [[speeds.v1, 0.0], [-speeds.v2, 0.0]])
+    assert kinetic == pytest.approx(systems.relative_kinetic_energy(m1, m2, v_rel), rel=1e-9,
+                                    abs=1e-12)

@@ -3,6 +3,8 @@
 Masses are given as a sequence of length N, positions and velocities as arrays of
 shape (N, d) with d = 2 or 3. All quantities in SI units.
 """
+from dataclasses import dataclass
+
 import numpy as np
 
 from dynagrade.mechanics.energy import kinetic_energy as particle_kinetic_energy
@@ -83,6 +85,23 @@ def relative_speed_from_internal_work(m1, m2, internal_work, initial_relative_sp
     while the centre-of-mass motion is unchanged (work-energy balance, Section 2.2.2)."""
     t_rel = relative_kinetic_energy(m1, m2, initial_relative_speed) + internal_work
     return np.sqrt(2.0 * t_rel / reduced_mass(m1, m2))
+
+
+@dataclass(frozen=True)
+class PairSpeeds:
+    """Speeds of the two particles of a pair."""
+
+    v1: float
+    v2: float
+
+
+def speeds_relative_to_centre_of_mass(m1, m2, relative_speed):
+    """How the relative speed of two particles splits between them in the centre-of-mass
+    frame: m1 v1 = m2 v2 (total momentum zero) and v1 + v2 = v_rel give
+    v1 = m2/(m1+m2) v_rel, v2 = m1/(m1+m2) v_rel, opposite in direction
+    (balance of linear momentum, Section 2.2.1)."""
+    total = total_mass([m1, m2])
+    return PairSpeeds(m2 / total * relative_speed, m1 / total * relative_speed)
 
 
 def angular_momentum_about_point(masses, positions, velocities, point):
