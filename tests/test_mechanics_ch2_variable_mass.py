@@ -62,3 +62,19 @@ def test_cart_collecting_load_keeps_its_momentum(m0, v0, rate, t_end):
 def test_force_to_keep_conveyor_speed_by_hand():
     # sand falls at 20 kg/s onto a belt moving at 1.5 m/s: F = 30 N
     assert variable_mass.force_to_keep_speed_while_accreting(20.0, 1.5) == pytest.approx(30.0)
+
+
+def test_mass_at_time_by_hand():
+    # 100 kg gaining 2.5 kg/s for 8 s: 120 kg; losing it: 80 kg
+    assert variable_mass.mass_at_time(8.0, 100.0, 2.5) == pytest.approx(120.0, rel=1e-12)
+    assert variable_mass.mass_at_time(8.0, 100.0, -2.5) == pytest.approx(80.0, rel=1e-12)
+
+
+def test_accreting_cart_speed_with_linear_mass_growth_matches_integrated_momentum_balance():
+    # m(t) = m0 + q t, load arriving without horizontal velocity: m v' = -q v
+    m0, q, v0, t_end = 200.0, 15.0, 4.0, 6.0
+    sol = solve_ivp(lambda t, y: [-q * y[0] / (m0 + q * t)], (0, t_end), [v0], rtol=1e-10,
+                    atol=1e-12)
+    mass = variable_mass.mass_at_time(t_end, m0, q)
+    assert variable_mass.speed_after_accretion(m0, v0, mass) == pytest.approx(sol.y[0, -1],
+                                                                              rel=1e-7)

@@ -9,6 +9,12 @@ import numpy as np
 from dynagrade.mechanics.impact import impact_speed_after_fall
 
 
+def mass_at_time(t, initial_mass, mass_rate):
+    """Mass of a body that gains mass at the constant rate m_dot (negative for a loss),
+    m(t) = m0 + m_dot t (Section 2.3.2)."""
+    return initial_mass + mass_rate * t
+
+
 def thrust(exhaust_speed, mass_flow_rate):
     """Thrust of a rocket, F = u q with exhaust speed u relative to the rocket and the
     burned mass per time q = -dm/dt > 0 (Section 2.3.2)."""
@@ -25,7 +31,7 @@ def vertical_rocket_speed(t, v0, exhaust_speed, initial_mass, mass_flow_rate, g)
     """Upward speed of a rocket launched vertically in uniform gravity with a constant
     burn rate q: v(t) = v0 + u ln(m0 / (m0 - q t)) - g t, valid while fuel is left
     (Section 2.3.2)."""
-    mass = initial_mass - mass_flow_rate * t
+    mass = mass_at_time(t, initial_mass, -mass_flow_rate)
     return v0 + rocket_speed_gain(exhaust_speed, initial_mass, mass) - g * t
 
 
@@ -33,7 +39,7 @@ def vertical_rocket_height(t, v0, exhaust_speed, initial_mass, mass_flow_rate, g
     """Height of a vertically launched rocket with constant burn rate q, from integrating
     v(t): h(t) = v0 t + u [t - (m/q) ln(m0/m)] - 1/2 g t^2 with m = m0 - q t
     (Section 2.3.2)."""
-    mass = initial_mass - mass_flow_rate * t
+    mass = mass_at_time(t, initial_mass, -mass_flow_rate)
     log_term = (mass / mass_flow_rate) * np.log(initial_mass / mass)
     return v0 * t + exhaust_speed * (t - log_term) - 0.5 * g * t**2
 
