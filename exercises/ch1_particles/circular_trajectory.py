@@ -16,7 +16,7 @@ def solve(p):
     a = kinematics.circular_acceleration(p.r, phi, phidot, phiddot)
     return {
         "v": tuple(kinematics.circular_velocity(p.r, phi, phidot)),
-        "speed": p.r * phidot,
+        "speed": kinematics.circular_speed(p.r, phidot),
         "a": tuple(a),
         "a_abs": float(np.linalg.norm(a)),
     }

@@ -7,7 +7,7 @@ from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Sy
                                 Variable)
 from dynagrade.exercise.figure import dimension, new_drawing
 from dynagrade.exercise.numbers import format_number
-from dynagrade.mechanics import particle
+from dynagrade.mechanics import kinematics, particle
 
 
 def figure(p):
@@ -45,7 +45,7 @@ def figure(p):
 def solve(p):
     omega = p.n          # the rate n arrives in SI, i.e. as an angular velocity in rad/s
     return {"S": particle.string_tension(p.m, p.l, omega),
-            "v": p.l * omega,
+            "v": kinematics.circular_speed(p.l, omega),
             "S_double": particle.string_tension(p.m, p.l, 2 * omega)}
 
 

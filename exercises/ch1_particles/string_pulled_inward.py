@@ -5,12 +5,13 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
                                 Variable)
-from dynagrade.mechanics import angular_momentum as am, energy
+from dynagrade.mechanics import angular_momentum as am, energy, kinematics
 
 
 def solve(p):
     omega1 = am.pulled_string_angular_velocity(p.omega0, p.l0, p.l1)
-    v0, v1 = p.l0 * p.omega0, am.conserved_tangential_speed(p.l0 * p.omega0, p.l0, p.l1)
+    v0 = kinematics.circular_speed(p.l0, p.omega0)
+    v1 = am.conserved_tangential_speed(v0, p.l0, p.l1)
     return {
         "omega1": omega1,
         "v_ratio": v1 / v0,
