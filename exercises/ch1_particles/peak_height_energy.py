@@ -4,11 +4,13 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform, Variable)
-from dynagrade.mechanics import energy
+from dynagrade.mechanics import energy, projectile
 
 
 def solve(p):
-    v_top = p.v0 * np.cos(p.alpha)            # horizontal velocity is kept in flight
+    # at the peak the velocity is horizontal: the launch component v0 cos(alpha), kept in flight
+    v_top = float(projectile.velocity(projectile.peak_time(p.v0, p.alpha, p.g),
+                                      p.v0, p.alpha, p.g)[0])
     return {"v_top": v_top, "h": energy.height_gain(p.v0, v_top, p.g),
             "T_top": float(energy.kinetic_energy(p.m, v_top))}
 
