@@ -5,7 +5,7 @@ import numpy as np
 
 from dynagrade.exercise.figure import arrow, block, dimension, new_drawing, pivot
 from dynagrade.exercise.numbers import format_number
-from dynagrade.mechanics import inertia, rigid_impact
+from dynagrade.mechanics import collisions, inertia, rigid_impact
 
 
 def _moment_pivot(p):
@@ -53,7 +53,7 @@ def solve(p):
     impulse = _impulse(p, i_o)
     return {
         "omega": rigid_impact.angular_velocity_change(impulse, p.d, i_o),
-        "v_after": p.v - impulse / p.m,
+        "v_after": collisions.velocity_after_impulse(p.m, p.v, -impulse),
         "R_pivot": abs(rigid_impact.pivot_impulse(impulse, p.d, p.M, p.L / 2, i_o)),
         "d_percussion": rigid_impact.centre_of_percussion_distance(i_o, p.M, p.L / 2),
     }
