@@ -4,7 +4,7 @@ frame (Section 3.4.2)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, Vector
-from dynagrade.mechanics import frames
+from dynagrade.mechanics import frames, particle
 
 
 def _acceleration(p):
@@ -15,7 +15,7 @@ def _acceleration(p):
 
 def solve(p):
     a = _acceleration(p)
-    return {"a": a[:2], "F": p.m * float(np.linalg.norm(a))}
+    return {"a": a[:2], "F": float(np.linalg.norm(particle.resultant_force(p.m, a)))}
 
 
 def _without_coriolis(p):
