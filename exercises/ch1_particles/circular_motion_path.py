@@ -10,11 +10,12 @@ from dynagrade.mechanics import kinematics
 def solve(p):
     v = kinematics.speed_at_constant_acceleration(p.t, p.v0, p.at)      # s'' = a_t constant
     s = kinematics.distance_at_constant_acceleration(p.t, p.v0, p.at)
+    a_n = kinematics.centripetal_acceleration(v, p.R)
     return {
         "v": v,
-        "a_n": kinematics.centripetal_acceleration(v, p.R),
-        "a_abs": float(np.hypot(p.at, kinematics.centripetal_acceleration(v, p.R))),
-        "phi": s / p.R,
+        "a_n": a_n,
+        "a_abs": float(kinematics.acceleration_magnitude(p.at, a_n)),
+        "phi": kinematics.angle_from_arc_length(s, p.R),
     }
 
 

@@ -15,7 +15,7 @@ def _forces(p):
 
 def solve(p):
     pull, weight = _forces(p)
-    N = -(pull[1] + weight[1])                # no motion normal to the floor: x2'' = 0
+    N = particle.floor_normal_force_under_pull(p.m, p.g, p.F, p.theta)   # x2'' = 0
     a = particle.acceleration(p.m, pull, weight, (0.0, N))
     return {"N": N, "a": float(a[0]), "v_t": kinematics.speed_at_constant_acceleration(p.t, p.v0, float(a[0])),
             "N_free": particle.floor_normal_force(p.m, p.g)}

@@ -6,7 +6,7 @@ from dynagrade.mechanics import variable_mass
 
 
 def solve(p):
-    mass = p.m0 + p.q * p.t
+    mass = variable_mass.mass_at_time(p.t, p.m0, p.q)
     return {
         "v_t": variable_mass.speed_after_accretion(p.m0, p.v0, mass),
         "F_keep": variable_mass.force_to_keep_speed_while_accreting(p.q, p.v0),

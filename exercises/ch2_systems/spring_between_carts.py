@@ -14,9 +14,8 @@ def _relative_speed(p):
 
 def solve(p):
     v_rel = _relative_speed(p)
-    total = systems.total_mass([p.m1, p.m2])
-    # the centre of mass stays at rest: m1 v1 = m2 v2, v1 + v2 = v_rel
-    return {"v1": p.m2 / total * v_rel, "v2": p.m1 / total * v_rel, "v_rel": v_rel}
+    speeds = systems.speeds_relative_to_centre_of_mass(p.m1, p.m2, v_rel)  # C stays at rest
+    return {"v1": speeds.v1, "v2": speeds.v2, "v_rel": v_rel}
 
 
 def _equal_share(p, m):
