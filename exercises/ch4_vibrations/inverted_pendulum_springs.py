@@ -6,13 +6,15 @@ import sympy as sp
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform, Variable)
-from dynagrade.mechanics import equilibrium
+from dynagrade.mechanics import equilibrium, inertia
 
 _t = sp.Symbol("t")
 _theta = sp.Function("theta")(_t)
 _m, _L, _a, _k, _g = sp.symbols("m L a k g", positive=True)
-# uniform rod pivoted at its lower end (J = m L^2 / 3), two horizontal springs at height a
-_T = (_m * _L**2 / 3) * _theta.diff(_t) ** 2 / 2
+# uniform rod pivoted at its lower end (J = m L^2 / 3 by Steiner), two horizontal springs
+# at height a
+_J = inertia.parallel_axis_moment(inertia.inertia_tensor_rod(_m, _L)[0, 0], _m, _L / 2)
+_T = _J * _theta.diff(_t) ** 2 / 2
 _V = _m * _g * _L / 2 * sp.cos(_theta) + 2 * _k * (_a * sp.sin(_theta)) ** 2 / 2
 _K_UPRIGHT = equilibrium.stiffness_matrix(_V, [_theta], {_theta: 0})[0, 0]
 _K_MIN = sp.lambdify([_m, _L, _a, _g], sp.solve(sp.Eq(_K_UPRIGHT, 0), _k)[0])
