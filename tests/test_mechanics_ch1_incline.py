@@ -5,7 +5,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 from scipy.integrate import solve_ivp
 
-from dynagrade.mechanics import incline
+from dynagrade.mechanics.examples import incline
 
 
 def _slide_until_rest(v0, acceleration):

@@ -192,7 +192,7 @@ def test_forces_follow_their_definitions():
 
 def test_height_gain_by_energy_equals_the_integrated_peak_of_example_1_12():
     v0, alpha, g = 12.0, 0.9, 9.81
-    from dynagrade.mechanics import projectile
+    from dynagrade.mechanics.examples import projectile
     assert energy.height_gain(v0, v0 * np.cos(alpha), g) == pytest.approx(projectile.peak_height(v0, alpha, g))
     assert kin.rocket_peak_height(v0, g, 1e15) == pytest.approx(energy.height_gain(v0, 0.0, g), rel=1e-9)
 

@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 from scipy.integrate import solve_ivp
 
-from dynagrade.mechanics import looping
+from dynagrade.mechanics.examples import looping
 
 
 def _ride(v0, R, g, phi_end=2 * np.pi):

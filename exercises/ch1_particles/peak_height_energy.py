@@ -4,7 +4,8 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform, Variable)
-from dynagrade.mechanics import energy, projectile
+from dynagrade.mechanics import energy
+from dynagrade.mechanics.examples import projectile
 
 
 def solve(p):

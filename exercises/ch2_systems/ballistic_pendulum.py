@@ -6,7 +6,8 @@ from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symb
                                 Uniform, Variable)
 from dynagrade.exercise.figure import arrow, block, ceiling, new_drawing
 from dynagrade.exercise.numbers import format_number
-from dynagrade.mechanics import collisions, energy, projectile
+from dynagrade.mechanics import collisions, energy
+from dynagrade.mechanics.examples import projectile
 
 
 def _energy_conserving_speed(p):

@@ -5,8 +5,6 @@ Examples 1.11, 1.12 and 1.14.  SI units.
 import numpy as np
 from scipy.integrate import quad
 
-from dynagrade.mechanics.incline import distance_up_slope
-
 
 def kinetic_energy(m, v):
     """Kinetic energy T = m |v|^2 / 2, eq. (1.87); v a speed or a velocity vector (last axis)."""
@@ -84,7 +82,7 @@ def friction_work_on_floor(mu, m, g, distance):
 def sliding_stopping_distance(v0, mu, g):
     """Distance a particle sliding on a horizontal floor travels before friction stops it,
     dx = v0^2 / (2 mu g), eq. (1.91): eq. (1.128) with alpha = 0, as the notes remark."""
-    return distance_up_slope(v0, 0.0, mu, g)
+    return v0**2 / (2.0 * (g * mu))
 
 
 def height_gain(v1, v2, g):

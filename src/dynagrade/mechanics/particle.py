@@ -7,8 +7,6 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from dynagrade.mechanics.incline import time_up_slope
-
 
 def linear_momentum(m, v):
     """Linear momentum P = m v, eq. (1.59)."""
@@ -79,7 +77,7 @@ def sliding_stop_time(v0, mu, g):
     """Time for Coulomb friction to stop a particle sliding on a horizontal floor,
     v0/(mu g), eq. (1.73) with alpha = 0 integrated as in Example 1.1 (the slope's time to
     rest with a level slope)."""
-    return time_up_slope(v0, 0.0, mu, g)
+    return v0 / (g * mu)
 
 
 @dataclass(frozen=True)
