@@ -71,3 +71,13 @@ def test_the_import_scan_sees_an_import_of_the_examples():
     assert "dynagrade.mechanics.examples.incline" in _imported_modules(tree)
     tree = ast.parse("from dynagrade.mechanics.examples import incline\n")
     assert "dynagrade.mechanics.examples" in _imported_modules(tree)
+
+
+def test_no_two_public_functions_of_the_mechanics_package_share_a_name():
+    homes = {}
+    for path in ALL_MODULES:
+        for node in _public_functions(path):
+            homes.setdefault(node.name, []).append(_label(path))
+    shared = {name: where for name, where in homes.items() if len(where) > 1}
+    assert not shared, f"public functions defined in several modules: {shared}"
+    assert len(homes) > 300          # the scan really read the package

@@ -30,7 +30,7 @@ def figure(p):
 def solve(p):
     return {
         "a": incline.sliding_acceleration(p.alpha, p.mu, p.g),
-        "N": incline.normal_force(p.m, p.alpha, p.g),
+        "N": incline.incline_normal_force(p.m, p.alpha, p.g),
         "stops": "yes" if incline.decelerates_down_slope(p.alpha, p.mu) else "no",
     }
 

@@ -47,7 +47,7 @@ def solve(p):
         "V": common,
         # the block swings up like a vertical throw with the speed V: h = V^2 / (2 g)
         "h": projectile.peak_height(common, np.pi / 2, p.g),
-        "fraction_lost": lost / energy.kinetic_energy(p.m, p.v),
+        "fraction_lost": lost / energy.particle_kinetic_energy(p.m, p.v),
     }
 
 

@@ -7,7 +7,7 @@ from dynagrade.mechanics.kinematics import spatial_vector
 from dynagrade.mechanics.vibrations import period
 
 
-def angular_momentum(r_BP, m, v_P):
+def particle_angular_momentum(r_BP, m, v_P):
     """Angular momentum about B, H_B = r_BP x m v_P, eq. (1.129) (3D vector)."""
     return np.cross(spatial_vector(r_BP), m * spatial_vector(v_P))
 
@@ -90,7 +90,7 @@ def drag_rotation_angle(t, omega0, k, m):
                                                               * np.asarray(t, dtype=float)))
 
 
-def pendulum_angular_acceleration(phi, phidot, g, R, k=0.0, m=1.0):
+def particle_pendulum_angular_acceleration(phi, phidot, g, R, k=0.0, m=1.0):
     """Angular acceleration of a particle pendulum with optional linear air drag,
     phi'' = -(k/m) phi' - (g/R) sin(phi), eqs. (1.145) and (1.149)."""
     return -rotation_decay_rate(k, m) * phidot - g / R * np.sin(phi)

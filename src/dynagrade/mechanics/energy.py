@@ -6,7 +6,7 @@ import numpy as np
 from scipy.integrate import quad
 
 
-def kinetic_energy(m, v):
+def particle_kinetic_energy(m, v):
     """Kinetic energy T = m |v|^2 / 2, eq. (1.87); v a speed or a velocity vector (last axis)."""
     v = np.asarray(v, dtype=float)
     speed_sq = v**2 if v.ndim == 0 else np.sum(v**2, axis=-1)
@@ -50,7 +50,7 @@ def work_from_potential(V1, V2):
 def speed_after_work(m, v1, W12):
     """Speed after work W12 was done on a particle with speed v1, from the work-energy
     balance T2 - T1 = W12, eq. (1.87).  NaN when the work exceeds the kinetic energy."""
-    T2 = kinetic_energy(m, v1) + W12
+    T2 = particle_kinetic_energy(m, v1) + W12
     with np.errstate(invalid="ignore"):
         return np.where(T2 >= 0.0, np.sqrt(2.0 * np.maximum(T2, 0.0) / m), np.nan)
 

@@ -23,7 +23,7 @@ def coriolis_acceleration(omega, v_rel):
     return 2.0 * _cross(omega, v_rel)
 
 
-def centripetal_acceleration(omega, r):
+def frame_centripetal_acceleration(omega, r):
     """Centripetal acceleration of the frame point, Omega x (Omega x r); its negative is the
     centrifugal term of the relative motion (Section 3.4.2)."""
     return _cross(omega, _cross(omega, r))
@@ -33,7 +33,7 @@ def absolute_acceleration(a_origin, omega, omega_dot, r, v_rel, a_rel):
     """Absolute acceleration of a point moving in a rotating frame,
     a = a_O' + Omega_dot x r + Omega x (Omega x r) + 2 Omega x v_rel + a_rel (Section 3.4.2)."""
     return (np.asarray(a_origin, dtype=float) + _cross(omega_dot, r)
-            + centripetal_acceleration(omega, r) + coriolis_acceleration(omega, v_rel)
+            + frame_centripetal_acceleration(omega, r) + coriolis_acceleration(omega, v_rel)
             + np.asarray(a_rel, dtype=float))
 
 

@@ -5,7 +5,7 @@ included in our copy).  SI units; angles in rad measured from the wall normal.
 import numpy as np
 
 from dynagrade.mechanics.collisions import impact_impulse
-from dynagrade.mechanics.energy import kinetic_energy
+from dynagrade.mechanics.energy import particle_kinetic_energy
 
 
 def rebound_normal_velocity(v_n, e):
@@ -70,7 +70,7 @@ def impact_energy_loss(m, v, theta, e):
     """Kinetic energy lost in an oblique impact on a smooth wall,
     (1 - e^2) m (v cos theta)^2 / 2 (Section 1.2.4)."""
     normal_speed = np.asarray(v * np.cos(theta), dtype=float)[..., None]   # one-component vector
-    return normal_energy_loss_fraction(e) * kinetic_energy(m, normal_speed)
+    return normal_energy_loss_fraction(e) * particle_kinetic_energy(m, normal_speed)
 
 
 def wall_impulse(m, v_n, e):

@@ -222,7 +222,7 @@ def angle_from_arc_length(s, R):
     return s / R
 
 
-def centripetal_acceleration(v, rho):
+def path_centripetal_acceleration(v, rho):
     """Magnitude of the acceleration towards the centre of curvature, v^2/rho, eqs. (1.37), (1.51)."""
     return v**2 / rho
 

@@ -153,7 +153,7 @@ def modal_coordinates(K, M, x):
     return mode_shapes(K, M).T @ M @ np.asarray(x, dtype=float)
 
 
-def free_response(t, K, M, x0, v0, C=None):
+def modal_free_response(t, K, M, x0, v0, C=None):
     """Displacements x(t) (shape n x len(t)) of the free vibration by modal superposition, Section 4.4.4.
 
     x(t) = sum_i phi_i eta_i(t) with each modal coordinate a 1-DOF free response

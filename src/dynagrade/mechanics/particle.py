@@ -8,7 +8,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 
-def linear_momentum(m, v):
+def particle_linear_momentum(m, v):
     """Linear momentum P = m v, eq. (1.59)."""
     return m * np.asarray(v, dtype=float)
 

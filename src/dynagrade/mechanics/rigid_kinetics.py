@@ -7,25 +7,25 @@ import numpy as np
 
 from dynagrade.mechanics import particle
 from dynagrade.mechanics.angular_momentum import angular_acceleration
-from dynagrade.mechanics.energy import kinetic_energy as translational_kinetic_energy
+from dynagrade.mechanics.energy import particle_kinetic_energy as translational_kinetic_energy
 from dynagrade.mechanics.systems import angular_momentum_transfer
 
 
-def linear_momentum(mass, v_c):
+def rigid_body_linear_momentum(mass, v_c):
     """Linear momentum of a rigid body, P = m v_C (Section 3.2.1)."""
-    return particle.linear_momentum(mass, v_c)
+    return particle.particle_linear_momentum(mass, v_c)
 
 
-def angular_momentum(inertia, omega):
+def rigid_body_angular_momentum(inertia, omega):
     """Angular momentum about the centre of mass, or about a fixed point of the body when
     I is taken about that point: H = I omega (Section 3.2.2)."""
     return np.asarray(inertia, dtype=float) @ np.asarray(omega, dtype=float)
 
 
-def angular_momentum_about_point(inertia_centre, omega, mass, r_bc, v_c):
+def rigid_body_angular_momentum_about_point(inertia_centre, omega, mass, r_bc, v_c):
     """Angular momentum of a rigid body about an arbitrary point B,
     H_B = I_C omega + r_BC x m v_C (angular momentum transfer formula, Section 3.2.4)."""
-    return angular_momentum_transfer(angular_momentum(inertia_centre, omega), mass, r_bc, v_c)
+    return angular_momentum_transfer(rigid_body_angular_momentum(inertia_centre, omega), mass, r_bc, v_c)
 
 
 def angular_acceleration_about_fixed_axis(moment, moment_of_inertia):
@@ -40,7 +40,7 @@ def rotational_kinetic_energy(inertia, omega):
     return float(0.5 * omega @ np.asarray(inertia, dtype=float) @ omega)
 
 
-def kinetic_energy(mass, v_c, inertia_centre, omega):
+def rigid_body_kinetic_energy(mass, v_c, inertia_centre, omega):
     """Kinetic energy of a rigid body, T = 1/2 m |v_C|^2 + 1/2 omega . I_C omega
     (translation of the centre of mass plus rotation about it, Section 3.2.5)."""
     return (float(translational_kinetic_energy(mass, v_c))
@@ -74,7 +74,7 @@ def minimum_friction_coefficient_for_rolling(alpha, g, mass, radius, moment_cent
     return friction / (mass * g * np.cos(alpha))
 
 
-def pendulum_angular_acceleration(angle, g, mass, pivot_distance, moment_pivot):
+def compound_pendulum_angular_acceleration(angle, g, mass, pivot_distance, moment_pivot):
     """Angular acceleration of a compound (physical) pendulum about its fixed pivot,
     phi_ddot = -m g d sin(phi) / I_O (Section 3.2.2)."""
     return angular_acceleration_about_fixed_axis(-mass * g * pivot_distance * np.sin(angle),

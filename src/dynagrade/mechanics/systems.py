@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from dynagrade.mechanics.energy import kinetic_energy as particle_kinetic_energy
+from dynagrade.mechanics.energy import particle_kinetic_energy
 from dynagrade.mechanics.kinematics import spatial_vector
 
 
@@ -53,7 +53,7 @@ def centre_of_mass_acceleration(total_external_force, mass):
     return np.asarray(total_external_force, dtype=float) / mass
 
 
-def kinetic_energy(masses, velocities):
+def system_kinetic_energy(masses, velocities):
     """Kinetic energy T = sum 1/2 m_i |v_i|^2 of a system of particles (Section 2.2.2)."""
     m = _as_masses(masses)
     return float(np.sum(particle_kinetic_energy(m, _as_vectors(velocities, m.size))))
@@ -65,7 +65,7 @@ def kinetic_energy_relative_to_centre_of_mass(masses, velocities):
     m = _as_masses(masses)
     v = _as_vectors(velocities, m.size)
     v_c = total_momentum(m, v) / m.sum()
-    return kinetic_energy(m, v - v_c)
+    return system_kinetic_energy(m, v - v_c)
 
 
 def reduced_mass(m1, m2):
@@ -104,7 +104,7 @@ def speeds_relative_to_centre_of_mass(m1, m2, relative_speed):
     return PairSpeeds(m2 / total * relative_speed, m1 / total * relative_speed)
 
 
-def angular_momentum_about_point(masses, positions, velocities, point):
+def system_angular_momentum_about_point(masses, positions, velocities, point):
     """Angular momentum of a system about a fixed point B,
     H_B = sum (r_i - r_B) x m_i v_i (Section 2.2.3). Planar input returns a 3-vector."""
     m = _as_masses(masses)
@@ -120,7 +120,7 @@ def angular_momentum_about_centre_of_mass(masses, positions, velocities):
     r = _as_vectors(positions, m.size)
     v = _as_vectors(velocities, m.size)
     v_c = total_momentum(m, v) / m.sum()
-    return angular_momentum_about_point(m, r, v - v_c, centre_of_mass(m, r))
+    return system_angular_momentum_about_point(m, r, v - v_c, centre_of_mass(m, r))
 
 
 def angular_momentum_transfer(h_c, mass, r_bc, v_c):

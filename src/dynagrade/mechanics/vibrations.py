@@ -9,7 +9,7 @@ arrays that broadcast together.
 """
 import numpy as np
 
-from dynagrade.mechanics.energy import kinetic_energy, spring_potential
+from dynagrade.mechanics.energy import particle_kinetic_energy, spring_potential
 
 
 # --- Section 4.3.1: definitions, equivalent mass and stiffness -------------------
@@ -76,7 +76,7 @@ def equivalent_stiffness(stiffnesses, ratios):
 def mechanical_energy(x, v, k, m):
     """Total mechanical energy E = m v^2/2 + k x^2/2 of the oscillator, Section 4.3.1."""
     # v is a (possibly time-sampled) scalar velocity: one component per sample
-    return kinetic_energy(m, np.asarray(v, dtype=float)[..., None]) + spring_potential(k, x)
+    return particle_kinetic_energy(m, np.asarray(v, dtype=float)[..., None]) + spring_potential(k, x)
 
 
 # --- Section 4.3.2: free vibrations ------------------------------------------------

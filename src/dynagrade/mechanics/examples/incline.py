@@ -6,14 +6,14 @@ coefficient (eq. 1.74); e1 points along the slope.  Floats or numpy arrays.
 import numpy as np
 
 
-def normal_force(m, alpha, g):
+def incline_normal_force(m, alpha, g):
     """Normal force of the slope on the block, N = m g cos(alpha), eq. (1.72)."""
     return m * g * np.cos(alpha)
 
 
 def friction_force(m, alpha, mu, g):
     """Magnitude of the kinetic friction force while sliding, R = mu m g cos(alpha), eq. (1.73)."""
-    return mu * normal_force(m, alpha, g)
+    return mu * incline_normal_force(m, alpha, g)
 
 
 def sliding_acceleration(alpha, mu, g):

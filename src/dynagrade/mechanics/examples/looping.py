@@ -27,7 +27,7 @@ def speed_to_reach_top(R, g):
     return 2.0 * np.sqrt(g * R)
 
 
-def normal_force(phi, m, v0, R, g):
+def looping_normal_force(phi, m, v0, R, g):
     """Normal force of the track on the car, m v0^2/R + m g (3 cos phi - 2), eq. (1.116).
 
     Valid while the car stays on the track (N >= 0 along the way, eq. 1.113)."""
@@ -41,7 +41,7 @@ def minimum_entry_speed(R, g):
 
 def maximum_normal_force(m, v0, R, g):
     """Largest normal force, at the bottom (phi = 0 or 2 pi): m v0^2/R + m g, eq. (1.116)/(1.119)."""
-    return normal_force(0.0, m, v0, R, g)
+    return looping_normal_force(0.0, m, v0, R, g)
 
 
 def lift_off_angle(v0, R, g):
@@ -64,7 +64,7 @@ class SupportReactions:
 def support_reactions(phi, m, v0, R, g):
     """Support reactions of the looping while the car is at phi, eq. (1.122):
     A1 = -N sin(phi), A2 = N cos(phi), MA = N R sin(phi) with N from eq. (1.116)."""
-    N = normal_force(phi, m, v0, R, g)
+    N = looping_normal_force(phi, m, v0, R, g)
     return SupportReactions(A1=-N * np.sin(phi), A2=N * np.cos(phi), MA=N * R * np.sin(phi))
 
 
