@@ -16,13 +16,13 @@ from scipy.integrate import quad
 from dynagrade.mechanics.vibrations import natural_frequency
 
 
-def effective_mass(line_density, shape, L):
-    """Effective mass m_eff = int_0^L mu psi(x)^2 dx of a body moving in the shape psi, Section 5.2.
+def effective_mass(rhoA, shape, L):
+    """Effective mass m_eff = int_0^L rho A psi(x)^2 dx of a body moving in the shape psi, Section 5.2.
 
-    ``line_density`` is mu (a number or a callable of x), ``shape`` the callable psi(x)
+    ``rhoA`` is the mass per length rho A (a number or a callable of x), ``shape`` the callable psi(x)
     normalized to 1 at the point whose coordinate is the degree of freedom.
     """
-    mu = line_density if callable(line_density) else (lambda x: line_density)
+    mu = rhoA if callable(rhoA) else (lambda x: rhoA)
     value, _ = quad(lambda x: mu(x) * shape(x) ** 2, 0.0, L, epsabs=0.0, epsrel=1e-12)
     return value
 

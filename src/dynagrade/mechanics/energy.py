@@ -55,23 +55,23 @@ def speed_after_work(m, v1, W12):
         return np.where(T2 >= 0.0, np.sqrt(2.0 * np.maximum(T2, 0.0) / m), np.nan)
 
 
-def curl(force, r, h=1e-5):
+def curl(force, r, step_size=1e-5):
     """Curl of a 3D force field at r by central differences; it vanishes for a conservative
     force F = -dV/dr, eq. (1.94)."""
     r = np.asarray(r, dtype=float)
     jac = np.empty((3, 3))
     for j in range(3):
         step = np.zeros(3)
-        step[j] = h
-        jac[:, j] = (np.asarray(force(r + step)) - np.asarray(force(r - step))) / (2 * h)
+        step[j] = step_size
+        jac[:, j] = (np.asarray(force(r + step)) - np.asarray(force(r - step))) / (2 * step_size)
     return np.array([jac[2, 1] - jac[1, 2], jac[0, 2] - jac[2, 0], jac[1, 0] - jac[0, 1]])
 
 
-def is_conservative(force, points, scale=1.0, h=1e-5, tol=1e-6):
+def is_conservative(force, points, scale=1.0, step_size=1e-5, tol=1e-6):
     """Whether a position-dependent force field has zero curl at all the given sample points
     (to the relative tolerance ``tol`` of a typical force ``scale``), the test behind
     eqs. (1.93)-(1.94)."""
-    return all(np.linalg.norm(curl(force, p, h)) <= tol * scale for p in points)
+    return all(np.linalg.norm(curl(force, p, step_size)) <= tol * scale for p in points)
 
 
 def friction_work_on_floor(mu, m, g, distance):

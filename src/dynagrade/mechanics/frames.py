@@ -37,13 +37,13 @@ def absolute_acceleration(a_origin, omega, omega_dot, r, v_rel, a_rel):
             + np.asarray(a_rel, dtype=float))
 
 
-def relative_acceleration(force, mass, a_origin, omega, omega_dot, r, v_rel):
+def relative_acceleration(force, m, a_origin, omega, omega_dot, r, v_rel):
     """Acceleration seen in the rotating frame from the balance of linear momentum,
     m a_rel = F - m [a_O' + Omega_dot x r + Omega x (Omega x r) + 2 Omega x v_rel]
     (fictitious forces, Section 3.4.3)."""
     zero = np.zeros(3)
     frame_terms = absolute_acceleration(a_origin, omega, omega_dot, r, v_rel, zero)
-    return np.asarray(force, dtype=float) / mass - frame_terms
+    return np.asarray(force, dtype=float) / m - frame_terms
 
 
 def bead_radial_position(t, r0, radial_speed0, omega):
@@ -59,16 +59,16 @@ def bead_radial_speed(t, r0, radial_speed0, omega):
     return r0 * omega * np.sinh(omega * t) + radial_speed0 * np.cosh(omega * t)
 
 
-def bead_normal_force(mass, omega, radial_speed):
+def bead_normal_force(m, omega, radial_speed):
     """Force of the spinning rod on the bead, perpendicular to the rod in the direction of
     rotation, N = 2 m Omega r_dot: the rod supplies the Coriolis term (Section 3.4.3).
     Signed: negative when the bead moves inward."""
-    return mass * float(coriolis_acceleration([0.0, 0.0, omega], [radial_speed, 0.0, 0.0])[1])
+    return m * float(coriolis_acceleration([0.0, 0.0, omega], [radial_speed, 0.0, 0.0])[1])
 
 
-def eastward_deflection_of_falling_body(height, latitude, earth_rate, g):
+def eastward_deflection_of_falling_body(h, latitude, earth_rate, g):
     """Eastward deflection of a body dropped from rest from height h at latitude lambda,
     to first order in the Earth's rate Omega: d = (1/3) Omega g cos(lambda) t^3 with the
     fall time t = sqrt(2 h / g) (Coriolis term, Section 3.4.3)."""
-    fall_time = np.sqrt(2.0 * height / g)
+    fall_time = np.sqrt(2.0 * h / g)
     return earth_rate * g * np.cos(latitude) * fall_time**3 / 3.0

@@ -30,7 +30,7 @@ class PrecessionRates:
     fast: float
 
 
-def steady_precession_rates(mass, g, length, transverse_moment, axial_moment, axial_rate,
+def steady_precession_rates(m, g, l, transverse_moment, axial_moment, axial_rate,
                             theta):
     """Precession rates psi' of steady precession at constant tilt theta (0 < theta < pi/2):
     angular momentum balance about O gives m g l = psi' (I3 omega3 - I1 psi' cos(theta)),
@@ -38,18 +38,18 @@ def steady_precession_rates(mass, g, length, transverse_moment, axial_moment, ax
     (Section 3.5.2). Real only when I3^2 omega3^2 >= 4 I1 m g l cos(theta)."""
     a = transverse_moment * np.cos(theta)
     b = axial_moment * axial_rate
-    c = mass * g * length
+    c = m * g * l
     root = np.sqrt(b * b - 4.0 * a * c)
     slow = 2.0 * c / (b + root)
     fast = (b + root) / (2.0 * a)
     return PrecessionRates(slow=float(slow), fast=float(fast))
 
 
-def minimum_spin_for_steady_precession(mass, g, length, transverse_moment, axial_moment,
+def minimum_spin_for_steady_precession(m, g, l, transverse_moment, axial_moment,
                                        theta):
     """Smallest axial rate omega3 for which steady precession at tilt theta exists,
     omega3_min = sqrt(4 I1 m g l cos(theta)) / I3 (Section 3.5.2)."""
-    return np.sqrt(4.0 * transverse_moment * mass * g * length * np.cos(theta)) / axial_moment
+    return np.sqrt(4.0 * transverse_moment * m * g * l * np.cos(theta)) / axial_moment
 
 
 def gyroscopic_precession_rate(moment, spin_angular_momentum):
@@ -60,7 +60,7 @@ def gyroscopic_precession_rate(moment, spin_angular_momentum):
     return moment / spin_angular_momentum
 
 
-def fast_top_precession_rate(mass, g, length, axial_moment, axial_rate):
+def fast_top_precession_rate(m, g, l, axial_moment, axial_rate):
     """Slow precession rate of a fast top, psi' = m g l / (I3 omega3), independent of the
     tilt (fast-top approximation, Section 3.5.2)."""
-    return gyroscopic_precession_rate(mass * g * length, axial_moment * axial_rate)
+    return gyroscopic_precession_rate(m * g * l, axial_moment * axial_rate)

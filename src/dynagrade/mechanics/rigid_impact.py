@@ -10,10 +10,10 @@ the normal velocities of the two contact points.
 from dynagrade.mechanics.collisions import impact_impulse
 
 
-def inverse_effective_mass_free_body(mass, moment_centre, lever_arm):
+def inverse_effective_mass_free_body(m, moment_centre, lever_arm):
     """Effective inverse mass of a free rigid body for an impulse whose line of action
     passes at distance d from the centre of mass: w = 1/m + d^2 / I_C (Section 3.3)."""
-    return 1.0 / mass + lever_arm**2 / moment_centre
+    return 1.0 / m + lever_arm**2 / moment_centre
 
 
 def inverse_effective_mass_pinned_body(moment_pivot, lever_arm):
@@ -47,15 +47,15 @@ def angular_velocity_after_plastic_impact_on_pinned_body(particle_mass, particle
     return angular_velocity_change(impulse, lever_arm, moment_pivot)
 
 
-def pivot_impulse(impulse, lever_arm, mass, pivot_to_centre, moment_pivot):
+def pivot_impulse(impulse, lever_arm, m, pivot_to_centre, moment_pivot):
     """Impulsive reaction at the pivot of a body at rest struck with F_hat at distance d
     from the pivot, along the same line: R_hat = m d_C Delta omega - F_hat, with
     Delta omega = F_hat d / I_O (linear impulse balance, Section 3.3)."""
     delta_omega = angular_velocity_change(impulse, lever_arm, moment_pivot)
-    return mass * pivot_to_centre * delta_omega - impulse
+    return m * pivot_to_centre * delta_omega - impulse
 
 
-def centre_of_percussion_distance(moment_pivot, mass, pivot_to_centre):
+def centre_of_percussion_distance(moment_pivot, m, pivot_to_centre):
     """Distance from the pivot at which a blow causes no impulsive pivot reaction,
     d = I_O / (m d_C) (Section 3.3)."""
-    return moment_pivot / (mass * pivot_to_centre)
+    return moment_pivot / (m * pivot_to_centre)

@@ -46,20 +46,20 @@ def instantaneous_centre_of_rotation(r_a, v_a, omega):
     return np.asarray(r_a, dtype=float) + _planar_or_spatial(1.0, v_a) / omega
 
 
-def rolling_angular_velocity(centre_speed, radius):
+def rolling_angular_velocity(centre_speed, R):
     """Angular velocity of a wheel rolling without slipping, omega = v_C / R; the contact
     point is the instantaneous centre of rotation (Section 3.1.1). Positive omega is
     clockwise for a wheel rolling in +e1 (the signed value about e3 is -v_C/R)."""
-    return centre_speed / radius
+    return centre_speed / R
 
 
-def rim_point_velocity(centre_speed, radius, angle):
+def rim_point_velocity(centre_speed, R, phi):
     """Velocity (e1, e2 components) of a point on the rim of a wheel rolling without
     slipping to the right with centre speed v_C; the point sits at the angle phi measured
     from the contact point, counter-clockwise seen from +e3 about the centre. By velocity
     transfer from the centre with omega e3 = -(v_C / R) e3 (Section 3.1.1)."""
-    r_cp = radius * np.array([np.sin(angle), -np.cos(angle)])
-    omega = -rolling_angular_velocity(centre_speed, radius)
+    r_cp = R * np.array([np.sin(phi), -np.cos(phi)])
+    omega = -rolling_angular_velocity(centre_speed, R)
     return velocity_of_point(np.array([centre_speed, 0.0]), omega, r_cp)
 
 

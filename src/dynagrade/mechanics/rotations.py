@@ -14,12 +14,12 @@ def skew_matrix(w):
     return np.array([[0.0, -w3, w2], [w3, 0.0, -w1], [-w2, w1, 0.0]])
 
 
-def rotation_matrix(axis, angle):
+def rotation_matrix(axis, phi):
     """Rotation by the angle phi about the unit axis n (right-hand rule), Rodrigues'
     formula R = cos(phi) I + sin(phi) [n]x + (1 - cos(phi)) n n^T (Section 3.4.1)."""
     n = np.asarray(axis, dtype=float)
     n = n / np.linalg.norm(n)
-    c, s = np.cos(angle), np.sin(angle)
+    c, s = np.cos(phi), np.sin(phi)
     return c * np.eye(3) + s * skew_matrix(n) + (1.0 - c) * np.outer(n, n)
 
 

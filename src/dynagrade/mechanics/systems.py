@@ -46,11 +46,11 @@ def total_momentum(masses, velocities):
     return (m[:, None] * v).sum(axis=0)
 
 
-def centre_of_mass_acceleration(total_external_force, mass):
+def centre_of_mass_acceleration(total_external_force, M):
     """Acceleration of the centre of mass a_C = F_ext / M: the centre of mass moves like a
     particle of the total mass under the total external force; internal forces cancel
     pairwise (balance of linear momentum of a system, Section 2.2.1)."""
-    return np.asarray(total_external_force, dtype=float) / mass
+    return np.asarray(total_external_force, dtype=float) / M
 
 
 def system_kinetic_energy(masses, velocities):
@@ -123,7 +123,7 @@ def angular_momentum_about_centre_of_mass(masses, positions, velocities):
     return system_angular_momentum_about_point(m, r, v - v_c, centre_of_mass(m, r))
 
 
-def angular_momentum_transfer(h_c, mass, r_bc, v_c):
+def angular_momentum_transfer(h_c, M, r_bc, v_c):
     """Angular momentum about a point B from that about the centre of mass,
     H_B = H_C + r_BC x M v_C (Section 2.2.3; for rigid bodies Section 3.2.4)."""
-    return np.asarray(h_c, dtype=float) + mass * _cross3(r_bc, v_c)
+    return np.asarray(h_c, dtype=float) + M * _cross3(r_bc, v_c)

@@ -49,11 +49,11 @@ def burn_time(fuel_mass, mass_flow_rate):
     return fuel_mass / mass_flow_rate
 
 
-def speed_after_accretion(initial_mass, initial_speed, mass):
+def speed_after_accretion(initial_mass, v0, m):
     """Speed of a body that collects mass arriving with no velocity component along its
     motion and no external force in that direction (cart collecting load falling
     vertically): m v = m0 v0, so v = m0 v0 / m (Section 2.3.2)."""
-    return initial_mass * initial_speed / mass
+    return initial_mass * v0 / m
 
 
 def force_to_keep_speed_while_accreting(mass_rate, relative_speed):
@@ -62,10 +62,11 @@ def force_to_keep_speed_while_accreting(mass_rate, relative_speed):
     return mass_rate * relative_speed
 
 
-def chain_on_scale_force(mass_per_length, fallen_length, g):
+def chain_on_scale_force(rhoA, fallen_length, g):
     """Reading of a scale onto which a chain falls freely from rest (hanging vertically
-    and released): the weight of the piled part lambda g x plus the momentum flux of the
-    arriving links lambda v^2 = 2 lambda g x, in total F = 3 lambda g x (Section 2.3.2)."""
+    and released) with mass per length rhoA: the weight of the piled part rhoA g x plus
+    the momentum flux of the arriving links rhoA v^2 = 2 rhoA g x, in total
+    F = 3 rhoA g x (Section 2.3.2)."""
     speed = impact_speed_after_fall(fallen_length, g)
-    momentum_flux = force_to_keep_speed_while_accreting(mass_per_length * speed, speed)
-    return mass_per_length * g * fallen_length + momentum_flux
+    momentum_flux = force_to_keep_speed_while_accreting(rhoA * speed, speed)
+    return rhoA * g * fallen_length + momentum_flux
