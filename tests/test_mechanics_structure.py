@@ -132,3 +132,27 @@ def test_h_means_a_height_not_a_finite_difference_step():
     import inspect
     assert "h" not in inspect.signature(energy.curl).parameters
     assert "h" not in inspect.signature(energy.is_conservative).parameters
+
+
+@pytest.mark.parametrize("path", ALL_MODULES, ids=_label)
+def test_modules_share_helpers_only_through_the_common_module(path):
+    """A private name imported from a sibling module is a helper in the wrong home."""
+    borrowed = [f"{node.module}.{alias.name}" for node in ast.walk(_tree(path))
+                if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("dynagrade.mechanics")
+                and node.module != "dynagrade.mechanics._common"
+                for alias in node.names if alias.name.startswith("_")]
+    assert not borrowed, f"{_label(path)} imports private helpers {borrowed}"
+
+
+def test_no_private_helper_is_defined_in_two_modules():
+    homes = {}
+    for path in ALL_MODULES:
+        for node in _tree(path).body:
+            if isinstance(node, ast.FunctionDef) and node.name.startswith("_"):
+                homes.setdefault(node.name, []).append(_label(path))
+    assert not {name: where for name, where in homes.items() if len(where) > 1}
+
+
+def test_the_common_module_imports_no_other_mechanics_module():
+    imported = _imported_modules(_tree(PACKAGE / "_common.py"))
+    assert not [n for n in imported if n.startswith("dynagrade")]

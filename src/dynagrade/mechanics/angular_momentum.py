@@ -3,7 +3,7 @@ SI units; vectors as numpy arrays (2D vectors are taken in the e1-e2 plane).
 """
 import numpy as np
 
-from dynagrade.mechanics.kinematics import spatial_vector
+from dynagrade.mechanics._common import spatial_vector
 from dynagrade.mechanics.vibrations import period
 
 

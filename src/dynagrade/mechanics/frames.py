@@ -7,32 +7,30 @@ All vectors are 3-vectors in one common basis.
 """
 import numpy as np
 
-
-def _cross(a, b):
-    return np.cross(np.asarray(a, dtype=float), np.asarray(b, dtype=float))
+from dynagrade.mechanics._common import cross
 
 
 def absolute_velocity(v_origin, omega, r, v_rel):
     """Absolute velocity of a point moving in a rotating frame,
     v = v_O' + Omega x r + v_rel (Section 3.4.2)."""
-    return np.asarray(v_origin, dtype=float) + _cross(omega, r) + np.asarray(v_rel, float)
+    return np.asarray(v_origin, dtype=float) + cross(omega, r) + np.asarray(v_rel, float)
 
 
 def coriolis_acceleration(omega, v_rel):
     """Coriolis acceleration 2 Omega x v_rel (Section 3.4.2)."""
-    return 2.0 * _cross(omega, v_rel)
+    return 2.0 * cross(omega, v_rel)
 
 
 def frame_centripetal_acceleration(omega, r):
     """Centripetal acceleration of the frame point, Omega x (Omega x r); its negative is the
     centrifugal term of the relative motion (Section 3.4.2)."""
-    return _cross(omega, _cross(omega, r))
+    return cross(omega, cross(omega, r))
 
 
 def absolute_acceleration(a_origin, omega, omega_dot, r, v_rel, a_rel):
     """Absolute acceleration of a point moving in a rotating frame,
     a = a_O' + Omega_dot x r + Omega x (Omega x r) + 2 Omega x v_rel + a_rel (Section 3.4.2)."""
-    return (np.asarray(a_origin, dtype=float) + _cross(omega_dot, r)
+    return (np.asarray(a_origin, dtype=float) + cross(omega_dot, r)
             + frame_centripetal_acceleration(omega, r) + coriolis_acceleration(omega, v_rel)
             + np.asarray(a_rel, dtype=float))
 

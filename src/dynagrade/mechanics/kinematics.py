@@ -7,6 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import quad
 
+from dynagrade.mechanics._common import spatial_vector
+
 
 # --- 1.1.1 Cartesian frame: trajectories from a(t), a(v), a(x) ----------------------------
 
@@ -241,15 +243,6 @@ def parabola_radius_of_curvature(c, x1):
     """Radius of curvature of the parabola x2 = c x1^2 at x1, eq. (1.49):
     rho = (1 + (2 c x1)^2)^(3/2) / (2 |c|)."""
     return radius_of_curvature_of_graph(2.0 * c * np.asarray(x1, dtype=float), 2.0 * c)
-
-
-def spatial_vector(vector):
-    """Three Cartesian components of a vector; a planar (2-component) vector is taken in the
-    e1-e2 plane with zero e3 component (the convention of eqs. (1.52) and (1.129))."""
-    vector = np.asarray(vector, dtype=float)
-    if vector.shape[-1] == 2:
-        vector = np.concatenate([vector, np.zeros(vector.shape[:-1] + (1,))], axis=-1)
-    return vector
 
 
 def unit_tangent(v):

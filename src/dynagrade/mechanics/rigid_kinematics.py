@@ -5,7 +5,7 @@ angular acceleration are scalars about e3. Spatial motion: 3-vectors throughout.
 """
 import numpy as np
 
-from dynagrade.mechanics.systems import _cross3
+from dynagrade.mechanics._common import spatial_cross
 
 
 def _planar_or_spatial(omega, r):
@@ -13,8 +13,8 @@ def _planar_or_spatial(omega, r):
     r = np.asarray(r, dtype=float)
     if np.ndim(omega) == 0:
         w = np.array([0.0, 0.0, float(omega)])
-        return _cross3(w, r)[: r.shape[-1]]
-    return _cross3(omega, r)
+        return spatial_cross(w, r)[: r.shape[-1]]
+    return spatial_cross(omega, r)
 
 
 def velocity_of_point(v_a, omega, r_ab):
@@ -37,7 +37,7 @@ def planar_angular_velocity(r_a, v_a, r_b, v_b):
     omega = e3 . (r_AB x (v_B - v_A)) / |r_AB|^2 (Section 3.1.1)."""
     r_ab = np.asarray(r_b, dtype=float) - np.asarray(r_a, dtype=float)
     dv = np.asarray(v_b, dtype=float) - np.asarray(v_a, dtype=float)
-    return float(_cross3(r_ab, dv)[2] / np.dot(r_ab, r_ab))
+    return float(spatial_cross(r_ab, dv)[2] / np.dot(r_ab, r_ab))
 
 
 def instantaneous_centre_of_rotation(r_a, v_a, omega):

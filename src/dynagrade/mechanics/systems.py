@@ -8,41 +8,25 @@ from dataclasses import dataclass
 import numpy as np
 
 from dynagrade.mechanics.energy import particle_kinetic_energy
-from dynagrade.mechanics.kinematics import spatial_vector
-
-
-def _as_masses(masses):
-    return np.asarray(masses, dtype=float)
-
-
-def _as_vectors(vectors, n):
-    arr = np.asarray(vectors, dtype=float)
-    if arr.ndim == 1:
-        arr = arr.reshape(n, -1)
-    return arr
-
-
-def _cross3(a, b):
-    """Cross product with planar (2-component) vectors taken in the e1-e2 plane."""
-    return np.cross(spatial_vector(a), spatial_vector(b))
+from dynagrade.mechanics._common import as_floats, as_vectors, spatial_cross, spatial_vector
 
 
 def total_mass(masses):
     """Total mass M = sum of m_i of a system of particles (Section 2.1)."""
-    return float(np.sum(_as_masses(masses)))
+    return float(np.sum(as_floats(masses)))
 
 
 def centre_of_mass(masses, positions):
     """Position of the centre of mass r_C = (1/M) sum m_i r_i (Section 2.1)."""
-    m = _as_masses(masses)
-    r = _as_vectors(positions, m.size)
+    m = as_floats(masses)
+    r = as_vectors(positions, m.size)
     return (m[:, None] * r).sum(axis=0) / m.sum()
 
 
 def total_momentum(masses, velocities):
     """Total linear momentum P = sum m_i v_i = M v_C of a system (Section 2.2.1)."""
-    m = _as_masses(masses)
-    v = _as_vectors(velocities, m.size)
+    m = as_floats(masses)
+    v = as_vectors(velocities, m.size)
     return (m[:, None] * v).sum(axis=0)
 
 
@@ -55,15 +39,15 @@ def centre_of_mass_acceleration(total_external_force, M):
 
 def system_kinetic_energy(masses, velocities):
     """Kinetic energy T = sum 1/2 m_i |v_i|^2 of a system of particles (Section 2.2.2)."""
-    m = _as_masses(masses)
-    return float(np.sum(particle_kinetic_energy(m, _as_vectors(velocities, m.size))))
+    m = as_floats(masses)
+    return float(np.sum(particle_kinetic_energy(m, as_vectors(velocities, m.size))))
 
 
 def kinetic_energy_relative_to_centre_of_mass(masses, velocities):
     """Kinetic energy of the motion relative to the centre of mass,
     T' = sum 1/2 m_i |v_i - v_C|^2, so that T = 1/2 M |v_C|^2 + T' (Section 2.2.2)."""
-    m = _as_masses(masses)
-    v = _as_vectors(velocities, m.size)
+    m = as_floats(masses)
+    v = as_vectors(velocities, m.size)
     v_c = total_momentum(m, v) / m.sum()
     return system_kinetic_energy(m, v - v_c)
 
@@ -107,18 +91,18 @@ def speeds_relative_to_centre_of_mass(m1, m2, relative_speed):
 def system_angular_momentum_about_point(masses, positions, velocities, point):
     """Angular momentum of a system about a fixed point B,
     H_B = sum (r_i - r_B) x m_i v_i (Section 2.2.3). Planar input returns a 3-vector."""
-    m = _as_masses(masses)
-    r = _as_vectors(positions, m.size) - np.asarray(point, dtype=float)
-    v = _as_vectors(velocities, m.size)
-    return (m[:, None] * _cross3(r, v)).sum(axis=0)
+    m = as_floats(masses)
+    r = as_vectors(positions, m.size) - np.asarray(point, dtype=float)
+    v = as_vectors(velocities, m.size)
+    return (m[:, None] * spatial_cross(r, v)).sum(axis=0)
 
 
 def angular_momentum_about_centre_of_mass(masses, positions, velocities):
     """Angular momentum about the centre of mass, H_C = sum (r_i - r_C) x m_i (v_i - v_C)
     (relative and absolute velocities give the same H_C; Section 2.2.3)."""
-    m = _as_masses(masses)
-    r = _as_vectors(positions, m.size)
-    v = _as_vectors(velocities, m.size)
+    m = as_floats(masses)
+    r = as_vectors(positions, m.size)
+    v = as_vectors(velocities, m.size)
     v_c = total_momentum(m, v) / m.sum()
     return system_angular_momentum_about_point(m, r, v - v_c, centre_of_mass(m, r))
 
@@ -126,4 +110,4 @@ def angular_momentum_about_centre_of_mass(masses, positions, velocities):
 def angular_momentum_transfer(h_c, M, r_bc, v_c):
     """Angular momentum about a point B from that about the centre of mass,
     H_B = H_C + r_BC x M v_C (Section 2.2.3; for rigid bodies Section 3.2.4)."""
-    return np.asarray(h_c, dtype=float) + M * _cross3(r_bc, v_c)
+    return np.asarray(h_c, dtype=float) + M * spatial_cross(r_bc, v_c)
