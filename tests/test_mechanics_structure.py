@@ -156,3 +156,40 @@ def test_no_private_helper_is_defined_in_two_modules():
 def test_the_common_module_imports_no_other_mechanics_module():
     imported = _imported_modules(_tree(PACKAGE / "_common.py"))
     assert not [n for n in imported if n.startswith("dynagrade")]
+
+
+def _module_names():
+    names = []
+    for path in [PACKAGE / "__init__.py", EXAMPLES / "__init__.py"] + ALL_MODULES:
+        parts = path.relative_to(PACKAGE.parent).with_suffix("").parts
+        names.append(".".join(("dynagrade",) + (parts[:-1] if parts[-1] == "__init__" else parts)))
+    return names
+
+
+# Modules allowed to import scipy at import time, with the reason.  None today: every
+# integration, root search and eigen-solve imports scipy inside the function doing it.
+SCIPY_AT_IMPORT = {}
+
+
+def test_importing_any_mechanics_module_leaves_scipy_unimported():
+    """Imports every module of the package one after the other in a fresh interpreter and
+    notes which import first brought scipy in; then calls one integrating function to show
+    the check sees scipy when it is loaded."""
+    import subprocess
+    import sys
+    program = (
+        "import importlib, json, sys\n"
+        "culprits = []\n"
+        f"for name in {_module_names()!r}:\n"
+        "    had = 'scipy' in sys.modules\n"
+        "    importlib.import_module(name)\n"
+        "    if not had and 'scipy' in sys.modules:\n"
+        "        culprits.append(name)\n"
+        "from dynagrade.mechanics import kinematics\n"
+        "kinematics.velocity_from_acceleration(lambda t: 1.0, 2.0, 0.0)\n"
+        "print(json.dumps([culprits, 'scipy' in sys.modules]))\n")
+    out = subprocess.run([sys.executable, "-c", program], capture_output=True, text=True, check=True)
+    import json
+    culprits, loaded_on_use = json.loads(out.stdout)
+    assert [c for c in culprits if c.rpartition(".")[2] not in SCIPY_AT_IMPORT] == []
+    assert loaded_on_use

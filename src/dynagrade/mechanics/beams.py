@@ -9,7 +9,6 @@ natural frequencies omega_j = (beta_j L)^2 / L^2 sqrt(EI / (rho A)) where beta_j
 the positive roots of the characteristic equation of the supports.
 """
 import numpy as np
-from scipy.optimize import brentq
 
 SUPPORTS = ("simply supported", "cantilever", "clamped-clamped", "free-free", "clamped-pinned")
 
@@ -71,6 +70,7 @@ def beam_eigenvalues(support, n):
     Found by brentq, the j-th root bracketed in [j pi, (j + 1) pi] except for the
     cantilever ([(j - 1) pi, j pi]) and the simply supported beam (exactly j pi).
     """
+    from scipy.optimize import brentq
     j = np.arange(1, n + 1)
     if support == "simply supported":
         return j * np.pi

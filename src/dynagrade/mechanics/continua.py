@@ -11,7 +11,6 @@ true fundamental frequency from above.  For a continuous beam the Rayleigh quoti
 omega^2 <= integral EI w''^2 dx / integral rho A w^2 dx holds for any admissible w.
 """
 import numpy as np
-from scipy.integrate import quad
 
 from dynagrade.mechanics.vibrations import natural_frequency
 
@@ -22,6 +21,7 @@ def effective_mass(rhoA, shape, L):
     ``rhoA`` is the mass per length rho A (a number or a callable of x), ``shape`` the callable psi(x)
     normalized to 1 at the point whose coordinate is the degree of freedom.
     """
+    from scipy.integrate import quad
     mu = rhoA if callable(rhoA) else (lambda x: rhoA)
     value, _ = quad(lambda x: mu(x) * shape(x) ** 2, 0.0, L, epsabs=0.0, epsrel=1e-12)
     return value
@@ -62,6 +62,7 @@ def beam_rayleigh_quotient(EI, rhoA, w, w_xx, L):
     ``w`` and ``w_xx`` are the trial deflection and its second derivative (callables);
     the trial shape must satisfy the geometric boundary conditions.
     """
+    from scipy.integrate import quad
     num, _ = quad(lambda x: EI * w_xx(x) ** 2, 0.0, L, epsabs=0.0, epsrel=1e-12)
     den, _ = quad(lambda x: rhoA * w(x) ** 2, 0.0, L, epsabs=0.0, epsrel=1e-12)
     return num / den

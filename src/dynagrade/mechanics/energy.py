@@ -3,7 +3,6 @@ potential energies, the conservative-force test, and the energy results of
 Examples 1.11, 1.12 and 1.14.  SI units.
 """
 import numpy as np
-from scipy.integrate import quad
 
 
 def particle_kinetic_energy(m, v):
@@ -34,6 +33,7 @@ def work_along_path(force, path, velocity, t1, t2):
     by quadrature.  ``path(t)`` and ``velocity(t) = dr/dt`` are callables returning vectors;
     ``force(r, v)`` gets the position and the velocity (so friction and drag can be given;
     a position-only field ignores ``v``)."""
+    from scipy.integrate import quad
     def power(t):
         v = np.asarray(velocity(t), dtype=float)
         return float(np.dot(np.asarray(force(np.asarray(path(t), dtype=float), v)), v))

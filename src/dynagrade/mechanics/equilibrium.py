@@ -10,7 +10,6 @@ Coordinates are sympy functions of t or plain symbols (as in :mod:`lagrange`).
 """
 import numpy as np
 import sympy as sp
-from scipy.optimize import brentq
 
 from dynagrade.mechanics import lagrange, vibrations
 from dynagrade.mechanics.angular_momentum import pendulum_natural_frequency
@@ -53,6 +52,7 @@ def equilibrium_positions_in_interval(dV_dq, a, b, samples=2001):
 
     Bracketed by sign changes on ``samples`` grid points and refined with brentq.
     """
+    from scipy.optimize import brentq
     grid = np.linspace(a, b, samples)
     values = np.array([dV_dq(x) for x in grid])
     roots = [float(x) for x, v in zip(grid, values) if v == 0.0]

@@ -7,7 +7,6 @@ I = integral rho (|r|^2 1 - r (x) r) dV.
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.linalg import eigh
 
 
 def inertia_tensor_point_mass(m, r):
@@ -104,6 +103,7 @@ class PrincipalAxes:
 def principal_axes(inertia):
     """Principal moments of inertia and principal axes: eigenvalues and orthonormal
     eigenvectors of the symmetric tensor I (Section 3.2.3)."""
+    from scipy.linalg import eigh
     moments, axes = eigh(np.asarray(inertia, dtype=float))
     if np.linalg.det(axes) < 0:
         axes[:, -1] = -axes[:, -1]

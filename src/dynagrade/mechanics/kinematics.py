@@ -5,7 +5,6 @@ and space curves (1.1.4).  SI units, angles in rad; floats or numpy arrays.
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import quad
 
 from dynagrade.mechanics._common import spatial_vector
 
@@ -15,6 +14,7 @@ from dynagrade.mechanics._common import spatial_vector
 def velocity_from_acceleration(acceleration, t, v0, t0=0.0):
     """Velocity at time t from a known 1D acceleration a(t) (a callable), eq. (1.9):
     v(t) = v(t0) + integral_{t0}^{t} a(tau) dtau, by quadrature."""
+    from scipy.integrate import quad
     integral, _ = quad(acceleration, t0, t, epsabs=1e-13, epsrel=1e-11, limit=200)
     return v0 + integral
 
@@ -22,6 +22,7 @@ def velocity_from_acceleration(acceleration, t, v0, t0=0.0):
 def position_from_acceleration(acceleration, t, x0, v0, t0=0.0):
     """Position at time t from a known 1D acceleration a(t), eq. (1.10) with (1.9):
     x(t) = x0 + v0 (t - t0) + integral_{t0}^{t} (t - tau) a(tau) dtau (both integrations in one)."""
+    from scipy.integrate import quad
     integral, _ = quad(lambda tau: (t - tau) * acceleration(tau), t0, t,
                        epsabs=1e-13, epsrel=1e-11, limit=200)
     return x0 + v0 * (t - t0) + integral
@@ -116,6 +117,7 @@ def quadratic_drag_distance_to_speed(v0, v, k):
 def time_from_velocity_field(velocity, x0, x):
     """Time to travel from x0 to x when the velocity is a known function v(x) of position
     (a callable, no sign change on the way), eq. (1.16): t = integral dx / v(x)."""
+    from scipy.integrate import quad
     integral, _ = quad(lambda s: 1.0 / velocity(s), x0, x, epsabs=1e-13, epsrel=1e-11, limit=200)
     return integral
 
@@ -123,6 +125,7 @@ def time_from_velocity_field(velocity, x0, x):
 def speed_from_acceleration_field(acceleration, x0, x, v0):
     """Speed at position x when the acceleration is a known function a(x) (a callable),
     eq. (1.17): v^2/2 = v0^2/2 + integral_{x0}^{x} a(s) ds.  NaN where x is not reached."""
+    from scipy.integrate import quad
     integral, _ = quad(acceleration, x0, x, epsabs=1e-13, epsrel=1e-11, limit=200)
     v_sq = v0**2 + 2.0 * integral
     return float(np.sqrt(v_sq)) if v_sq >= 0.0 else float("nan")

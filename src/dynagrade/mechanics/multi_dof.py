@@ -8,7 +8,6 @@ Mode shapes are returned as the columns of the modal matrix Phi, normalized so t
 Phi^T M Phi = I.  Matrices are numpy arrays in SI units.
 """
 import numpy as np
-from scipy.linalg import eigh, eig, solve
 
 from dynagrade.mechanics import vibrations
 
@@ -49,6 +48,7 @@ def natural_frequencies(K, M):
 
     Rigid-body modes (zero eigenvalues, up to round-off) give omega = 0.
     """
+    from scipy.linalg import eigh
     lam = eigh(K, M, eigvals_only=True)
     scale = max(1.0, float(np.max(np.abs(lam))))
     lam = np.where(np.abs(lam) < 1e-12 * scale, 0.0, lam)
@@ -63,6 +63,7 @@ def mode_shapes(K, M):
     Columns are ordered like :func:`natural_frequencies`; the sign of each column is
     fixed so that its first non-zero entry is positive.
     """
+    from scipy.linalg import eigh
     _, Phi = eigh(K, M)
     for j in range(Phi.shape[1]):
         col = Phi[:, j]
@@ -96,6 +97,7 @@ def steady_state_amplitudes(K, M, C, F, Omega):
 
     |X_j| is the amplitude of coordinate j, -angle(X_j) its phase lag behind the force.
     """
+    from scipy.linalg import solve
     D = np.asarray(K) - Omega**2 * np.asarray(M) + 1j * Omega * np.asarray(C)
     return solve(D, np.asarray(F, dtype=complex))
 
@@ -106,6 +108,7 @@ def damped_eigenvalues(K, M, C):
     Roots of det(lambda^2 M + lambda C + K) = 0 from the first-order form, sorted by
     imaginary part; Re(lambda) < 0 is the decay rate, Im(lambda) the damped frequency.
     """
+    from scipy.linalg import eig
     n = len(K)
     Minv = np.linalg.inv(M)
     A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ K, -Minv @ C]])

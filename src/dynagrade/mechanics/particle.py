@@ -5,7 +5,6 @@ SI units; vectors as numpy arrays of 2 or 3 components.
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 
 def particle_linear_momentum(m, v):
@@ -108,6 +107,7 @@ def simulate(m, r0, v0, force, t_end, events=(), rtol=1e-9, atol=1e-12, method="
     ``event(t, r, v)`` with optional ``terminal``/``direction`` attributes as in solve_ivp.
     The default DOP853 with rtol 1e-9 and atol 1e-12 keeps the energy drift of short runs
     near 1e-10 of the total."""
+    from scipy.integrate import solve_ivp
     r0 = np.asarray(r0, dtype=float)
     d = r0.size
 

@@ -7,7 +7,6 @@ on a rod of length L the standing waves u = U(x) cos(omega t) give the natural
 frequencies from the end conditions (fixed: u = 0; free: u_x = 0).
 """
 import numpy as np
-from scipy.optimize import brentq
 
 from dynagrade.mechanics import multi_dof
 
@@ -89,6 +88,7 @@ def tip_mass_fundamental_frequency(c, L, m_rod, m_tip):
 
     k_1 L is the root in (0, pi/2) of kL tan(kL) = m_rod / m_tip.
     """
+    from scipy.optimize import brentq
     ratio = m_rod / m_tip
     kL = brentq(tip_mass_wavenumber_equation, 1e-12, np.pi / 2.0, args=(ratio,), xtol=1e-14)
     return c * kL / L
