@@ -193,3 +193,38 @@ def test_importing_any_mechanics_module_leaves_scipy_unimported():
     culprits, loaded_on_use = json.loads(out.stdout)
     assert [c for c in culprits if c.rpartition(".")[2] not in SCIPY_AT_IMPORT] == []
     assert loaded_on_use
+
+
+def _unannotated(node):
+    args = node.args
+    every = args.posonlyargs + args.args + args.kwonlyargs + [a for a in (args.vararg, args.kwarg) if a]
+    missing = [a.arg for a in every if a.annotation is None]
+    if node.returns is None:
+        missing.append("return")
+    return missing
+
+
+@pytest.mark.parametrize("path", ALL_MODULES, ids=_label)
+def test_every_public_function_has_type_hints(path):
+    missing = {node.name: _unannotated(node) for node in _public_functions(path) if _unannotated(node)}
+    assert not missing, f"{_label(path)}: no hint for {missing}"
+
+
+@pytest.mark.parametrize("name", [n for n in _module_names() if not n.endswith(".examples")
+                                  and n != "dynagrade.mechanics"])
+def test_the_type_hints_name_real_types(name):
+    """Every hint resolves in its module (a misspelt or unimported alias would not)."""
+    import importlib
+    import inspect
+    import typing
+    module = importlib.import_module(name)
+    functions = [f for n, f in inspect.getmembers(module, inspect.isfunction)
+                 if not n.startswith("_") and f.__module__ == name]
+    for function in functions:
+        hints = typing.get_type_hints(function)
+        assert "return" in hints, function.__name__
+
+
+def test_the_hint_check_sees_a_missing_hint():
+    node = ast.parse("def f(m: float, v) -> float:\n    return m * v\n").body[0]
+    assert _unannotated(node) == ["v"]
