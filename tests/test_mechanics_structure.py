@@ -44,7 +44,7 @@ def _label(path):
 
 
 def test_the_example_subpackage_holds_the_worked_example_modules():
-    assert {p.stem for p in EXAMPLE_MODULES} >= {"looping", "incline", "projectile"}
+    assert {p.stem for p in EXAMPLE_MODULES} >= {"looping", "incline", "projectile", "hoop"}
     assert not {p.stem for p in CORE_MODULES} & {p.stem for p in EXAMPLE_MODULES}
 
 
