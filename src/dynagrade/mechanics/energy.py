@@ -60,7 +60,7 @@ def speed_after_work(m: ArrayLike, v1: ArrayLike, W12: ArrayLike) -> Quantity:
         return np.where(T2 >= 0.0, np.sqrt(2.0 * np.maximum(T2, 0.0) / m), np.nan)
 
 
-def curl(force: Field, r: ArrayLike, step_size: ArrayLike = 1e-5) -> Quantity:
+def curl(force: Field, r: ArrayLike, step_size: float = 1e-5) -> Quantity:
     """Curl of a 3D force field at r by central differences; it vanishes for a conservative
     force F = -dV/dr, eq. (1.94)."""
     r = np.asarray(r, dtype=float)
@@ -72,8 +72,8 @@ def curl(force: Field, r: ArrayLike, step_size: ArrayLike = 1e-5) -> Quantity:
     return np.array([jac[2, 1] - jac[1, 2], jac[0, 2] - jac[2, 0], jac[1, 0] - jac[0, 1]])
 
 
-def is_conservative(force: Field, points: ArrayLike, scale: ArrayLike = 1.0,
-                    step_size: ArrayLike = 1e-5, tol: ArrayLike = 1e-6) -> bool:
+def is_conservative(force: Field, points: ArrayLike, scale: float = 1.0,
+                    step_size: float = 1e-5, tol: float = 1e-6) -> bool:
     """Whether a position-dependent force field has zero curl at all the given sample points
     (to the relative tolerance ``tol`` of a typical force ``scale``), the test behind
     eqs. (1.93)-(1.94)."""

@@ -105,7 +105,7 @@ class Trajectory:
 
 
 def simulate(m: ArrayLike, r0: ArrayLike, v0: ArrayLike, force: Field, t_end: ArrayLike,
-             events: Sequence[Field] = (), rtol: ArrayLike = 1e-9, atol: ArrayLike = 1e-12,
+             events: Sequence[Field] = (), rtol: float = 1e-9, atol: float = 1e-12,
              method: str = "DOP853", max_step: float = np.inf) -> Trajectory:
     """Integrate the linear momentum balance m r'' = F(t, r, v) (eq. 1.61 at constant mass)
     from r(0) = r0, v(0) = v0 up to t_end with scipy's solve_ivp.
