@@ -103,6 +103,7 @@ SYMBOL_FOR = {
     "damping": "c",
     "line_density": "rhoA",
     "mass_per_length": "rhoA",
+    "pivot_distance": "pivot_to_centre (as in rigid_impact)",
 }
 
 

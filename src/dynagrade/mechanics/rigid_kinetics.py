@@ -86,20 +86,20 @@ def minimum_friction_coefficient_for_rolling(alpha: ArrayLike, g: ArrayLike, m: 
 
 
 def compound_pendulum_angular_acceleration(phi: ArrayLike, g: ArrayLike, m: ArrayLike,
-                                           pivot_distance: ArrayLike,
+                                           pivot_to_centre: ArrayLike,
                                            moment_pivot: ArrayLike) -> Quantity:
     """Angular acceleration of a compound (physical) pendulum about its fixed pivot,
     phi_ddot = -m g d sin(phi) / I_O (Section 3.2.2)."""
-    return angular_acceleration_about_fixed_axis(-m * g * pivot_distance * np.sin(phi),
+    return angular_acceleration_about_fixed_axis(-m * g * pivot_to_centre * np.sin(phi),
                                                  moment_pivot)
 
 
 def angular_speed_of_pendulum_from_energy(phi1: ArrayLike, phi2: ArrayLike, g: ArrayLike,
-                                          m: ArrayLike, pivot_distance: ArrayLike,
+                                          m: ArrayLike, pivot_to_centre: ArrayLike,
                                           moment_pivot: ArrayLike,
                                           phidot1: ArrayLike = 0.0) -> Quantity:
     """Angular speed of a compound pendulum at angle phi2 after swinging from phi1 with
     rate phi1_dot: 1/2 I_O phi_dot^2 - m g d cos(phi) is conserved (Section 3.2.5)."""
-    energy = 0.5 * moment_pivot * phidot1**2 + m * g * pivot_distance * (
+    energy = 0.5 * moment_pivot * phidot1**2 + m * g * pivot_to_centre * (
         np.cos(phi2) - np.cos(phi1))
     return np.sqrt(2.0 * energy / moment_pivot)
