@@ -3,6 +3,12 @@ one taxonomy (the core never imports the worked-example subpackage), unique publ
 one argument convention, type hints, and no scipy at import.
 """
 import ast
+import importlib
+import inspect
+import json
+import subprocess
+import sys
+import typing
 from pathlib import Path
 
 import pytest
@@ -28,10 +34,17 @@ def _imported_modules(tree):
         if isinstance(node, ast.Import):
             names.update(alias.name for alias in node.names)
         elif isinstance(node, ast.ImportFrom):
-            base = "." * node.level + (node.module or "")
+            prefix = "." * node.level
+            base = prefix + (node.module or "")
             names.add(base)
-            names.update(f"{base}.{alias.name}" for alias in node.names)
+            names.update(f"{base}.{alias.name}" if node.module else prefix + alias.name
+                         for alias in node.names)
     return names
+
+
+def _names_the_examples(module):
+    """Whether an imported module name (absolute or relative) is the example subpackage or in it."""
+    return "examples" in module.lstrip(".").split(".")
 
 
 def _public_functions(path):
@@ -51,9 +64,7 @@ def test_the_example_subpackage_holds_the_worked_example_modules():
 @pytest.mark.parametrize("path", CORE_MODULES + [PACKAGE / "__init__.py"], ids=_label)
 def test_no_core_module_imports_the_example_subpackage(path):
     imported = _imported_modules(_tree(path))
-    offending = sorted(n for n in imported
-                       if n.startswith("dynagrade.mechanics.examples") or n.startswith(".examples")
-                       or n == "dynagrade.mechanics.examples")
+    offending = sorted(n for n in imported if _names_the_examples(n))
     assert not offending, f"{_label(path)} imports {offending}"
 
 
@@ -66,11 +77,15 @@ def test_the_mechanics_package_imports_nothing_else_of_dynagrade(path):
 
 
 def test_the_import_scan_sees_an_import_of_the_examples():
-    """The scan above would catch the import energy.py once had."""
-    tree = ast.parse("def f():\n    from dynagrade.mechanics.examples.incline import distance_up_slope\n")
-    assert "dynagrade.mechanics.examples.incline" in _imported_modules(tree)
-    tree = ast.parse("from dynagrade.mechanics.examples import incline\n")
-    assert "dynagrade.mechanics.examples" in _imported_modules(tree)
+    """The scan above would catch the import energy.py once had, in any spelling."""
+    for source in ("from dynagrade.mechanics.examples.incline import distance_up_slope\n",
+                   "def f():\n    from dynagrade.mechanics.examples import incline\n",
+                   "import dynagrade.mechanics.examples.incline\n",
+                   "from . import examples\n",
+                   "from .examples.incline import time_up_slope\n"):
+        assert any(_names_the_examples(n) for n in _imported_modules(ast.parse(source))), source
+    assert not any(_names_the_examples(n) for n in _imported_modules(
+        ast.parse("from dynagrade.mechanics import energy, particle\n")))
 
 
 def test_no_two_public_functions_of_the_mechanics_package_share_a_name():
@@ -83,9 +98,10 @@ def test_no_two_public_functions_of_the_mechanics_package_share_a_name():
     assert len(homes) > 300          # the scan really read the package
 
 
-# Spelled-out names of quantities the notes write with a symbol, with the symbol to use
-# instead (the argument convention of dynagrade/mechanics/__init__.py).
-SYMBOL_FOR = {
+# Names a public signature must not use, with the name to use instead (the argument
+# convention of dynagrade/mechanics/__init__.py): mostly spelled-out names of quantities the
+# notes write with a symbol, and the second name a quantity once had.
+USE_INSTEAD = {
     "mass": "m (M for a system's total mass)",
     "radius": "R",
     "height": "h",
@@ -114,9 +130,9 @@ def _parameters(node):
 
 @pytest.mark.parametrize("path", ALL_MODULES, ids=_label)
 def test_public_signatures_name_quantities_by_their_symbol(path):
-    offending = [f"{node.name}({name}): use {SYMBOL_FOR[name]}"
+    offending = [f"{node.name}({name}): use {USE_INSTEAD[name]}"
                  for node in _public_functions(path) for name in _parameters(node)
-                 if name in SYMBOL_FOR]
+                 if name in USE_INSTEAD]
     assert not offending, offending
 
 
@@ -130,7 +146,6 @@ def test_mass_is_m_throughout_the_mechanics_package():
 
 def test_h_means_a_height_not_a_finite_difference_step():
     from dynagrade.mechanics import energy
-    import inspect
     assert "h" not in inspect.signature(energy.curl).parameters
     assert "h" not in inspect.signature(energy.is_conservative).parameters
 
@@ -176,8 +191,6 @@ def test_importing_any_mechanics_module_leaves_scipy_unimported():
     """Imports every module of the package one after the other in a fresh interpreter and
     notes which import first brought scipy in; then calls one integrating function to show
     the check sees scipy when it is loaded."""
-    import subprocess
-    import sys
     program = (
         "import importlib, json, sys\n"
         "culprits = []\n"
@@ -189,8 +202,8 @@ def test_importing_any_mechanics_module_leaves_scipy_unimported():
         "from dynagrade.mechanics import kinematics\n"
         "kinematics.velocity_from_acceleration(lambda t: 1.0, 2.0, 0.0)\n"
         "print(json.dumps([culprits, 'scipy' in sys.modules]))\n")
-    out = subprocess.run([sys.executable, "-c", program], capture_output=True, text=True, check=True)
-    import json
+    out = subprocess.run([sys.executable, "-c", program], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
     culprits, loaded_on_use = json.loads(out.stdout)
     assert [c for c in culprits if c.rpartition(".")[2] not in SCIPY_AT_IMPORT] == []
     assert loaded_on_use
@@ -215,9 +228,6 @@ def test_every_public_function_has_type_hints(path):
                                   and n != "dynagrade.mechanics"])
 def test_the_type_hints_name_real_types(name):
     """Every hint resolves in its module (a misspelt or unimported alias would not)."""
-    import importlib
-    import inspect
-    import typing
     module = importlib.import_module(name)
     functions = [f for n, f in inspect.getmembers(module, inspect.isfunction)
                  if not n.startswith("_") and f.__module__ == name]
