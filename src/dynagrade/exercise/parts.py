@@ -8,7 +8,7 @@ converts them into its own unit, which is also the unit a bare number is read in
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Callable, Mapping
+from typing import Any, Callable, ClassVar, Mapping
 
 from ..grading.spec import (
     ChoiceSpec,
@@ -48,6 +48,8 @@ class Part:
     misconceptions: tuple[Misconception, ...] = ()
 
     kind = "part"
+    #: the settings the exam manifest stores for parts of this kind (attribute names)
+    manifest_fields: ClassVar[tuple[str, ...]] = ()
 
     def __post_init__(self):
         if not self.name.isidentifier():
@@ -80,6 +82,10 @@ class Part:
     def unit(self) -> str | None:
         return None
 
+    def input_hint(self) -> str:
+        """What the answer looks like, for a sheet's part line or an input's placeholder."""
+        return ""
+
 
 @dataclass(frozen=True)
 class Numeric(Part):
@@ -101,6 +107,7 @@ class Numeric(Part):
     unit_credit: float | None = None
 
     kind = "numeric"
+    manifest_fields = ("rtol", "atol")
 
     def in_part_unit(self, value):
         return from_si(float(value), self.unit)
@@ -121,6 +128,7 @@ class Vector(Part):
     atol: float | None = None
 
     kind = "vector"
+    manifest_fields = ("rtol", "atol", "size")
 
     def in_part_unit(self, value):
         values = tuple(from_si(float(v), self.unit) for v in value)
@@ -128,6 +136,9 @@ class Vector(Part):
             raise ValueError(f"part {self.name!r} expects {self.size} components, "
                              f"the solver gave {len(values)}")
         return values
+
+    def input_hint(self) -> str:
+        return f"{self.size} components"
 
     def spec(self, params):
         return VectorSpec(size=self.size, unit=self.unit, rtol=self.rtol, atol=self.atol,
@@ -156,6 +167,9 @@ class Symbolic(Part):
     def reference(self, solved):
         return self.expected
 
+    def input_hint(self) -> str:
+        return "in " + ", ".join(self.variables)
+
     def spec(self, params):
         known = tuple(KnownWrong(m.name, m.value, m.feedback, m.score)
                       for m in self.misconceptions)
@@ -171,6 +185,7 @@ class Options(Part):
     multiple: bool = False
 
     kind = "choice"
+    manifest_fields = ("options", "multiple")
 
     def in_part_unit(self, value):
         chosen = (value,) if isinstance(value, str) else tuple(value)
@@ -180,5 +195,13 @@ class Options(Part):
                              f"not among the options {list(self.options)}")
         return chosen if self.multiple else chosen[0]
 
+    def input_hint(self) -> str:
+        return ("one or more of " if self.multiple else "one of ") + ", ".join(self.options)
+
     def spec(self, params):
         return ChoiceSpec(options=tuple(self.options), multiple=self.multiple)
+
+
+#: every part kind by its name (the ``kind`` of a part and of a manifest's part entry)
+PART_KINDS: dict[str, type[Part]] = {cls.kind: cls for cls in (Numeric, Vector, Symbolic,
+                                                                 Options)}
