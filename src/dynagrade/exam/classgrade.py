@@ -30,7 +30,7 @@ from pathlib import Path
 
 from ..exercise.loader import Bank, open_bank
 from ..exercise.model import Exercise, Variant
-from ..exercise.numbers import format_number
+from ..exercise.numbers import GRADEBOOK_DECIMALS, points_text
 from ..exercise.scoring import grade_variant
 from .files import write_atomic
 from .generate import file_sha256
@@ -218,10 +218,14 @@ def gradebook_csv(outcome: ClassOutcome) -> str:
     writer.writerow(columns)
     for row in outcome.rows:
         writer.writerow([row["student_id"],
-                         *(_points(row[e]) for e in outcome.exercise_ids),
-                         _points(row["total"]), _points(row["max_total"]),
+                         *(_recorded(row[e]) for e in outcome.exercise_ids),
+                         _recorded(row["total"]), _recorded(row["max_total"]),
                          f"{row['percent']:.2f}", row["status"]])
     return buffer.getvalue()
+
+
+def _recorded(points: float) -> str:
+    return points_text(points, GRADEBOOK_DECIMALS)
 
 
 def problems_csv(problems: list[Problem]) -> str:
@@ -231,10 +235,6 @@ def problems_csv(problems: list[Problem]) -> str:
     for problem in problems:
         writer.writerow(problem.to_row())
     return buffer.getvalue()
-
-
-def _points(value: float) -> str:
-    return format_number(round(float(value), 6), 10)
 
 
 def write_outputs(outcome: ClassOutcome, manifest: Manifest, out: Path, progress) -> None:

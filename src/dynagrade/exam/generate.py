@@ -83,8 +83,9 @@ def _student_job(student: Student) -> dict:
         entries.append(VariantEntry(exercise.id, variant.seed, variant.params,
                                     dict(variant.answers), redraws))
         fill_in = f"{exercise.id}.py"
+        scaled = {entry.name: entry.points for entry in _STATE["parts"][exercise.id]}
         write_atomic(folder / fill_in,
-                     write_sheet(exercise, variant, student.student_id, fill_in))
+                     write_sheet(exercise, variant, student.student_id, fill_in, scaled))
         svg = _figure(exercise, variant)
         figure_file = None
         if svg is not None:

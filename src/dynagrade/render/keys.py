@@ -6,27 +6,13 @@ import csv
 import io
 from typing import TYPE_CHECKING
 
-from ..exercise.numbers import format_number
+from ..exercise.numbers import answer_text, points_text
 from ..exercise.units import pretty_unit
 
 if TYPE_CHECKING:
     from ..exam.manifest import Manifest
 
 KEY_COLUMNS = ("student_id", "name", "exercise_id", "seed", "part", "answer", "unit", "points")
-
-
-def answer_text(value, digits: int = 6) -> str:
-    """A stored reference answer as text: numbers to ``digits`` significant figures,
-    vectors in brackets, several options separated by commas."""
-    if isinstance(value, bool):
-        return str(value)
-    if isinstance(value, (int, float)):
-        return format_number(float(value), digits)
-    if isinstance(value, (list, tuple)):
-        if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value):
-            return "[" + ", ".join(format_number(float(v), digits) for v in value) + "]"
-        return ", ".join(str(v) for v in value)
-    return str(value)
 
 
 def key_rows(manifest: Manifest):
@@ -49,7 +35,7 @@ def key_csv(manifest: Manifest) -> str:
     for row in key_rows(manifest):
         writer.writerow([row["student_id"], row["name"], row["exercise_id"], row["seed"],
                          row["part"], answer_text(row["value"], 10), row["unit"],
-                         format_number(row["points"])])
+                         points_text(row["points"])])
     return buffer.getvalue()
 
 

@@ -10,9 +10,8 @@ import io
 from typing import TYPE_CHECKING
 
 from ..exercise.figure import SVG_SETTINGS, inline_svg
-from ..exercise.numbers import format_number
-from ..exercise.units import pretty_unit
-from .keys import answer_text
+from ..exercise.numbers import answer_text, format_number
+from ..exercise.units import with_unit
 from .sheets import render_template
 
 if TYPE_CHECKING:
@@ -20,9 +19,7 @@ if TYPE_CHECKING:
 
 
 def _shown(value, unit) -> str:
-    text = answer_text(value)
-    shown_unit = pretty_unit(unit) if unit else ""
-    return f"{text} {shown_unit}".strip() if isinstance(value, (int, float, list, tuple)) else text
+    return with_unit(answer_text(value), unit)
 
 
 def _feedback_context(exam, exercises, data) -> dict:
