@@ -59,6 +59,18 @@ def test_a_manifest_survives_the_round_trip_through_records_and_file(tmp_path):
     assert json.loads(path.read_text(encoding="utf-8")) == data
 
 
+def test_an_optional_field_may_be_absent_or_present_without_a_new_version():
+    data = small_manifest()
+    assert mf.from_dict(data).exam.policy is None
+    data["exam"] = {**data["exam"], "policy": {"feedback": "score"}}
+    manifest = mf.from_dict(data)
+    assert manifest.exam.policy == {"feedback": "score"} and manifest.version == 1
+    assert mf.to_dict(manifest) == data
+    data["exam"]["policy"] = "open"
+    with pytest.raises(mf.ManifestError, match=r'^exam\.policy: expected an object, got "open"$'):
+        mf.from_dict(data)
+
+
 def test_the_records_hold_the_typed_values_a_reader_needs():
     manifest = mf.from_dict(small_manifest())
     one = manifest.exercise("one")

@@ -15,7 +15,7 @@ Usage::
 Shape (``docs/exams.md`` shows a whole file)::
 
     Manifest        format, version, generator, exam, exercises[], students[]
-    ExamEntry       id, title, date, instructions, points
+    ExamEntry       id, title, date, instructions, [policy], points
     ExerciseEntry   id, title, source, points, set, file, sha256, parts[]
     PartEntry       name, label, kind, unit, points, and the settings its kind
                     stores (``Part.manifest_fields``: rtol/atol, size, options/multiple)
@@ -138,13 +138,17 @@ class ExerciseEntry:
 
 @dataclass(frozen=True)
 class ExamEntry:
-    """The exam itself: id, title, ISO date, instructions and its total points."""
+    """The exam itself: id, title, ISO date, instructions and its total points.
+
+    ``policy`` (optional, written only when set) holds how a server delivers the exam,
+    as ``exam.toml`` declared it; this module keeps it as the JSON object it is."""
 
     id: str
     title: str
     date: str
     instructions: str
     points: float
+    policy: Mapping[str, Any] | None = None
 
 
 @dataclass(frozen=True)
@@ -190,15 +194,22 @@ def _part_dict(part: PartEntry) -> dict:
     return entry
 
 
+def _exam_dict(exam: ExamEntry) -> dict:
+    entry = {"id": exam.id, "title": exam.title, "date": exam.date,
+             "instructions": exam.instructions}
+    if exam.policy is not None:
+        entry["policy"] = dict(exam.policy)
+    entry["points"] = exam.points
+    return entry
+
+
 def to_dict(manifest: Manifest) -> dict:
     """The manifest as the JSON document stores it."""
     return {
         "format": manifest.format, "version": manifest.version,
         "generator": {"dynagrade": manifest.generator.dynagrade,
                       "numpy": manifest.generator.numpy},
-        "exam": {"id": manifest.exam.id, "title": manifest.exam.title,
-                 "date": manifest.exam.date, "instructions": manifest.exam.instructions,
-                 "points": manifest.exam.points},
+        "exam": _exam_dict(manifest.exam),
         "exercises": [{
             "id": e.id, "title": e.title, "source": e.source, "points": e.points,
             "set": dict(e.set), "file": e.file, "sha256": e.sha256,
@@ -262,7 +273,8 @@ def from_dict(data: Any) -> Manifest:
     manifest = Manifest(
         generator=Generator(generator.string("dynagrade"), generator.string("numpy")),
         exam=ExamEntry(exam.string("id"), exam.string("title"), exam.string("date"),
-                       exam.string("instructions"), exam.number("points")),
+                       exam.string("instructions"), exam.number("points"),
+                       exam.mapping("policy", optional=True)),
         exercises=tuple(_exercise(item) for item in root.objects("exercises")),
         students=tuple(_student(item) for item in root.objects("students")),
         version=version)
@@ -319,7 +331,9 @@ class _Object:
                                     f"got {_shown(value)}")
         return tuple(values)
 
-    def mapping(self, key: str) -> dict:
+    def mapping(self, key: str, optional: bool = False) -> dict | None:
+        if optional and key not in self.data:
+            return None
         return self._typed(key, lambda v: isinstance(v, dict), "an object")
 
     def object(self, key: str) -> _Object:
