@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import csv
 import io
-import os
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -33,10 +32,11 @@ from ..exercise.model import Exercise, Variant
 from ..exercise.numbers import GRADEBOOK_DECIMALS, points_text
 from ..exercise.scoring import grade_variant
 from .files import write_atomic
-from .generate import file_sha256
+from .run import GradingRun, file_sha256
 from .manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
 from .stats import part_statistics
 from .submissions import Problem, Submission, collect
+from .workers import Pool, default_jobs
 
 GRADE_STATUSES = ("graded", "incomplete", "absent")
 
@@ -119,19 +119,10 @@ def grade_student(student: StudentEntry, manifest_parts: dict[str, tuple[PartEnt
     return results
 
 
-def _grade_chunk(chunk):
-    """Worker: grade ``[(student, submissions), ...]`` with the shared state."""
-    return [grade_student(student, _WORKER["parts"], _WORKER["exercises"], subs)
-            for student, subs in chunk]
-
-
-_WORKER: dict = {}
-
-
-def _init_worker(parts, paths):
-    from ..exercise.loader import load_file
-
-    _WORKER.update(parts=parts, exercises={i: load_file(p) for i, p in paths.items()})
+def _grade_one(run: GradingRun, work: tuple[StudentEntry, dict[str, Submission]]) -> dict:
+    """Worker: one student's results, with the grading run's exercises and parts."""
+    student, submissions = work
+    return grade_student(student, run.parts, run.exercises, submissions)
 
 
 def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
@@ -186,27 +177,14 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
 
 
 def _run(work, manifest_parts, exercises, jobs, progress) -> list[dict]:
-    jobs = max(1, jobs if jobs is not None else min(2, os.cpu_count() or 1))
-    if jobs == 1 or len(work) < 40:
-        results = []
-        for done, (student, subs) in enumerate(work, 1):
-            results.append(grade_student(student, manifest_parts, exercises, subs))
-            progress("grading", done, len(work))
-        return results
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
-
-    methods = multiprocessing.get_all_start_methods()
-    context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
+    """Every student's results in roster order; a class of fewer than 40 is graded here,
+    a larger one in worker processes (in chunks, so that progress moves)."""
+    jobs = default_jobs(jobs) if len(work) >= 40 else 1
     size = max(1, len(work) // (jobs * 8))
-    chunks = [work[i:i + size] for i in range(0, len(work), size)]
-    paths = {i: e.path for i, e in exercises.items()}
-    results, done = [], 0
-    with ProcessPoolExecutor(jobs, mp_context=context, initializer=_init_worker,
-                             initargs=(manifest_parts, paths)) as pool:
-        for chunk_results in pool.map(_grade_chunk, chunks):
-            results += chunk_results
-            done += len(chunk_results)
+    results = []
+    with Pool(GradingRun(exercises, manifest_parts), jobs) as pool:
+        for done, result in enumerate(pool.map(_grade_one, work, chunksize=size), 1):
+            results.append(result)
             progress("grading", done, len(work))
     return results
 
