@@ -72,7 +72,7 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
         stage = time.perf_counter()
         manifest = build_manifest(run.spec, run.exercises, run.parts,
                                   [r.entry for r in results])
-        report.redraws = sum(len(v.redraws) for s in manifest.students for v in s.variants)
+        report.redraws = manifest.redraw_count
         _write_key_and_moodle(run, manifest)
         if pdf:
             _write_printing_pdfs(run, pool, manifest, roster, results, progress)
@@ -98,6 +98,12 @@ def load_exam(exam_path, roster_path, bank: Bank | None = None):
     spec = read_exam_spec(exam_path, known)
     roster = read_roster(roster_path)
     exercises = {item.id: bank.get(item.id) for item in spec.exercises}
+    _check_set_values(spec, exercises)
+    return spec, roster, exercises
+
+
+def _check_set_values(spec: ExamSpec, exercises: dict[str, Exercise]) -> None:
+    """The values an exam sets (``[exercise.set]``) must leave the constraints satisfiable."""
     for item in spec.exercises:
         if item.set:
             try:
@@ -106,7 +112,6 @@ def load_exam(exam_path, roster_path, bank: Bank | None = None):
                 raise ExamSpecError(f"{spec.path}, line {item.line}, [[exercise]] {item.id}, "
                                     f"field 'set': the values set break a constraint: "
                                     f"{error}") from None
-    return spec, roster, exercises
 
 
 def open_run(exam_path, roster_path, out: Path, bank: Bank | None,
