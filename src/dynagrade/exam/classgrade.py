@@ -137,43 +137,54 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
     chosen, found = collect(paths, manifest)
     problems += found
     timings = {"collect": time.perf_counter() - started}
-
     stage = time.perf_counter()
-    students = manifest.students
     work = [(s, {e: chosen[(s.student_id, e)] for e in manifest_parts
-                 if (s.student_id, e) in chosen}) for s in students]
+                 if (s.student_id, e) in chosen}) for s in manifest.students]
     graded = _run(work, manifest_parts, exercises, jobs, progress)
     timings["grading"] = time.perf_counter() - stage
-
-    exercise_ids = manifest.exercise_ids
-    max_total = sum(float(e.points) for e in manifest.exercises)
-    rows, analysed, feedback = [], [], {}
-    for student, results in zip(students, graded):
-        submitted = [e for e in exercise_ids if results[e] is not None]
-        row = {"student_id": student.student_id}
-        for exercise_id in exercise_ids:
-            row[exercise_id] = results[exercise_id]["score"] if results[exercise_id] else 0.0
-        total = round(sum(row[e] for e in exercise_ids), 6)
-        status = ("absent" if not submitted else
-                  "graded" if len(submitted) == len(exercise_ids) else "incomplete")
-        row.update(total=total, max_total=max_total,
-                   percent=round(100.0 * total / max_total, 2) if max_total else 0.0,
-                   status=status)
-        rows.append(row)
-        feedback[student.student_id] = {"student": student, "results": results,
-                                           "row": row}
-        if submitted:
-            analysed.append({"total": total, "parts": {
-                (e, p["name"]): p for e in submitted for p in results[e]["parts"]}})
-    ordered_parts = [(e.id, p) for e in manifest.exercises for p in e.parts]
-    outcome = ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
-                           part_statistics(ordered_parts, analysed), feedback, timings)
+    outcome = _outcome(manifest, graded, problems, timings)
     if out_dir is not None:
         stage = time.perf_counter()
         write_outputs(outcome, manifest, Path(out_dir), progress)
         timings["outputs"] = time.perf_counter() - stage
     timings["total"] = time.perf_counter() - started
     return outcome
+
+
+def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
+             timings: dict[str, float]) -> ClassOutcome:
+    """The gradebook, the feedback per student and the item statistics."""
+    exercise_ids = manifest.exercise_ids
+    max_total = sum(float(e.points) for e in manifest.exercises)
+    rows, analysed, feedback = [], [], {}
+    for student, results in zip(manifest.students, graded):
+        row = gradebook_row(student.student_id, results, exercise_ids, max_total)
+        rows.append(row)
+        feedback[student.student_id] = {"student": student, "results": results, "row": row}
+        submitted = [e for e in exercise_ids if results[e] is not None]
+        if submitted:
+            analysed.append({"total": row["total"], "parts": {
+                (e, p["name"]): p for e in submitted for p in results[e]["parts"]}})
+    ordered_parts = [(e.id, p) for e in manifest.exercises for p in e.parts]
+    return ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
+                        part_statistics(ordered_parts, analysed), feedback, timings)
+
+
+def gradebook_row(student_id: str, results: dict, exercise_ids: list[str],
+                  max_total: float) -> dict:
+    """A student's row: points per exercise (0 when not submitted), total, percent and
+    status (absent: nothing submitted; incomplete: some exercises missing)."""
+    row = {"student_id": student_id}
+    for exercise_id in exercise_ids:
+        row[exercise_id] = results[exercise_id]["score"] if results[exercise_id] else 0.0
+    submitted = [e for e in exercise_ids if results[e] is not None]
+    total = round(sum(row[e] for e in exercise_ids), 6)
+    status = ("absent" if not submitted else
+              "graded" if len(submitted) == len(exercise_ids) else "incomplete")
+    row.update(total=total, max_total=max_total,
+               percent=round(100.0 * total / max_total, 2) if max_total else 0.0,
+               status=status)
+    return row
 
 
 def _run(work, manifest_parts, exercises, jobs, progress) -> list[dict]:
