@@ -7,9 +7,9 @@ per part (``{2:NUMERICAL:=4.43:0.0443}``; a vector has one field per component, 
 choice part a drop-down; :data:`MOODLE_KINDS` holds each kind's form). Moodle's
 numerical answers take an absolute tolerance: it comes from the grader's own tolerance
 functions, so Moodle accepts what ``dynagrade grade`` accepts (``max(atol, rtol*|answer|)``
-with the grader's absolute floor; a vector's zero component judged against its length). Symbolic parts cannot be
-checked by Moodle and are listed as not part of the quiz. ``penalty`` is set to 0
-(no deduction per retry) on every question.
+with the grader's absolute floor; a vector's zero component judged against its length).
+Symbolic parts cannot be checked by Moodle and are listed as not part of the quiz.
+``penalty`` is set to 0 (no deduction per retry) on every question.
 
 The XML is written by :mod:`xml.etree.ElementTree`, which escapes all text; the math of
 the statements stays TeX between ``\\(`` and ``\\)`` for Moodle's MathJax filter.
