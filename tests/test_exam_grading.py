@@ -95,11 +95,14 @@ def test_the_class_gets_exactly_the_expected_gradebook(graded, bank):
 def test_bad_submissions_are_reported_and_skipped(graded):
     problems = graded["outcome"].problems
     by_kind = [(p.level, p.student_id, p.message.split(":")[0]) for p in problems]
-    assert ("error", "", "corrupt, skipped") in by_kind
+    # the corrupt file is named by the folder it was found in (c-3, the corrupt kind)
+    assert ("error", "c-3", "corrupt, skipped") in by_kind
     assert ("warning", "c-4", "duplicate") in by_kind
     assert ("error", "x00-000", "skipped") in by_kind
-    assert any(p.level == "error" and p.message.startswith("foreign, skipped: SEED 12345")
-               for p in problems)
+    assert any(p.level == "error" and p.student_id == "c-0"
+               and p.message.startswith("foreign, skipped") for p in problems)
+    # c-1's folder holds c-0's sheet: impersonating, and nobody is credited with it
+    assert ("error", "c-1", "impersonating, skipped") in by_kind
     duplicate = next(p for p in problems if p.message.startswith("duplicate"))
     assert duplicate.source.endswith("2-projectile-range.py")
     assert "1-projectile-range.py" in duplicate.message
