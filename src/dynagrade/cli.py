@@ -186,19 +186,28 @@ def compare(context, source):
               help="With --manifest: the folder for grades.csv, feedback and report.html.")
 @click.option("--jobs", type=click.IntRange(1), default=None,
               help="With --manifest: worker processes (default: up to 2).")
+@click.option("--strict", is_flag=True,
+              help="With --manifest: exit 1 when any submission was skipped (corrupt, "
+                   "foreign, impersonating) or any part could not be graded; the "
+                   "gradebook is written all the same.")
 @click.pass_obj
-def grade_command(context, files, as_json, manifest, output, jobs):
-    """Grade filled-in exercise files (never executing them); with --manifest, a class."""
+def grade_command(context, files, as_json, manifest, output, jobs, strict):
+    """Grade filled-in exercise files (never executing them); with --manifest, a class.
+
+    A class is always graded whole: a bad file or a part that cannot be graded is
+    reported and costs only itself. The exit status is non-zero only when nothing could
+    be graded (a bad manifest, a missing exercise, an unwritable folder) or, with
+    --strict, when something was reported as an error."""
     if manifest is None:
-        if output is not None or jobs is not None:
-            raise click.UsageError("-o/--output and --jobs need --manifest")
+        if output is not None or jobs is not None or strict:
+            raise click.UsageError("-o/--output, --jobs and --strict need --manifest")
         for file in files:
             if Path(file).is_dir():
                 raise click.BadParameter(f"File {file!r} is a directory.",
                                          param_hint="'FILES...'")
         _grade_files(context, files, as_json)
         return
-    _grade_class(context, manifest, files, output, jobs, as_json)
+    _grade_class(context, manifest, files, output, jobs, as_json, strict)
 
 
 @main.command()
@@ -214,6 +223,7 @@ def grade_command(context, files, as_json, manifest, output, jobs):
 def exam(context, exam_file, roster, output, jobs, no_pdf):
     """Generate an exam: every student's variants, sheets, keys, Moodle XML, manifest."""
     from .exam.generate import generate_exam
+    from .exam.outputs import OutputFolderError
     from .exam.spec import ExamSpecError
     from .exam.variants import NoUsableVariant
     from .render.terminal import progress_reporter
@@ -222,7 +232,8 @@ def exam(context, exam_file, roster, output, jobs, no_pdf):
         with progress_reporter() as progress:
             report = generate_exam(exam_file, roster, output, bank=context.bank, jobs=jobs,
                                    pdf=not no_pdf, progress=progress)
-    except (ExamSpecError, NoUsableVariant, loader.ExerciseFileError) as error:
+    except (ExamSpecError, NoUsableVariant, loader.ExerciseFileError,
+            OutputFolderError) as error:
         raise click.ClickException(str(error)) from None
     click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
                f"({report.redraws} draws replaced because they could not discriminate; see "
@@ -282,26 +293,32 @@ def _grade_files(context, files, as_json):
         result_table(exercise, result)
 
 
-def _grade_class(context, manifest, files, output, jobs, as_json):
+def _grade_class(context, manifest, files, output, jobs, as_json, strict):
     from .exam.classgrade import ManifestError, grade_class
+    from .exam.outputs import OutputFolderError
     from .render.terminal import progress_reporter
 
     try:
         with progress_reporter() as progress:
             outcome = grade_class(manifest, files, output, bank=context.bank, jobs=jobs,
                                   progress=progress)
-    except (ManifestError, loader.ExerciseFileError) as error:
+    except (ManifestError, loader.ExerciseFileError, OutputFolderError) as error:
         raise click.ClickException(str(error)) from None
     for problem in outcome.problems:
         click.echo(f"{problem.level}: {problem.source}: {problem.message}", err=True)
     if as_json:
         click.echo(json.dumps(outcome.summary(), indent=2, ensure_ascii=False))
-        return
-    from .render.terminal import gradebook_table
+    else:
+        from .render.terminal import gradebook_table
 
-    gradebook_table(outcome)
+        gradebook_table(outcome)
     if output:
-        click.echo(f"wrote {output}: grades.csv, feedback/, report.html", err=True)
+        click.echo(f"wrote {output}: grades.csv, problems.csv, feedback/, report.html",
+                   err=True)
+    errors = sum(p.level == "error" for p in outcome.problems)
+    if strict and errors:
+        click.echo(f"--strict: {errors} problem(s) reported as errors", err=True)
+        sys.exit(1)
 
 
 # -- helpers -----------------------------------------------------------------------------

@@ -15,8 +15,10 @@ Output folder::
 This module is the driver: it loads the exam into a run (:mod:`.run`), has each
 student's work done in a pool of processes (:mod:`.student`, :mod:`.workers`), then
 writes the keys, the Moodle export, the printing PDF and the manifest. Results are put
-together in roster order, so the files do not depend on the pool. Every file is written
-atomically and the manifest last: a folder with a manifest holds a whole exam.
+together in roster order, so the files do not depend on the pool. Everything is built in
+a staging folder beside the output folder and swapped in when complete
+(:mod:`.outputs`): the output folder holds exactly one whole exam, the one before it is
+kept as ``OUT.previous``.
 """
 
 from __future__ import annotations
@@ -34,6 +36,7 @@ from ..render.sheets import typst_preamble
 from .files import write_atomic
 from .manifest import (ExamEntry, ExerciseEntry, Generator, Manifest, PartEntry,
                        StudentEntry, dump)
+from .outputs import staging_folder, swap_in
 from .run import GenerationRun, file_sha256
 from .spec import ExamSpec, ExamSpecError, Student, read_exam_spec, read_roster
 from .student import StudentResult, student_job
@@ -62,7 +65,8 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
     """Write the whole exam into ``out_dir`` (see the module docstring)."""
     started = time.perf_counter()
     progress = progress or (lambda stage, done, total: None)
-    run, roster = open_run(exam_path, roster_path, Path(out_dir), bank, pdf)
+    target = Path(out_dir)
+    run, roster = open_run(exam_path, roster_path, staging_folder(target), bank, pdf)
     report = GenerationReport(run.out_dir, len(roster), len(roster) * len(run.spec.exercises), 0)
     report.timings["load"] = time.perf_counter() - started
     with Pool(run, default_jobs(jobs)) as pool:
@@ -78,6 +82,7 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
             _write_printing_pdfs(run, pool, manifest, roster, results, progress)
         report.timings["keys, moodle, combined PDFs"] = time.perf_counter() - stage
     dump(manifest, run.out_dir / "manifest.json")
+    report.out_dir = swap_in(run.out_dir, target)
     report.timings["total"] = time.perf_counter() - started
     return report
 
