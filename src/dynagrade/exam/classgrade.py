@@ -211,7 +211,8 @@ def rejected_files(problems: list[Problem]) -> dict[str, dict[str, list[str]]]:
     feedback says so instead of "Not submitted")."""
     rejected: dict[str, dict[str, list[str]]] = {}
     for problem in problems:
-        if problem.level == "error" and problem.student_id and problem.exercise_id:
+        if problem.level == "error" and problem.handed_in_by and problem.student_id \
+                and problem.exercise_id:
             name = Path(problem.source.split(", row ")[0]).name
             rejected.setdefault(problem.student_id, {}).setdefault(
                 problem.exercise_id, []).append(f"{name}: {problem.message}")

@@ -49,6 +49,8 @@ class Problem:
     message: str
     student_id: str = ""
     exercise_id: str = ""
+    handed_in_by: bool = True  # False: student_id is only what the file claims
+
 
     def to_row(self) -> list[str]:
         return [self.level, self.source, self.student_id, self.exercise_id, self.message]
@@ -197,7 +199,7 @@ def _read_sheet(found: Found, exam: _Exam, problems: list[Problem]) -> list[Subm
                                 "the roster, so whose it is cannot be told (put each "
                                 "student's files in a folder named by their id)"
                                 + (f"; it names STUDENT {named!r}" if named else ""),
-                                named, exercise_id))
+                                named, exercise_id, handed_in_by=False))
         return []
     if named and named != whose:
         problems.append(Problem("error", source, f"impersonating, skipped: found in the "
