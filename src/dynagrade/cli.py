@@ -213,7 +213,8 @@ def grade_command(context, files, as_json, manifest, output, jobs, strict):
 @main.command()
 @click.argument("exam_file", type=click.Path(exists=True, dir_okay=False))
 @click.option("--roster", required=True, type=click.Path(exists=True, dir_okay=False),
-              help="CSV with the header student_id,name[,email].")
+              help="CSV with the header student_id,name[,email], or as Excel, Moodle "
+                   "or Canvas save it (see docs/exams.md).")
 @click.option("-o", "--output", required=True, type=click.Path(file_okay=False),
               help="The folder to write the exam into.")
 @click.option("--jobs", type=click.IntRange(1), default=None,
@@ -235,6 +236,8 @@ def exam(context, exam_file, roster, output, jobs, no_pdf):
     except (ExamSpecError, NoUsableVariant, loader.ExerciseFileError,
             OutputFolderError) as error:
         raise click.ClickException(str(error)) from None
+    for warning in report.warnings:
+        click.echo(f"notice: {warning}", err=True)
     click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
                f"({report.redraws} draws replaced because they could not discriminate; see "
                f"manifest.json) in {report.timings['total']:.1f} s", err=True)

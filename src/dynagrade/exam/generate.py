@@ -66,8 +66,10 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
     started = time.perf_counter()
     progress = progress or (lambda stage, done, total: None)
     target = Path(out_dir)
-    run, roster = open_run(exam_path, roster_path, staging_folder(target), bank, pdf)
-    report = GenerationReport(run.out_dir, len(roster), len(roster) * len(run.spec.exercises), 0)
+    notices: list[str] = []
+    run, roster = open_run(exam_path, roster_path, target, bank, pdf, notices)
+    report = GenerationReport(target, len(roster), len(roster) * len(run.spec.exercises), 0,
+                              warnings=notices)
     report.timings["load"] = time.perf_counter() - started
     with Pool(run, default_jobs(jobs)) as pool:
         stage = time.perf_counter()
@@ -90,8 +92,10 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
 # -- the steps ----------------------------------------------------------------------------
 
 
-def load_exam(exam_path, roster_path, bank: Bank | None = None):
-    """The exam spec, the roster and the exercises by id; errors as :class:`ExamSpecError`."""
+def load_exam(exam_path, roster_path, bank: Bank | None = None,
+              notices: list[str] | None = None):
+    """The exam spec, the roster and the exercises by id; errors as :class:`ExamSpecError`;
+    notices (a roster's ignored columns) are appended to ``notices``."""
     bank = bank or open_bank()
 
     def known(exercise_id):
@@ -101,7 +105,7 @@ def load_exam(exam_path, roster_path, bank: Bank | None = None):
             raise KeyError(str(error)) from None
 
     spec = read_exam_spec(exam_path, known)
-    roster = read_roster(roster_path)
+    roster = read_roster(roster_path, notices)
     exercises = {item.id: bank.get(item.id) for item in spec.exercises}
     _check_set_values(spec, exercises)
     return spec, roster, exercises
@@ -119,13 +123,14 @@ def _check_set_values(spec: ExamSpec, exercises: dict[str, Exercise]) -> None:
                                     f"{error}") from None
 
 
-def open_run(exam_path, roster_path, out: Path, bank: Bank | None,
-             pdf: bool) -> tuple[GenerationRun, list[Student]]:
-    """The generation's run (spec, exercises, scaled parts, caches) and the roster."""
-    spec, roster, exercises = load_exam(exam_path, roster_path, bank)
+def open_run(exam_path, roster_path, target: Path, bank: Bank | None, pdf: bool,
+             notices: list[str] | None = None) -> tuple[GenerationRun, list[Student]]:
+    """The generation's run (spec, exercises, scaled parts, caches) and the roster; once
+    the exam reads well, the run writes into a fresh staging folder for ``target``."""
+    spec, roster, exercises = load_exam(exam_path, roster_path, bank, notices)
     parts = {item.id: exercise_parts(exercises[item.id], item.points)
              for item in spec.exercises}
-    return GenerationRun(spec, exercises, parts, out, pdf), roster
+    return GenerationRun(spec, exercises, parts, staging_folder(target), pdf), roster
 
 
 def exercise_parts(exercise: Exercise, points: float) -> tuple[PartEntry, ...]:

@@ -17,8 +17,8 @@
     [exercise.set]                   # optional: fixed values, in the parameter's unit
     R = 5.0
 
-The roster: a UTF-8 CSV (no byte-order mark) with the header ``student_id,name`` or
-``student_id,name,email``, one student per row.
+The roster: a CSV with the header ``student_id,name`` or ``student_id,name,email``, one
+student per row, or as Excel, Moodle and Canvas save it (:mod:`.roster`).
 
 Every error names the file, and the line and field (or row and column) at fault.
 """
@@ -26,9 +26,7 @@ Every error names the file, and the line and field (or row and column) at fault.
 from __future__ import annotations
 
 import contextlib
-import csv
 import datetime as dt
-import io
 import math
 import re
 import tomllib
@@ -36,11 +34,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
-_EXAM_ID = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
-_STUDENT_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]*$")
+from . import roster
+from .roster import Student
+
+_EXAM_ID = re.compile(r"[a-z0-9]+(-[a-z0-9]+)*")  # fullmatch: `$` would take "x\n"
 _TOP_KEYS = {"id", "title", "date", "instructions", "exercise"}
 _EXERCISE_KEYS = {"id", "points", "set"}
-ROSTER_HEADERS = (("student_id", "name"), ("student_id", "name", "email"))
 
 
 class ExamSpecError(ValueError):
@@ -75,18 +74,6 @@ class ExamSpec:
     def to_json(self) -> dict:
         return {"id": self.id, "title": self.title, "date": self.date,
                 "instructions": self.instructions}
-
-
-@dataclass(frozen=True)
-class Student:
-    """A row of the roster."""
-
-    student_id: str
-    name: str
-    email: str = ""
-
-    def to_json(self) -> dict:
-        return {"student_id": self.student_id, "name": self.name, "email": self.email}
 
 
 # -- exam.toml ----------------------------------------------------------------------------
@@ -126,7 +113,7 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
     if not isinstance(exam_id, str) or not exam_id:
         raise ExamSpecError(f"{where}: the top-level key 'id' (a kebab-case string) is "
                             "missing")
-    if not _EXAM_ID.match(exam_id):
+    if not _EXAM_ID.fullmatch(exam_id):
         raise ExamSpecError(f"{where}, line {_key_line(text, 'id')}, field 'id': {exam_id!r} "
                             "is not kebab-case (a-z, 0-9 and '-')")
     title = _string(data, "title", where, text, required=True)
@@ -233,60 +220,13 @@ def _key_line(text: str, key: str) -> str:
 # -- roster.csv ---------------------------------------------------------------------------
 
 
-def read_roster(path: str | Path) -> tuple[Student, ...]:
-    """The students of the roster at ``path``, in file order."""
-    path = Path(path)
-    try:
-        raw = path.read_bytes()
-    except OSError as error:
-        raise ExamSpecError(f"{path}: cannot read the roster ({error.strerror})") from None
-    return parse_roster(raw, str(path))
+def read_roster(path: str | Path, notices: list[str] | None = None) -> tuple[Student, ...]:
+    """The students of the roster at ``path`` (:mod:`.roster` says what is accepted);
+    notices about ignored columns are appended to ``notices``."""
+    return roster.read_roster(path, notices, ExamSpecError)
 
 
-def parse_roster(raw: bytes, where: str = "<roster>") -> tuple[Student, ...]:
+def parse_roster(raw: bytes, where: str = "<roster>",
+                 notices: list[str] | None = None) -> tuple[Student, ...]:
     """The students of a roster given as bytes; ``where`` names it in errors."""
-    if raw.startswith(b"\xef\xbb\xbf"):
-        raise ExamSpecError(f"{where}, row 1: the file starts with a byte-order mark (as "
-                            "Excel's 'CSV UTF-8' writes); save it as plain UTF-8 CSV")
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as error:
-        line = raw[:error.start].count(b"\n") + 1
-        raise ExamSpecError(f"{where}, row {line}: not UTF-8 text") from None
-    rows = list(csv.reader(io.StringIO(text, newline="")))
-    if not rows or not any(cell.strip() for cell in rows[0]):
-        raise ExamSpecError(f"{where}: the roster is empty; it needs the header "
-                            "student_id,name[,email] and one row per student")
-    header = tuple(cell.strip() for cell in rows[0])
-    if header not in ROSTER_HEADERS:
-        wrong = next((i for i, (got, want) in enumerate(zip(header, ROSTER_HEADERS[1]))
-                      if got != want), min(len(header), 3))
-        raise ExamSpecError(f"{where}, row 1, column {wrong + 1}: the header is "
-                            f"{','.join(header)!r}; it must be 'student_id,name' or "
-                            "'student_id,name,email'")
-    students: list[Student] = []
-    seen: dict[str, int] = {}
-    for number, row in enumerate(rows[1:], 2):
-        if not any(cell.strip() for cell in row):
-            continue
-        if len(row) != len(header):
-            raise ExamSpecError(f"{where}, row {number}: {len(row)} columns, the header has "
-                                f"{len(header)}")
-        cells = dict(zip(header, (cell.strip() for cell in row)))
-        student_id = cells["student_id"]
-        if not student_id:
-            raise ExamSpecError(f"{where}, row {number}, column 1 (student_id): missing")
-        if not _STUDENT_ID.match(student_id):
-            raise ExamSpecError(f"{where}, row {number}, column 1 (student_id): "
-                                f"{student_id!r} may hold only letters, digits, '.', '_' "
-                                "and '-' (it names the student's files)")
-        if student_id in seen:
-            raise ExamSpecError(f"{where}, row {number}, column 1 (student_id): "
-                                f"{student_id!r} is already on row {seen[student_id]}")
-        seen[student_id] = number
-        if not cells["name"]:
-            raise ExamSpecError(f"{where}, row {number}, column 2 (name): missing")
-        students.append(Student(student_id, cells["name"], cells.get("email", "")))
-    if not students:
-        raise ExamSpecError(f"{where}: the roster is empty (a header and no students)")
-    return tuple(students)
+    return roster.parse_roster(raw, where, notices, ExamSpecError)
