@@ -156,3 +156,51 @@ def test_an_exam_id_with_a_trailing_newline_is_refused(tmp_path, bank):
     path = write(tmp_path, GOOD.replace('id = "midterm"', 'id = "midterm\\n"'))
     with pytest.raises(ExamSpecError, match="line 1, field 'id'"):
         read_exam_spec(path, bank.get)
+
+
+# -- specs that cannot produce a sound exam (issue 11, item 9) -----------------------------
+
+
+@pytest.mark.parametrize("change, message", [
+    (("points = 6", "points = 1e308"), r"line 6, \[\[exercise\]\] #1 \(projectile-range\), "
+                                       r"field 'points': 1e\+308; give a positive number"),
+    (("points = 6", "points = nan"), "field 'points': nan"),
+    (("points = 6", "points = 6\n[exercise.set]\ng = 0"),
+     r"field 'set.g': 0 is outside the parameter's physical domain \(g > 0\)"),
+    (("points = 6", "points = 6\n[exercise.set]\ng = -9.81"),
+     r"field 'set.g': -9.81 is outside the parameter's physical domain \(g > 0\)"),
+    (("R = 5.0", "R = 5.0\nm = -2"), r"field 'set.m': -2 is outside .* \(m > 0\)"),
+])
+def test_values_that_cannot_give_a_sound_exam_are_refused_with_line_and_field(
+        tmp_path, bank, change, message):
+    path = write(tmp_path, GOOD.replace(*change))
+    with pytest.raises(ExamSpecError, match=message):
+        read_exam_spec(path, bank.get)
+
+
+def test_values_that_make_the_reference_answer_unsolvable_are_refused(tmp_path, bank):
+    exam = write(tmp_path, GOOD.replace("R = 5.0", "R = 0.0"))
+    roster = write(tmp_path, ROSTER, "roster.csv")
+    with pytest.raises(ExamSpecError, match=r"line 10, \[\[exercise\]\] car-in-a-looping, "
+                                            r"field 'set': the exercise cannot be solved"):
+        load_exam(exam, roster, bank)
+
+
+def test_the_exam_command_reports_a_negative_g_and_a_long_roster_id_without_traceback(
+        tmp_path):
+    from click.testing import CliRunner
+
+    from dynagrade.cli import main
+
+    exam = write(tmp_path, GOOD.replace("points = 6", "points = 6\n[exercise.set]\ng = -9.81"))
+    roster = write(tmp_path, ROSTER, "roster.csv")
+    result = CliRunner().invoke(main, ["exam", str(exam), "--roster", str(roster), "-o",
+                                       str(tmp_path / "out"), "--no-pdf"])
+    assert result.exit_code == 1 and "g > 0" in result.output
+    long_id = write(tmp_path, "student_id,name\n" + "x" * 300 + ",A\n", "long.csv")
+    result = CliRunner().invoke(main, ["exam", str(write(tmp_path, GOOD, "ok.toml")),
+                                       "--roster", str(long_id), "-o", str(tmp_path / "out")])
+    assert result.exit_code == 1 and "row 2, column 1 (student_id): 300 characters" \
+        in result.output
+    assert "Traceback" not in result.output and not (tmp_path / "out").exists()
+    assert not list(tmp_path.glob(".out*"))

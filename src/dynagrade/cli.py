@@ -91,7 +91,7 @@ def list_command(context, as_json):
 def show(context, exercise_id, seed, student, settings, answers, as_json):
     """Show an exercise's variant: its statement, and on request its answers."""
     exercise = context.exercise(exercise_id)
-    variant = _variant(exercise, seed, student, settings)
+    variant = _variant(exercise, seed, student, settings, force=None)
     if as_json:
         data = variant.to_json()
         if not answers:
@@ -109,14 +109,24 @@ def show(context, exercise_id, seed, student, settings, answers, as_json):
               help="Seed for the parameters not set.")
 @click.option("--set", "settings", multiple=True, metavar="NAME=VALUE",
               help="Fix a parameter, in its unit or with one.")
-@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@click.option("--json", "as_json", is_flag=True, help="Print JSON (each answer with its unit).")
+@click.option("--force", is_flag=True,
+              help="Compute even with values outside a parameter's physical domain "
+                   "(g > 0, 0 <= e <= 1, masses > 0, ...) or non-finite answers.")
 @click.pass_obj
-def solve(context, exercise_id, seed, settings, as_json):
+def solve(context, exercise_id, seed, settings, as_json, force):
     """Solve an exercise for given parameters; the others are drawn from --seed."""
+    from .exam.generate import non_finite_answers
+
     exercise = context.exercise(exercise_id)
-    variant = _variant(exercise, seed, None, settings)
+    variant = _variant(exercise, seed, None, settings, force)
+    broken = non_finite_answers(variant.answers)
+    if broken and not force:
+        raise click.ClickException(f"{exercise.id}: the values set make the answer of "
+                                   f"{', '.join(broken)} non-finite (--force shows them)")
     data = variant.to_json()
-    result = {"params": data["params"], "answers": data["answers"]}
+    result = {"params": data["params"], "answers": data["answers"],
+              "units": {part.name: part.unit for part in exercise.parts}}
     if as_json:
         click.echo(json.dumps(result, indent=2, ensure_ascii=False))
         return
@@ -334,7 +344,8 @@ def _load_all(context):
         raise click.ClickException(str(error)) from None
 
 
-def _variant(exercise, seed, student, settings):
+def _variant(exercise, seed, student, settings, force=False):
+    from .exam.spec import domain_problem
     from .exercise.model import ConstraintError
     from .exercise.seeds import student_seed
 
@@ -343,10 +354,19 @@ def _variant(exercise, seed, student, settings):
     if student is not None:
         seed = student_seed(exercise.id, student)
     overrides = _parse_settings(exercise, settings)
+    for name, value in overrides.items():
+        outside = domain_problem(exercise.parameter(name), value)
+        if outside and not force:
+            raise click.BadParameter(f"{name}: {outside}"
+                                     + (" (--force computes anyway)" if force is not None
+                                        else ""), param_hint="--set")
     try:
         variant = exercise.variant(seed or 0, overrides, strict=not overrides)
     except ConstraintError as error:
         raise click.ClickException(str(error)) from None
+    except (ArithmeticError, ValueError) as error:
+        raise click.ClickException(f"{exercise.id}: cannot be solved with these values "
+                                   f"({type(error).__name__}: {error})") from None
     for warning in variant.warnings:
         click.echo(f"warning: the values set break the constraint '{warning}'", err=True)
     return variant

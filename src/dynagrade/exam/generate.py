@@ -112,15 +112,36 @@ def load_exam(exam_path, roster_path, bank: Bank | None = None,
 
 
 def _check_set_values(spec: ExamSpec, exercises: dict[str, Exercise]) -> None:
-    """The values an exam sets (``[exercise.set]``) must leave the constraints satisfiable."""
+    """The values an exam sets (``[exercise.set]``) must leave the constraints satisfiable
+    and give finite reference answers."""
     for item in spec.exercises:
         if item.set:
+            at = f"{spec.path}, line {item.line}, [[exercise]] {item.id}, field 'set'"
             try:
                 exercises[item.id].draw(0, item.set)
+                variant = exercises[item.id].variant(0, item.set)
             except ConstraintError as error:
-                raise ExamSpecError(f"{spec.path}, line {item.line}, [[exercise]] {item.id}, "
-                                    f"field 'set': the values set break a constraint: "
+                raise ExamSpecError(f"{at}: the values set break a constraint: "
                                     f"{error}") from None
+            except (ArithmeticError, ValueError) as error:
+                raise ExamSpecError(f"{at}: the exercise cannot be solved with the values "
+                                    f"set ({type(error).__name__}: {error})") from None
+            broken = non_finite_answers(variant.answers)
+            if broken:
+                raise ExamSpecError(f"{at}: the values set make the reference answer of "
+                                    f"{', '.join(broken)} non-finite")
+
+
+def non_finite_answers(answers) -> list[str]:
+    """The parts whose numeric reference answer (or a component of it) is not finite."""
+    import math
+
+    def finite(value) -> bool:
+        if isinstance(value, (tuple, list)):
+            return all(finite(v) for v in value)
+        return not isinstance(value, float) or math.isfinite(value)
+
+    return [name for name, value in answers.items() if not finite(value)]
 
 
 def open_run(exam_path, roster_path, target: Path, bank: Bank | None, pdf: bool,

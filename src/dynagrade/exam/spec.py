@@ -38,6 +38,7 @@ from . import roster
 from .roster import Student
 
 _EXAM_ID = re.compile(r"[a-z0-9]+(-[a-z0-9]+)*")  # fullmatch: `$` would take "x\n"
+MAX_POINTS = 1000.0  # more for one exercise is a typo, and sums must stay exact
 _TOP_KEYS = {"id", "title", "date", "instructions", "exercise"}
 _EXERCISE_KEYS = {"id", "points", "set"}
 
@@ -154,10 +155,10 @@ def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExe
             raise ExamSpecError(f"{at}, field 'id': {error.args[0]}") from None
     points = table.get("points")
     if isinstance(points, bool) or not isinstance(points, (int, float)) \
-            or not math.isfinite(points) or points <= 0:
+            or not math.isfinite(points) or not 0 < points <= MAX_POINTS:
         raise ExamSpecError(f"{at} ({exercise_id}), field 'points': "
                             f"{'missing' if points is None else repr(points)}; "
-                            "give a positive number")
+                            f"give a positive number up to {MAX_POINTS:g}")
     overrides = table.get("set", {})
     if not isinstance(overrides, dict):
         raise ExamSpecError(f"{at} ({exercise_id}), field 'set': must be a table "
@@ -170,10 +171,13 @@ def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExe
                                 "a number (give it in the parameter's unit)")
         if exercise is not None:
             try:
-                exercise.parameter(name)
+                parameter = exercise.parameter(name)
             except KeyError as error:
                 raise ExamSpecError(f"{at} ({exercise_id}), field 'set.{name}': "
                                     f"{error.args[0]}") from None
+            outside = domain_problem(parameter, float(value))
+            if outside:
+                raise ExamSpecError(f"{at} ({exercise_id}), field 'set.{name}': {outside}")
         values[name] = float(value)
     return ExamExercise(exercise_id, float(points), values, line)
 
@@ -215,6 +219,16 @@ def _key_line(text: str, key: str) -> str:
         if re.match(rf"^\s*{re.escape(key)}\s*=", line):
             return str(n)
     return "?"
+
+
+def domain_problem(parameter, value: float) -> str:
+    """Why ``value`` (in the parameter's unit) cannot be set for ``parameter`` ("" when it
+    can): outside the parameter's physical domain (``g > 0``, ``0 ≤ e ≤ 1``, ...)."""
+    domain = getattr(parameter, "allowed", None)
+    if domain is None or value in domain:
+        return ""
+    return (f"{value:g} is outside the parameter's physical domain "
+            f"({domain.describe(parameter.name)})")
 
 
 # -- roster.csv ---------------------------------------------------------------------------
