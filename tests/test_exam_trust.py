@@ -350,3 +350,20 @@ def test_a_grading_killed_at_any_moment_leaves_one_complete_run(exam, tmp_path, 
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     assert _snapshot(out) == expected
     assert not list(tmp_path.glob(".*partial"))
+
+
+# -- item 10: roster names are text, not markup ----------------------------------------------
+
+
+def test_a_roster_name_with_markup_is_shown_literally_in_sheet_md(tmp_path, bank, exam_toml):
+    from markdown_it import MarkdownIt  # CommonMark, raw HTML allowed: as viewers render
+
+    (tmp_path / "exam.toml").write_text(exam_toml, encoding="utf-8")
+    name = "<script>alert(1)</script> *Bob* [x](javascript:y)"
+    (tmp_path / "roster.csv").write_text(f'student_id,name\nb1,"{name}"\n', encoding="utf-8")
+    generate_exam(tmp_path / "exam.toml", tmp_path / "roster.csv", tmp_path / "out",
+                  bank=bank, jobs=1, pdf=False)
+    sheet = (tmp_path / "out" / "students" / "b1" / "sheet.md").read_text(encoding="utf-8")
+    html = MarkdownIt("commonmark").render(sheet.split("\n\n")[1])
+    assert "<script>" not in html and "<em>" not in html and "href" not in html
+    assert "&lt;script&gt;alert(1)&lt;/script&gt; *Bob* [x](javascript:y)" in html
