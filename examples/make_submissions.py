@@ -15,8 +15,8 @@ It fills in the students' own fill-in files from ``out/students/`` and writes th
   correct one; the later counts;
 - two answer in a CSV of responses (student_id,exercise_id,part,answer), correctly;
 - a sheet from a student who is not on the roster (in a folder of no roster student);
-  in the first student's folder, a sheet whose SEED was changed (a sheet of another
-  exam); in the second student's folder, the first student's sheet answered correctly
+  in the first student's folder, a sheet whose VARIANT token was changed (a sheet of
+  another exam); in the second student's folder, the first student's sheet answered correctly
   (impersonating: credited to nobody);
 - everyone else is absent.
 
@@ -153,7 +153,8 @@ def main(out_dir: str) -> None:
     elsewhere = target / first["student_id"] / "old"
     elsewhere.mkdir(parents=True, exist_ok=True)
     (elsewhere / "other-exam.py").write_text(
-        re.sub(r"^SEED = \d+$", "SEED = 12345", sheet, flags=re.M), encoding="utf-8")
+        re.sub(r"^VARIANT = ['\"][0-9a-z]+['\"]$", 'VARIANT = "' + "0" * 24 + '"', sheet, flags=re.M),
+        encoding="utf-8")
     if len(students) > 1:
         _impersonate(out, target, first, students[1], exercises)
     print(f"wrote sample submissions to {target}")

@@ -230,21 +230,27 @@ def grade_command(context, files, as_json, manifest, output, jobs, strict):
 @click.option("--jobs", type=click.IntRange(1), default=None,
               help="Worker processes (default: up to 2).")
 @click.option("--no-pdf", is_flag=True, help="Skip the PDFs (faster drafts).")
+@click.option("--secret-file", type=click.Path(dir_okay=False),
+              help="Read the exam's secret from this file (created with a new random "
+                   "secret when missing): the same secret gives the same variants and "
+                   "byte-identical files. Default: a new random secret every run.")
 @click.pass_obj
-def exam(context, exam_file, roster, output, jobs, no_pdf):
+def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file):
     """Generate an exam: every student's variants, sheets, keys, Moodle XML, manifest."""
     from .exam.generate import generate_exam
     from .exam.outputs import OutputFolderError
+    from .exam.secret import SecretError, load_secret
     from .exam.spec import ExamSpecError
     from .exam.variants import NoUsableVariant
     from .render.terminal import progress_reporter
 
     try:
+        secret = load_secret(secret_file) if secret_file else None
         with progress_reporter() as progress:
             report = generate_exam(exam_file, roster, output, bank=context.bank, jobs=jobs,
-                                   pdf=not no_pdf, progress=progress)
+                                   pdf=not no_pdf, progress=progress, secret=secret)
     except (ExamSpecError, NoUsableVariant, loader.ExerciseFileError,
-            OutputFolderError) as error:
+            OutputFolderError, SecretError) as error:
         raise click.ClickException(str(error)) from None
     for warning in report.warnings:
         click.echo(f"notice: {warning}", err=True)
@@ -270,9 +276,8 @@ def grade_main(file, as_json, folders):
 
 
 def _grade_files(context, files, as_json):
-    from .exercise.model import ConstraintError
-    from .exercise.scoring import grade_variant
-    from .exercise.seeds import student_seed
+    """Grade practice and homework files; an exam's file (it carries a variant token)
+    gets the key-free self-check only."""
     from .exercise.sheet import SheetError, read_sheet
 
     results = []
@@ -284,26 +289,53 @@ def _grade_files(context, files, as_json):
         exercise = context.exercise(sheet.exercise_id)
         notes = [f"{file}: no part named {name!r} in {exercise.id}; it was ignored"
                  for name in sheet.answers if name not in {p.name for p in exercise.parts}]
-        if sheet.student and sheet.seed != student_seed(exercise.id, sheet.student):
-            notes.append(f"{file}: SEED {sheet.seed} is not the variant of student "
-                         f"{sheet.student!r}; graded the variant of SEED {sheet.seed}")
+        notes += [f"{file}: {note}" for note in sheet.notes]
         for note in notes:
             click.echo(f"warning: {note}", err=True)
-        try:
-            variant = exercise.variant(sheet.seed)
-        except ConstraintError as error:
-            raise click.ClickException(f"{file}: {error}") from None
-        result = grade_variant(exercise, variant, sheet.answers, sheet.problems)
-        results.append((exercise, result))
+        results.append((exercise, _self_check(exercise, sheet) if sheet.is_exam
+                        else _full_verdicts(file, exercise, sheet)))
     if as_json:
-        data = [r.to_json() for _, r in results]
+        data = [r if isinstance(r, dict) else r.to_json() for _, r in results]
         click.echo(json.dumps(data[0] if len(data) == 1 else data, indent=2,
                               ensure_ascii=False))
         return
     from .render.terminal import result_table
 
     for exercise, result in results:
-        result_table(exercise, result)
+        if isinstance(result, dict):
+            _print_self_check(result)
+        else:
+            result_table(exercise, result)
+
+
+def _full_verdicts(file, exercise, sheet):
+    """The verdicts on a practice or homework file (its variant is public)."""
+    from .exercise.model import ConstraintError
+    from .exercise.scoring import grade_variant
+    from .exercise.seeds import student_seed
+
+    if sheet.student and not sheet.exam_id and \
+            sheet.seed != student_seed(exercise.id, sheet.student):
+        click.echo(f"warning: {file}: this is not the practice variant of student "
+                   f"{sheet.student!r}; graded the variant the file names", err=True)
+    try:
+        variant = exercise.variant(sheet.seed)
+    except ConstraintError as error:
+        raise click.ClickException(f"{file}: {error}") from None
+    return grade_variant(exercise, variant, sheet.answers, sheet.problems)
+
+
+def _self_check(exercise, sheet) -> dict:
+    from .exercise.selfcheck import self_check_json
+
+    return self_check_json(exercise, sheet)
+
+
+def _print_self_check(checked: dict) -> None:
+    click.echo(f"{checked['exercise']}: {checked['message']}")
+    for part in checked["parts"]:
+        mark = "readable" if part["readable"] else "NOT READABLE"
+        click.echo(f"  {part['name']}: {mark}: {part['message']}")
 
 
 def _grade_class(context, manifest, files, output, jobs, as_json, strict):

@@ -24,13 +24,14 @@ kept as ``OUT.previous``.
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Callable
 
 from .. import __name__ as _package
 from ..exercise.loader import Bank, ExerciseFileError, open_bank
 from ..exercise.model import ConstraintError, Exercise
+from ..exercise.seeds import new_secret
 from ..render.pdf import embedded_pages_source
 from ..render.sheets import typst_preamble
 from .files import write_atomic
@@ -61,13 +62,16 @@ class GenerationReport:
 
 def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
                   jobs: int | None = None, pdf: bool = True,
-                  progress: Progress | None = None) -> GenerationReport:
-    """Write the whole exam into ``out_dir`` (see the module docstring)."""
+                  progress: Progress | None = None,
+                  secret: str | None = None) -> GenerationReport:
+    """Write the whole exam into ``out_dir`` (see the module docstring); ``secret`` keys
+    the students' variants (a fresh random one when None, :mod:`.secret`)."""
     started = time.perf_counter()
     progress = progress or (lambda stage, done, total: None)
     target = Path(out_dir)
     notices: list[str] = []
-    run, roster = open_run(exam_path, roster_path, target, bank, pdf, notices)
+    run, roster = open_run(exam_path, roster_path, target, bank, pdf, notices,
+                           secret or new_secret())
     report = GenerationReport(target, len(roster), len(roster) * len(run.spec.exercises), 0,
                               warnings=notices)
     report.timings["load"] = time.perf_counter() - started
@@ -145,10 +149,13 @@ def non_finite_answers(answers) -> list[str]:
 
 
 def open_run(exam_path, roster_path, target: Path, bank: Bank | None, pdf: bool,
-             notices: list[str] | None = None) -> tuple[GenerationRun, list[Student]]:
-    """The generation's run (spec, exercises, scaled parts, caches) and the roster; once
-    the exam reads well, the run writes into a fresh staging folder for ``target``."""
+             notices: list[str] | None = None,
+             secret: str = "") -> tuple[GenerationRun, list[Student]]:
+    """The generation's run (spec with its secret, exercises, scaled parts, caches) and
+    the roster; once the exam reads well, the run writes into a fresh staging folder for
+    ``target``."""
     spec, roster, exercises = load_exam(exam_path, roster_path, bank, notices)
+    spec = replace(spec, secret=secret)
     parts = {item.id: exercise_parts(exercises[item.id], item.points)
              for item in spec.exercises}
     return GenerationRun(spec, exercises, parts, staging_folder(target), pdf), roster
@@ -232,7 +239,8 @@ def build_manifest(spec: ExamSpec, exercises: dict[str, Exercise],
                       "/".join(Path(exercises[item.id].path).parts[-2:]),
                       file_sha256(exercises[item.id].path), parts[item.id])
         for item in spec.exercises)
-    exam = ExamEntry(spec.id, spec.title, spec.date, spec.instructions, spec.total_points)
+    exam = ExamEntry(spec.id, spec.title, spec.date, spec.instructions, spec.total_points,
+                     secret=spec.secret or None)
     return Manifest(Generator(_version(), numpy.__version__), exam, described,
                     tuple(students))
 

@@ -15,7 +15,7 @@ Usage::
 Shape (``docs/exams.md`` shows a whole file)::
 
     Manifest        format, version, generator, exam, exercises[], students[]
-    ExamEntry       id, title, date, instructions, [policy], points
+    ExamEntry       id, title, date, instructions, [policy], points, [secret]
     ExerciseEntry   id, title, source, points, set, file, sha256, parts[]
     PartEntry       name, label, kind, unit, points, and the settings its kind
                     stores (``Part.manifest_fields``: rtol/atol, size, options/multiple)
@@ -141,7 +141,9 @@ class ExamEntry:
     """The exam itself: id, title, ISO date, instructions and its total points.
 
     ``policy`` (optional, written only when set) holds how a server delivers the exam,
-    as ``exam.toml`` declared it; this module keeps it as the JSON object it is."""
+    as ``exam.toml`` declared it; this module keeps it as the JSON object it is.
+    ``secret`` (optional: manifests written before exams had secrets lack it) keys the
+    students' seeds and variant tokens (:mod:`dynagrade.exercise.seeds`)."""
 
     id: str
     title: str
@@ -149,6 +151,7 @@ class ExamEntry:
     instructions: str
     points: float
     policy: Mapping[str, Any] | None = None
+    secret: str | None = None
 
 
 @dataclass(frozen=True)
@@ -205,6 +208,8 @@ def _exam_dict(exam: ExamEntry) -> dict:
     if exam.policy is not None:
         entry["policy"] = dict(exam.policy)
     entry["points"] = exam.points
+    if exam.secret is not None:
+        entry["secret"] = exam.secret
     return entry
 
 
@@ -279,7 +284,8 @@ def from_dict(data: Any) -> Manifest:
         generator=Generator(generator.string("dynagrade"), generator.string("numpy")),
         exam=ExamEntry(exam.string("id"), exam.string("title"), exam.string("date"),
                        exam.string("instructions"), exam.number("points"),
-                       exam.mapping("policy", optional=True)),
+                       exam.mapping("policy", optional=True),
+                       exam.string("secret") if "secret" in exam.data else None),
         exercises=tuple(_exercise(item) for item in root.objects("exercises")),
         students=tuple(_student(item) for item in root.objects("students")),
         version=version)

@@ -67,6 +67,7 @@ class ExamSpec:
     instructions: str
     exercises: tuple[ExamExercise, ...]
     path: str = ""
+    secret: str = ""  # set by the generation; never on a sheet (not in to_json)
 
     @property
     def total_points(self) -> float:
@@ -74,7 +75,7 @@ class ExamSpec:
 
     def to_json(self) -> dict:
         return {"id": self.id, "title": self.title, "date": self.date,
-                "instructions": self.instructions}
+                "instructions": self.instructions, "mode": self.policy.mode}
 
 
 # -- exam.toml ----------------------------------------------------------------------------

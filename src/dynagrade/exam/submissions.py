@@ -32,7 +32,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..exercise.datafile import DataFileError, file_kind, read_data_file
-from ..exercise.sheet import MAX_SHEET_BYTES, SheetError, read_sheet
+from ..exercise.seeds import token_matches, variant_token
+from ..exercise.sheet import MAX_SHEET_BYTES, Sheet, SheetError, read_sheet
 from .layouts import owner
 from .manifest import Manifest
 
@@ -76,6 +77,16 @@ class _Exam:
                       for s in manifest.students for v in s.variants}
         self.parts = {e.id: [p.name for p in e.parts] for e in manifest.exercises}
         self.exam_id = manifest.exam.id
+        self.secret = manifest.exam.secret
+
+    def is_variant(self, sheet: Sheet, student_id: str) -> bool:
+        """Whether ``sheet`` is the variant the exam gave ``student_id``: its token
+        authenticates it (exam sheets), or its seed is the student's (others)."""
+        seed = self.seeds[(student_id, sheet.exercise_id)]
+        if sheet.token is not None:
+            return self.secret is not None and token_matches(sheet.token, variant_token(
+                self.secret, self.exam_id, student_id, sheet.exercise_id, seed))
+        return sheet.seed == seed
 
 
 @dataclass(frozen=True)
@@ -210,7 +221,7 @@ def _read_sheet(found: Found, exam: _Exam, problems: list[Problem]) -> list[Subm
         problems.append(Problem("error", source, "foreign, skipped: its exercise is not in "
                                 f"exam {exam.exam_id!r}", whose))
         return []
-    if sheet.seed != exam.seeds[(whose, exercise_id)]:
+    if not exam.is_variant(sheet, whose):
         problems.append(Problem("error", source, f"foreign, skipped: not the variant of "
                                 f"{whose} in exam {exam.exam_id!r}; a sheet of another "
                                 "exam or student?", whose, exercise_id))

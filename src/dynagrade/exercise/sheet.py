@@ -40,6 +40,14 @@ How to answer: replace None by your answer, then run `grade {filename}`.
 """
 
 
+EXAM_CHECK = """then run `grade {filename}`:
+in an exam it checks only that every answer can be read (a number, a unit of the right
+kind, the allowed names in a formula); whether it is right you learn when the staff
+grade."""
+
+_TOKEN = re.compile(r"[0-9a-z]{24}")
+
+
 class SheetError(ValueError):
     """The file is not a dynagrade sheet; the message says why and where."""
 
@@ -54,22 +62,39 @@ class Sheet:
     """
 
     exercise_id: str
-    seed: int
+    seed: int | None  # a practice or homework sheet's seed; None on an exam sheet
     student: str | None
     answers: dict[str, str | None]
     problems: dict[str, str]
     notes: tuple[str, ...] = ()
+    token: str | None = None  # an exam sheet's variant token
+
+    @property
+    def is_exam(self) -> bool:
+        """Whether the file is an exam's (its variant known only to the staff)."""
+        return self.token is not None
 
 
 def write_sheet(exercise: Exercise, variant: Variant, student: str | None,
-                filename: str = "exercise.py", points: Mapping[str, float] | None = None) -> str:
+                filename: str = "exercise.py", points: Mapping[str, float] | None = None,
+                token: str | None = None, exam_id: str | None = None) -> str:
     """The text of a fill-in file for ``variant``; ``points`` gives each part's points as
-    an exam scales them (the printed sheet shows the same), else the part's own."""
+    an exam scales them (the printed sheet shows the same), else the part's own.
+
+    With ``token`` (an exam's variant token) the file carries that token instead of the
+    seed, and its guide says that ``grade`` only checks that the answers can be read;
+    ``exam_id`` names the exam (or homework) the file belongs to."""
     points = points or {}
+    guide = GUIDE.format(filename=filename)
+    if token is not None:
+        guide = guide.replace(f"then run `grade {filename}`.", EXAM_CHECK.format(
+            filename=filename))
     lines = ['"""', f"{exercise.title} ({exercise.source})", ""]
     lines += _docstring_safe(variant.statement).rstrip().splitlines()
-    lines += ["", *GUIDE.format(filename=filename).rstrip().splitlines(), '"""', ""]
-    lines += [f"EXERCISE = {exercise.id!r}", f"SEED = {variant.seed}"]
+    lines += ["", *guide.rstrip().splitlines(), '"""', ""]
+    lines += [f"EXAM = {exam_id!r}"] if exam_id is not None else []
+    lines += [f"EXERCISE = {exercise.id!r}",
+              f"VARIANT = {token!r}" if token is not None else f"SEED = {variant.seed}"]
     lines += [f"STUDENT = {student!r}" if student is not None else "STUDENT = None", ""]
     for part in exercise.parts:
         lines.append(f"# {part.describe(points.get(part.name, part.points))}")
@@ -127,7 +152,7 @@ def parse_sheet(text: str, where: str = "<sheet>") -> Sheet:
     return _sheet(header, answers, problems, tuple(notes), where)
 
 
-_HEADER_NAMES = ("EXERCISE", "SEED", "STUDENT")
+_HEADER_NAMES = ("EXAM", "EXERCISE", "SEED", "VARIANT", "STUDENT")
 _MAX_REPAIRS = 50
 
 
@@ -225,14 +250,21 @@ def _sheet(header: dict, answers: dict, problems: dict, notes: tuple[str, ...],
         raise SheetError(f"{where}: not a dynagrade sheet (no line EXERCISE = \"<id>\"); "
                          "make one with `dynagrade sheet ID --student S -o exercise.py`"
                          + broken)
+    student = header.get("STUDENT")
+    student = student if isinstance(student, str) else None
+    exam_id = header.get("EXAM") if isinstance(header.get("EXAM"), str) else None
+    token = header.get("VARIANT")
+    if "VARIANT" in header:
+        if not isinstance(token, str) or not _TOKEN.fullmatch(token):
+            raise SheetError(f"{where}: the line VARIANT = \"...\" is changed; it must "
+                             "stay as the sheet wrote it" + broken)
+        return Sheet(exercise_id, None, student, answers, problems, notes, token, exam_id)
     # A seed is what `dynagrade sheet` wrote: ASCII digits, no sign (numpy refuses negative
     # seeds, and int() would read other scripts' digits or refuse very long ones).
     if not isinstance(seed, str) or not _SEED.fullmatch(seed):
         raise SheetError(f"{where}: the line SEED = <whole number> is missing or changed"
                          + broken)
-    student = header.get("STUDENT")
-    return Sheet(exercise_id, int(seed), student if isinstance(student, str) else None,
-                 answers, problems, notes)
+    return Sheet(exercise_id, int(seed), student, answers, problems, notes, None, exam_id)
 
 
 _ARITHMETIC = (ast.Add, ast.Sub, ast.Mult, ast.Div, ast.Pow)
