@@ -5,6 +5,7 @@ import textwrap
 import pytest
 
 from dynagrade.exercise import ExerciseFileError, load_file, open_bank
+from dynagrade.errors import UnknownExercise
 from dynagrade.exercise.loader import ENVIRONMENT_VARIABLE
 
 GOOD = textwrap.dedent('''
@@ -67,7 +68,7 @@ def test_a_malformed_exercise_file_names_the_file_line_and_fault(tmp_path, text,
 
 
 def test_an_unknown_id_suggests_close_ones(bank):
-    with pytest.raises(KeyError, match="projectile-range"):
+    with pytest.raises(UnknownExercise, match="projectile-range"):
         bank.get("projectile-rnge")
 
 

@@ -29,6 +29,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..errors import DynagradeError, UnknownExercise
 from ..exercise.loader import Bank, open_bank
 from ..exercise.model import Exercise, Variant
 from ..exercise.numbers import format_number
@@ -41,7 +42,7 @@ from .submissions import Problem, Submission, collect
 GRADE_STATUSES = ("graded", "incomplete", "absent")
 
 
-class ManifestError(ValueError):
+class ManifestError(DynagradeError, ValueError):
     """The manifest cannot be used for grading; the message says why."""
 
 
@@ -84,8 +85,8 @@ def _exercises(manifest: dict, bank: Bank, problems: list[Problem],
     for described in manifest["exercises"]:
         try:
             exercise = bank.get(described["id"])
-        except KeyError as error:
-            raise ManifestError(f"{where}: {error.args[0]} (needed to grade this exam; "
+        except UnknownExercise as error:
+            raise ManifestError(f"{where}: {error} (needed to grade this exam; "
                                 "point --exercises at the folder it came from)") from None
         names = {p.name for p in exercise.parts}
         missing = [p["name"] for p in described["parts"] if p["name"] not in names]

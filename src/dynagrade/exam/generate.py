@@ -31,7 +31,7 @@ from typing import Callable
 
 from .. import __name__ as _package
 from ..exercise.figure import figure_svg
-from ..exercise.loader import Bank, ExerciseFileError, load_file, open_bank
+from ..exercise.loader import Bank, load_file, open_bank
 from ..exercise.model import ConstraintError, Exercise
 from ..exercise.sheet import write_sheet
 from ..exercise.units import pretty_unit
@@ -172,14 +172,7 @@ def file_sha256(path: str | os.PathLike) -> str:
 def load_exam(exam_path, roster_path, bank: Bank | None = None):
     """The exam spec, the roster and the exercises by id; errors as :class:`ExamSpecError`."""
     bank = bank or open_bank()
-
-    def known(exercise_id):
-        try:
-            return bank.get(exercise_id)
-        except ExerciseFileError as error:
-            raise KeyError(str(error)) from None
-
-    spec = read_exam_spec(exam_path, known)
+    spec = read_exam_spec(exam_path, bank.get)
     roster = read_roster(roster_path)
     exercises = {item.id: bank.get(item.id) for item in spec.exercises}
     for item in spec.exercises:

@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Mapping
 
+from ..errors import DynagradeError
 from ..exercise.model import ConstraintError, Exercise, Variant
 from ..exercise.seeds import exam_seed, stable_seed
 from ..exercise.verify import variant_problems
@@ -19,7 +20,7 @@ from ..exercise.verify import variant_problems
 MAX_ATTEMPTS = 25
 
 
-class NoUsableVariant(RuntimeError):
+class NoUsableVariant(DynagradeError, RuntimeError):
     """Every seed tried gave a variant that cannot discriminate."""
 
 

@@ -21,13 +21,14 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable, Iterator
 
+from ..errors import DynagradeError, UnknownExercise
 from .model import Exercise
 
 ENVIRONMENT_VARIABLE = "DYNAGRADE_EXERCISES"
 _DECLARED_ID = re.compile(r"""\bid\s*=\s*["']([a-z0-9-]+)["']""")
 
 
-class ExerciseFileError(Exception):
+class ExerciseFileError(DynagradeError):
     """An exercise file that cannot be loaded; the message names the file and line."""
 
 
@@ -122,7 +123,7 @@ class Bank:
 
         close = difflib.get_close_matches(exercise_id, sorted(self._index()), n=3)
         hint = f"; did you mean {', '.join(close)}?" if close else ""
-        raise KeyError(f"no exercise with id {exercise_id!r}{hint}")
+        raise UnknownExercise(f"no exercise with id {exercise_id!r}{hint}")
 
     def all(self) -> list[Exercise]:
         """Every exercise, sorted by chapter, source and id."""

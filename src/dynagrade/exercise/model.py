@@ -17,6 +17,7 @@ from typing import Any, Callable, Mapping
 
 import numpy as np
 
+from ..errors import DefinitionError, DynagradeError, UnknownParameter, UnknownPart
 from .params import Constraint, Parameter, ParamValues, to_si_values
 from .parts import Part
 from .statement import compile_statement, render_statement
@@ -26,7 +27,7 @@ _SOURCE_CHAPTER = re.compile(r"(\d+)(?:\.\d+)*")
 _MAX_DRAWS = 1000
 
 
-class ConstraintError(ValueError):
+class ConstraintError(DynagradeError, ValueError):
     """No draw of the parameters met the exercise's constraints."""
 
 
@@ -75,15 +76,16 @@ class Exercise:
 
     def __post_init__(self):
         if not _ID.match(self.id):
-            raise ValueError(f"exercise id {self.id!r} is not kebab-case (a-z, 0-9, '-')")
+            raise DefinitionError(f"exercise id {self.id!r} is not kebab-case (a-z, 0-9, '-')")
         _require_unique("parameter", [p.name for p in self.params], self.id)
         _require_unique("part", [p.name for p in self.parts], self.id)
         clash = {p.name for p in self.params} & {p.name for p in self.parts}
         if clash:
-            raise ValueError(f"exercise {self.id!r}: {sorted(clash)} name both a parameter "
-                             "and a part")
+            raise DefinitionError(f"exercise {self.id!r}: {sorted(clash)} name both a "
+                                  "parameter and a part")
         if not self.parts:
-            raise ValueError(f"exercise {self.id!r} has no answer parts")
+            raise DefinitionError(f"exercise {self.id!r} has no answer parts")
+        _require_earlier_references(self.id, self.parts)
         if self.chapter is None:
             match = _SOURCE_CHAPTER.search(self.source)
             object.__setattr__(self, "chapter", int(match.group(1)) if match else 0)
@@ -96,14 +98,15 @@ class Exercise:
         for p in self.params:
             if p.name == name:
                 return p
-        raise KeyError(f"exercise {self.id!r} has no parameter {name!r}; "
-                       f"it has {[p.name for p in self.params]}")
+        raise UnknownParameter(f"exercise {self.id!r} has no parameter {name!r}; "
+                               f"it has {[p.name for p in self.params]}")
 
     def part(self, name: str) -> Part:
         for p in self.parts:
             if p.name == name:
                 return p
-        raise KeyError(f"exercise {self.id!r} has no part {name!r}")
+        raise UnknownPart(f"exercise {self.id!r} has no part {name!r}; "
+                          f"it has {[p.name for p in self.parts]}")
 
     def draw(self, seed: int, overrides: Mapping[str, float] | None = None,
              strict: bool = True) -> tuple[dict[str, float], tuple[str, ...]]:
@@ -192,13 +195,36 @@ def _require_unique(what: str, names: list[str], exercise_id: str) -> None:
     seen = set()
     for name in names:
         if name in seen:
-            raise ValueError(f"exercise {exercise_id!r} declares the {what} {name!r} twice")
+            raise DefinitionError(f"exercise {exercise_id!r} declares the {what} {name!r} "
+                                  "twice")
         seen.add(name)
+
+
+def _require_earlier_references(exercise_id: str, parts: tuple[Part, ...]) -> None:
+    """Every part that another part's ``equals`` or ``uses`` names is declared before it.
+
+    A Symbolic part's ``equals`` is checked against an earlier numeric answer, and a
+    Numeric part's ``uses`` are the earlier answers its follow-through recomputes from:
+    both are read when a variant is verified or a student graded, so a typo must fail
+    here, when the exercise is built, and not there.
+    """
+    for index, part in enumerate(parts):
+        earlier = [p.name for p in parts[:index]]
+        equals = getattr(part, "equals", None)
+        named = [("equals", equals)] if equals is not None else []
+        named += [("uses", name) for name in getattr(part, "uses", ())]
+        for field_name, name in named:
+            if name not in earlier:
+                where = ("comes after it" if name in {p.name for p in parts}
+                         else "does not exist")
+                raise DefinitionError(
+                    f"exercise {exercise_id!r}, part {part.name!r}: {field_name}={name!r} "
+                    f"names a part that {where}; the parts before it are {earlier}")
 
 
 def _require_finite(answer: Any, exercise_id: str, part: str) -> None:
     values = answer if isinstance(answer, tuple) else (answer,)
     for value in values:
         if isinstance(value, float) and not math.isfinite(value):
-            raise ValueError(f"exercise {exercise_id!r}: the reference answer of part "
-                             f"{part!r} is {value}")
+            raise DefinitionError(f"exercise {exercise_id!r}: the reference answer of part "
+                                  f"{part!r} is {value}")

@@ -13,6 +13,7 @@ from typing import Callable, Mapping
 
 import numpy as np
 
+from ..errors import DefinitionError
 from .units import si_factor
 
 
@@ -26,7 +27,7 @@ class Parameter:
 
     def __post_init__(self):
         if not self.name.isidentifier():
-            raise ValueError(f"parameter name {self.name!r} is not an identifier")
+            raise DefinitionError(f"parameter name {self.name!r} is not an identifier")
 
     def draw(self, rng: np.random.Generator) -> float:
         """One value in the parameter's unit."""
@@ -55,9 +56,9 @@ class Uniform(Parameter):
         object.__setattr__(self, "step", None if step is None else float(step))
         super().__init__(name, unit, symbol)
         if not self.low <= self.high:
-            raise ValueError(f"parameter {name!r}: low {low} is above high {high}")
+            raise DefinitionError(f"parameter {name!r}: low {low} is above high {high}")
         if self.step is not None and self.step <= 0:
-            raise ValueError(f"parameter {name!r}: step must be positive, got {step}")
+            raise DefinitionError(f"parameter {name!r}: step must be positive, got {step}")
 
     def draw(self, rng):
         if self.step is None:
@@ -77,7 +78,7 @@ class Choice(Parameter):
         object.__setattr__(self, "values", tuple(float(v) for v in values))
         super().__init__(name, unit, symbol)
         if not self.values:
-            raise ValueError(f"parameter {name!r}: a Choice needs at least one value")
+            raise DefinitionError(f"parameter {name!r}: a Choice needs at least one value")
 
     def draw(self, rng):
         return self.values[int(rng.integers(len(self.values)))]

@@ -18,6 +18,7 @@ from ..grading.spec import (
     Variable,
     VectorSpec,
 )
+from ..errors import DefinitionError
 from .params import ParamValues
 from .units import from_si
 
@@ -60,7 +61,8 @@ class Part:
         try:
             return self.in_part_unit(solved[self.name])
         except KeyError:
-            raise KeyError(f"the solver returned no answer for part {self.name!r}") from None
+            raise DefinitionError(f"the solver returned no answer for part {self.name!r}; "
+                                  f"it returned {sorted(solved)}") from None
 
     def spec(self, params: ParamValues):
         """The grader's specification for this part in the variant with ``params``."""

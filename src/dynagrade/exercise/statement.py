@@ -8,6 +8,7 @@ from typing import Mapping
 import jinja2
 from jinja2 import meta
 
+from ..errors import DefinitionError
 from .numbers import format_number
 from .params import Parameter
 from .units import pretty_unit, with_unit
@@ -40,7 +41,7 @@ def compile_statement(source: str) -> jinja2.Template:
     try:
         return _environment().from_string(source)
     except jinja2.TemplateSyntaxError as error:
-        raise ValueError(f"statement template, line {error.lineno}: {error.message}") from None
+        raise DefinitionError(f"statement template, line {error.lineno}: {error.message}") from None
 
 
 def referenced_names(source: str) -> set[str]:
@@ -55,4 +56,4 @@ def render_statement(source: str, params: tuple[Parameter, ...],
     try:
         return compile_statement(source).render(**shown).strip() + "\n"
     except jinja2.UndefinedError as error:
-        raise ValueError(f"statement template: {error.message}") from None
+        raise DefinitionError(f"statement template: {error.message}") from None

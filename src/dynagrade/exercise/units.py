@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from ..errors import UnitError
 from ..grading import units as _dimensions
 from ..grading.quantity import unit_info
 
@@ -58,10 +59,10 @@ def with_unit(number: str, unit: str | None) -> str:
 
 
 def convert(value: float, from_unit: str | None, to_unit: str | None) -> float:
-    """``value`` in ``from_unit`` expressed in ``to_unit``; ``ValueError`` when the
-    dimensions differ (the angle counts as a dimension of its own)."""
+    """``value`` in ``from_unit`` expressed in ``to_unit``; ``UnitError`` (a ``ValueError``)
+    when the dimensions differ (the angle counts as a dimension of its own)."""
     (source, source_dim), (target, target_dim) = unit_info(from_unit), unit_info(to_unit)
     if not _dimensions.same(source_dim, target_dim):
-        raise ValueError(f"cannot convert {from_unit or 'a bare number'} "
+        raise UnitError(f"cannot convert {from_unit or 'a bare number'} "
                          f"to {to_unit or 'a bare number'}")
     return value * source / target

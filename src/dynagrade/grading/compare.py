@@ -22,6 +22,7 @@ import json
 import math
 from typing import Iterable, Iterator
 
+from ..errors import DynagradeError
 from .dispatch import grade
 from .errors import AnswerError, SpecError
 from .spec import ChoiceSpec, KnownWrong, NumericSpec, SymbolicSpec, Variable, VectorSpec
@@ -29,7 +30,7 @@ from .spec import ChoiceSpec, KnownWrong, NumericSpec, SymbolicSpec, Variable, V
 KINDS = ("numeric", "symbolic", "vector", "choice")
 
 
-class RecordError(ValueError):
+class RecordError(DynagradeError, ValueError):
     """A record that does not follow the contract."""
 
 
