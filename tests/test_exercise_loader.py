@@ -75,3 +75,28 @@ def test_an_unknown_id_suggests_close_ones(bank):
 def test_a_missing_folder_is_an_error(tmp_path):
     with pytest.raises(ExerciseFileError, match="does not exist"):
         open_bank([tmp_path / "nope"])
+
+
+def test_an_edited_file_is_loaded_anew_in_the_same_process(tmp_path):
+    # An exercise's identity is its file's content: a corrected exercise must not keep
+    # the definition (and so the verdicts) of the text it replaced. "Old" and "New" have
+    # the same length, so the file's size does not change with the edit either.
+    path = _write(tmp_path, "e.py", GOOD.format(id="edited", title="Old"))
+    first = load_file(path)
+    assert first.title == "Old"
+    assert load_file(path) is first  # unchanged text: the cached module
+    path.write_text(GOOD.format(id="edited", title="New"))
+    second = load_file(path)
+    assert second.title == "New"
+    assert open_bank([tmp_path]).get("edited").title == "New"
+
+
+def test_the_fingerprint_is_the_sha256_of_the_file(tmp_path):
+    import hashlib
+
+    path = _write(tmp_path, "e.py", GOOD.format(id="printed", title="Print"))
+    assert load_file(path).fingerprint == hashlib.sha256(path.read_bytes()).hexdigest()
+    (tmp_path / "copy").mkdir()
+    twin = _write(tmp_path / "copy", "e.py", GOOD.format(id="printed", title="Print"))
+    assert load_file(twin).fingerprint == load_file(path).fingerprint
+    assert load_file(twin).path == str(twin.resolve())

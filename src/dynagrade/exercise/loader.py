@@ -12,6 +12,7 @@ Exercise files are the authors' code and are imported; students' files never are
 from __future__ import annotations
 
 import hashlib
+import importlib.abc
 import importlib.util
 import os
 import re
@@ -60,17 +61,29 @@ def exercise_files(folder: Path) -> Iterator[Path]:
 
 
 def load_file(path: str | os.PathLike) -> Exercise:
-    """The ``EXERCISE`` defined by the file at ``path``."""
+    """The ``EXERCISE`` defined by the file at ``path``, as the file reads now.
+
+    An exercise's identity is its file's content: the module is cached under a name made
+    of the path and the SHA-256 of the bytes, so loading an unchanged file again costs a
+    read and a hash, and loading it after an edit runs the new text (the module of the
+    old text is dropped). The hash is the loaded exercise's ``fingerprint``.
+    """
     path = Path(path).resolve()
-    module_name = "dynagrade_exercise_" + hashlib.sha1(str(path).encode()).hexdigest()[:12]
-    if module_name in sys.modules:
-        return sys.modules[module_name].EXERCISE
-    spec = importlib.util.spec_from_file_location(module_name, path)
-    if spec is None or spec.loader is None:
-        raise ExerciseFileError(f"{path}: not a Python file")
+    try:
+        source = path.read_bytes()
+    except OSError as error:
+        raise ExerciseFileError(f"{path}: cannot read the file ({error.strerror})") from None
+    fingerprint = hashlib.sha256(source).hexdigest()
+    place = hashlib.sha1(str(path).encode()).hexdigest()[:12]
+    module_name = f"dynagrade_exercise_{place}_{fingerprint[:16]}"
+    cached = sys.modules.get(module_name)
+    if cached is not None:
+        return cached.EXERCISE
+    loader = _SourceLoader(path, source)
+    spec = importlib.util.spec_from_loader(module_name, loader, origin=str(path))
     module = importlib.util.module_from_spec(spec)
     try:
-        spec.loader.exec_module(module)
+        loader.exec_module(module)
     except SyntaxError as error:
         raise ExerciseFileError(f"{path}, line {error.lineno}: {error.msg}") from None
     except Exception as error:
@@ -80,8 +93,25 @@ def load_file(path: str | os.PathLike) -> Exercise:
     if not isinstance(exercise, Exercise):
         raise ExerciseFileError(f"{path}: defines no EXERCISE = Exercise(...)")
     object.__setattr__(exercise, "path", str(path))
+    object.__setattr__(exercise, "fingerprint", fingerprint)
+    for stale in [name for name in sys.modules if name.startswith(f"dynagrade_exercise_{place}_")]:
+        del sys.modules[stale]
     sys.modules[module_name] = module
     return exercise
+
+
+class _SourceLoader(importlib.abc.SourceLoader):
+    """Runs the bytes that were hashed, never a cached ``.pyc`` of the path: an edit
+    within the same second and of the same size would otherwise load the old code."""
+
+    def __init__(self, path: Path, source: bytes):
+        self.path, self.source = path, source
+
+    def get_filename(self, fullname: str) -> str:
+        return str(self.path)
+
+    def get_data(self, path: str) -> bytes:
+        return self.source
 
 
 @dataclass

@@ -59,6 +59,9 @@ class Exercise:
 
     ``solve(p)`` receives the parameters in SI (``p.alpha`` in radians) and returns the
     reference answer of every non-symbolic part, in SI, by calling the mechanics core.
+
+    The loader sets ``path`` (the file it came from) and ``fingerprint`` (the SHA-256 of
+    that file's bytes): the exercise's identity, the key for anything cached about it.
     """
 
     id: str
@@ -73,6 +76,7 @@ class Exercise:
     chapter: int | None = None
     figure: Callable[[ParamValues], Any] | None = None
     path: str | None = field(default=None, compare=False)
+    fingerprint: str | None = field(default=None, compare=False)
 
     def __post_init__(self):
         if not _ID.match(self.id):
