@@ -82,8 +82,8 @@ def main(ctx, folders):
 @click.option("--json", "as_json", is_flag=True, help="Print a JSON array.")
 @click.pass_obj
 def list_command(context, as_json):
-    """List the exercises in the bank."""
-    exercises = context.bank.all()
+    """List the exercises in the bank (read from their files, which are not run)."""
+    exercises = context.bank.listing()
     if as_json:
         click.echo(json.dumps([e.summary() for e in exercises], indent=2, ensure_ascii=False))
         return

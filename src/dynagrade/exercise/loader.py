@@ -23,6 +23,7 @@ from pathlib import Path
 from typing import Iterable, Iterator
 
 from ..errors import DynagradeError, UnknownExercise
+from .listing import ExerciseListing, read_listing
 from .model import Exercise
 
 ENVIRONMENT_VARIABLE = "DYNAGRADE_EXERCISES"
@@ -156,12 +157,26 @@ class Bank:
         raise UnknownExercise(f"no exercise with id {exercise_id!r}{hint}")
 
     def all(self) -> list[Exercise]:
-        """Every exercise, sorted by chapter, source and id."""
+        """Every exercise, sorted by chapter, source and id (every file is loaded)."""
         exercises = {}
         for path in sorted(set(self._index().values())):
             exercise = load_file(path)
             exercises.setdefault(exercise.id, exercise)
-        return sorted(exercises.values(), key=lambda e: (e.chapter, _source_key(e.source), e.id))
+        return sorted(exercises.values(), key=_listing_order)
+
+    def ids(self) -> list[str]:
+        """The ids the exercise files declare, sorted; no file is loaded."""
+        return sorted(self._index())
+
+    def listing(self) -> list[ExerciseListing]:
+        """What ``dynagrade list`` shows of every exercise, in the order of :meth:`all`,
+        read from the files without running them where they allow it (see
+        :mod:`dynagrade.exercise.listing`)."""
+        listings = {}
+        for path in sorted(set(self._index().values())):
+            listing = read_listing(path) or ExerciseListing.of(load_file(path))
+            listings.setdefault(listing.id, listing)
+        return sorted(listings.values(), key=_listing_order)
 
 
 def open_bank(extra_folders: Iterable[str | os.PathLike] = ()) -> Bank:
@@ -169,9 +184,10 @@ def open_bank(extra_folders: Iterable[str | os.PathLike] = ()) -> Bank:
     return Bank(search_path(extra_folders))
 
 
-def _source_key(source: str) -> tuple:
-    numbers = re.findall(r"\d+", source)
-    return tuple(int(n) for n in numbers)
+def _listing_order(exercise) -> tuple:
+    """Chapter, then the numbers of the source ("Example 1.13" after "Example 1.9"), then id."""
+    numbers = tuple(int(n) for n in re.findall(r"\d+", exercise.source))
+    return exercise.chapter, numbers, exercise.id
 
 
 def _line_in(path: Path, error: BaseException) -> str:

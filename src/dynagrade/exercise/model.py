@@ -18,6 +18,7 @@ from typing import Any, Callable, Mapping
 import numpy as np
 
 from ..errors import DefinitionError, DynagradeError, UnknownParameter, UnknownPart
+from .listing import summary
 from .params import Constraint, Parameter, ParamValues, to_si_values
 from .parts import Part
 from .statement import compile_statement, render_statement
@@ -91,8 +92,7 @@ class Exercise:
             raise DefinitionError(f"exercise {self.id!r} has no answer parts")
         _require_earlier_references(self.id, self.parts)
         if self.chapter is None:
-            match = _SOURCE_CHAPTER.search(self.source)
-            object.__setattr__(self, "chapter", int(match.group(1)) if match else 0)
+            object.__setattr__(self, "chapter", chapter_of(self.source))
         object.__setattr__(self, "topics", tuple(self.topics))
         compile_statement(self.statement)
 
@@ -185,14 +185,13 @@ class Exercise:
 
     def summary(self) -> dict:
         """The exercise's identity and parts, as ``dynagrade list --json`` prints them."""
-        return {
-            "id": self.id, "title": self.title, "source": self.source,
-            "chapter": self.chapter, "topics": list(self.topics),
-            "parts": [{"name": p.name, "kind": p.kind, "unit": p.unit, "points": p.points,
-                       "label": p.label} for p in self.parts],
-            "params": [{"name": p.name, "unit": p.unit, "symbol": p.symbol or p.name}
-                       for p in self.params],
-        }
+        return summary(self)
+
+
+def chapter_of(source: str) -> int:
+    """The chapter of the notes a source names ("Example 4.3" -> 4), 0 when none."""
+    match = _SOURCE_CHAPTER.search(source)
+    return int(match.group(1)) if match else 0
 
 
 def _require_unique(what: str, names: list[str], exercise_id: str) -> None:
