@@ -15,8 +15,6 @@ import re
 from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
-import numpy as np
-
 from ..errors import DefinitionError, DynagradeError, UnknownParameter, UnknownPart
 from .listing import summary
 from .params import Constraint, Parameter, ParamValues, to_si_values
@@ -120,6 +118,8 @@ class Exercise:
         hold. With ``strict=False`` a draw whose overridden values break a constraint is
         returned with the broken constraints' descriptions instead of raising.
         """
+        import numpy as np  # here, not at import: listing the bank builds no draw
+
         overrides = dict(overrides or {})
         for name in overrides:
             self.parameter(name)
