@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
+from ..errors import DynagradeError
 from . import parts as _parts
 from .params import Parameter
 from .parts import Part
@@ -67,7 +68,7 @@ def summary(exercise) -> dict:
     }
 
 
-class _NotLiteral(Exception):
+class _NotLiteral(DynagradeError):
     """A value the file computes: the listing cannot be read without running the file."""
 
 
