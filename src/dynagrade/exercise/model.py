@@ -12,12 +12,12 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Mapping
 
 from ..errors import DefinitionError, DynagradeError, UnknownParameter, UnknownPart
 from .listing import summary
-from .params import Constraint, Parameter, ParamValues, to_si_values
+from .params import Constraint, Parameter, ParamValues, symbol_domain, to_si_values
 from .parts import Part
 from .statement import compile_statement, render_statement
 
@@ -89,6 +89,8 @@ class Exercise:
         if not self.parts:
             raise DefinitionError(f"exercise {self.id!r} has no answer parts")
         _require_earlier_references(self.id, self.parts)
+        object.__setattr__(self, "parts", tuple(
+            _with_parameter_domains(self.id, part, self.params) for part in self.parts))
         if self.chapter is None:
             object.__setattr__(self, "chapter", chapter_of(self.source))
         object.__setattr__(self, "topics", tuple(self.topics))
@@ -201,6 +203,33 @@ def _require_unique(what: str, names: list[str], exercise_id: str) -> None:
             raise DefinitionError(f"exercise {exercise_id!r} declares the {what} {name!r} "
                                   "twice")
         seen.add(name)
+
+
+def _with_parameter_domains(exercise_id: str, part: Part,
+                            params: tuple[Parameter, ...]) -> Part:
+    """The part with a domain for each of its symbols that names a parameter without one.
+
+    A symbolic part's ``variables`` may be a sequence of names, or map a name to ``None``:
+    such a symbol must be a parameter, and takes the parameter's unit and widened bounds
+    (:func:`~dynagrade.exercise.params.symbol_domain`). ``Variable(min, max, unit)`` is
+    written only where the domain differs, or for a symbol that is no parameter.
+    """
+    variables = getattr(part, "variables", None)
+    if variables is None:
+        return part
+    named = dict(variables) if isinstance(variables, Mapping) else dict.fromkeys(variables)
+    if isinstance(variables, dict) and None not in named.values():
+        return part
+    by_name = {p.name: p for p in params}
+    missing = [name for name, v in named.items() if v is None and name not in by_name]
+    if missing:
+        raise DefinitionError(
+            f"exercise {exercise_id!r}, part {part.name!r}: the symbols {missing} are no "
+            f"parameters, so they need a domain: Variable(min, max, unit); the parameters "
+            f"are {list(by_name)}")
+    return replace(part, variables={
+        name: symbol_domain(by_name[name]) if variable is None else variable
+        for name, variable in named.items()})
 
 
 def _require_earlier_references(exercise_id: str, parts: tuple[Part, ...]) -> None:

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Callable, Mapping
 
 from ..errors import DefinitionError
+from ..grading.spec import Variable
 from .units import si_factor
 
 if TYPE_CHECKING:
@@ -39,6 +40,10 @@ class Parameter:
         """Whether different seeds can give different values."""
         return True
 
+    def bounds(self) -> tuple[float, float]:
+        """The least and the greatest value a draw can give, in the parameter's unit."""
+        raise TypeError(f"{type(self).__name__} has no bounds")
+
 
 @dataclass(frozen=True)
 class Uniform(Parameter):
@@ -60,6 +65,9 @@ class Uniform(Parameter):
             raise DefinitionError(f"parameter {name!r}: low {low} is above high {high}")
         if self.step is not None and self.step <= 0:
             raise DefinitionError(f"parameter {name!r}: step must be positive, got {step}")
+
+    def bounds(self):
+        return self.low, self.high
 
     def draw(self, rng):
         if self.step is None:
@@ -84,6 +92,9 @@ class Choice(Parameter):
     def draw(self, rng):
         return self.values[int(rng.integers(len(self.values)))]
 
+    def bounds(self):
+        return min(self.values), max(self.values)
+
     @property
     def varies(self):
         return len(set(self.values)) > 1
@@ -101,6 +112,9 @@ class Constant(Parameter):
 
     def draw(self, rng):
         return self.value
+
+    def bounds(self):
+        return self.value, self.value
 
     @property
     def varies(self):
@@ -142,6 +156,23 @@ class ParamValues(Mapping[str, float]):
 
     def __repr__(self):
         return f"ParamValues({self._values!r})"
+
+
+def symbol_domain(parameter: Parameter) -> Variable:
+    """The domain over which a symbolic answer is tested in this parameter's symbol: the
+    parameter's unit, and its bounds widened by a quarter of their span on each side (by
+    half the value for a constant), without crossing zero: a formula must hold beyond the
+    values the variants happen to draw, and a quantity that is never negative stays so
+    (so that ``sqrt(h)`` stays defined).
+    """
+    low, high = parameter.bounds()
+    margin = (high - low) / 4 if high > low else abs(low) / 2 or 1.0
+    wide_low, wide_high = low - margin, high + margin
+    if low >= 0:
+        wide_low = max(wide_low, low / 2)
+    if high <= 0:
+        wide_high = min(wide_high, high / 2)
+    return Variable(wide_low, wide_high, parameter.unit)
 
 
 def to_si_values(params: tuple[Parameter, ...], values: Mapping[str, float]) -> ParamValues:
