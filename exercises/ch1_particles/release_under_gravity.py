@@ -4,7 +4,7 @@ later time (Example 1.1)."""
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform, Variable, Vector)
+                                Symbolic, Uniform, Vector)
 from dynagrade.mechanics import kinematics
 
 
@@ -81,8 +81,7 @@ $\\boldsymbol e_2$). Gravity $g$ = {{ g }} acts in $-\\boldsymbol e_2$; neglect 
                 )),
         Symbolic("x2_formula", "height as a formula", points=1,
                  expected="h0 + v02*t - g*t^2/2",
-                 variables={"h0": Variable(0, 50, "m"), "v02": Variable(-20, 20, "m/s"),
-                            "g": Variable(1, 20, "m/s^2"), "t": Variable(0, 5, "s")},
+                 variables=("h0", "v02", "g", "t"),
                  equals="x2_t",
                  misconceptions=(
                      Misconception("no factor 1/2", "h0 + v02*t - g*t^2",

@@ -2,7 +2,7 @@
 eq. 1.108)."""
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform, Variable)
+                                Uniform)
 from dynagrade.mechanics import energy
 
 
@@ -62,8 +62,7 @@ particle straight up; $g$ = {{ g }}, no air drag, the spring is massless.
                                   "subtract m g Δx."),
                 )),
         Symbolic("h_formula", "height as a formula", points=1, expected="k*dx^2/(2*m*g)",
-                 variables={"k": Variable(10, 5000, "N/m"), "dx": Variable(0.01, 0.3, "m"),
-                            "m": Variable(0.01, 2, "kg"), "g": Variable(1, 20, "m/s^2")},
+                 variables=("k", "dx", "m", "g"),
                  equals="h",
                  misconceptions=(
                      Misconception("factor 1/2 forgotten", "k*dx^2/(m*g)",

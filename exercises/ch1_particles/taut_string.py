@@ -3,8 +3,7 @@ angular acceleration: speed and acceleration in polar components (Example 1.5)."
 
 import numpy as np
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
-                                Variable)
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
 from dynagrade.mechanics import kinematics
 
 
@@ -64,7 +63,7 @@ point O in a plane. At the instant considered the string turns at $\\omega = \\d
                                   "Combine both components: |a| = l √(φ̇⁴ + φ̈²)."),
                 )),
         Symbolic("a_r_formula", "a_r as a formula", points=1, expected="-l*omega^2",
-                 variables={"l": Variable(0.1, 5, "m"), "omega": Variable(0.1, 10, "rad/s")},
+                 variables=("l", "omega"),
                  equals="a_r",
                  misconceptions=(
                      Misconception("sign: outward", "l*omega^2",

@@ -62,8 +62,7 @@ def solve(p):
 
 
 _VARS = {"r": Variable(0.2, 3, "m"), "phi": Variable(-3, 3, "rad"), "rdot": Variable(-3, 3, "m/s"),
-         "phidot": Variable(-3, 3, "rad/s"), "m": Variable(0.1, 10, "kg"), "k": Variable(1, 1000, "N/m"),
-         "L0": Variable(0.1, 2, "m"), "g": Variable(1, 20, "m/s^2")}
+         "phidot": Variable(-3, 3, "rad/s"), "m": None, "k": None, "L0": None, "g": None}
 
 EXERCISE = Exercise(
     id="elastic-pendulum-lagrange",

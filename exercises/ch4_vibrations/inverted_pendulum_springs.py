@@ -74,9 +74,8 @@ stay horizontal. Let $\\theta$ be the rod's angle from the vertical; $g$ = {{ g 
     parts=(
         Symbolic("V", "potential energy", points=1,
                  expected="m*g*L/2*cos(theta) + k*a^2*sin(theta)^2",
-                 variables={"theta": Variable(-1.5, 1.5, "rad"), "m": Variable(0.1, 10, "kg"),
-                            "g": Variable(1, 20, "m/s^2"), "L": Variable(0.2, 3, "m"),
-                            "k": Variable(10, 1000, "N/m"), "a": Variable(0.1, 3, "m")},
+                 variables={"theta": Variable(-1.5, 1.5, "rad"), "m": None, "g": None, "L": None,
+                            "k": None, "a": Variable(0.1, 3, "m")},
                  misconceptions=(Misconception("one spring only", "m*g*L/2*cos(theta) + k*a^2*sin(theta)^2/2",
                                                "Both springs are stretched (one compressed) by a sin(theta)."),)),
         Numeric("k_min", "minimum spring stiffness", unit="N/m", points=2,

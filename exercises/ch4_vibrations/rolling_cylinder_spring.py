@@ -3,7 +3,7 @@ system and its natural frequency (Section 4.3.1)."""
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform, Variable
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform
 from dynagrade.mechanics import inertia, vibrations
 
 
@@ -81,8 +81,7 @@ centre; consider small motions.
                                               "f = omega/(2 pi)."),)),
         Symbolic("omega_formula", "omega as a formula", points=1,
                  expected="(r + a)/r*sqrt(2*k/(3*m))",
-                 variables={"k": Variable(10, 1e4, "N/m"), "m": Variable(0.5, 50, "kg"),
-                            "r": Variable(0.01, 1, "m"), "a": Variable(0, 1, "m")},
+                 variables=("k", "m", "r", "a"),
                  equals="omega"),
     ),
 )
