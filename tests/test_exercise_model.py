@@ -184,3 +184,43 @@ def test_a_symbol_without_a_domain_must_be_a_parameter():
     with pytest.raises(DefinitionError, match=r"\['theta'\] are no parameters.*Variable\(min"):
         _exercise(parts=(Numeric("twice", unit="m/s"),
                          Symbolic("s", expected="v*theta", variables=("v", "theta"))))
+
+
+# -- the solver runs once per draw -------------------------------------------------------
+
+from dynagrade.exercise import per_draw  # noqa: E402
+
+
+def test_constraints_and_answers_share_one_solution_per_draw():
+    calls = []
+
+    @per_draw
+    def solve(p):
+        calls.append(p.v)
+        return {"twice": 2 * p.v}
+
+    exercise = _exercise(solve=solve, constraints=(
+        Constraint("positive", lambda p: solve(p)["twice"] > 0),
+        Constraint("below 2 m/s", lambda p: solve(p)["twice"] < 2)))  # v <= 3 km/h: always
+    variant = exercise.variant(seed=3)
+    assert len(calls) == 1  # two constraints and the answers, one solution
+    assert variant.answers["twice"] == pytest.approx(2 * variant.params["v"] / 3.6)
+
+
+def test_each_draw_gets_its_own_solution():
+    calls = []
+
+    @per_draw
+    def solve(p):
+        calls.append(p.v)
+        return {"twice": 2 * p.v}
+
+    draws = []
+    # v > 2 km/h only: draws at 1, 1.5 and 2 km/h are redrawn; none is solved twice
+    exercise = _exercise(solve=solve, constraints=(
+        Constraint("counted", lambda p: draws.append(p.v) is None),
+        Constraint("fast", lambda p: solve(p)["twice"] > 2 * 2 / 3.6 + 1e-9)))
+    variant = exercise.variant(seed=1)
+    assert variant.params["v"] > 2 and len(draws) > 1  # seed 1 draws 2 km/h first
+    assert len(calls) <= len(draws)
+    assert calls[-1] == pytest.approx(variant.params["v"] / 3.6)  # the answers' solution

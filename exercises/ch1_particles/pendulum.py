@@ -4,10 +4,11 @@ small-angle period (Example 1.17, eqs. 1.145-1.149)."""
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform)
+                                Uniform, per_draw)
 from dynagrade.mechanics import angular_momentum as am
 
 
+@per_draw
 def solve(p):
     return {
         "T": am.pendulum_small_angle_period(p.g, p.R),

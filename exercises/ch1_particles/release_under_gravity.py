@@ -3,8 +3,8 @@ later time (Example 1.1)."""
 
 import numpy as np
 
-from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform, Vector)
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, Vector, per_draw)
 from dynagrade.mechanics import kinematics
 
 
@@ -15,11 +15,13 @@ def _state(p):
     return r, v
 
 
+@per_draw
 def solve(p):
     r, v = _state(p)
     return {"r_t": tuple(r), "v_t": tuple(v), "x2_t": float(r[1])}
 
 
+@per_draw
 def _no_half(p):
     return p.h0 + p.v02 * p.t - p.g * p.t**2
 

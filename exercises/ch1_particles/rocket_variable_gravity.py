@@ -1,10 +1,12 @@
 """A body shot straight up against height-dependent gravity g R^2/(R+x)^2 (Example 1.2,
 acceleration known as a function of position, eq. 1.17)."""
 
-from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, per_draw)
 from dynagrade.mechanics import energy, kinematics
 
 
+@per_draw
 def solve(p):
     return {
         "v_x": float(kinematics.rocket_speed_at_height(p.x, p.v0, p.g, p.R)),

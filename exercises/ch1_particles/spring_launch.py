@@ -2,10 +2,11 @@
 eq. 1.108)."""
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform)
+                                Uniform, per_draw)
 from dynagrade.mechanics import energy
 
 
+@per_draw
 def solve(p):
     h = energy.spring_launch_height(p.k, p.dx, p.m, p.g)
     return {"h": h, "V_spring": float(energy.spring_potential_of_stretch(p.k, p.dx)),

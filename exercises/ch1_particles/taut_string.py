@@ -3,10 +3,12 @@ angular acceleration: speed and acceleration in polar components (Example 1.5)."
 
 import numpy as np
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
+                                per_draw)
 from dynagrade.mechanics import kinematics
 
 
+@per_draw
 def solve(p):
     v_r, v_phi = kinematics.polar_velocity(p.l, 0.0, p.omega)
     a_r, a_phi = kinematics.polar_acceleration(p.l, 0.0, 0.0, p.omega, p.alpha)

@@ -5,7 +5,8 @@ from functools import cache
 
 import numpy as np
 
-from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Uniform,
+                                per_draw)
 from dynagrade.mechanics import multi_dof
 
 
@@ -28,6 +29,7 @@ def _linearized():
             sp.lambdify([M, m, L, k, g], equilibrium.linearized_mass_matrix(T, [x, phi], t, rest)))
 
 
+@per_draw
 def matrices(p):
     stiffness, mass = _linearized()
     args = (p.M, p.m, p.L, p.k, p.g)

@@ -6,8 +6,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform, Variable)
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, Variable, per_draw)
 from dynagrade.mechanics import multi_dof
 
 
@@ -44,6 +44,7 @@ def accelerations():
             for a in lagrange.accelerations(model.T, model.V, model.q, model.t)]
 
 
+@per_draw
 def frequencies(p):
     """(omega of the stretching mode, omega of the swinging mode) from the linearization."""
     model = _model()

@@ -76,6 +76,7 @@ class Exercise:
     figure: Callable[[ParamValues], Any] | None = None
     path: str | None = field(default=None, compare=False)
     fingerprint: str | None = field(default=None, compare=False)
+    _draw: list = field(default_factory=list, init=False, repr=False, compare=False)
 
     def __post_init__(self):
         if not _ID.match(self.id):
@@ -147,14 +148,24 @@ class Exercise:
 
     def broken_constraints(self, values: Mapping[str, float]) -> list[str]:
         """Descriptions of the constraints that ``values`` (declared units) break."""
-        si = to_si_values(self.params, values)
+        si = self.si(values)
         return [c.description for c in self.constraints if not c.check(si)]
 
     # -- variants ---------------------------------------------------------------------
 
     def si(self, values: Mapping[str, float]) -> ParamValues:
-        """Parameter values in SI, as the solver and the misconceptions receive them."""
-        return to_si_values(self.params, values)
+        """Parameter values in SI, as the solver and the misconceptions receive them.
+
+        The values of the latest draw give the same :class:`ParamValues` again, so what
+        the constraints computed with :func:`~dynagrade.exercise.params.per_draw` the
+        solver reuses when the draw becomes a variant.
+        """
+        key = tuple(sorted((name, float(values[name])) for name in values))
+        if self._draw and self._draw[0] == key:
+            return self._draw[1]
+        si = to_si_values(self.params, values)
+        self._draw[:] = [key, si]
+        return si
 
     def solve_in_part_units(self, values: Mapping[str, float]) -> dict[str, Any]:
         """Every part's reference answer for ``values``, in the part's unit."""

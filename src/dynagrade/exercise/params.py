@@ -7,6 +7,7 @@ variant is fully determined by its seed.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Callable, Mapping
@@ -134,10 +135,22 @@ class Constraint:
 
 
 class ParamValues(Mapping[str, float]):
-    """Parameter values by name, readable as attributes (``p.v0``) and as a mapping."""
+    """Parameter values by name, readable as attributes (``p.v0``) and as a mapping.
+
+    One instance stands for one draw: functions decorated with :func:`per_draw` keep
+    their result on it, so the constraints, the solver and the misconceptions of a draw
+    share one solution.
+    """
 
     def __init__(self, values: Mapping[str, float]):
         self._values = dict(values)
+        self._results: dict[Callable, object] = {}
+
+    def once(self, function: Callable[["ParamValues"], object]):
+        """``function(self)``, computed on the first call for this draw only."""
+        if function not in self._results:
+            self._results[function] = function(self)
+        return self._results[function]
 
     def __getattr__(self, name):
         try:
@@ -173,6 +186,25 @@ def symbol_domain(parameter: Parameter) -> Variable:
     if high <= 0:
         wide_high = min(wide_high, high / 2)
     return Variable(wide_low, wide_high, parameter.unit)
+
+
+def per_draw(function: Callable[[ParamValues], object]) -> Callable[[ParamValues], object]:
+    """Compute ``function(p)`` once per draw, however many constraints, misconceptions and
+    the solver ask for it. Usage in an exercise file::
+
+        @per_draw
+        def solve(p):
+            ...
+
+        Constraint("the string stays taut", lambda p: solve(p)["S"] > 0)
+
+    The result is shared, so callers must not change it.
+    """
+    @functools.wraps(function)
+    def once_per_draw(p):
+        return p.once(function) if isinstance(p, ParamValues) else function(p)
+
+    return once_per_draw
 
 
 def to_si_values(params: tuple[Parameter, ...], values: Mapping[str, float]) -> ParamValues:
