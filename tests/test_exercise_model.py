@@ -191,7 +191,8 @@ def test_a_symbol_without_a_domain_must_be_a_parameter():
 from dynagrade.exercise import per_draw  # noqa: E402
 
 
-def test_constraints_and_answers_share_one_solution_per_draw():
+def _counted_solver():
+    """A per-draw solver and the list of the speeds (SI) it was called for."""
     calls = []
 
     @per_draw
@@ -199,6 +200,11 @@ def test_constraints_and_answers_share_one_solution_per_draw():
         calls.append(p.v)
         return {"twice": 2 * p.v}
 
+    return solve, calls
+
+
+def test_constraints_and_answers_share_one_solution_per_draw():
+    solve, calls = _counted_solver()
     exercise = _exercise(solve=solve, constraints=(
         Constraint("positive", lambda p: solve(p)["twice"] > 0),
         Constraint("below 2 m/s", lambda p: solve(p)["twice"] < 2)))  # v <= 3 km/h: always
@@ -208,13 +214,7 @@ def test_constraints_and_answers_share_one_solution_per_draw():
 
 
 def test_each_draw_gets_its_own_solution():
-    calls = []
-
-    @per_draw
-    def solve(p):
-        calls.append(p.v)
-        return {"twice": 2 * p.v}
-
+    solve, calls = _counted_solver()
     draws = []
     # v > 2 km/h only: draws at 1, 1.5 and 2 km/h are redrawn; none is solved twice
     exercise = _exercise(solve=solve, constraints=(
