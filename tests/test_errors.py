@@ -38,7 +38,7 @@ def test_every_exception_class_of_the_package_derives_from_the_root():
                 if not issubclass(value, DynagradeError) and qualified not in SIGNALS:
                     outside.append(qualified)
     assert "dynagrade.grading.errors.AnswerError" in found  # the scan sees the grader
-    assert "dynagrade.exam.classgrade.ManifestError" in found  # ... and the exams
+    assert "dynagrade.exam.manifest.ManifestError" in found  # ... and the exams
     assert outside == []
 
 

@@ -177,8 +177,8 @@ def _parameter(call: ast.Call, names) -> Parameter:
 
 def _part(call: ast.Call, names) -> Part:
     cls = getattr(_parts, _callee(call) or "", None)
-    if not (isinstance(cls, type) and issubclass(cls, Part)) or cls is Part:
-        raise _NotLiteral("not a part")
+    if cls not in _parts.PART_KINDS.values():
+        raise _NotLiteral("not a part kind")
     written = _arguments(call, cls, ("name", "label", "points", "unit"))
     return cls(**{k: _literal(v, names) for k, v in written.items()})
 
