@@ -19,7 +19,28 @@ from pathlib import Path
 
 import click
 
+from .errors import DynagradeError
 from .exercise import loader
+
+
+class _ReportsErrors:
+    """The one place where dynagrade's errors become command-line errors: the message
+    of any :class:`DynagradeError` raised by a command is printed as ``Error: ...`` and
+    the command exits with status 1, without a traceback."""
+
+    def invoke(self, ctx):
+        try:
+            return super().invoke(ctx)
+        except DynagradeError as error:
+            raise click.ClickException(str(error)) from None
+
+
+class _Group(_ReportsErrors, click.Group):
+    """A command group whose subcommands report dynagrade's errors as messages."""
+
+
+class _Command(_ReportsErrors, click.Command):
+    """A command that reports dynagrade's errors as messages."""
 
 
 class _Context:
@@ -32,19 +53,11 @@ class _Context:
     @property
     def bank(self):
         if self._bank is None:
-            try:
-                self._bank = loader.open_bank(self.folders)
-            except loader.ExerciseFileError as error:
-                raise click.ClickException(str(error)) from None
+            self._bank = loader.open_bank(self.folders)
         return self._bank
 
     def exercise(self, exercise_id: str):
-        try:
-            return self.bank.get(exercise_id)
-        except KeyError as error:
-            raise click.ClickException(error.args[0]) from None
-        except loader.ExerciseFileError as error:
-            raise click.ClickException(str(error)) from None
+        return self.bank.get(exercise_id)
 
 
 _exercises_option = click.option(
@@ -53,7 +66,7 @@ _exercises_option = click.option(
          f"also ${loader.ENVIRONMENT_VARIABLE}).")
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.group(cls=_Group, context_settings={"help_option_names": ["-h", "--help"]})
 @_exercises_option
 @click.version_option(package_name="dynagrade")
 @click.pass_context
@@ -69,8 +82,8 @@ def main(ctx, folders):
 @click.option("--json", "as_json", is_flag=True, help="Print a JSON array.")
 @click.pass_obj
 def list_command(context, as_json):
-    """List the exercises in the bank."""
-    exercises = _load_all(context)
+    """List the exercises in the bank (read from their files, which are not run)."""
+    exercises = context.bank.listing()
     if as_json:
         click.echo(json.dumps([e.summary() for e in exercises], indent=2, ensure_ascii=False))
         return
@@ -168,7 +181,7 @@ def verify(context, exercise_ids, variants):
     from .render.terminal import verify_progress
 
     exercises = ([context.exercise(i) for i in exercise_ids] if exercise_ids
-                 else _load_all(context))
+                 else context.bank.all())
     reports = verify_progress(exercises, lambda e: verify_exercise(e, range(variants)))
     if any(not r.ok for r in reports):
         sys.exit(1)
@@ -238,20 +251,13 @@ def grade_command(context, files, as_json, manifest, output, jobs, strict):
 def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file):
     """Generate an exam: every student's variants, sheets, keys, Moodle XML, manifest."""
     from .exam.generate import generate_exam
-    from .exam.outputs import OutputFolderError
-    from .exam.secret import SecretError, load_secret
-    from .exam.spec import ExamSpecError
-    from .exam.variants import NoUsableVariant
+    from .exam.secret import load_secret
     from .render.terminal import progress_reporter
 
-    try:
-        secret = load_secret(secret_file) if secret_file else None
-        with progress_reporter() as progress:
-            report = generate_exam(exam_file, roster, output, bank=context.bank, jobs=jobs,
-                                   pdf=not no_pdf, progress=progress, secret=secret)
-    except (ExamSpecError, NoUsableVariant, loader.ExerciseFileError,
-            OutputFolderError, SecretError) as error:
-        raise click.ClickException(str(error)) from None
+    secret = load_secret(secret_file) if secret_file else None
+    with progress_reporter() as progress:
+        report = generate_exam(exam_file, roster, output, bank=context.bank, jobs=jobs,
+                               pdf=not no_pdf, progress=progress, secret=secret)
     for warning in report.warnings:
         click.echo(f"notice: {warning}", err=True)
     click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
@@ -262,7 +268,7 @@ def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file):
 # -- grade exercise.py -------------------------------------------------------------------
 
 
-@click.command(context_settings={"help_option_names": ["-h", "--help"]})
+@click.command(cls=_Command, context_settings={"help_option_names": ["-h", "--help"]})
 @click.argument("file", type=click.Path(exists=True, dir_okay=False))
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 @_exercises_option
@@ -278,14 +284,11 @@ def grade_main(file, as_json, folders):
 def _grade_files(context, files, as_json):
     """Grade practice and homework files; an exam's file (it carries a variant token)
     gets the key-free self-check only."""
-    from .exercise.sheet import SheetError, read_sheet
+    from .exercise.sheet import read_sheet
 
     results = []
     for file in files:
-        try:
-            sheet = read_sheet(file)
-        except SheetError as error:
-            raise click.ClickException(str(error)) from None
+        sheet = read_sheet(file)
         exercise = context.exercise(sheet.exercise_id)
         notes = [f"{file}: no part named {name!r} in {exercise.id}; it was ignored"
                  for name in sheet.answers if name not in {p.name for p in exercise.parts}]
@@ -310,7 +313,6 @@ def _grade_files(context, files, as_json):
 
 def _full_verdicts(file, exercise, sheet):
     """The verdicts on a practice or homework file (its variant is public)."""
-    from .exercise.model import ConstraintError
     from .exercise.scoring import grade_variant
     from .exercise.seeds import student_seed
 
@@ -318,10 +320,7 @@ def _full_verdicts(file, exercise, sheet):
             sheet.seed != student_seed(exercise.id, sheet.student):
         click.echo(f"warning: {file}: this is not the practice variant of student "
                    f"{sheet.student!r}; graded the variant the file names", err=True)
-    try:
-        variant = exercise.variant(sheet.seed)
-    except ConstraintError as error:
-        raise click.ClickException(f"{file}: {error}") from None
+    variant = exercise.variant(sheet.seed)
     return grade_variant(exercise, variant, sheet.answers, sheet.problems)
 
 
@@ -339,16 +338,12 @@ def _print_self_check(checked: dict) -> None:
 
 
 def _grade_class(context, manifest, files, output, jobs, as_json, strict):
-    from .exam.classgrade import ManifestError, grade_class
-    from .exam.outputs import OutputFolderError
+    from .exam.classgrade import grade_class
     from .render.terminal import progress_reporter
 
-    try:
-        with progress_reporter() as progress:
-            outcome = grade_class(manifest, files, output, bank=context.bank, jobs=jobs,
-                                  progress=progress)
-    except (ManifestError, loader.ExerciseFileError, OutputFolderError) as error:
-        raise click.ClickException(str(error)) from None
+    with progress_reporter() as progress:
+        outcome = grade_class(manifest, files, output, bank=context.bank, jobs=jobs,
+                              progress=progress)
     for problem in outcome.problems:
         click.echo(f"{problem.level}: {problem.source}: {problem.message}", err=True)
     if as_json:
@@ -369,16 +364,8 @@ def _grade_class(context, manifest, files, output, jobs, as_json, strict):
 # -- helpers -----------------------------------------------------------------------------
 
 
-def _load_all(context):
-    try:
-        return context.bank.all()
-    except loader.ExerciseFileError as error:
-        raise click.ClickException(str(error)) from None
-
-
 def _variant(exercise, seed, student, settings, force=False):
     from .exam.spec import domain_problem
-    from .exercise.model import ConstraintError
     from .exercise.seeds import student_seed
 
     if seed is not None and student is not None:
@@ -394,9 +381,9 @@ def _variant(exercise, seed, student, settings, force=False):
                                         else ""), param_hint="--set")
     try:
         variant = exercise.variant(seed or 0, overrides, strict=not overrides)
-    except ConstraintError as error:
-        raise click.ClickException(str(error)) from None
     except (ArithmeticError, ValueError) as error:
+        if isinstance(error, DynagradeError):
+            raise
         raise click.ClickException(f"{exercise.id}: cannot be solved with these values "
                                    f"({type(error).__name__}: {error})") from None
     for warning in variant.warnings:
@@ -413,10 +400,7 @@ def _parse_settings(exercise, settings) -> dict[str, float]:
         name, sep, text = setting.partition("=")
         if not sep:
             raise click.BadParameter(f"{setting!r} is not NAME=VALUE", param_hint="--set")
-        try:
-            parameter = exercise.parameter(name.strip())
-        except KeyError as error:
-            raise click.BadParameter(error.args[0], param_hint="--set") from None
+        parameter = exercise.parameter(name.strip())
         number, _, unit = text.strip().partition(" ")
         try:
             value = float(number)

@@ -29,7 +29,7 @@ from pathlib import Path
 from typing import Callable
 
 from .. import __name__ as _package
-from ..exercise.loader import Bank, ExerciseFileError, open_bank
+from ..exercise.loader import Bank, open_bank
 from ..exercise.model import ConstraintError, Exercise
 from ..exercise.seeds import new_secret
 from ..render.pdf import embedded_pages_source
@@ -101,14 +101,7 @@ def load_exam(exam_path, roster_path, bank: Bank | None = None,
     """The exam spec, the roster and the exercises by id; errors as :class:`ExamSpecError`;
     notices (a roster's ignored columns) are appended to ``notices``."""
     bank = bank or open_bank()
-
-    def known(exercise_id):
-        try:
-            return bank.get(exercise_id)
-        except ExerciseFileError as error:
-            raise KeyError(str(error)) from None
-
-    spec = read_exam_spec(exam_path, known)
+    spec = read_exam_spec(exam_path, bank.get)
     roster = read_roster(roster_path, notices)
     exercises = {item.id: bank.get(item.id) for item in spec.exercises}
     _check_set_values(spec, exercises)

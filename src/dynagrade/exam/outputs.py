@@ -20,8 +20,10 @@ import os
 import shutil
 from pathlib import Path
 
+from ..errors import DynagradeError
 
-class OutputFolderError(OSError):
+
+class OutputFolderError(DynagradeError, OSError):
     """The output folder cannot be written; the message names it and why."""
 
 

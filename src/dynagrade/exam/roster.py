@@ -29,6 +29,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..errors import DynagradeError
 from ..exercise.datafile import DataFileError, read_data_file
 
 MAX_ROSTER_BYTES = 20_000_000
@@ -46,7 +47,7 @@ EMAIL_COLUMNS = ("email", "email address", "e-mail", "mail")
 SEPARATORS = (",", ";", "\t")
 
 
-class RosterError(ValueError):
+class RosterError(DynagradeError, ValueError):
     """A roster that cannot be read; the message names file, row and column."""
 
 

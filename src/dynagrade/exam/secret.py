@@ -12,6 +12,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from ..errors import DynagradeError
 from ..exercise.datafile import DataFileError, read_data_file
 from ..exercise.seeds import new_secret
 
@@ -19,7 +20,7 @@ MIN_SECRET_CHARACTERS = 32
 MAX_SECRET_BYTES = 4096
 
 
-class SecretError(ValueError):
+class SecretError(DynagradeError, ValueError):
     """The secret file cannot be used; the message names it and why."""
 
 

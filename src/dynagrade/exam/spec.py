@@ -34,6 +34,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
+from ..errors import DynagradeError
 from . import roster
 from .roster import Student
 
@@ -43,7 +44,7 @@ _TOP_KEYS = {"id", "title", "date", "instructions", "exercise"}
 _EXERCISE_KEYS = {"id", "points", "set"}
 
 
-class ExamSpecError(ValueError):
+class ExamSpecError(DynagradeError, ValueError):
     """A malformed exam specification or roster; the message says where and why."""
 
 
@@ -70,12 +71,19 @@ class ExamSpec:
     secret: str = ""  # set by the generation; never on a sheet (not in to_json)
 
     @property
+    def mode(self) -> str:
+        """"exam" (the default: fill-in files carry variant tokens, the self-check only
+        reads) or "homework"/"practice" (seeds, full verdicts)."""
+        policy = getattr(self, "policy", None)
+        return policy.mode if policy is not None else "exam"
+
+    @property
     def total_points(self) -> float:
         return sum(e.points for e in self.exercises)
 
     def to_json(self) -> dict:
         return {"id": self.id, "title": self.title, "date": self.date,
-                "instructions": self.instructions, "mode": self.policy.mode}
+                "instructions": self.instructions, "mode": self.mode}
 
 
 # -- exam.toml ----------------------------------------------------------------------------
@@ -85,7 +93,7 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
     """The exam in ``path``.
 
     ``known(exercise_id)`` returns the exercise (an object with ``parameter(name)``) or
-    raises ``KeyError``; with it, exercise ids and the names in ``[exercise.set]`` are
+    raises a :class:`~dynagrade.errors.DynagradeError` saying why; with it, exercise ids and the names in ``[exercise.set]`` are
     checked too.
     """
     path = Path(path)
@@ -152,8 +160,8 @@ def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExe
     if known is not None:
         try:
             exercise = known(exercise_id)
-        except KeyError as error:
-            raise ExamSpecError(f"{at}, field 'id': {error.args[0]}") from None
+        except DynagradeError as error:
+            raise ExamSpecError(f"{at}, field 'id': {error}") from None
     points = table.get("points")
     if isinstance(points, bool) or not isinstance(points, (int, float)) \
             or not math.isfinite(points) or not 0 < points <= MAX_POINTS:
@@ -173,9 +181,9 @@ def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExe
         if exercise is not None:
             try:
                 parameter = exercise.parameter(name)
-            except KeyError as error:
+            except DynagradeError as error:
                 raise ExamSpecError(f"{at} ({exercise_id}), field 'set.{name}': "
-                                    f"{error.args[0]}") from None
+                                    f"{error}") from None
             outside = domain_problem(parameter, float(value))
             if outside:
                 raise ExamSpecError(f"{at} ({exercise_id}), field 'set.{name}': {outside}")

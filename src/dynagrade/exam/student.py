@@ -56,7 +56,7 @@ def _exercise_files(run: GenerationRun, student: Student, number: int, item: Exa
     scaled = run.parts[exercise.id]
     fill_in = f"{exercise.id}.py"
     token = (variant_token(run.spec.secret, run.spec.id, student.student_id, exercise.id,
-                           variant.seed) if run.spec.policy.mode == "exam" else None)
+                           variant.seed) if run.spec.mode == "exam" else None)
     write_atomic(folder / fill_in, write_sheet(exercise, variant, student.student_id, fill_in,
                                                {entry.name: entry.points for entry in scaled},
                                                token=token, exam_id=run.spec.id))

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from typing import Callable, Mapping
 
+from ..errors import DynagradeError
 from ..exercise.model import ConstraintError, Exercise, Variant
 from ..exercise.seeds import exam_seed
 from ..exercise.verify import variant_problems
@@ -20,7 +21,7 @@ from .manifest import Redraw
 MAX_ATTEMPTS = 25
 
 
-class NoUsableVariant(RuntimeError):
+class NoUsableVariant(DynagradeError, RuntimeError):
     """Every seed tried gave a variant that cannot discriminate."""
 
 

@@ -13,8 +13,10 @@ import os
 import stat
 from pathlib import Path
 
+from ..errors import DynagradeError
 
-class DataFileError(ValueError):
+
+class DataFileError(DynagradeError, ValueError):
     """The file cannot be read as data; the message says why (never the file's content)."""
 
 

@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Mapping
 
+from ..errors import DynagradeError
 from .datafile import DataFileError, read_data_file
 from .model import Exercise, Variant
 
@@ -48,7 +49,7 @@ grade."""
 _TOKEN = re.compile(r"[0-9a-z]{24}")
 
 
-class SheetError(ValueError):
+class SheetError(DynagradeError, ValueError):
     """The file is not a dynagrade sheet; the message says why and where."""
 
 
