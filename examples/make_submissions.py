@@ -152,8 +152,9 @@ def main(out_dir: str) -> None:
         encoding="utf-8")
     elsewhere = target / first["student_id"] / "old"
     elsewhere.mkdir(parents=True, exist_ok=True)
+    forged = 'VARIANT = "' + "0" * 24 + '"'
     (elsewhere / "other-exam.py").write_text(
-        re.sub(r"^VARIANT = ['\"][0-9a-z]+['\"]$", 'VARIANT = "' + "0" * 24 + '"', sheet, flags=re.M),
+        re.sub(r"^VARIANT = ['\"][0-9a-z]+['\"]$", forged, sheet, flags=re.M),
         encoding="utf-8")
     if len(students) > 1:
         _impersonate(out, target, first, students[1], exercises)

@@ -367,3 +367,71 @@ def test_a_roster_name_with_markup_is_shown_literally_in_sheet_md(tmp_path, bank
     html = MarkdownIt("commonmark").render(sheet.split("\n\n")[1])
     assert "<script>" not in html and "<em>" not in html and "href" not in html
     assert "&lt;script&gt;alert(1)&lt;/script&gt; *Bob* [x](javascript:y)" in html
+
+
+# -- item 4: exam secrecy ------------------------------------------------------------------
+
+
+def test_the_secret_is_in_the_manifest_and_nowhere_a_student_sees(exam):
+    secret = load(exam / "manifest.json").exam.secret
+    assert secret and len(secret) == 64
+    for path in exam.rglob("*"):
+        if path.is_file() and path.name != "manifest.json":
+            assert secret.encode() not in path.read_bytes(), path
+
+
+def test_a_sheet_shows_no_seed_so_show_answers_cannot_print_its_key(exam):
+    """Reproducer: `dynagrade show ID --seed SEED --answers` with the SEED printed in the
+    student's fill-in file printed exactly that student's line of key.csv."""
+    manifest = load(exam / "manifest.json")
+    for student in manifest.students:
+        folder = exam / "students" / student.student_id
+        for variant in student.variants:
+            texts = [(folder / f"{variant.exercise}.py").read_text(encoding="utf-8"),
+                     (folder / "sheet.md").read_text(encoding="utf-8"),
+                     (folder / "sheet.html").read_text(encoding="utf-8")]
+            assert not any(str(variant.seed) in text for text in texts)
+            assert "SEED" not in texts[0] and "VARIANT = " in texts[0]
+
+
+def test_a_token_moved_to_another_student_or_made_up_is_foreign_and_not_shown(exam, tmp_path):
+    subs = tmp_path / "subs"
+    own = (exam / "students" / "s1" / "projectile-range.py").read_text(encoding="utf-8")
+    s1_token = own.split("VARIANT = '")[1][:24]
+    # s2 hands in s1's sheet with the STUDENT line changed to s2: s1's token, s2's folder
+    put(subs, "s2/projectile-range.py", filled(exam, "s1", "projectile-range",
+                                               student_line="s2"))
+    made_up = own.replace(s1_token, "0" * 24)
+    put(subs, "s1/projectile-range.py", made_up)
+    outcome = grade_class(exam / "manifest.json", [subs])
+    assert {row["student_id"]: row["status"] for row in outcome.rows} == \
+        {"s1": "rejected", "s2": "rejected", "s3": "absent"}
+    messages = [p.message for p in outcome.problems]
+    assert all(m.startswith("foreign, skipped: not the variant of") for m in messages)
+    manifest = load(exam / "manifest.json")
+    seeds = [str(v.seed) for s in manifest.students for v in s.variants]
+    assert not any(s1_token in m or any(seed in m for seed in seeds) for m in messages)
+
+
+def test_the_same_secret_file_gives_the_same_exam_and_a_new_file_gets_a_secret(
+        tmp_path, exam_toml):
+    (tmp_path / "exam.toml").write_text(exam_toml, encoding="utf-8")
+    (tmp_path / "roster.csv").write_text("student_id,name\na1,A\n", encoding="utf-8")
+    secret_file = tmp_path / "exam.secret"
+    runs = []
+    for out in ("one", "two"):
+        result = CliRunner().invoke(main, ["exam", str(tmp_path / "exam.toml"), "--roster",
+                                           str(tmp_path / "roster.csv"), "-o",
+                                           str(tmp_path / out), "--no-pdf", "--jobs", "1",
+                                           "--secret-file", str(secret_file)])
+        assert result.exit_code == 0, result.output
+        runs.append(_snapshot(tmp_path / out))
+    assert runs[0] == runs[1]
+    assert secret_file.stat().st_mode & 0o077 == 0
+    assert load(tmp_path / "one" / "manifest.json").exam.secret == \
+        secret_file.read_text().strip()
+    short = put(tmp_path, "short.secret", "abc")
+    result = CliRunner().invoke(main, ["exam", str(tmp_path / "exam.toml"), "--roster",
+                                       str(tmp_path / "roster.csv"), "-o",
+                                       str(tmp_path / "three"), "--secret-file", str(short)])
+    assert result.exit_code == 1 and "at least 32 characters" in result.output

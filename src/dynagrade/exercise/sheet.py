@@ -69,6 +69,7 @@ class Sheet:
     problems: dict[str, str]
     notes: tuple[str, ...] = ()
     token: str | None = None  # an exam sheet's variant token
+    exam_id: str | None = None  # the exam or homework the file belongs to
 
     @property
     def is_exam(self) -> bool:
