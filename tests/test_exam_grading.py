@@ -152,7 +152,26 @@ def test_the_command_line_grades_a_class_and_single_files_as_before(graded):
         (out / "cli-grading" / "grades.csv").read_text(encoding="utf-8"))))
     assert [r["status"] for r in rows] == ["graded"] + ["absent"] * 7
     sheet = out / "submissions" / "c-0" / "projectile-range.py"
+    # an exam's file: the self-check reads every answer and gives no verdict
     single = runner.invoke(grade_main, [str(sheet), "--json"])
+    assert single.exit_code == 0, single.output
+    checked = json.loads(single.output[single.output.index("{"):])
+    assert checked["exercise"] == "projectile-range" and checked["mode"] == "exam"
+    assert all(part["readable"] for part in checked["parts"])
+    assert not {"correct", "score", "expected", "reference"} & {
+        key for part in checked["parts"] for key in part} and "score" not in checked
+    assert "when the staff grade" in checked["message"]
+    # a practice sheet of the same exercise, answered right: full verdicts
+    practice = out / "practice.py"
+    assert runner.invoke(main, ["sheet", "projectile-range", "--student", "c-0", "-o",
+                                str(practice)]).exit_code == 0
+    solved = json.loads(runner.invoke(main, ["show", "projectile-range", "--student", "c-0",
+                                             "--answers", "--json"]).output)["answers"]
+    text = practice.read_text(encoding="utf-8")
+    for name, value in solved.items():
+        text = text.replace(f"\n{name} = None\n", f"\n{name} = {json.dumps(str(value))}\n")
+    practice.write_text(text, encoding="utf-8")
+    single = runner.invoke(grade_main, [str(practice), "--json"])
     assert single.exit_code == 0, single.output
     verdict = json.loads(single.output[single.output.index("{"):])
     assert verdict["exercise"] == "projectile-range"

@@ -435,3 +435,46 @@ def test_the_same_secret_file_gives_the_same_exam_and_a_new_file_gets_a_secret(
                                        str(tmp_path / "roster.csv"), "-o",
                                        str(tmp_path / "three"), "--secret-file", str(short)])
     assert result.exit_code == 1 and "at least 32 characters" in result.output
+
+
+def test_homework_keeps_seeds_and_full_verdicts_and_the_sheets_say_what_grade_does(
+        tmp_path, bank, exam_toml):
+    (tmp_path / "exam.toml").write_text('mode = "homework"\n' + exam_toml, encoding="utf-8")
+    (tmp_path / "roster.csv").write_text("student_id,name\nh1,H\n", encoding="utf-8")
+    out = tmp_path / "out"
+    generate_exam(tmp_path / "exam.toml", tmp_path / "roster.csv", out, bank=bank, jobs=1,
+                  pdf=False)
+    variant = load(out / "manifest.json").students[0].variant("projectile-range")
+    fill_in = (out / "students" / "h1" / "projectile-range.py").read_text(encoding="utf-8")
+    assert f"SEED = {variant.seed}" in fill_in and "VARIANT" not in fill_in
+    assert "it shows whether each answer is right" in \
+        (out / "students" / "h1" / "sheet.md").read_text(encoding="utf-8")
+    answered = filled(out, "h1", "projectile-range")
+    path = put(tmp_path, "subs/h1/projectile-range.py", answered)
+    verdict = json.loads(CliRunner().invoke(main, ["grade", str(path), "--json"]).output)
+    assert verdict["score"] == verdict["max_score"] == 5  # the exercise's own 2+1+1+1
+    outcome = grade_class(out / "manifest.json", [tmp_path / "subs"])
+    assert outcome.rows[0]["projectile-range"] == 6.0
+
+
+def test_an_exam_sheet_says_the_self_check_only_reads(exam):
+    markdown = (exam / "students" / "s1" / "sheet.md").read_text(encoding="utf-8")
+    assert "whether it is right you learn when the staff grade" in markdown
+    assert "shows whether each answer is right" not in markdown
+    fill_in = (exam / "students" / "s1" / "projectile-range.py").read_text(encoding="utf-8")
+    assert "whether it is right you learn when the staff" in fill_in
+
+
+def test_grade_on_an_exam_file_says_how_each_answer_reads_never_whether_it_is_right(
+        exam, tmp_path):
+    text = filled(exam, "s1", "projectile-range")
+    text = text.replace('\nh_max = "', '\nh_max = "3 kg" #', 1)
+    path = put(tmp_path, "s1/projectile-range.py", text)
+    result = CliRunner().invoke(main, ["grade", str(path), "--json"])
+    assert result.exit_code == 0, result.output
+    checked = json.loads(result.output)
+    by_name = {part["name"]: part for part in checked["parts"]}
+    assert set(by_name["x_max"]) == {"name", "readable", "message"}
+    assert by_name["x_max"]["readable"] and not by_name["h_max"]["readable"]
+    assert "unit" in by_name["h_max"]["message"]
+    assert "correct" not in result.output and "score" not in result.output
