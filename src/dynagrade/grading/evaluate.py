@@ -11,30 +11,9 @@ from typing import Mapping
 
 import numpy as np
 
-from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit
+from .functions import FUNCTIONS
 from .names import CONSTANTS
-
-
-def _cot(x):
-    return 1.0 / np.tan(x)
-
-
-def _sec(x):
-    return 1.0 / np.cos(x)
-
-
-def _csc(x):
-    return 1.0 / np.sin(x)
-
-
-_UNARY = {
-    "sin": np.sin, "cos": np.cos, "tan": np.tan, "cot": _cot, "sec": _sec, "csc": _csc,
-    "asin": np.arcsin, "acos": np.arccos, "atan": np.arctan,
-    "sinh": np.sinh, "cosh": np.cosh, "tanh": np.tanh,
-    "exp": np.exp, "ln": np.log, "log10": np.log10, "log2": np.log2,
-    "sqrt": np.sqrt, "cbrt": np.cbrt, "abs": np.abs,
-}
-_BINARY = {"atan2": np.arctan2}
+from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit
 
 
 class EvaluationError(Exception):
@@ -83,9 +62,7 @@ def _eval(node: Expr, env, units):
         return _power(a, b)
     if isinstance(node, Call):
         args = [_eval(arg, env, units) for arg in node.args]
-        if node.func in _UNARY:
-            return _UNARY[node.func](args[0])
-        return _BINARY[node.func](*args)
+        return FUNCTIONS[node.func].numpy(*args)
     raise EvaluationError(f"cannot evaluate {node!r}")
 
 

@@ -1,18 +1,14 @@
-"""Vocabulary of expressions: functions, constants, aliases and Unicode letters."""
+"""Vocabulary of expressions: spellings of functions, constants, and Unicode letters.
+
+The functions themselves (arguments, values, units) are the table in :mod:`functions`.
+"""
 
 from __future__ import annotations
 
 import difflib
 import math
 
-#: Canonical function name -> number of arguments.
-FUNCTIONS: dict[str, int] = {
-    "sin": 1, "cos": 1, "tan": 1, "cot": 1, "sec": 1, "csc": 1,
-    "asin": 1, "acos": 1, "atan": 1, "atan2": 2,
-    "sinh": 1, "cosh": 1, "tanh": 1,
-    "exp": 1, "ln": 1, "log10": 1, "log2": 1,
-    "sqrt": 1, "cbrt": 1, "abs": 1,
-}
+from .functions import FUNCTIONS
 
 #: Spellings students use -> canonical function name. ``log`` is the natural logarithm.
 FUNCTION_ALIASES: dict[str, str] = {

@@ -25,7 +25,8 @@ from functools import lru_cache
 from . import lexer
 from .errors import AnswerError
 from .lexer import COMMA, END, EQUALS, LPAR, NAME, NUM, OP, ROOT, RPAR, SEMI, SUP, Token
-from .names import CONSTANTS, FUNCTIONS, REFUSED_FUNCTIONS, canonical_function, suggest
+from .functions import FUNCTIONS
+from .names import CONSTANTS, REFUSED_FUNCTIONS, canonical_function, suggest
 from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit, depth
 
 #: Deepest nesting accepted (brackets, operators, and height of the tree).
@@ -329,7 +330,7 @@ class _Parser:
 
     def call(self, token: Token, function: str) -> Expr:
         opener = self.advance()
-        arity = FUNCTIONS[function]
+        arity = FUNCTIONS[function].arity
         if self.peek().kind == RPAR:
             raise self.error(f"{token.value}() needs an argument", self.peek())
         args = [self.expression(0)]
