@@ -53,11 +53,18 @@ SUPERSCRIPTS: dict[str, str] = {
     "⁸": "8", "⁹": "9", "⁻": "-", "⁺": "+",
 }
 
+#: Every character read as a minus sign, in a formula and in a number's exponent alike:
+#: ASCII ``-``, the minus sign U+2212, and the dashes and hyphens students paste from
+#: calculators, PDFs, word processors and phones.
+MINUS_SIGNS = "-\u2212\u2010\u2011\u2012\u2013\u2014\ufe63\uff0d"
+#: Every character read as a plus sign.
+PLUS_SIGNS = "+\ufe62\uff0b"
+
 #: Characters read as operators.
 OPERATOR_CHARS: dict[str, str] = {
-    "−": "-", "‒": "-", "–": "-", "—": "-", "﹣": "-", "－": "-",
+    **{c: "-" for c in MINUS_SIGNS[1:]}, **{c: "+" for c in PLUS_SIGNS[1:]},
     "×": "*", "·": "*", "⋅": "*", "∙": "*", "•": "*", "∗": "*", "÷": "/", "∕": "/",
-    "＋": "+", "（": "(", "）": ")",
+    "（": "(", "）": ")",
 }
 
 

@@ -133,21 +133,44 @@ def walk(node: Expr) -> Iterator[Expr]:
             stack.extend(reversed(current.args))
 
 
-def depth(node: Expr) -> int:
-    """Height of a tree (iterative)."""
-    best = 0
-    stack = [(node, 1)]
+_CHAINS = {"+": "sum", "-": "sum", "*": "product", "/": "product"}
+
+
+def chain(node: Expr) -> str | None:
+    """``"sum"`` or ``"product"`` when ``node`` is a link of an associative chain."""
+    return _CHAINS.get(node.op) if isinstance(node, BinOp) else None
+
+
+def nesting_and_terms(node: Expr) -> tuple[int, int]:
+    """The height of a tree once chains of ``+ -`` and of ``* /`` are flattened into one
+    node each (a sum of 500 terms has height 2, like ``a + b``), and the most terms in
+    one chain. Iterative, so any tree is safe to measure."""
+    height, most = 0, 1
+    terms: dict[int, int] = {}  # id of a chain's top link -> its terms so far
+    stack: list = [(node, 1, None)]
     while stack:
-        current, d = stack.pop()
-        best = max(best, d)
-        if isinstance(current, Neg):
-            stack.append((current.operand, d + 1))
+        current, level, parent = stack.pop()
+        kind = chain(current)
+        if kind is not None and parent is not None and parent[1] == kind:
+            level -= 1  # a link of the parent's chain sits at the chain's level
+            key = parent[0]
+        elif kind is not None:
+            key = id(current)
+            terms[key] = 1
+        height = max(height, level)
+        if kind is not None:
+            terms[key] += 1
+            most = max(most, terms[key])
+            stack.append((current.left, level + 1, (key, kind)))
+            stack.append((current.right, level + 1, (key, kind)))
+        elif isinstance(current, Neg):
+            stack.append((current.operand, level + 1, None))
         elif isinstance(current, BinOp):
-            stack.append((current.left, d + 1))
-            stack.append((current.right, d + 1))
+            stack.append((current.left, level + 1, None))
+            stack.append((current.right, level + 1, None))
         elif isinstance(current, Call):
-            stack.extend((a, d + 1) for a in current.args)
-    return best
+            stack.extend((a, level + 1, None) for a in current.args)
+    return height, most
 
 
 def names_in(node: Expr) -> set[str]:
