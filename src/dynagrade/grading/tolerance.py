@@ -14,15 +14,29 @@ from __future__ import annotations
 import math
 from decimal import ROUND_HALF_UP, Decimal
 
+import numpy as np
+
 #: Absolute tolerance used when a part sets none, in the part's unit.
 DEFAULT_ATOL = 1e-9
+#: Rounding slack of the comparison, relative to the larger of the two numbers.
+_ROUNDING = 8 * 2.0 ** -52
 
 
-def is_close(answer: float, expected: float, rtol: float, atol: float | None) -> bool:
-    """The tolerance rule; the boundary is inclusive up to float rounding (2.02 for 2 at 1 %)."""
+def is_close(answer, expected, rtol: float, atol: float | None, scale=None):
+    """The tolerance rule ``|a - e| <= max(atol, rtol*s)``, ``s = |e|`` unless ``scale``
+    is given; the boundary is inclusive up to float rounding (2.02 for 2 at 1 %).
+
+    The one rule for numbers and vector components alike: on arrays it answers
+    element by element (vectors pass the scale of each component).
+    """
     floor = DEFAULT_ATOL if atol is None else atol
-    slack = 8 * 2.0 ** -52 * max(abs(answer), abs(expected))
-    return abs(answer - expected) <= max(floor, rtol * abs(expected)) + slack
+    a = np.asarray(answer, dtype=np.float64)
+    e = np.asarray(expected, dtype=np.float64)
+    s = np.abs(e) if scale is None else np.asarray(scale, dtype=np.float64)
+    slack = _ROUNDING * np.maximum(np.abs(a), np.abs(e))
+    with np.errstate(invalid="ignore", over="ignore"):
+        close = np.abs(a - e) <= np.maximum(floor, rtol * s) + slack
+    return bool(close) if close.ndim == 0 else close
 
 
 def round_sig(value: float, digits: int) -> Decimal:
