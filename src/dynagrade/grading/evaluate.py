@@ -20,36 +20,42 @@ class EvaluationError(Exception):
     """A name without a value (an internal inconsistency, not an answer problem)."""
 
 
-def evaluate(expr: Expr, env: Mapping[str, np.ndarray], units: Mapping[str, float] | None = None):
+def evaluate(expr: Expr, env: Mapping[str, np.ndarray], units: Mapping[str, float] | None = None,
+             dtype=np.float64):
     """Value of ``expr`` with variables from ``env`` (arrays broadcast together).
 
     ``units`` maps unit names to their factor (used for quantity answers). Returns a
-    float64 array (or numpy scalar); non-finite entries mark undefined points.
+    ``dtype`` array (or numpy scalar); non-finite entries mark undefined points.
+    ``dtype=np.longdouble`` evaluates with the platform's extended precision (numbers
+    read from their text, constants computed in it), to check float64 values.
     """
     with np.errstate(all="ignore"):
-        return _eval(expr, env, units or {})
+        return _eval(expr, env, units or {}, dtype)
 
 
-def _eval(node: Expr, env, units):
+def _eval(node: Expr, env, units, dtype):
     if isinstance(node, Num):
-        return np.float64(node.value)
+        if dtype is np.float64 or not node.text:
+            return dtype(node.value)
+        return dtype(node.text.replace(",", "."))
     if isinstance(node, Name):
         try:
-            return env[node.id]
+            value = env[node.id]
         except KeyError:
             raise EvaluationError(f"no value for '{node.id}'") from None
+        return value if dtype is np.float64 else np.asarray(value, dtype=dtype)
     if isinstance(node, Const):
-        return np.float64(CONSTANTS[node.id])
+        return _constant(node.id, dtype)
     if isinstance(node, Unit):
         try:
-            return np.float64(units[node.id])
+            return dtype(units[node.id])
         except KeyError:
             raise EvaluationError(f"no factor for unit '{node.id}'") from None
     if isinstance(node, Neg):
-        return np.negative(_eval(node.operand, env, units))
+        return np.negative(_eval(node.operand, env, units, dtype))
     if isinstance(node, BinOp):
-        a = _eval(node.left, env, units)
-        b = _eval(node.right, env, units)
+        a = _eval(node.left, env, units, dtype)
+        b = _eval(node.right, env, units, dtype)
         op = node.op
         if op == "+":
             return np.add(a, b)
@@ -59,20 +65,27 @@ def _eval(node: Expr, env, units):
             return np.multiply(a, b)
         if op == "/":
             return np.divide(a, b)
-        return _power(a, b)
+        return _power(a, b, dtype)
     if isinstance(node, Call):
-        args = [_eval(arg, env, units) for arg in node.args]
+        args = [_eval(arg, env, units, dtype) for arg in node.args]
         return FUNCTIONS[node.func].numpy(*args)
     raise EvaluationError(f"cannot evaluate {node!r}")
 
 
-def _power(a, b):
-    """a**b in float64; a negative base with an odd-denominator exponent like 1/3 is
-    still undefined (real powers of negative numbers are left out)."""
-    a = np.asarray(a, dtype=np.float64)
-    b = np.asarray(b, dtype=np.float64)
+def _constant(name: str, dtype):
+    if dtype is np.float64:
+        return np.float64(CONSTANTS[name])
+    one = dtype(1)
+    return 4 * np.arctan(one) if name == "pi" else np.exp(one)
+
+
+def _power(a, b, dtype):
+    """a**b; a negative base with an odd-denominator exponent like 1/3 is still
+    undefined (real powers of negative numbers are left out)."""
+    a = np.asarray(a, dtype=dtype)
+    b = np.asarray(b, dtype=dtype)
     result = np.power(a, b)
-    return result if result.ndim else np.float64(result)
+    return result if result.ndim else dtype(result)
 
 
 def evaluate_constant(expr: Expr, units: Mapping[str, float] | None = None) -> float:

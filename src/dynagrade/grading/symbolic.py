@@ -29,6 +29,8 @@ from .parser import parse_expression
 from .quantity import unit_info
 from .spec import SymbolicSpec
 from .timing import Deadline
+from .tolerance import point_tolerance
+from .precise import agree_precisely
 from .tosympy import exactly_equal
 from .verdict import Verdict, unreadable
 
@@ -70,7 +72,7 @@ def _reference(spec: SymbolicSpec, expected: str) -> _Reference:
         dims[name] = dim
     all_dims = None if any(d is None for d in dims.values()) else dims
     env, values = _sample(spec, expected, tree, factors)
-    tol = _tolerance(values, spec.rtol)
+    tol = point_tolerance(values, spec.rtol)
     ref_dim = None
     if all_dims is not None:
         try:
@@ -152,9 +154,7 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
         return Verdict(False, 0.0, "Not correct: your expression is undefined for some allowed values of "
                                     "the variables (a division by zero, the root or logarithm of a negative "
                                     "number, or a number too large to compute) where the expected one is defined." + reveal)
-    diff = np.abs(values - ref.values)
-    if np.all(diff <= ref.tol) or (np.all(diff <= 100 * ref.tol) and
-                                   exactly_equal(tree, ref.tree, ref.domains, min(0.3, deadline.remaining()))):
+    if _equivalent(tree, ref, values, deadline):
         return _form_verdict(spec, ref, tree)
     hints = " ".join(reading_hints(tree))
     found = _misconception(spec, ref, values)
@@ -165,6 +165,20 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
     read = read if len(read) <= 120 else read[:120] + "…"
     text = f"Not correct: your expression (read as {read}) is not equivalent to the expected one."
     return Verdict(False, 0.0, " ".join(x for x in (text, hints) if x) + reveal)
+
+
+def _equivalent(tree: Expr, ref: _Reference, values: np.ndarray, deadline: Deadline) -> bool:
+    """Float values within the tolerance; else, both being finite, the values in high
+    precision decide, and when those cannot, the exact check if the float values are
+    within 100 times the tolerance."""
+    diff = np.abs(values - ref.values)
+    if np.all(diff <= ref.tol):
+        return True
+    precise = agree_precisely(tree, ref.tree, ref.env, values, ref.values, ref.tol, ref.rtol, deadline)
+    if precise is not None:
+        return precise
+    return bool(np.all(diff <= 100 * ref.tol)) and \
+        bool(exactly_equal(tree, ref.tree, ref.domains, min(0.3, deadline.remaining())))
 
 
 def _form_verdict(spec: SymbolicSpec, ref: _Reference, tree: Expr) -> Verdict:
@@ -186,18 +200,11 @@ def _form_verdict(spec: SymbolicSpec, ref: _Reference, tree: Expr) -> Verdict:
     return Verdict(True, 1.0, "Correct.")
 
 
-def _tolerance(target: np.ndarray, rtol: float) -> np.ndarray:
-    """Per point ``rtol * max(|t_i|, 1e-3*M)``, M the median of |t| (the module's rule)."""
-    scale = float(np.median(np.abs(target)))
-    floor = 1e-3 * scale if scale > 0 else 1e-12 / max(rtol, 1e-300)
-    return rtol * np.maximum(np.abs(target), floor)
-
-
 def _agrees(values: np.ndarray, target: np.ndarray, ref: _Reference) -> bool:
     """Whether ``values`` match ``target`` under the reference's tolerance rule."""
     if not np.all(np.isfinite(target)):
         return False
-    return bool(np.all(np.abs(values - target) <= _tolerance(target, ref.rtol)))
+    return bool(np.all(np.abs(values - target) <= point_tolerance(target, ref.rtol)))
 
 
 def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray):

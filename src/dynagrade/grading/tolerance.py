@@ -1,4 +1,4 @@
-"""Closeness of numbers: the tolerance rule and significant figures.
+"""Closeness of numbers: the tolerance rules and significant figures.
 
 Rule: an answer ``a`` is close to the reference ``e`` when
 ``|a - e| <= max(atol, rtol*|e|)``; when no ``atol`` is given the absolute floor
@@ -37,6 +37,14 @@ def is_close(answer, expected, rtol: float, atol: float | None, scale=None):
     with np.errstate(invalid="ignore", over="ignore"):
         close = np.abs(a - e) <= np.maximum(floor, rtol * s) + slack
     return bool(close) if close.ndim == 0 else close
+
+
+def point_tolerance(target: np.ndarray, rtol: float) -> np.ndarray:
+    """The formula rule, per sample point: ``rtol * max(|t_i|, 1e-3*M)`` with M the
+    median of |t| over the points (an absolute 1e-12 when the target is identically 0)."""
+    scale = float(np.median(np.abs(target)))
+    floor = 1e-3 * scale if scale > 0 else 1e-12 / max(rtol, 1e-300)
+    return rtol * np.maximum(np.abs(target), floor)
 
 
 def round_sig(value: float, digits: int) -> Decimal:
