@@ -16,6 +16,9 @@ from .names import CONSTANTS
 from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit
 
 
+_ARITHMETIC = {"+": np.add, "-": np.subtract, "*": np.multiply, "/": np.divide}
+
+
 class EvaluationError(Exception):
     """A name without a value (an internal inconsistency, not an answer problem)."""
 
@@ -30,46 +33,52 @@ def evaluate(expr: Expr, env: Mapping[str, np.ndarray], units: Mapping[str, floa
     read from their text, constants computed in it), to check float64 values.
     """
     with np.errstate(all="ignore"):
-        return _eval(expr, env, units or {}, dtype)
+        return _eval(expr, env, units or {}, dtype, None)
 
 
-def _eval(node: Expr, env, units, dtype):
+def evaluate_with_magnitude(expr: Expr, env: Mapping[str, np.ndarray], dtype=np.float64):
+    """The value of ``expr`` and, per point, the largest magnitude of any value met on
+    the way (its rounding errors are of the order of ``eps`` times that magnitude)."""
+    largest = [np.zeros((), dtype=dtype)]
+    with np.errstate(all="ignore"):
+        value = _eval(expr, env, {}, dtype, largest)
+    return value, largest[0]
+
+
+def _eval(node: Expr, env, units, dtype, largest):
     if isinstance(node, Num):
         if dtype is np.float64 or not node.text:
-            return dtype(node.value)
-        return dtype(node.text.replace(",", "."))
-    if isinstance(node, Name):
+            value = dtype(node.value)
+        else:
+            value = dtype(node.text.replace(",", "."))
+    elif isinstance(node, Name):
         try:
             value = env[node.id]
         except KeyError:
             raise EvaluationError(f"no value for '{node.id}'") from None
-        return value if dtype is np.float64 else np.asarray(value, dtype=dtype)
-    if isinstance(node, Const):
-        return _constant(node.id, dtype)
-    if isinstance(node, Unit):
+        if dtype is not np.float64:
+            value = np.asarray(value, dtype=dtype)
+    elif isinstance(node, Const):
+        value = _constant(node.id, dtype)
+    elif isinstance(node, Unit):
         try:
-            return dtype(units[node.id])
+            value = dtype(units[node.id])
         except KeyError:
             raise EvaluationError(f"no factor for unit '{node.id}'") from None
-    if isinstance(node, Neg):
-        return np.negative(_eval(node.operand, env, units, dtype))
-    if isinstance(node, BinOp):
-        a = _eval(node.left, env, units, dtype)
-        b = _eval(node.right, env, units, dtype)
-        op = node.op
-        if op == "+":
-            return np.add(a, b)
-        if op == "-":
-            return np.subtract(a, b)
-        if op == "*":
-            return np.multiply(a, b)
-        if op == "/":
-            return np.divide(a, b)
-        return _power(a, b, dtype)
-    if isinstance(node, Call):
-        args = [_eval(arg, env, units, dtype) for arg in node.args]
-        return FUNCTIONS[node.func].numpy(*args)
-    raise EvaluationError(f"cannot evaluate {node!r}")
+    elif isinstance(node, Neg):
+        value = np.negative(_eval(node.operand, env, units, dtype, largest))
+    elif isinstance(node, BinOp):
+        a = _eval(node.left, env, units, dtype, largest)
+        b = _eval(node.right, env, units, dtype, largest)
+        value = _ARITHMETIC[node.op](a, b) if node.op in _ARITHMETIC else _power(a, b, dtype)
+    elif isinstance(node, Call):
+        args = [_eval(arg, env, units, dtype, largest) for arg in node.args]
+        value = FUNCTIONS[node.func].numpy(*args)
+    else:
+        raise EvaluationError(f"cannot evaluate {node!r}")
+    if largest is not None:
+        largest[0] = np.fmax(largest[0], np.abs(value))
+    return value
 
 
 def _constant(name: str, dtype):

@@ -3,15 +3,20 @@
 ``1 - cos(x)`` at x = 1e-7, ``cosh(x)^2 - sinh(x)^2`` at x = 20 and
 ``sqrt(x+1) - sqrt(x)`` at x = 1e10 lose most or all of their digits in float64, so
 an exact identity can look like a wrong answer. When the float comparison of a
-formula fails but both sides are finite, :func:`agree_precisely` evaluates both
-trees again at the same points with 30, 60, 120, … decimal digits (numbers as
-typed: ``0.1`` is one tenth) until two successive precisions agree to a thousandth
-of the tolerance, then applies the same tolerance rule to those values.
+formula fails but both sides are finite, :func:`agree_precisely` decides instead.
 
-It first looks at the point where the float values disagree most, with numpy's
-extended precision where the platform has one, else at 30 digits: when the float
-values there were already right, the answer is simply wrong and nothing more is
-computed, so a wrong answer costs one more evaluation of each tree.
+A value computed with unit roundoff ``u`` is *trusted* when ``u · M · n`` is at most a
+thousandth of the point's tolerance, M being the largest magnitude met while
+computing it and n the size of the tree (a cancellation shows as M much larger than
+the value). First, at the point where the float values disagree most, both trees are
+evaluated in numpy's extended precision (where the platform has one, else mpmath at
+30 digits): if those values are trusted and the float values match them, the
+difference is real and the answer is wrong -- the usual case, which costs one more
+evaluation of each tree. Otherwise both trees are evaluated with mpmath at every
+point, at 30 digits and then at the precision the magnitudes ask for (at most 960),
+until every value is trusted and agrees with the previous precision; numbers are
+read as typed (``0.1`` is one tenth). Those values decide under the same tolerance
+rule as the float ones.
 
 The answer is True (equivalent), False (not), or None when it cannot decide: a
 value beyond 2^±4000 in between, the precision cap, or the time budget reached.
@@ -25,9 +30,9 @@ import threading
 import mpmath
 import numpy as np
 
-from .evaluate import evaluate
+from .evaluate import evaluate_with_magnitude
 from .functions import FUNCTIONS, mp_call
-from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num
+from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, walk
 from .timing import Deadline
 from .tolerance import point_tolerance
 
@@ -35,13 +40,13 @@ _FIRST_DIGITS = 30
 _MOST_DIGITS = 960
 #: Largest binary exponent followed; beyond it the check gives up.
 _MAGNITUDE = 4000
-#: Two precisions agree when they differ by at most this fraction of the tolerance.
-_SETTLED = 1e-3
-#: Float values count as right when within this fraction of the tolerance of the precise ones.
+#: A value is trusted when its error estimate is within this fraction of the tolerance.
+_TRUSTED = 1e-3
+#: Float values count as right when within this fraction of the tolerance of trusted ones.
 _FLOAT_RIGHT = 0.1
-
-#: Whether numpy's long double is more precise than float64 (x86 Linux: 64-bit mantissa).
-_EXTENDED = np.finfo(np.longdouble).eps < np.finfo(np.float64).eps
+#: Unit roundoff of numpy's long double, when it is more precise than float64.
+_EXTENDED_ROUNDOFF = float(np.finfo(np.longdouble).eps) \
+    if np.finfo(np.longdouble).eps < np.finfo(np.float64).eps else None
 
 _CONTEXTS = threading.local()
 
@@ -66,89 +71,108 @@ def agree_precisely(answer: Expr, reference: Expr, env: dict, answer_values: np.
     tolerance rule, decided in high precision (see the module's docstring); ``tol`` is
     the float tolerance of each point."""
     worst = int(np.argmax(np.abs(answer_values - reference_values) / tol))
-    if _EXTENDED and _floats_were_right(answer, reference, env, answer_values, reference_values, tol, worst):
-        return False
+    sizes = (_size(answer), _size(reference))
     try:
-        a, e = _values(answer, reference, env, [worst], _FIRST_DIGITS, deadline)
-        if abs(a[0] - answer_values[worst]) <= _FLOAT_RIGHT * tol[worst] and \
-                abs(e[0] - reference_values[worst]) <= _FLOAT_RIGHT * tol[worst]:
-            return False  # the float values were right: the difference is real
-        a, e = _settled(answer, reference, env, list(range(len(reference_values))), tol, deadline)
+        if _floats_were_right((answer, reference), sizes, env, (answer_values, reference_values), tol, worst,
+                              deadline):
+            return False  # the difference is real
+        a, e = _settled((answer, reference), sizes, env, len(reference_values), rtol, deadline)
     except _GiveUp:
-        return None
-    if not (np.all(np.isfinite(a)) and np.all(np.isfinite(e))):
         return None
     return bool(np.all(np.abs(a - e) <= point_tolerance(e, rtol)))
 
 
-def _floats_were_right(answer, reference, env, answer_values, reference_values, tol, worst) -> bool:
-    """Whether both float values at the worst point match the platform's extended
-    precision (a cheap first look: a cancellation shows as a difference here)."""
-    for tree, values in ((answer, answer_values), (reference, reference_values)):
-        extended = np.broadcast_to(evaluate(tree, env, dtype=np.longdouble), values.shape)[worst]
-        if not abs(float(extended) - values[worst]) <= _FLOAT_RIGHT * tol[worst]:
+def _size(tree: Expr) -> int:
+    return sum(1 for _ in walk(tree))
+
+
+def _floats_were_right(trees, sizes, env, float_values, tol, worst, deadline) -> bool:
+    """Whether both float values at the worst point match trusted values of higher
+    precision (extended, else 30 digits)."""
+    point_env = {name: values[worst:worst + 1] for name, values in env.items()}
+    for tree, size, values in zip(trees, sizes, float_values):
+        if _EXTENDED_ROUNDOFF is not None:
+            value, largest = evaluate_with_magnitude(tree, point_env, dtype=np.longdouble)
+            value = float(np.ravel(value)[0])
+            error = _EXTENDED_ROUNDOFF * float(np.ravel(largest)[0]) * size
+        else:
+            (value,), (error,) = _values(tree, size, point_env, 1, _FIRST_DIGITS, deadline)
+        if not (math.isfinite(error) and error <= _TRUSTED * tol[worst]
+                and abs(value - values[worst]) <= _FLOAT_RIGHT * tol[worst]):
             return False
     return True
 
 
-def _settled(answer, reference, env, points, tol, deadline) -> tuple[np.ndarray, np.ndarray]:
-    """Values of both trees at ``points``, at the first precision that agrees with the
-    one before it."""
-    digits = _FIRST_DIGITS
-    previous = _values(answer, reference, env, points, digits, deadline)
-    while digits < _MOST_DIGITS:
-        digits *= 2
-        current = _values(answer, reference, env, points, digits, deadline)
-        with np.errstate(invalid="ignore"):
-            settled = all(np.all(np.abs(c - p) <= _SETTLED * tol) for c, p in zip(current, previous))
-        if settled:
-            return current
-        previous = current
-    raise _GiveUp()
+def _settled(trees, sizes, env, count, rtol, deadline) -> tuple[np.ndarray, np.ndarray]:
+    """Values of both trees at every point, at the first precision where all are
+    trusted and agree with the precision before."""
+    digits, previous = _FIRST_DIGITS, None
+    while True:
+        (a, a_error), (e, e_error) = (_values(t, n, env, count, digits, deadline) for t, n in zip(trees, sizes))
+        if not (np.all(np.isfinite(a)) and np.all(np.isfinite(e))):
+            raise _GiveUp()
+        limit = _TRUSTED * point_tolerance(e, rtol)
+        error = np.maximum(a_error, e_error)
+        if np.all(error <= limit) and previous is not None and \
+                np.all(np.abs(a - previous[0]) <= limit) and np.all(np.abs(e - previous[1]) <= limit):
+            return a, e
+        if digits >= _MOST_DIGITS:
+            raise _GiveUp()
+        with np.errstate(divide="ignore", invalid="ignore"):
+            excess = np.log10(error / limit)
+        excess = excess[np.isfinite(excess)]
+        wanted = digits + (math.ceil(float(excess.max())) + 3 if excess.size else 0)
+        digits, previous = min(_MOST_DIGITS, max(2 * digits, wanted)), (a, e)
 
 
-def _values(answer, reference, env, points, digits, deadline) -> tuple[np.ndarray, np.ndarray]:
+def _values(tree, size, env, count, digits, deadline) -> tuple[np.ndarray, np.ndarray]:
+    """Values of ``tree`` at ``count`` points with ``digits`` digits, and an estimate
+    of their rounding errors."""
     mp = _context(digits)
-    out = (np.empty(len(points)), np.empty(len(points)))
-    for k, i in enumerate(points):
+    values, errors = np.empty(count), np.empty(count)
+    roundoff = 10.0 ** (1 - digits) * size
+    for i in range(count):
         if deadline.expired():
             raise _GiveUp()
-        point = {name: float(values[i]) for name, values in env.items()}
-        for tree, target in zip((answer, reference), out):
-            value = _evaluate(mp, tree, point)
-            target[k] = float(value) if mp.isfinite(value) else math.nan
-    return out
+        point = {name: float(v[i]) for name, v in env.items()}
+        largest = [mp.zero]
+        value = _evaluate(mp, tree, point, largest)
+        values[i] = float(value) if mp.isfinite(value) else math.nan
+        errors[i] = roundoff * float(largest[0])
+    return values, errors
 
 
-def _evaluate(mp, node: Expr, point: dict):
-    """The value of ``node`` in ``mp``'s precision; left-leaning chains of operators are
-    followed in a loop, so a sum of 500 terms needs no deep recursion."""
+def _evaluate(mp, node: Expr, point: dict, largest: list):
+    """The value of ``node`` in ``mp``'s precision, keeping the largest magnitude met in
+    ``largest[0]``; left-leaning chains of operators are followed in a loop, so a sum
+    of 500 terms needs no deep recursion."""
     links = []
     while isinstance(node, BinOp) and node.op != "^":
         links.append(node)
         node = node.left
-    value = _leaf_or_call(mp, node, point)
+    value = _leaf_or_call(mp, node, point, largest)
     for link in reversed(links):
-        value = _guard(mp, _arithmetic(mp, link.op, value, _evaluate(mp, link.right, point)))
+        value = _guard(mp, _arithmetic(mp, link.op, value, _evaluate(mp, link.right, point, largest)), largest)
     return value
 
 
-def _leaf_or_call(mp, node: Expr, point: dict):
+def _leaf_or_call(mp, node: Expr, point: dict, largest: list):
     if isinstance(node, Num):
-        return mp.mpf(node.text.replace(",", ".")) if node.text else mp.mpf(node.value)
+        return _guard(mp, mp.mpf(node.text.replace(",", ".")) if node.text else mp.mpf(node.value), largest)
     if isinstance(node, Name):
-        return mp.mpf(point[node.id])
+        return _guard(mp, mp.mpf(point[node.id]), largest)
     if isinstance(node, Const):
         return +mp.pi if node.id == "pi" else +mp.e
     if isinstance(node, Neg):
-        return -_evaluate(mp, node.operand, point)
+        return -_evaluate(mp, node.operand, point, largest)
     if isinstance(node, BinOp):  # a power
-        return _guard(mp, _power(mp, _evaluate(mp, node.left, point), _evaluate(mp, node.right, point)))
+        base = _evaluate(mp, node.left, point, largest)
+        return _guard(mp, _power(mp, base, _evaluate(mp, node.right, point, largest)), largest)
     if isinstance(node, Call):
-        args = [_evaluate(mp, arg, point) for arg in node.args]
-        if any(mp.isfinite(x) and x != 0 and mp.mag(x) > 16 for x in args) and node.func in ("exp", "sinh", "cosh"):
-            raise _GiveUp()  # exp of more than 2^16: far beyond any float
-        return _guard(mp, mp_call(mp, FUNCTIONS[node.func], args))
+        args = [_evaluate(mp, arg, point, largest) for arg in node.args]
+        if node.func in ("exp", "sinh", "cosh") and any(mp.isfinite(x) and abs(x) > 2 ** 16 for x in args):
+            raise _GiveUp()  # exp of more than 65536: far beyond any float
+        return _guard(mp, mp_call(mp, FUNCTIONS[node.func], args), largest)
     raise _GiveUp()  # units have no place in a formula
 
 
@@ -175,7 +199,12 @@ def _power(mp, a, b):
     return mp.power(a, b)
 
 
-def _guard(mp, value):
-    if mp.isfinite(value) and value != 0 and abs(mp.mag(value)) > _MAGNITUDE:
-        raise _GiveUp()
+def _guard(mp, value, largest: list):
+    """``value``, noted in ``largest``; gives up beyond 2^±4000."""
+    if mp.isfinite(value) and value != 0:
+        if abs(mp.mag(value)) > _MAGNITUDE:
+            raise _GiveUp()
+        size = abs(value)
+        if size > largest[0]:
+            largest[0] = size
     return value
