@@ -16,9 +16,6 @@ from .names import CONSTANTS
 from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit
 
 
-_ARITHMETIC = {"+": np.add, "-": np.subtract, "*": np.multiply, "/": np.divide}
-
-
 class EvaluationError(Exception):
     """A name without a value (an internal inconsistency, not an answer problem)."""
 
@@ -37,12 +34,13 @@ def evaluate(expr: Expr, env: Mapping[str, np.ndarray], units: Mapping[str, floa
 
 
 def evaluate_with_magnitude(expr: Expr, env: Mapping[str, np.ndarray], dtype=np.float64):
-    """The value of ``expr`` and, per point, the largest magnitude of any value met on
-    the way (its rounding errors are of the order of ``eps`` times that magnitude)."""
-    largest = [np.zeros((), dtype=dtype)]
+    """The value of ``expr``, per point the largest magnitude of any value met on the
+    way, and the number of nodes evaluated (its rounding error is of the order of
+    ``eps`` times that magnitude times that number)."""
+    largest = [np.zeros((), dtype=dtype), 0]
     with np.errstate(all="ignore"):
         value = _eval(expr, env, {}, dtype, largest)
-    return value, largest[0]
+    return value, largest[0], largest[1]
 
 
 def _eval(node: Expr, env, units, dtype, largest):
@@ -70,7 +68,17 @@ def _eval(node: Expr, env, units, dtype, largest):
     elif isinstance(node, BinOp):
         a = _eval(node.left, env, units, dtype, largest)
         b = _eval(node.right, env, units, dtype, largest)
-        value = _ARITHMETIC[node.op](a, b) if node.op in _ARITHMETIC else _power(a, b, dtype)
+        op = node.op
+        if op == "+":
+            value = np.add(a, b)
+        elif op == "-":
+            value = np.subtract(a, b)
+        elif op == "*":
+            value = np.multiply(a, b)
+        elif op == "/":
+            value = np.divide(a, b)
+        else:
+            value = _power(a, b, dtype)
     elif isinstance(node, Call):
         args = [_eval(arg, env, units, dtype, largest) for arg in node.args]
         value = FUNCTIONS[node.func].numpy(*args)
@@ -78,6 +86,7 @@ def _eval(node: Expr, env, units, dtype, largest):
         raise EvaluationError(f"cannot evaluate {node!r}")
     if largest is not None:
         largest[0] = np.fmax(largest[0], np.abs(value))
+        largest[1] += 1
     return value
 
 

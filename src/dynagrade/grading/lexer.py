@@ -17,7 +17,7 @@ Everything else is refused with a positioned message.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from .errors import AnswerError
 from .names import GREEK, MINUS_SIGNS, OPERATOR_CHARS, PLUS_SIGNS, SUPERSCRIPTS
@@ -37,6 +37,8 @@ _DIGITS = frozenset("0123456789")
 _LETTERS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ")
 _NAME_CHARS = _LETTERS | _DIGITS | {"_"}
 _NAME_TAIL = re.compile(r"[0-9_]*")
+_FORMULA_NAME = re.compile("[A-Za-z0-9_" + re.escape("".join(GREEK)) + "]+")
+_SPELLED_OUT = str.maketrans(GREEK)
 _SUPERSCRIPT_VALUE = re.compile(r"[+-]?[0-9]+")
 
 NUM, NAME, OP, LPAR, RPAR, COMMA, SEMI, SUP, ROOT, EQUALS, END = (
@@ -62,8 +64,9 @@ _REFUSED_CHARS = {
 }
 
 
-@dataclass(frozen=True, slots=True)
-class Token:
+class Token(NamedTuple):
+    """One token: its kind, its text (numbers with ASCII signs) and where it starts."""
+
     kind: str
     value: str
     pos: int
@@ -191,12 +194,8 @@ def _number(text: str, i: int, number_re, decimal_comma: bool, names: frozenset)
 def _name(text: str, i: int) -> tuple[str, int]:
     """A formula's name at ``i``: a letter, then letters, digits and ``_``; Greek
     letters are spelled out (``ω_n`` -> ``omega_n``)."""
-    out = []
-    end = i
-    while end < len(text) and (text[end] in _NAME_CHARS or text[end] in GREEK):
-        out.append(GREEK.get(text[end], text[end]))
-        end += 1
-    return "".join(out), end
+    m = _FORMULA_NAME.match(text, i)
+    return m.group().translate(_SPELLED_OUT), m.end()
 
 
 def _unit_name(text: str, i: int) -> tuple[str, int]:

@@ -133,12 +133,8 @@ def walk(node: Expr) -> Iterator[Expr]:
             stack.extend(reversed(current.args))
 
 
+#: Operators that form associative chains, by chain.
 _CHAINS = {"+": "sum", "-": "sum", "*": "product", "/": "product"}
-
-
-def chain(node: Expr) -> str | None:
-    """``"sum"`` or ``"product"`` when ``node`` is a link of an associative chain."""
-    return _CHAINS.get(node.op) if isinstance(node, BinOp) else None
 
 
 def nesting_and_terms(node: Expr) -> tuple[int, int]:
@@ -147,29 +143,30 @@ def nesting_and_terms(node: Expr) -> tuple[int, int]:
     one chain. Iterative, so any tree is safe to measure."""
     height, most = 0, 1
     terms: dict[int, int] = {}  # id of a chain's top link -> its terms so far
-    stack: list = [(node, 1, None)]
+    stack: list = [(node, 1, None, None)]
     while stack:
-        current, level, parent = stack.pop()
-        kind = chain(current)
-        if kind is not None and parent is not None and parent[1] == kind:
+        current, level, parent_kind, key = stack.pop()
+        kind = _CHAINS.get(current.op) if isinstance(current, BinOp) else None
+        if kind is not None and kind == parent_kind:
             level -= 1  # a link of the parent's chain sits at the chain's level
-            key = parent[0]
-        elif kind is not None:
-            key = id(current)
-            terms[key] = 1
-        height = max(height, level)
-        if kind is not None:
-            terms[key] += 1
-            most = max(most, terms[key])
-            stack.append((current.left, level + 1, (key, kind)))
-            stack.append((current.right, level + 1, (key, kind)))
+        if level > height:
+            height = level
+        if isinstance(current, BinOp):
+            if kind is None:
+                stack.append((current.left, level + 1, None, None))
+                stack.append((current.right, level + 1, None, None))
+                continue
+            if kind != parent_kind:
+                key = id(current)
+            count = terms[key] = terms.get(key, 1) + 1
+            if count > most:
+                most = count
+            stack.append((current.left, level + 1, kind, key))
+            stack.append((current.right, level + 1, kind, key))
         elif isinstance(current, Neg):
-            stack.append((current.operand, level + 1, None))
-        elif isinstance(current, BinOp):
-            stack.append((current.left, level + 1, None))
-            stack.append((current.right, level + 1, None))
+            stack.append((current.operand, level + 1, None, None))
         elif isinstance(current, Call):
-            stack.extend((a, level + 1, None) for a in current.args)
+            stack.extend((a, level + 1, None, None) for a in current.args)
     return height, most
 
 

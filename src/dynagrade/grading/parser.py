@@ -161,7 +161,10 @@ class _Parser:
 
     # -- token stream -------------------------------------------------------------------
     def peek(self, offset: int = 0) -> Token:
-        return self.tokens[min(self.index + offset, len(self.tokens) - 1)]
+        try:
+            return self.tokens[self.index + offset]
+        except IndexError:
+            return self.tokens[-1]
 
     def advance(self) -> Token:
         token = self.tokens[self.index]

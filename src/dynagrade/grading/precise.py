@@ -64,43 +64,59 @@ def _context(digits: int):
     return mp
 
 
+def extended(tree: Expr, env: dict) -> tuple[np.ndarray, np.ndarray] | None:
+    """Values of ``tree`` at the points of ``env`` in the platform's extended precision
+    and their error estimates (floats), or None where long double is just float64.
+    A reference's are worked out once and passed to :func:`agree_precisely`."""
+    if _EXTENDED_ROUNDOFF is None:
+        return None
+    value, largest, size = evaluate_with_magnitude(tree, env, dtype=np.longdouble)
+    shape = np.broadcast(*env.values()).shape if env else ()
+    value = np.broadcast_to(np.asarray(value, dtype=np.float64), shape)
+    error = _EXTENDED_ROUNDOFF * size * np.broadcast_to(np.asarray(largest, dtype=np.float64), shape)
+    return value, error
+
+
 def agree_precisely(answer: Expr, reference: Expr, env: dict, answer_values: np.ndarray,
-                    reference_values: np.ndarray, tol: np.ndarray, rtol: float,
-                    deadline: Deadline) -> bool | None:
+                    reference_values: np.ndarray, tol: np.ndarray, rtol: float, deadline: Deadline,
+                    reference_extended: tuple[np.ndarray, np.ndarray] | None = None) -> bool | None:
     """Whether ``answer`` equals ``reference`` at the points of ``env`` under the formula
     tolerance rule, decided in high precision (see the module's docstring); ``tol`` is
-    the float tolerance of each point."""
+    the float tolerance of each point, ``reference_extended`` what :func:`extended`
+    gives for the reference."""
     worst = int(np.argmax(np.abs(answer_values - reference_values) / tol))
-    sizes = (_size(answer), _size(reference))
+    point = {name: values[worst:worst + 1] for name, values in env.items()}
     try:
-        if _floats_were_right((answer, reference), sizes, env, (answer_values, reference_values), tol, worst,
-                              deadline):
-            return False  # the difference is real
+        if reference_extended is None:
+            reference_extended = _checked(reference, point, deadline)
+            at = 0
+        else:
+            at = worst
+        answer_extended = _checked(answer, point, deadline)
+        if _right(answer_values[worst], answer_extended, 0, tol[worst]) and \
+                _right(reference_values[worst], reference_extended, at, tol[worst]):
+            return False  # the float values were right: the difference is real
+        sizes = (_size(answer), _size(reference))
         a, e = _settled((answer, reference), sizes, env, len(reference_values), rtol, deadline)
     except _GiveUp:
         return None
     return bool(np.all(np.abs(a - e) <= point_tolerance(e, rtol)))
 
 
+def _checked(tree: Expr, point: dict, deadline: Deadline) -> tuple[np.ndarray, np.ndarray]:
+    """Values at one point with error estimates: extended precision, else 30 digits."""
+    found = extended(tree, point)
+    return found if found is not None else _values(tree, _size(tree), point, 1, _FIRST_DIGITS, deadline)
+
+
+def _right(float_value: float, checked: tuple[np.ndarray, np.ndarray], at: int, tol: float) -> bool:
+    """Whether a float value matches a trusted value of higher precision."""
+    value, error = checked[0][at], checked[1][at]
+    return bool(error <= _TRUSTED * tol and abs(value - float_value) <= _FLOAT_RIGHT * tol)
+
+
 def _size(tree: Expr) -> int:
     return sum(1 for _ in walk(tree))
-
-
-def _floats_were_right(trees, sizes, env, float_values, tol, worst, deadline) -> bool:
-    """Whether both float values at the worst point match trusted values of higher
-    precision (extended, else 30 digits)."""
-    point_env = {name: values[worst:worst + 1] for name, values in env.items()}
-    for tree, size, values in zip(trees, sizes, float_values):
-        if _EXTENDED_ROUNDOFF is not None:
-            value, largest = evaluate_with_magnitude(tree, point_env, dtype=np.longdouble)
-            value = float(np.ravel(value)[0])
-            error = _EXTENDED_ROUNDOFF * float(np.ravel(largest)[0]) * size
-        else:
-            (value,), (error,) = _values(tree, size, point_env, 1, _FIRST_DIGITS, deadline)
-        if not (math.isfinite(error) and error <= _TRUSTED * tol[worst]
-                and abs(value - values[worst]) <= _FLOAT_RIGHT * tol[worst]):
-            return False
-    return True
 
 
 def _settled(trees, sizes, env, count, rtol, deadline) -> tuple[np.ndarray, np.ndarray]:

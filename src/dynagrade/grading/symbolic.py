@@ -29,8 +29,8 @@ from .parser import parse_expression
 from .quantity import unit_info
 from .spec import SymbolicSpec
 from .timing import Deadline
-from .tolerance import point_tolerance
-from .precise import agree_precisely
+from .tolerance import median, point_tolerance
+from .precise import agree_precisely, extended
 from .tosympy import exactly_equal
 from .verdict import Verdict, unreadable
 
@@ -50,6 +50,7 @@ class _Reference:
     known: tuple
     domains: dict
     rtol: float
+    extended: tuple | None
 
 
 def _parse_reference(text, names, what: str) -> Expr:
@@ -87,7 +88,8 @@ def _reference(spec: SymbolicSpec, expected: str) -> _Reference:
         wrong_tree = _parse_reference(wrong.value, names, f"misconception {wrong.name!r}")
         known.append((wrong, _values(wrong_tree, env, values.shape)))
     domains = {n: (v.min * factors[n], v.max * factors[n]) for n, v in spec.variables.items()}
-    return _Reference(tree, names, env, values, tol, all_dims, ref_dim, swapped, tuple(known), domains, spec.rtol)
+    return _Reference(tree, names, env, values, tol, all_dims, ref_dim, swapped, tuple(known), domains, spec.rtol,
+                      extended(tree, env))
 
 
 def _values(tree: Expr, env: dict, shape) -> np.ndarray:
@@ -174,7 +176,8 @@ def _equivalent(tree: Expr, ref: _Reference, values: np.ndarray, deadline: Deadl
     diff = np.abs(values - ref.values)
     if np.all(diff <= ref.tol):
         return True
-    precise = agree_precisely(tree, ref.tree, ref.env, values, ref.values, ref.tol, ref.rtol, deadline)
+    precise = agree_precisely(tree, ref.tree, ref.env, values, ref.values, ref.tol, ref.rtol, deadline,
+                              ref.extended)
     if precise is not None:
         return precise
     return bool(np.all(diff <= 100 * ref.tol)) and \
@@ -217,7 +220,7 @@ def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray):
     nonzero = np.abs(e) > 0
     if np.count_nonzero(nonzero) >= 3:
         ratio = values[nonzero] / e[nonzero]
-        c = float(np.median(ratio))
+        c = median(ratio)
         if np.all(np.abs(ratio - c) <= 1e-6 * max(abs(c), 1e-300)) and c != 0:
             if abs(c + 1) < 1e-6:
                 return "sign", "Your expression has the wrong sign: check the direction you took as positive.", 0.0
@@ -237,11 +240,11 @@ def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray):
             return "reciprocal", "Your expression is the reciprocal of the expected one: is a fraction upside down?", 0.0
     if np.count_nonzero(nonzero) >= 3:
         ratio = values[nonzero] / e[nonzero]
-        c = float(np.median(ratio))
+        c = median(ratio)
         if c != 0 and np.all(np.abs(ratio - c) <= 1e-6 * abs(c)):
             return "constant factor", "Your expression differs from the expected one by a constant factor.", 0.0
     offset = values - e
-    d = float(np.median(offset))
+    d = median(offset)
     if d != 0 and np.all(np.abs(offset - d) <= ref.tol) and names_in(ref.tree):
         return "constant term", "Your expression differs from the expected one by a constant term.", 0.0
     return None
