@@ -14,7 +14,7 @@ from . import units
 from .errors import AnswerError
 from .evaluate import evaluate_constant
 from .functions import FUNCTIONS
-from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit, names_in, to_text
+from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit, has_units, names_in, to_text
 
 _ANGLE = (0.0,) * 7 + (1.0,)
 
@@ -68,6 +68,8 @@ def _dim(node: Expr, variables) -> tuple:
 
 
 def _power(node: BinOp, base: tuple, variables) -> tuple:
+    if has_units(node.right):
+        raise DimensionIssue(f"an exponent must be a pure number, not a unit ('{to_text(node.right)}')")
     exponent_dim = _dim(node.right, variables)
     if not units.is_dimensionless(exponent_dim):
         raise DimensionIssue(f"an exponent must be a pure number, but '{to_text(node.right)}' "

@@ -104,7 +104,7 @@ def _sample(spec: SymbolicSpec, expected: str, tree: Expr, factors: dict):
     kept: list[np.ndarray] = []
     count = 0
     for _ in range(_MAX_DRAWS):
-        batch = {n: rng.uniform(v.min, v.max, size=2 * want) * factors[n] for n, v in spec.variables.items()}
+        batch = {n: _uniform(rng, v.min, v.max, 2 * want) * factors[n] for n, v in spec.variables.items()}
         vals = _values(tree, batch, (2 * want,))
         ok = np.isfinite(vals)
         for n in batch:
@@ -120,6 +120,14 @@ def _sample(spec: SymbolicSpec, expected: str, tree: Expr, factors: dict):
     return env, values
 
 
+def _uniform(rng, low: float, high: float, size: int) -> np.ndarray:
+    """Points drawn uniformly from [low, high], also when high - low overflows (±1e308)."""
+    if math.isfinite(high - low):
+        return rng.uniform(low, high, size=size)
+    u = rng.uniform(0.0, 1.0, size=size)
+    return low * (1.0 - u) + high * u
+
+
 def _swap_sin_cos(tree: Expr) -> Expr:
     if isinstance(tree, Call):
         func = {"sin": "cos", "cos": "sin"}.get(tree.func, tree.func)
@@ -133,8 +141,8 @@ def _swap_sin_cos(tree: Expr) -> Expr:
 
 def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
     """The verdict on a formula answer (see :func:`dynagrade.grading.grade`)."""
-    deadline = Deadline()
     ref = _reference(spec, expected)
+    deadline = Deadline()  # the reference (and the units it loads) is prepared outside the budget
     try:
         tree = parse_expression(answer, ref.names)
     except AnswerError as error:
@@ -229,7 +237,7 @@ def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray):
             if abs(c - 0.5) < 1e-6:
                 return "factor 1/2", "Your expression is half the expected one: check for a missing factor of 2.", 0.0
             k = math.log10(abs(c))
-            if abs(k - round(k)) < 1e-6 and c > 0:
+            if abs(k - round(k)) < 1e-6 and c > 0 and round(k) != 0:
                 return "power of ten", f"Your expression is off by a factor 10^{round(k)}.", 0.0
     if ref.swapped is not None and _agrees(values, ref.swapped, ref) and not _agrees(e, ref.swapped, ref):
         return "sin/cos", "Your expression has sin where cos belongs (or the other way round): check which angle you used.", 0.0

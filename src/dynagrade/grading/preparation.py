@@ -1,0 +1,17 @@
+"""Loading, ahead of time, everything a verdict may need.
+
+Importing :mod:`dynagrade.grading` stays light (neither pint nor sympy), so a single
+answer is graded quickly. A caller about to grade many answers -- a class, a
+``compare`` stream, a benchmark -- calls :func:`prepare` first, so that no verdict
+spends its time budget importing pint's unit registry, sympy or mpmath.
+"""
+
+from __future__ import annotations
+
+
+def prepare() -> None:
+    """Load the graders of every kind of part, pint's registry, mpmath and sympy."""
+    from . import choice, numeric, symbolic, units, vector  # noqa: F401
+    import sympy  # noqa: F401  (the exact check of formulas)
+
+    units.registry().get_root_units("meter")  # pint parses its definitions lazily
