@@ -20,8 +20,8 @@ from .verdict import Verdict, unreadable
 
 #: What may separate the labels of several options.
 _SEPARATORS = re.compile(r"[,;]|\band\b")
-#: A label in brackets inside a run of labels: ``(a)(c)``, ``(a) (c)``, ``a) c)``.
-_BRACKETED = re.compile(r"[(\[{]?([^\s()\[\]{}]+)[)\]}]")
+#: Brackets around labels in a run of labels (``(a)(c)``, ``a) c)``) separate them.
+_BRACKETS_AS_SPACES = str.maketrans("()[]{}", "      ")
 
 
 def _key(label: str) -> str:
@@ -66,7 +66,7 @@ def _split(spec, answer: str) -> list[str] | str:
         if label is not None:
             picks.append(label)
             continue
-        words = _BRACKETED.sub(r" \1 ", chunk).split()
+        words = chunk.translate(_BRACKETS_AS_SPACES).split()
         labels = [_label(w, keys) for w in words]
         if len(words) > 1 and all(labels):
             picks.extend(labels)

@@ -7,6 +7,7 @@ point". Nothing is ever computed exactly, so ``9^9^9^9`` is just ``inf``.
 
 from __future__ import annotations
 
+import warnings
 from typing import Mapping
 
 import numpy as np
@@ -48,7 +49,9 @@ def _eval(node: Expr, env, units, dtype, largest):
         if dtype is np.float64 or not node.text:
             value = dtype(node.value)
         else:
-            value = dtype(node.text.replace(",", "."))
+            with warnings.catch_warnings():  # 1e5000 overflows to inf, as in float64
+                warnings.simplefilter("ignore", RuntimeWarning)
+                value = dtype(node.text.replace(",", "."))
     elif isinstance(node, Name):
         try:
             value = env[node.id]
