@@ -84,7 +84,8 @@ def agree_precisely(answer: Expr, reference: Expr, env: dict, answer_values: np.
     tolerance rule, decided in high precision (see the module's docstring); ``tol`` is
     the float tolerance of each point, ``reference_extended`` what :func:`extended`
     gives for the reference."""
-    worst = int(np.argmax(np.abs(answer_values - reference_values) / tol))
+    with np.errstate(all="ignore"):
+        worst = int(np.argmax(np.abs(answer_values - reference_values) / tol))
     point = {name: values[worst:worst + 1] for name, values in env.items()}
     try:
         if reference_extended is None:
@@ -134,7 +135,7 @@ def _settled(trees, sizes, env, count, rtol, deadline) -> tuple[np.ndarray, np.n
             return a, e
         if digits >= _MOST_DIGITS:
             raise _GiveUp()
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(all="ignore"):
             excess = np.log10(error / limit)
         excess = excess[np.isfinite(excess)]
         wanted = digits + (math.ceil(float(excess.max())) + 3 if excess.size else 0)

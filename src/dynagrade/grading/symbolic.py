@@ -167,7 +167,8 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
     if _equivalent(tree, ref, values, deadline):
         return _form_verdict(spec, ref, tree)
     hints = " ".join(reading_hints(tree))
-    found = _misconception(spec, ref, values)
+    with np.errstate(all="ignore"):  # ratios of values near the float limit overflow
+        found = _misconception(spec, ref, values)
     if found is not None:
         name, feedback, score = found
         return Verdict(False, score, " ".join(x for x in (feedback, hints) if x) + reveal, misconception=name)
