@@ -24,19 +24,23 @@ _ROUNDING = 8 * 2.0 ** -52
 
 def is_close(answer, expected, rtol: float, atol: float | None, scale=None):
     """The tolerance rule ``|a - e| <= max(atol, rtol*s)``, ``s = |e|`` unless ``scale``
-    is given; the boundary is inclusive up to float rounding (2.02 for 2 at 1 %).
+    is given; the boundary is inclusive up to float rounding (2.02 for 2 at 1 %), and
+    a non-finite answer is never close.
 
     The one rule for numbers and vector components alike: on arrays it answers
     element by element (vectors pass the scale of each component).
     """
     floor = DEFAULT_ATOL if atol is None else atol
-    a = np.asarray(answer, dtype=np.float64)
+    if not (isinstance(answer, np.ndarray) or isinstance(expected, np.ndarray)):
+        s = abs(expected) if scale is None else scale
+        return math.isfinite(answer) and \
+            abs(answer - expected) <= max(floor, rtol * s) + _ROUNDING * max(abs(answer), abs(expected))
+    a = np.asarray(answer, dtype=np.float64)  # the same rule, element by element
     e = np.asarray(expected, dtype=np.float64)
     s = np.abs(e) if scale is None else np.asarray(scale, dtype=np.float64)
-    slack = _ROUNDING * np.maximum(np.abs(a), np.abs(e))
     with np.errstate(invalid="ignore", over="ignore"):
-        close = np.abs(a - e) <= np.maximum(floor, rtol * s) + slack
-    return bool(close) if close.ndim == 0 else close
+        return np.isfinite(a) & \
+            (np.abs(a - e) <= np.maximum(floor, rtol * s) + _ROUNDING * np.maximum(np.abs(a), np.abs(e)))
 
 
 def point_tolerance(target: np.ndarray, rtol: float) -> np.ndarray:
