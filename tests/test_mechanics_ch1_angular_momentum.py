@@ -23,8 +23,8 @@ def test_angular_momentum_about_the_centre_is_conserved_under_a_central_force(m,
 
     too_close.terminal = True
     traj = particle.simulate(m, [r0, 0.0, 0.0], [vr, vt, 0.0], force, 3.0, events=(too_close,))
-    H = am.angular_momentum(traj.r, m, traj.v)
-    H0 = am.angular_momentum([r0, 0.0, 0.0], m, [vr, vt, 0.0])
+    H = am.particle_angular_momentum(traj.r, m, traj.v)
+    H0 = am.particle_angular_momentum([r0, 0.0, 0.0], m, [vr, vt, 0.0])
     assert np.allclose(H, H0, rtol=0, atol=1e-7 * np.linalg.norm(H0))
     assert np.allclose(am.torque(traj.r[5], force(0, traj.r[5], None)), 0.0, atol=1e-9 * strength)
 
@@ -40,11 +40,11 @@ def test_angular_momentum_balance_about_a_moving_point_matches_finite_difference
     r = lambda t: r0 + v0 * t + 0.5 * F / m * t**2
     v = lambda t: v0 + F / m * t
     rB = lambda t: rB0 + vB * t
-    H = lambda t: am.angular_momentum(r(t) - rB(t), m, v(t))
+    H = lambda t: am.particle_angular_momentum(r(t) - rB(t), m, v(t))
     t, h = 0.7, 1e-4
     Hdot = (H(t + h) - H(t - h)) / (2 * h)
     M = am.torque(r(t) - rB(t), F)
-    assert np.allclose(am.angular_momentum_rate(M, vB, particle.linear_momentum(m, v(t))), Hdot, atol=1e-6)
+    assert np.allclose(am.angular_momentum_rate(M, vB, particle.particle_linear_momentum(m, v(t))), Hdot, atol=1e-6)
 
 
 @settings(max_examples=20, deadline=None)
@@ -56,7 +56,7 @@ def test_planar_torque_is_the_rate_of_m_r2_phidot(m, r, rd, phd, rdd, phdd):
     h = 1e-5
     assert am.planar_torque(m, r, rd, phd, phdd) == pytest.approx((H(h) - H(-h)) / (2 * h), abs=1e-6)
     # and the 3D vector formula agrees with the planar one (eq. before 1.137)
-    H3 = am.angular_momentum([r, 0.0], m, [rd, r * phd])
+    H3 = am.particle_angular_momentum([r, 0.0], m, [rd, r * phd])
     assert H3[2] == pytest.approx(am.planar_angular_momentum(m, r, phd))
 
 
@@ -83,7 +83,7 @@ def test_rotating_particle_in_air_matches_the_simulated_drag_motion(m, k, R, w0,
 @given(g=st.floats(5.0, 15.0), R=st.floats(0.2, 3.0), amp=st.floats(0.005, 0.02))
 def test_small_angle_pendulum_period_matches_integration(g, R, amp):
     def rhs(t, y):
-        return [y[1], am.pendulum_angular_acceleration(y[0], y[1], g, R)]
+        return [y[1], am.particle_pendulum_angular_acceleration(y[0], y[1], g, R)]
 
     def crosses(t, y):
         return y[0]
@@ -102,7 +102,7 @@ def test_pendulum_string_force_and_drag_terms():
     assert am.pendulum_string_force(2.0, 1.5, 9.81, 0.0, 0.0) == pytest.approx(19.62)
     assert am.pendulum_string_force(2.0, 1.5, 9.81, 0.0, 2.0) == pytest.approx(19.62 + 2 * 1.5 * 4)
     # eq. (1.149): phi'' = -(k/m) phi' - (g/R) sin phi
-    assert am.pendulum_angular_acceleration(0.3, 1.2, 9.81, 2.0, k=0.4, m=2.0) == pytest.approx(
+    assert am.particle_pendulum_angular_acceleration(0.3, 1.2, 9.81, 2.0, k=0.4, m=2.0) == pytest.approx(
         -0.2 * 1.2 - 9.81 / 2.0 * np.sin(0.3))
 
 

@@ -17,13 +17,13 @@ def test_restitution_loses_exactly_one_minus_e_squared_of_the_normal_kinetic_ene
     n = np.array([np.sin(tilt) * np.cos(angle), np.sin(tilt) * np.sin(angle), np.cos(tilt)])
     v_n = v @ n
     v_after = impact.rebound_velocity(v, n, e)
-    T_normal = energy.kinetic_energy(m, v_n)
-    lost = energy.kinetic_energy(m, v) - energy.kinetic_energy(m, v_after)
+    T_normal = energy.particle_kinetic_energy(m, v_n)
+    lost = energy.particle_kinetic_energy(m, v) - energy.particle_kinetic_energy(m, v_after)
     assert lost == pytest.approx(impact.normal_energy_loss_fraction(e) * T_normal, abs=1e-9 * (1 + T_normal))
     assert v_after @ n == pytest.approx(impact.rebound_normal_velocity(v_n, e), abs=1e-9)
     assert np.allclose(v_after - (v_after @ n) * n, v - v_n * n, atol=1e-9)     # smooth wall
     if e == 1.0:
-        assert energy.kinetic_energy(m, v_after) == pytest.approx(energy.kinetic_energy(m, v))
+        assert energy.particle_kinetic_energy(m, v_after) == pytest.approx(energy.particle_kinetic_energy(m, v))
     # the wall's impulse is the change of momentum
     assert m * np.linalg.norm(v_after - v) == pytest.approx(impact.wall_impulse(m, v_n, e), abs=1e-9)
 
@@ -37,7 +37,7 @@ def test_oblique_rebound_angle_speed_and_energy_agree_with_the_vector_rule(v, th
     assert impact.rebound_angle(theta, e) == pytest.approx(np.arctan2(v_out[0], v_out[1]))
     assert impact.rebound_speed(v, theta, e) == pytest.approx(np.linalg.norm(v_out))
     assert impact.impact_energy_loss(m, v, theta, e) == pytest.approx(
-        energy.kinetic_energy(m, v_in) - energy.kinetic_energy(m, v_out), abs=1e-9)
+        energy.particle_kinetic_energy(m, v_in) - energy.particle_kinetic_energy(m, v_out), abs=1e-9)
     assert impact.restitution_from_speeds(v_in[1], v_out[1]) == pytest.approx(e)
 
 

@@ -5,7 +5,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 from scipy.integrate import solve_ivp
 
-from dynagrade.mechanics import incline
+from dynagrade.mechanics.examples import incline
 
 
 def _slide_until_rest(v0, acceleration):
@@ -58,7 +58,7 @@ def test_sliding_acceleration_is_the_force_balance_along_the_slope(alpha, mu, g,
     N = -weight @ n                                    # no motion normal to the slope
     force = weight + N * n - mu * N * t
     assert force @ n == pytest.approx(0.0, abs=1e-9 * m * g)
-    assert incline.normal_force(m, alpha, g) == pytest.approx(N, rel=1e-12, abs=1e-12)
+    assert incline.incline_normal_force(m, alpha, g) == pytest.approx(N, rel=1e-12, abs=1e-12)
     assert incline.friction_force(m, alpha, mu, g) == pytest.approx(mu * N, rel=1e-12, abs=1e-12)
     assert incline.sliding_acceleration(alpha, mu, g) == pytest.approx(force @ t / m, rel=1e-9, abs=1e-9 * g)
 

@@ -203,7 +203,7 @@ def test_circular_motion_in_the_space_curve_frame_of_example_1_6():
     assert kin.tangential_acceleration(v, a) == pytest.approx(R * phdd)
     assert kin.normal_acceleration(v, a) == pytest.approx(R * phd**2)
     assert kin.radius_of_curvature(v, a) == pytest.approx(R)
-    assert kin.centripetal_acceleration(R * phd, R) == pytest.approx(R * phd**2)
+    assert kin.path_centripetal_acceleration(R * phd, R) == pytest.approx(R * phd**2)
     assert kin.radius_of_curvature_of_graph(0.3, 0.0) == np.inf      # straight line
 
 

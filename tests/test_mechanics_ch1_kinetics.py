@@ -19,7 +19,7 @@ def test_energy_is_conserved_by_the_simulator_for_gravity_and_a_spring(m, k, g, 
         return particle.weight(m, gvec) + particle.spring_force(k, r, anchor)
 
     def total(r, v):
-        return (energy.kinetic_energy(m, v) + energy.gravity_potential(m, r, gvec)
+        return (energy.particle_kinetic_energy(m, v) + energy.gravity_potential(m, r, gvec)
                 + energy.spring_potential(k, r[..., 0], anchor[0])
                 + energy.spring_potential(k, r[..., 1], anchor[1]))
 
@@ -55,7 +55,7 @@ def test_energy_decreases_by_exactly_the_friction_and_drag_work(m, mu, v0, k, g)
     _, vs = traj.at(ts)
     drag_work = -k * np.trapezoid(vs[:, 0] ** 2, ts)
     W = energy.friction_work_on_floor(mu, m, g, distance) + drag_work
-    assert energy.kinetic_energy(m, v0) + W == pytest.approx(0.0, abs=1e-5 * energy.kinetic_energy(m, v0))
+    assert energy.particle_kinetic_energy(m, v0) + W == pytest.approx(0.0, abs=1e-5 * energy.particle_kinetic_energy(m, v0))
     if k == 0.0:
         assert distance == pytest.approx(energy.sliding_stopping_distance(v0, mu, g), rel=1e-8)
         assert t_stop == pytest.approx(particle.sliding_stop_time(v0, mu, g), rel=1e-8)
@@ -104,10 +104,10 @@ def test_curl_test_tells_conservative_from_non_conservative_fields():
 @given(m=st.floats(0.1, 5.0), v1=st.floats(0.0, 10.0), W=st.floats(-50.0, 50.0))
 def test_speed_after_work_satisfies_the_work_energy_balance(m, v1, W):
     v2 = energy.speed_after_work(m, v1, W)
-    if energy.kinetic_energy(m, v1) + W < 0:
+    if energy.particle_kinetic_energy(m, v1) + W < 0:
         assert np.isnan(v2)
     else:
-        assert energy.kinetic_energy(m, v2) - energy.kinetic_energy(m, v1) == pytest.approx(W, abs=1e-9 * (1 + abs(W)))
+        assert energy.particle_kinetic_energy(m, v2) - energy.particle_kinetic_energy(m, v1) == pytest.approx(W, abs=1e-9 * (1 + abs(W)))
 
 
 @settings(max_examples=20, deadline=None)
@@ -185,14 +185,14 @@ def test_forces_follow_their_definitions():
     assert np.allclose(particle.linear_drag_force([1.0, -2.0], 0.5), [-0.5, 1.0])
     assert np.allclose(particle.quadratic_drag_force([3.0, 4.0], 0.1), [-1.5, -2.0])
     assert particle.spring_force(100.0, 0.3, 0.1) == pytest.approx(-20.0)
-    assert np.allclose(particle.linear_momentum(2.0, [1.0, 2.0]), [2.0, 4.0])
+    assert np.allclose(particle.particle_linear_momentum(2.0, [1.0, 2.0]), [2.0, 4.0])
     assert np.allclose(particle.acceleration(2.0, [1.0, 0.0], [0.0, -19.62]), [0.5, -9.81])
     assert particle.floor_normal_force(3.0, 9.81) == pytest.approx(29.43)         # eq. (1.70)
 
 
 def test_height_gain_by_energy_equals_the_integrated_peak_of_example_1_12():
     v0, alpha, g = 12.0, 0.9, 9.81
-    from dynagrade.mechanics import projectile
+    from dynagrade.mechanics.examples import projectile
     assert energy.height_gain(v0, v0 * np.cos(alpha), g) == pytest.approx(projectile.peak_height(v0, alpha, g))
     assert kin.rocket_peak_height(v0, g, 1e15) == pytest.approx(energy.height_gain(v0, 0.0, g), rel=1e-9)
 

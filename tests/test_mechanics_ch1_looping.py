@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 from scipy.integrate import solve_ivp
 
-from dynagrade.mechanics import looping
+from dynagrade.mechanics.examples import looping
 
 
 def _ride(v0, R, g, phi_end=2 * np.pi):
@@ -44,7 +44,7 @@ def test_speed_and_normal_force_match_the_integrated_ride(R, g, factor, m):
     v_num = R * phidot                                          # eq. (1.114)
     N_num = m * R * phidot**2 + m * g * np.cos(phi)             # radial balance (1.115)
     assert np.allclose(looping.speed(phi, v0, R, g), v_num, rtol=1e-7)
-    assert np.allclose(looping.normal_force(phi, m, v0, R, g), N_num, rtol=1e-6, atol=1e-7 * m * g)
+    assert np.allclose(looping.looping_normal_force(phi, m, v0, R, g), N_num, rtol=1e-6, atol=1e-7 * m * g)
     assert looping.maximum_normal_force(m, v0, R, g) == pytest.approx(N_num.max(), rel=1e-6)
     assert looping.minimum_speed(v0, R, g) == pytest.approx(R * sol.y_events[2][0][1], rel=1e-7)
 
@@ -64,11 +64,11 @@ def test_minimum_entry_speed_makes_the_normal_force_vanish_at_the_top_and_6mg_at
     R, g, m = 10.0, 9.81, 800.0
     v0 = looping.minimum_entry_speed(R, g)
     assert v0 == pytest.approx(np.sqrt(5 * 9.81 * 10))
-    assert looping.normal_force(np.pi, m, v0, R, g) == pytest.approx(0.0, abs=1e-9)
-    assert looping.normal_force(2 * np.pi, m, v0, R, g) == pytest.approx(6 * m * g)   # eq. (1.119)
+    assert looping.looping_normal_force(np.pi, m, v0, R, g) == pytest.approx(0.0, abs=1e-9)
+    assert looping.looping_normal_force(2 * np.pi, m, v0, R, g) == pytest.approx(6 * m * g)   # eq. (1.119)
     phi = np.linspace(0, 2 * np.pi, 1001)
-    assert np.all(looping.normal_force(phi, m, v0, R, g) >= -1e-9)
-    assert np.any(looping.normal_force(phi, m, 0.99 * v0, R, g) < 0)
+    assert np.all(looping.looping_normal_force(phi, m, v0, R, g) >= -1e-9)
+    assert np.any(looping.looping_normal_force(phi, m, 0.99 * v0, R, g) < 0)
 
 
 @settings(max_examples=20, deadline=None)
@@ -96,7 +96,7 @@ def test_support_reactions_keep_the_looping_in_static_equilibrium(phi, R, m, fac
     # so the car pushes the track with N (sin phi, -cos phi) at r.
     g = 9.81
     v0 = factor * np.sqrt(5 * g * R)
-    N = looping.normal_force(phi, m, v0, R, g)
+    N = looping.looping_normal_force(phi, m, v0, R, g)
     r = np.array([R * np.sin(phi), R - R * np.cos(phi)])
     f_car = N * np.array([np.sin(phi), -np.cos(phi)])
     s = looping.support_reactions(phi, m, v0, R, g)

@@ -5,7 +5,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 from scipy.integrate import solve_ivp
 
-from dynagrade.mechanics import projectile
+from dynagrade.mechanics.examples import projectile
 
 RTOL, ATOL = 1e-10, 1e-12
 

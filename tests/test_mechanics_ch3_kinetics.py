@@ -18,7 +18,7 @@ def test_rolling_without_slip_conserves_energy(body, m, radius, alpha, t):
     i_c = ROUND[body] * m * radius**2
     a = rigid_kinetics.rolling_acceleration_on_incline(alpha, g, m, radius, i_c)
     v, s = a * t, 0.5 * a * t**2
-    kinetic = rigid_kinetics.kinetic_energy(m, [v, 0, 0], np.diag([0, 0, i_c]), [0, 0, v / radius])
+    kinetic = rigid_kinetics.rigid_body_kinetic_energy(m, [v, 0, 0], np.diag([0, 0, i_c]), [0, 0, v / radius])
     assert kinetic == pytest.approx(m * g * s * np.sin(alpha), rel=1e-10)
     h = s * np.sin(alpha)
     assert rigid_kinetics.rolling_speed_after_drop(h, g, m, radius, i_c) == pytest.approx(v)
@@ -67,9 +67,9 @@ def test_rigid_body_momentum_and_energy_equal_sums_over_its_particles(seed):
     i_c = sum(mi * (ri @ ri * np.eye(3) - np.outer(ri, ri)) for mi, ri in zip(m, rho))
     h_b = sum(mi * np.cross(r_c + ri - b, vi) for mi, ri, vi in zip(m, rho, v))
     t = sum(0.5 * mi * vi @ vi for mi, vi in zip(m, v))
-    assert rigid_kinetics.linear_momentum(m.sum(), v_c) == pytest.approx((m[:, None] * v).sum(axis=0))
-    assert rigid_kinetics.angular_momentum_about_point(i_c, omega, m.sum(), r_c - b, v_c) == pytest.approx(h_b)
-    assert rigid_kinetics.kinetic_energy(m.sum(), v_c, i_c, omega) == pytest.approx(t)
+    assert rigid_kinetics.rigid_body_linear_momentum(m.sum(), v_c) == pytest.approx((m[:, None] * v).sum(axis=0))
+    assert rigid_kinetics.rigid_body_angular_momentum_about_point(i_c, omega, m.sum(), r_c - b, v_c) == pytest.approx(h_b)
+    assert rigid_kinetics.rigid_body_kinetic_energy(m.sum(), v_c, i_c, omega) == pytest.approx(t)
 
 
 @settings(max_examples=20, deadline=None)
@@ -88,7 +88,7 @@ def test_pendulum_speed_from_energy_agrees_with_integrated_equation_of_motion(m,
     rate = abs(sol.y_events[0][0][1])
     assert rigid_kinetics.angular_speed_of_pendulum_from_energy(
         phi0, 0.0, g, m, length / 2, i_o) == pytest.approx(rate, rel=1e-6)
-    assert rigid_kinetics.pendulum_angular_acceleration(phi0, g, m, length / 2, i_o) == pytest.approx(
+    assert rigid_kinetics.compound_pendulum_angular_acceleration(phi0, g, m, length / 2, i_o) == pytest.approx(
         -k * np.sin(phi0))
 
 

@@ -11,6 +11,7 @@ from hypothesis import given, settings, strategies as st
 from scipy.integrate import solve_ivp
 
 from dynagrade.mechanics import equilibrium, lagrange
+from dynagrade.mechanics.examples import hoop
 
 t = sp.Symbol("t")
 m, m1, m2, g, L, L0, L1, L2, k, c = sp.symbols("m m1 m2 g L L0 L1 L2 k c", positive=True)
@@ -144,19 +145,19 @@ def test_hoop_equilibria_are_the_roots_of_the_effective_potential_derivative(rad
     Omega = spin_factor * np.sqrt(gg / radius)
     roots = equilibrium.equilibrium_positions_in_interval(
         lambda x: dV_eff(x, 1.0, radius, Omega, gg), -np.pi + 1e-9, np.pi - 1e-9)
-    theta_star = equilibrium.hoop_equilibrium_angle(radius, Omega, gg)
+    theta_star = hoop.hoop_equilibrium_angle(radius, Omega, gg)
     assert roots == pytest.approx([-theta_star, 0.0, theta_star], abs=1e-9)
     # the lowest point is unstable, the two off-axis positions are stable (sign of V*'')
     assert equilibrium.stability([[d2V_eff(0.0, 1.0, radius, Omega, gg)]]) == "unstable"
     assert equilibrium.stability([[d2V_eff(theta_star, 1.0, radius, Omega, gg)]]) == "stable"
-    assert equilibrium.hoop_potential_curvature(theta_star, 1.0, radius, Omega, gg) == pytest.approx(
+    assert hoop.hoop_potential_curvature(theta_star, 1.0, radius, Omega, gg) == pytest.approx(
         d2V_eff(theta_star, 1.0, radius, Omega, gg), rel=1e-9)
 
 
 def test_below_the_critical_spin_only_the_lowest_point_is_stable():
     gg, radius = 9.81, 0.5
-    Omega = 0.8 * equilibrium.hoop_critical_spin_rate(radius, gg)
-    assert np.isnan(equilibrium.hoop_equilibrium_angle(radius, Omega, gg))
+    Omega = 0.8 * hoop.hoop_critical_spin_rate(radius, gg)
+    assert np.isnan(hoop.hoop_equilibrium_angle(radius, Omega, gg))
     roots = equilibrium.equilibrium_positions_in_interval(
         lambda x: dV_eff(x, 1.0, radius, Omega, gg), -np.pi / 2, np.pi / 2)
     assert roots == pytest.approx([0.0], abs=1e-12)
@@ -174,7 +175,7 @@ def test_symbolic_equilibria_of_the_hoop_include_both_poles_and_the_off_axis_ang
 def test_small_oscillations_about_the_stable_equilibrium_have_the_linearized_period(factor):
     gg, radius = 9.81, 0.4
     Omega = factor * np.sqrt(gg / radius)
-    theta0 = 0.0 if factor < 1 else equilibrium.hoop_equilibrium_angle(radius, Omega, gg)
+    theta0 = 0.0 if factor < 1 else hoop.hoop_equilibrium_angle(radius, Omega, gg)
     # theta'' = -V*'(theta) / (m R^2), integrated from a small offset; period from the
     # upward zero crossings of theta - theta0
     rhs = lambda _t, y: [y[1], -dV_eff(y[0], 1.0, radius, Omega, gg) / radius**2]
@@ -183,7 +184,7 @@ def test_small_oscillations_about_the_stable_equilibrium_have_the_linearized_per
     sol = solve_ivp(rhs, (0, 30), [theta0 + 1e-4, 0.0], events=crossing, rtol=1e-10, atol=1e-13)
     times = sol.t_events[0]
     measured = np.mean(np.diff(times))
-    omega = equilibrium.hoop_oscillation_frequency(radius, Omega, gg)
+    omega = hoop.hoop_oscillation_frequency(radius, Omega, gg)
     assert measured == pytest.approx(2 * np.pi / omega, rel=1e-4)
 
 

@@ -58,7 +58,7 @@ def test_modal_superposition_equals_direct_integration(system, x0, v0):
     Minv = np.linalg.inv(M)
     sol = solve_ivp(lambda _t, y: np.concatenate([y[n:], -Minv @ K @ y[:n]]), (0, t[-1]),
                     np.concatenate([x0, v0]), t_eval=t, rtol=1e-10, atol=1e-13, method="DOP853")
-    assert np.allclose(multi_dof.free_response(t, K, M, x0, v0), sol.y[:n], atol=1e-7)
+    assert np.allclose(multi_dof.modal_free_response(t, K, M, x0, v0), sol.y[:n], atol=1e-7)
 
 
 def test_modal_superposition_with_proportional_damping_equals_direct_integration():
@@ -70,7 +70,7 @@ def test_modal_superposition_with_proportional_damping_equals_direct_integration
     Minv = np.linalg.inv(M)
     rhs = lambda _t, y: np.concatenate([y[3:], -Minv @ (K @ y[:3] + C @ y[3:])])
     sol = solve_ivp(rhs, (0, 4), np.concatenate([x0, v0]), t_eval=t, rtol=1e-10, atol=1e-13)
-    assert np.allclose(multi_dof.free_response(t, K, M, x0, v0, C), sol.y[:3], atol=1e-8)
+    assert np.allclose(multi_dof.modal_free_response(t, K, M, x0, v0, C), sol.y[:3], atol=1e-8)
     # proportional damping: each damped eigenvalue is that of a 1-DOF modal oscillator
     lam = multi_dof.damped_eigenvalues(K, M, C)
     w = multi_dof.natural_frequencies(K, M)
@@ -168,5 +168,5 @@ def test_modal_matrices_are_diagonal_and_rigid_modes_have_zero_frequency():
     Mm, Km = multi_dof.modal_matrices(K, M)
     assert np.allclose(Mm, np.eye(2)) and np.allclose(Km, np.diag(w**2), atol=1e-9)
     # the rigid mode drifts: x(t) = x0 + v t for equal initial velocities
-    x = multi_dof.free_response([2.0], K, M, [0.0, 0.0], [1.0, 1.0])
+    x = multi_dof.modal_free_response([2.0], K, M, [0.0, 0.0], [1.0, 1.0])
     assert np.allclose(x[:, 0], [2.0, 2.0])

@@ -7,7 +7,7 @@ from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, N
                                 Symbolic, Uniform, Variable)
 from dynagrade.exercise.figure import block, inclined_plane
 from dynagrade.exercise.numbers import format_number
-from dynagrade.mechanics import incline
+from dynagrade.mechanics.examples import incline
 
 
 def figure(p):
@@ -30,7 +30,7 @@ def figure(p):
 def solve(p):
     return {
         "a": incline.sliding_acceleration(p.alpha, p.mu, p.g),
-        "N": incline.normal_force(p.m, p.alpha, p.g),
+        "N": incline.incline_normal_force(p.m, p.alpha, p.g),
         "stops": "yes" if incline.decelerates_down_slope(p.alpha, p.mu) else "no",
     }
 

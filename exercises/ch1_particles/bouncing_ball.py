@@ -12,7 +12,7 @@ def solve(p):
     return {
         "v_out": v_out,
         "h1": impact.rebound_height(p.h0, p.e),
-        "dT": float(energy.kinetic_energy(p.m, v_in) - energy.kinetic_energy(p.m, v_out)),
+        "dT": float(energy.particle_kinetic_energy(p.m, v_in) - energy.particle_kinetic_energy(p.m, v_out)),
         "h3": impact.rebound_height(p.h0, p.e, 3),
     }
 

@@ -10,7 +10,7 @@ from dynagrade.mechanics import kinematics
 def solve(p):
     v = kinematics.speed_at_constant_acceleration(p.t, p.v0, p.at)      # s'' = a_t constant
     s = kinematics.distance_at_constant_acceleration(p.t, p.v0, p.at)
-    a_n = kinematics.centripetal_acceleration(v, p.R)
+    a_n = kinematics.path_centripetal_acceleration(v, p.R)
     return {
         "v": v,
         "a_n": a_n,

@@ -6,7 +6,7 @@ from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, N
                                 Symbolic, Uniform, Variable)
 from dynagrade.exercise.figure import arrow, block, inclined_plane
 from dynagrade.exercise.numbers import format_number
-from dynagrade.mechanics import incline
+from dynagrade.mechanics.examples import incline
 
 
 def figure(p):

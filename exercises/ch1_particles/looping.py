@@ -6,7 +6,7 @@ from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, N
                                 Symbolic, Uniform, Variable)
 from dynagrade.exercise.figure import angle_arc, arrow, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
-from dynagrade.mechanics import looping
+from dynagrade.mechanics.examples import looping
 
 
 def figure(p):
@@ -45,7 +45,7 @@ def solve(p):
         "v_min_entry": looping.minimum_entry_speed(p.R, p.g),
         "N_max": looping.maximum_normal_force(p.m, p.v0, p.R, p.g),
         "v_phi": looping.speed(p.phi, p.v0, p.R, p.g),
-        "N_phi": looping.normal_force(p.phi, p.m, p.v0, p.R, p.g),
+        "N_phi": looping.looping_normal_force(p.phi, p.m, p.v0, p.R, p.g),
         "M_A": reactions.MA,
     }
 
@@ -71,7 +71,7 @@ EXERCISE = Exercise(
         # it must stand out from the 1 % tolerance.
         Constraint("the height gained by phi changes the normal force by at least 5 %",
                    lambda p: 2 * p.m * p.g * (1 - np.cos(p.phi))
-                   >= 0.05 * looping.normal_force(p.phi, p.m, p.v0, p.R, p.g)),
+                   >= 0.05 * looping.looping_normal_force(p.phi, p.m, p.v0, p.R, p.g)),
     ),
     statement="""
 A car of mass $m$ = {{ m }} coasts with its engine off into a circular looping of radius

@@ -9,7 +9,7 @@ from dynagrade.mechanics import kinematics
 def solve(p):
     rho = float(kinematics.parabola_radius_of_curvature(p.c, p.x1))
     return {"rho": rho, "rho_vertex": float(kinematics.parabola_radius_of_curvature(p.c, 0.0)),
-            "a_n": kinematics.centripetal_acceleration(p.v, rho)}
+            "a_n": kinematics.path_centripetal_acceleration(p.v, rho)}
 
 
 EXERCISE = Exercise(

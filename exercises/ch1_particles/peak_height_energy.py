@@ -4,7 +4,8 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform, Variable)
-from dynagrade.mechanics import energy, projectile
+from dynagrade.mechanics import energy
+from dynagrade.mechanics.examples import projectile
 
 
 def solve(p):
@@ -12,7 +13,7 @@ def solve(p):
     v_top = float(projectile.velocity(projectile.peak_time(p.v0, p.alpha, p.g),
                                       p.v0, p.alpha, p.g)[0])
     return {"v_top": v_top, "h": energy.height_gain(p.v0, v_top, p.g),
-            "T_top": float(energy.kinetic_energy(p.m, v_top))}
+            "T_top": float(energy.particle_kinetic_energy(p.m, v_top))}
 
 
 EXERCISE = Exercise(

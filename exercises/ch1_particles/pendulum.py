@@ -11,7 +11,7 @@ from dynagrade.mechanics import angular_momentum as am
 def solve(p):
     return {
         "T": am.pendulum_small_angle_period(p.g, p.R),
-        "phi_ddot": float(am.pendulum_angular_acceleration(p.phi, p.phidot, p.g, p.R, p.k, p.m)),
+        "phi_ddot": float(am.particle_pendulum_angular_acceleration(p.phi, p.phidot, p.g, p.R, p.k, p.m)),
         "S": float(am.pendulum_string_force(p.m, p.R, p.g, p.phi, p.phidot)),
     }
 

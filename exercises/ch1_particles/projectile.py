@@ -6,7 +6,7 @@ from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, N
                                 Symbolic, Uniform, Variable)
 from dynagrade.exercise.figure import angle_arc, arrow, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
-from dynagrade.mechanics import projectile
+from dynagrade.mechanics.examples import projectile
 
 
 def solve(p):

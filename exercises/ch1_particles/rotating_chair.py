@@ -16,7 +16,7 @@ def solve(p):
     omega1 = am.conserved_angular_velocity(p.omega0, I0, I1)
     # rotation about the fixed vertical axis: 1x1 moment of inertia, one rate
     return {"omega1": omega1,
-            "H": float(rigid_kinetics.angular_momentum([[I0]], [p.omega0])[0]),
+            "H": float(rigid_kinetics.rigid_body_angular_momentum([[I0]], [p.omega0])[0]),
             "W": (rigid_kinetics.rotational_kinetic_energy([[I1]], [omega1])
                   - rigid_kinetics.rotational_kinetic_energy([[I0]], [p.omega0]))}
 

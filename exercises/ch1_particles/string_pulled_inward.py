@@ -15,7 +15,7 @@ def solve(p):
     return {
         "omega1": omega1,
         "v_ratio": v1 / v0,
-        "W": float(energy.kinetic_energy(p.m, v1) - energy.kinetic_energy(p.m, v0)),
+        "W": float(energy.particle_kinetic_energy(p.m, v1) - energy.particle_kinetic_energy(p.m, v0)),
     }
 
 

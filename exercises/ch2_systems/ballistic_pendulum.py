@@ -6,7 +6,8 @@ from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symb
                                 Uniform, Variable)
 from dynagrade.exercise.figure import arrow, block, ceiling, new_drawing
 from dynagrade.exercise.numbers import format_number
-from dynagrade.mechanics import collisions, energy, projectile
+from dynagrade.mechanics import collisions, energy
+from dynagrade.mechanics.examples import projectile
 
 
 def _energy_conserving_speed(p):
@@ -46,7 +47,7 @@ def solve(p):
         "V": common,
         # the block swings up like a vertical throw with the speed V: h = V^2 / (2 g)
         "h": projectile.peak_height(common, np.pi / 2, p.g),
-        "fraction_lost": lost / energy.kinetic_energy(p.m, p.v),
+        "fraction_lost": lost / energy.particle_kinetic_energy(p.m, p.v),
     }
 
 

@@ -24,7 +24,7 @@ def solve(p):
     masses, r, v = _state(p)
     return {
         "H_C": systems.angular_momentum_about_centre_of_mass(masses, r, v)[2],
-        "H_O": systems.angular_momentum_about_point(masses, r, v, [0.0, 0.0])[2],
+        "H_O": systems.system_angular_momentum_about_point(masses, r, v, [0.0, 0.0])[2],
     }
 
 

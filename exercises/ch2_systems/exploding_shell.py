@@ -3,7 +3,8 @@
 import numpy as np
 
 from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
-from dynagrade.mechanics import projectile, systems
+from dynagrade.mechanics import systems
+from dynagrade.mechanics.examples import projectile
 
 
 def _fragment_2_speed(p):

@@ -26,7 +26,7 @@ def solve(p):
     mass = p.m_r + p.m_d
     return {
         "I_O": i_o,
-        "alpha0": abs(rigid_kinetics.pendulum_angular_acceleration(
+        "alpha0": abs(rigid_kinetics.compound_pendulum_angular_acceleration(
             np.pi / 2, p.g, mass, _centre_distance(p), i_o)),
         "omega_bottom": rigid_kinetics.angular_speed_of_pendulum_from_energy(
             np.pi / 2, 0.0, p.g, mass, _centre_distance(p), i_o),
@@ -35,7 +35,7 @@ def solve(p):
 
 def _with_moment(p, i_o):
     mass = p.m_r + p.m_d
-    return abs(rigid_kinetics.pendulum_angular_acceleration(np.pi / 2, p.g, mass,
+    return abs(rigid_kinetics.compound_pendulum_angular_acceleration(np.pi / 2, p.g, mass,
                                                             _centre_distance(p), i_o))
 
 

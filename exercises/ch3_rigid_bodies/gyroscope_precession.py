@@ -15,7 +15,7 @@ def _spin(p):
 def solve(p):
     disk = inertia.inertia_tensor_disk(p.m, p.R)
     rate = gyro.fast_top_precession_rate(p.m, p.g, p.l, disk[2, 2], _spin(p))
-    spin_momentum = rigid_kinetics.angular_momentum(disk, [0.0, 0.0, _spin(p)])[2]
+    spin_momentum = rigid_kinetics.rigid_body_angular_momentum(disk, [0.0, 0.0, _spin(p)])[2]
     # one precession revolution takes the period of the rotation at the rate psi_dot
     return {"H": float(spin_momentum), "psi_dot": rate, "T": vibrations.period(rate)}
 

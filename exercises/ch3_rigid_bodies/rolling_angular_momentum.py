@@ -11,7 +11,7 @@ def _about(p, height):
     """e3 component of H about a fixed point at the given height under the centre."""
     omega = np.array([0.0, 0.0, -p.v / p.R])
     r_ac = np.array([0.0, p.R - height, 0.0])
-    return rigid_kinetics.angular_momentum_about_point(
+    return rigid_kinetics.rigid_body_angular_momentum_about_point(
         inertia.inertia_tensor_sphere(p.m, p.R), omega, p.m, r_ac, [p.v, 0.0, 0.0])[2]
 
 

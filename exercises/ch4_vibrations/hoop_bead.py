@@ -5,16 +5,17 @@ import numpy as np
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Options, Uniform)
 from dynagrade.mechanics import equilibrium
+from dynagrade.mechanics.examples import hoop
 
 
 def solve(p):
-    theta = equilibrium.hoop_equilibrium_angle(p.R, p.Omega, p.g)
-    bottom = equilibrium.stability([[equilibrium.hoop_potential_curvature(0.0, p.m, p.R, p.Omega, p.g)]])
+    theta = hoop.hoop_equilibrium_angle(p.R, p.Omega, p.g)
+    bottom = equilibrium.stability([[hoop.hoop_potential_curvature(0.0, p.m, p.R, p.Omega, p.g)]])
     return {
-        "Omega_c": equilibrium.hoop_critical_spin_rate(p.R, p.g),
+        "Omega_c": hoop.hoop_critical_spin_rate(p.R, p.g),
         "theta_star": theta,
         "bottom": bottom,
-        "omega": equilibrium.hoop_oscillation_frequency(p.R, p.Omega, p.g),
+        "omega": hoop.hoop_oscillation_frequency(p.R, p.Omega, p.g),
     }
 
 
@@ -35,7 +36,7 @@ EXERCISE = Exercise(
         Constraint("the off-axis angle stays below 80 degrees (the bead visibly oscillates)",
                    lambda p: p.g / (p.R * p.Omega**2) >= np.cos(np.radians(80))),
         Constraint("the oscillation frequency differs from the plain pendulum's by at least 3 %",
-                   lambda p: abs(equilibrium.hoop_oscillation_frequency(p.R, p.Omega, p.g)
+                   lambda p: abs(hoop.hoop_oscillation_frequency(p.R, p.Omega, p.g)
                                  / np.sqrt(p.g / p.R) - 1) >= 0.03),
     ),
     statement="""

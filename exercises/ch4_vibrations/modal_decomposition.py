@@ -14,7 +14,7 @@ def _system(p):
 
 def _x(p, t):
     K, M = _system(p)
-    return multi_dof.free_response([t], K, M, [p.a, 0.0], [0.0, 0.0])[:, 0]
+    return multi_dof.modal_free_response([t], K, M, [p.a, 0.0], [0.0, 0.0])[:, 0]
 
 
 def solve(p):

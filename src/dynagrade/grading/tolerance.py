@@ -18,29 +18,37 @@ import numpy as np
 
 #: Absolute tolerance used when a part sets none, in the part's unit.
 DEFAULT_ATOL = 1e-9
+#: Relative tolerance of numeric and vector parts that set none.
+DEFAULT_RTOL = 1e-2
 #: Rounding slack of the comparison, relative to the larger of the two numbers.
 _ROUNDING = 8 * 2.0 ** -52
 
 
+def allowed_error(expected, rtol: float, atol: float | None, scale=None):
+    """The largest ``|answer - expected|`` the rule accepts: ``max(atol, rtol*s)`` with
+    ``atol`` defaulting to :data:`DEFAULT_ATOL` and ``s = |expected|`` unless ``scale``
+    is given; element by element on arrays."""
+    floor = DEFAULT_ATOL if atol is None else atol
+    if isinstance(expected, np.ndarray) or isinstance(scale, np.ndarray):
+        return np.maximum(floor, rtol * (np.abs(expected) if scale is None else scale))
+    return max(floor, rtol * (abs(expected) if scale is None else scale))
+
+
 def is_close(answer, expected, rtol: float, atol: float | None, scale=None):
-    """The tolerance rule ``|a - e| <= max(atol, rtol*s)``, ``s = |e|`` unless ``scale``
-    is given; the boundary is inclusive up to float rounding (2.02 for 2 at 1 %), and
-    a non-finite answer is never close.
+    """The tolerance rule ``|a - e| <= allowed_error(e, ...)``; the boundary is inclusive
+    up to float rounding (2.02 for 2 at 1 %), and a non-finite answer is never close.
 
     The one rule for numbers and vector components alike: on arrays it answers
     element by element (vectors pass the scale of each component).
     """
-    floor = DEFAULT_ATOL if atol is None else atol
     if not (isinstance(answer, np.ndarray) or isinstance(expected, np.ndarray)):
-        s = abs(expected) if scale is None else scale
-        return math.isfinite(answer) and \
-            abs(answer - expected) <= max(floor, rtol * s) + _ROUNDING * max(abs(answer), abs(expected))
-    a = np.asarray(answer, dtype=np.float64)  # the same rule, element by element
+        return math.isfinite(answer) and abs(answer - expected) <= \
+            allowed_error(expected, rtol, atol, scale) + _ROUNDING * max(abs(answer), abs(expected))
+    a = np.asarray(answer, dtype=np.float64)
     e = np.asarray(expected, dtype=np.float64)
-    s = np.abs(e) if scale is None else np.asarray(scale, dtype=np.float64)
     with np.errstate(invalid="ignore", over="ignore"):
-        return np.isfinite(a) & \
-            (np.abs(a - e) <= np.maximum(floor, rtol * s) + _ROUNDING * np.maximum(np.abs(a), np.abs(e)))
+        return np.isfinite(a) & (np.abs(a - e) <= allowed_error(e, rtol, atol, scale)
+                                 + _ROUNDING * np.maximum(np.abs(a), np.abs(e)))
 
 
 def point_tolerance(target: np.ndarray, rtol: float) -> np.ndarray:

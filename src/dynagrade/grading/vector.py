@@ -13,7 +13,7 @@ from .nodes import BinOp
 from .parser import parse_vector
 from .quantity import quantity_from_tree, unit_info
 from .spec import VectorSpec
-from .tolerance import is_close
+from .tolerance import allowed_error, is_close
 from .verdict import Verdict, unreadable
 
 
@@ -31,6 +31,12 @@ def component_scale(e: np.ndarray) -> np.ndarray:
     """What each component's relative tolerance is taken of: ``max(|e_i|, 0.01*|e|)``,
     so a zero component is judged against the vector's length."""
     return np.maximum(np.abs(e), 0.01 * float(np.linalg.norm(e)))
+
+
+def component_tolerance(spec: VectorSpec, e: np.ndarray) -> np.ndarray:
+    """The largest error each component may have (for exports that state tolerances):
+    the number rule's :func:`allowed_error` with the scale of :func:`component_scale`."""
+    return allowed_error(e, spec.rtol, spec.atol, component_scale(e))
 
 
 def grade_vector(spec: VectorSpec, expected, answer: str) -> Verdict:

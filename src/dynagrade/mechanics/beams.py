@@ -8,44 +8,47 @@ length L, W = a cos(beta x) + b sin(beta x) + c cosh(beta x) + d sinh(beta x), h
 natural frequencies omega_j = (beta_j L)^2 / L^2 sqrt(EI / (rho A)) where beta_j L are
 the positive roots of the characteristic equation of the supports.
 """
+from __future__ import annotations
+
 import numpy as np
-from scipy.optimize import brentq
+
+from dynagrade.mechanics._common import ArrayLike, Quantity
 
 SUPPORTS = ("simply supported", "cantilever", "clamped-clamped", "free-free", "clamped-pinned")
 
 
-def bending_wave_parameter(EI, rhoA):
+def bending_wave_parameter(EI: ArrayLike, rhoA: ArrayLike) -> Quantity:
     """Beam constant a = sqrt(E I / (rho A)) (in m^2/s) of the dispersion relation, Section 5.3.3."""
     return np.sqrt(EI / rhoA)
 
 
-def wavelength(k):
+def wavelength(k: ArrayLike) -> Quantity:
     """Wavelength lambda = 2 pi / k of a harmonic wave exp(i (k x - omega t)) of wavenumber k,
     Section 5.3."""
     return 2 * np.pi / k
 
 
-def flexural_frequency(k, EI, rhoA):
+def flexural_frequency(k: ArrayLike, EI: ArrayLike, rhoA: ArrayLike) -> Quantity:
     """Angular frequency omega = k^2 sqrt(EI / (rho A)) of a flexural wave of wavenumber k, Section 5.3.3."""
     return k**2 * bending_wave_parameter(EI, rhoA)
 
 
-def flexural_wavenumber(omega, EI, rhoA):
+def flexural_wavenumber(omega: ArrayLike, EI: ArrayLike, rhoA: ArrayLike) -> Quantity:
     """Wavenumber k = sqrt(omega / sqrt(EI / (rho A))) of a flexural wave, Section 5.3.3."""
     return np.sqrt(omega / bending_wave_parameter(EI, rhoA))
 
 
-def flexural_phase_speed(omega, EI, rhoA):
+def flexural_phase_speed(omega: ArrayLike, EI: ArrayLike, rhoA: ArrayLike) -> Quantity:
     """Phase speed c_p = omega / k = sqrt(omega) (EI / (rho A))^(1/4) of flexural waves, Section 5.3.3."""
     return omega / flexural_wavenumber(omega, EI, rhoA)
 
 
-def flexural_group_speed(omega, EI, rhoA):
+def flexural_group_speed(omega: ArrayLike, EI: ArrayLike, rhoA: ArrayLike) -> Quantity:
     """Group speed c_g = d omega / d k = 2 c_p of flexural waves, Section 5.3.3."""
     return 2.0 * bending_wave_parameter(EI, rhoA) * flexural_wavenumber(omega, EI, rhoA)
 
 
-def characteristic_function(beta_L, support):
+def characteristic_function(beta_L: ArrayLike, support: str) -> Quantity:
     """Characteristic equation of the beam's supports, scaled by 1/cosh(beta L), Section 5.3.3.
 
     simply supported: sin(bL) = 0; cantilever: cos(bL) cosh(bL) + 1 = 0;
@@ -65,12 +68,13 @@ def characteristic_function(beta_L, support):
     raise ValueError(f"support must be one of {SUPPORTS}")
 
 
-def beam_eigenvalues(support, n):
+def beam_eigenvalues(support: str, n: int) -> Quantity:
     """First n positive roots beta_j L of the characteristic equation, Section 5.3.3.
 
     Found by brentq, the j-th root bracketed in [j pi, (j + 1) pi] except for the
     cantilever ([(j - 1) pi, j pi]) and the simply supported beam (exactly j pi).
     """
+    from scipy.optimize import brentq
     j = np.arange(1, n + 1)
     if support == "simply supported":
         return j * np.pi
@@ -84,12 +88,13 @@ def beam_eigenvalues(support, n):
     return np.array(roots)
 
 
-def beam_natural_frequencies(EI, rhoA, L, support, n):
+def beam_natural_frequencies(EI: ArrayLike, rhoA: ArrayLike, L: ArrayLike, support: str,
+                             n: int) -> Quantity:
     """First n natural angular frequencies omega_j = (beta_j L)^2 sqrt(EI/(rho A)) / L^2, Section 5.3.3."""
     return beam_eigenvalues(support, n) ** 2 / L**2 * bending_wave_parameter(EI, rhoA)
 
 
-def cantilever_mode_shape(x, L, j):
+def cantilever_mode_shape(x: ArrayLike, L: ArrayLike, j: int) -> Quantity:
     """Mode shape W_j(x) of the j-th mode of a cantilever clamped at x = 0 (W_j(L) = 2 (-1)^(j+1)), Section 5.3.3.
 
     W = cosh(bx) - cos(bx) - s (sinh(bx) - sin(bx)), s = (cos bL + cosh bL)/(sin bL + sinh bL).

@@ -8,12 +8,14 @@ matrix of Section 4.1 and K = Hessian of V at q*.
 
 Coordinates are sympy functions of t or plain symbols (as in :mod:`lagrange`).
 """
+from __future__ import annotations
+
 import numpy as np
 import sympy as sp
-from scipy.optimize import brentq
 
-from dynagrade.mechanics import lagrange, vibrations
-from dynagrade.mechanics.angular_momentum import pendulum_natural_frequency
+from dynagrade.mechanics import lagrange
+from dynagrade.mechanics._common import ArrayLike, Field, Quantity
+from dynagrade.mechanics.lagrange import Coordinates
 
 
 def _plain(q):
@@ -22,12 +24,12 @@ def _plain(q):
     return dummies, dict(zip(q, dummies))
 
 
-def equilibrium_conditions(V, q):
+def equilibrium_conditions(V: sp.Expr, q: Coordinates) -> list[sp.Expr]:
     """Equilibrium conditions dV/dq_i = 0 as the list of the derivatives dV/dq_i, Section 4.2."""
     return [sp.diff(V, qi) for qi in q]
 
 
-def equilibrium_positions(V, q):
+def equilibrium_positions(V: sp.Expr, q: Coordinates) -> list[dict[sp.Expr, sp.Expr]]:
     """Equilibrium positions from dV/dq = 0 (as sympy solves it), as dicts {q_i: value}, Section 4.2.
 
     Angles are returned within one period as sympy reports them (e.g. 0 and pi).
@@ -48,11 +50,13 @@ def equilibrium_positions(V, q):
     return [{back[d]: value for d, value in sol.items()} for sol in solutions]
 
 
-def equilibrium_positions_in_interval(dV_dq, a, b, samples=2001):
+def equilibrium_positions_in_interval(dV_dq: Field, a: float, b: float,
+                                      samples: int = 2001) -> list[float]:
     """Roots of a 1-DOF equilibrium condition dV/dq (a callable) on [a, b], Section 4.2.
 
     Bracketed by sign changes on ``samples`` grid points and refined with brentq.
     """
+    from scipy.optimize import brentq
     grid = np.linspace(a, b, samples)
     values = np.array([dV_dq(x) for x in grid])
     roots = [float(x) for x, v in zip(grid, values) if v == 0.0]
@@ -62,7 +66,7 @@ def equilibrium_positions_in_interval(dV_dq, a, b, samples=2001):
     return sorted(roots)
 
 
-def stiffness_matrix(V, q, q_eq):
+def stiffness_matrix(V: sp.Expr, q: Coordinates, q_eq: dict[sp.Expr, sp.Expr]) -> sp.Matrix:
     """Stiffness matrix K_ij = d^2 V / (dq_i dq_j) at the equilibrium q_eq (dict), Section 4.2."""
     dummies, to_dummy = _plain(q)
     Vd = V.subs(to_dummy)
@@ -70,13 +74,14 @@ def stiffness_matrix(V, q, q_eq):
     return sp.simplify(H.subs({to_dummy[k]: v for k, v in q_eq.items()}))
 
 
-def linearized_mass_matrix(T, q, t, q_eq):
+def linearized_mass_matrix(T: sp.Expr, q: Coordinates, t: sp.Symbol,
+                           q_eq: dict[sp.Expr, sp.Expr]) -> sp.Matrix:
     """Mass matrix M(q_eq) of the equations linearized about the equilibrium q_eq, Section 4.2."""
     M = lagrange.mass_matrix(T, q, t)
     return sp.simplify(M.subs(q_eq))
 
 
-def stability(K, tol=1e-12):
+def stability(K: ArrayLike, tol: float = 1e-12) -> str:
     """Stability of an equilibrium from its (numeric) stiffness matrix K, Section 4.2.
 
     "stable" if K is positive definite, "unstable" if it has a negative eigenvalue,
@@ -92,45 +97,10 @@ def stability(K, tol=1e-12):
     return "undecided"
 
 
-def linearized_frequency_squared(T, V, q, t, q_eq):
+def linearized_frequency_squared(T: sp.Expr, V: sp.Expr, q: Coordinates, t: sp.Symbol,
+                                 q_eq: dict[sp.Expr, sp.Expr]) -> sp.Expr:
     """Square omega^2 = K/M of the small-oscillation frequency of a 1-DOF system about q_eq, Section 4.2."""
     K = stiffness_matrix(V, q, q_eq)[0, 0]
     M = linearized_mass_matrix(T, q, t, q_eq)[0, 0]
     return sp.simplify(K / M)
 
-
-# --- the bead on a rotating hoop (Section 4.2) ----------------------------------------
-# A bead of mass m slides without friction on a hoop of radius R that spins at the
-# constant rate Omega about its vertical diameter; theta is measured from the lowest
-# point.  T = m R^2 (theta'^2 + Omega^2 sin^2 theta) / 2, V = -m g R cos theta.
-
-def hoop_critical_spin_rate(R, g):
-    """Spin rate Omega_c = sqrt(g/R) above which the lowest point of the hoop is unstable, Section 4.2:
-    the small-oscillation frequency of a pendulum of length R (eq. 1.147)."""
-    return pendulum_natural_frequency(g, R)
-
-
-def hoop_equilibrium_angle(R, Omega, g):
-    """Off-axis equilibrium angle theta* = arccos(g / (R Omega^2)) for Omega > sqrt(g/R), Section 4.2.
-
-    Returns nan when the spin is too slow for an off-axis equilibrium to exist.
-    """
-    ratio = g / (R * Omega**2)
-    return np.arccos(ratio) if ratio <= 1.0 else np.nan
-
-
-def hoop_potential_curvature(theta, m, R, Omega, g):
-    """Second derivative d^2 V*/d theta^2 = m R (g cos theta - R Omega^2 cos 2 theta) of the
-    effective potential of the bead at angle theta, Section 4.2."""
-    return m * R * (g * np.cos(theta) - R * Omega**2 * np.cos(2.0 * theta))
-
-
-def hoop_oscillation_frequency(R, Omega, g):
-    """Angular frequency of small oscillations of the bead about its stable equilibrium, Section 4.2.
-
-    sqrt(g/R - Omega^2) about the lowest point for Omega < sqrt(g/R); Omega sin(theta*)
-    about the off-axis equilibrium otherwise.
-    """
-    theta = 0.0 if abs(Omega) <= hoop_critical_spin_rate(R, g) else hoop_equilibrium_angle(R, Omega, g)
-    # k_eq = V*''(theta), m_eq = m R^2 (unit mass: the frequency does not depend on m)
-    return vibrations.natural_frequency(hoop_potential_curvature(theta, 1.0, R, Omega, g), R**2)

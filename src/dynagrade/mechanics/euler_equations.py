@@ -4,10 +4,15 @@ and the stability of rotation about the principal axes (Section 3.4.4).
 Principal moments I = (I1, I2, I3) and body-frame components of omega and of the moment M
 about the centre of mass (or a fixed point).
 """
+from __future__ import annotations
+
 import numpy as np
 
+from dynagrade.mechanics._common import ArrayLike, Quantity
 
-def angular_acceleration_euler(principal_moments, omega, moment):
+
+def angular_acceleration_euler(principal_moments: ArrayLike, omega: ArrayLike,
+                               moment: ArrayLike) -> Quantity:
     """Body-frame angular acceleration from Euler's equations,
     I1 w1' = M1 + (I2 - I3) w2 w3 and cyclic (Section 3.4.4)."""
     i1, i2, i3 = np.asarray(principal_moments, dtype=float)
@@ -18,7 +23,8 @@ def angular_acceleration_euler(principal_moments, omega, moment):
                      (m3 + (i1 - i2) * w1 * w2) / i3])
 
 
-def gyroscopic_moment(principal_moments, omega, omega_dot):
+def gyroscopic_moment(principal_moments: ArrayLike, omega: ArrayLike,
+                      omega_dot: ArrayLike) -> Quantity:
     """Moment needed to keep up a prescribed body-frame rotation,
     M = I omega_dot + omega x (I omega) (Euler's equations, Section 3.4.4)."""
     inertia = np.asarray(principal_moments, dtype=float)
@@ -26,7 +32,8 @@ def gyroscopic_moment(principal_moments, omega, omega_dot):
     return inertia * np.asarray(omega_dot, dtype=float) + np.cross(omega, inertia * omega)
 
 
-def perturbation_growth_exponent_squared(principal_moments, axis, spin_rate):
+def perturbation_growth_exponent_squared(principal_moments: ArrayLike, axis: int,
+                                         spin_rate: ArrayLike) -> Quantity:
     """Squared growth rate of small perturbations of a steady rotation with rate Omega about
     the principal axis k: lambda^2 = Omega^2 (I_k - I_i)(I_j - I_k) / (I_i I_j), with i, j
     the other two axes. lambda^2 < 0: the perturbation oscillates (stable rotation);
@@ -38,20 +45,21 @@ def perturbation_growth_exponent_squared(principal_moments, axis, spin_rate):
     return spin_rate**2 * (ik - inertia[i]) * (inertia[j] - ik) / (inertia[i] * inertia[j])
 
 
-def wobble_frequency(principal_moments, axis, spin_rate):
+def wobble_frequency(principal_moments: ArrayLike, axis: int, spin_rate: ArrayLike) -> Quantity:
     """Angular frequency of the small wobble of a stable rotation about principal axis k,
     sqrt(-lambda^2) (Section 3.4.4)."""
     return np.sqrt(-perturbation_growth_exponent_squared(principal_moments, axis, spin_rate))
 
 
-def is_stable_rotation_axis(principal_moments, axis):
+def is_stable_rotation_axis(principal_moments: ArrayLike, axis: int) -> bool:
     """True if torque-free rotation about principal axis k is (linearly) stable: k is the
     axis of the largest or of the smallest of three distinct principal moments
     (Section 3.4.4)."""
     return bool(perturbation_growth_exponent_squared(principal_moments, axis, 1.0) < 0.0)
 
 
-def body_precession_rate(axial_moment, transverse_moment, axial_rate):
+def body_precession_rate(axial_moment: ArrayLike, transverse_moment: ArrayLike,
+                         axial_rate: ArrayLike) -> Quantity:
     """Rate at which omega circles the symmetry axis of a torque-free axisymmetric body,
     seen in the body frame, Omega_p = (I3 - I1) omega3 / I1 (Section 3.4.4)."""
     return (axial_moment - transverse_moment) * axial_rate / transverse_moment

@@ -5,70 +5,76 @@ A frame with origin O' moves with a_O' and rotates with angular velocity Omega (
 Omega_dot); r, v_rel and a_rel are position, velocity and acceleration seen in that frame.
 All vectors are 3-vectors in one common basis.
 """
+from __future__ import annotations
+
 import numpy as np
 
-
-def _cross(a, b):
-    return np.cross(np.asarray(a, dtype=float), np.asarray(b, dtype=float))
+from dynagrade.mechanics._common import ArrayLike, Quantity, cross
 
 
-def absolute_velocity(v_origin, omega, r, v_rel):
+def absolute_velocity(v_origin: ArrayLike, omega: ArrayLike, r: ArrayLike,
+                      v_rel: ArrayLike) -> Quantity:
     """Absolute velocity of a point moving in a rotating frame,
     v = v_O' + Omega x r + v_rel (Section 3.4.2)."""
-    return np.asarray(v_origin, dtype=float) + _cross(omega, r) + np.asarray(v_rel, float)
+    return np.asarray(v_origin, dtype=float) + cross(omega, r) + np.asarray(v_rel, float)
 
 
-def coriolis_acceleration(omega, v_rel):
+def coriolis_acceleration(omega: ArrayLike, v_rel: ArrayLike) -> Quantity:
     """Coriolis acceleration 2 Omega x v_rel (Section 3.4.2)."""
-    return 2.0 * _cross(omega, v_rel)
+    return 2.0 * cross(omega, v_rel)
 
 
-def centripetal_acceleration(omega, r):
+def frame_centripetal_acceleration(omega: ArrayLike, r: ArrayLike) -> Quantity:
     """Centripetal acceleration of the frame point, Omega x (Omega x r); its negative is the
     centrifugal term of the relative motion (Section 3.4.2)."""
-    return _cross(omega, _cross(omega, r))
+    return cross(omega, cross(omega, r))
 
 
-def absolute_acceleration(a_origin, omega, omega_dot, r, v_rel, a_rel):
+def absolute_acceleration(a_origin: ArrayLike, omega: ArrayLike, omega_dot: ArrayLike, r: ArrayLike,
+                          v_rel: ArrayLike, a_rel: ArrayLike) -> Quantity:
     """Absolute acceleration of a point moving in a rotating frame,
     a = a_O' + Omega_dot x r + Omega x (Omega x r) + 2 Omega x v_rel + a_rel (Section 3.4.2)."""
-    return (np.asarray(a_origin, dtype=float) + _cross(omega_dot, r)
-            + centripetal_acceleration(omega, r) + coriolis_acceleration(omega, v_rel)
+    return (np.asarray(a_origin, dtype=float) + cross(omega_dot, r)
+            + frame_centripetal_acceleration(omega, r) + coriolis_acceleration(omega, v_rel)
             + np.asarray(a_rel, dtype=float))
 
 
-def relative_acceleration(force, mass, a_origin, omega, omega_dot, r, v_rel):
+def relative_acceleration(force: ArrayLike, m: ArrayLike, a_origin: ArrayLike, omega: ArrayLike,
+                          omega_dot: ArrayLike, r: ArrayLike, v_rel: ArrayLike) -> Quantity:
     """Acceleration seen in the rotating frame from the balance of linear momentum,
     m a_rel = F - m [a_O' + Omega_dot x r + Omega x (Omega x r) + 2 Omega x v_rel]
     (fictitious forces, Section 3.4.3)."""
     zero = np.zeros(3)
     frame_terms = absolute_acceleration(a_origin, omega, omega_dot, r, v_rel, zero)
-    return np.asarray(force, dtype=float) / mass - frame_terms
+    return np.asarray(force, dtype=float) / m - frame_terms
 
 
-def bead_radial_position(t, r0, radial_speed0, omega):
+def bead_radial_position(t: ArrayLike, r0: ArrayLike, radial_speed0: ArrayLike,
+                         omega: ArrayLike) -> Quantity:
     """Distance of a bead sliding without friction on a rod that spins at constant rate
     Omega in a horizontal plane: r_ddot = Omega^2 r, so
     r(t) = r0 cosh(Omega t) + (v0/Omega) sinh(Omega t) (Section 3.4.3)."""
     return r0 * np.cosh(omega * t) + radial_speed0 / omega * np.sinh(omega * t)
 
 
-def bead_radial_speed(t, r0, radial_speed0, omega):
+def bead_radial_speed(t: ArrayLike, r0: ArrayLike, radial_speed0: ArrayLike,
+                      omega: ArrayLike) -> Quantity:
     """Radial speed of the bead on the spinning rod,
     r_dot(t) = r0 Omega sinh(Omega t) + v0 cosh(Omega t) (Section 3.4.3)."""
     return r0 * omega * np.sinh(omega * t) + radial_speed0 * np.cosh(omega * t)
 
 
-def bead_normal_force(mass, omega, radial_speed):
+def bead_normal_force(m: ArrayLike, omega: ArrayLike, radial_speed: ArrayLike) -> Quantity:
     """Force of the spinning rod on the bead, perpendicular to the rod in the direction of
     rotation, N = 2 m Omega r_dot: the rod supplies the Coriolis term (Section 3.4.3).
     Signed: negative when the bead moves inward."""
-    return mass * float(coriolis_acceleration([0.0, 0.0, omega], [radial_speed, 0.0, 0.0])[1])
+    return m * float(coriolis_acceleration([0.0, 0.0, omega], [radial_speed, 0.0, 0.0])[1])
 
 
-def eastward_deflection_of_falling_body(height, latitude, earth_rate, g):
+def eastward_deflection_of_falling_body(h: ArrayLike, latitude: ArrayLike, earth_rate: ArrayLike,
+                                        g: ArrayLike) -> Quantity:
     """Eastward deflection of a body dropped from rest from height h at latitude lambda,
     to first order in the Earth's rate Omega: d = (1/3) Omega g cos(lambda) t^3 with the
     fall time t = sqrt(2 h / g) (Coriolis term, Section 3.4.3)."""
-    fall_time = np.sqrt(2.0 * height / g)
+    fall_time = np.sqrt(2.0 * h / g)
     return earth_rate * g * np.cos(latitude) * fall_time**3 / 3.0

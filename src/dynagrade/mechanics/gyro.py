@@ -7,12 +7,17 @@ theta (axis tilt from the vertical), spin phi about the symmetry axis (see
 `rotations.euler_angle_rotation`). omega3 = phi_dot + psi_dot cos(theta) is the axial
 component of the angular velocity.
 """
+from __future__ import annotations
+
 from dataclasses import dataclass
 
 import numpy as np
 
+from dynagrade.mechanics._common import ArrayLike, Quantity
 
-def body_angular_velocity_from_euler_rates(theta, phi, psi_rate, theta_rate, phi_rate):
+
+def body_angular_velocity_from_euler_rates(theta: ArrayLike, phi: ArrayLike, psi_rate: ArrayLike,
+                                           theta_rate: ArrayLike, phi_rate: ArrayLike) -> Quantity:
     """Body-frame components of the angular velocity from the Euler-angle rates,
     omega = (psi' sin(theta) sin(phi) + theta' cos(phi),
              psi' sin(theta) cos(phi) - theta' sin(phi),
@@ -30,29 +35,31 @@ class PrecessionRates:
     fast: float
 
 
-def steady_precession_rates(mass, g, length, transverse_moment, axial_moment, axial_rate,
-                            theta):
+def steady_precession_rates(m: ArrayLike, g: ArrayLike, l: ArrayLike, transverse_moment: ArrayLike,
+                            axial_moment: ArrayLike, axial_rate: ArrayLike,
+                            theta: ArrayLike) -> PrecessionRates:
     """Precession rates psi' of steady precession at constant tilt theta (0 < theta < pi/2):
     angular momentum balance about O gives m g l = psi' (I3 omega3 - I1 psi' cos(theta)),
     a quadratic in psi' whose smaller root is the slow and larger the fast precession
     (Section 3.5.2). Real only when I3^2 omega3^2 >= 4 I1 m g l cos(theta)."""
     a = transverse_moment * np.cos(theta)
     b = axial_moment * axial_rate
-    c = mass * g * length
+    c = m * g * l
     root = np.sqrt(b * b - 4.0 * a * c)
     slow = 2.0 * c / (b + root)
     fast = (b + root) / (2.0 * a)
     return PrecessionRates(slow=float(slow), fast=float(fast))
 
 
-def minimum_spin_for_steady_precession(mass, g, length, transverse_moment, axial_moment,
-                                       theta):
+def minimum_spin_for_steady_precession(m: ArrayLike, g: ArrayLike, l: ArrayLike,
+                                       transverse_moment: ArrayLike, axial_moment: ArrayLike,
+                                       theta: ArrayLike) -> Quantity:
     """Smallest axial rate omega3 for which steady precession at tilt theta exists,
     omega3_min = sqrt(4 I1 m g l cos(theta)) / I3 (Section 3.5.2)."""
-    return np.sqrt(4.0 * transverse_moment * mass * g * length * np.cos(theta)) / axial_moment
+    return np.sqrt(4.0 * transverse_moment * m * g * l * np.cos(theta)) / axial_moment
 
 
-def gyroscopic_precession_rate(moment, spin_angular_momentum):
+def gyroscopic_precession_rate(moment: ArrayLike, spin_angular_momentum: ArrayLike) -> Quantity:
     """Precession rate of a gyroscope whose spin angular momentum H (along its axis) is
     turned by a moment M perpendicular to the axis and to the vertical: from
     dH/dt = psi' e3 x H, psi' = M / (H sin(theta)); for a horizontal axis psi' = M / H
@@ -60,7 +67,8 @@ def gyroscopic_precession_rate(moment, spin_angular_momentum):
     return moment / spin_angular_momentum
 
 
-def fast_top_precession_rate(mass, g, length, axial_moment, axial_rate):
+def fast_top_precession_rate(m: ArrayLike, g: ArrayLike, l: ArrayLike, axial_moment: ArrayLike,
+                             axial_rate: ArrayLike) -> Quantity:
     """Slow precession rate of a fast top, psi' = m g l / (I3 omega3), independent of the
     tilt (fast-top approximation, Section 3.5.2)."""
-    return gyroscopic_precession_rate(mass * g * length, axial_moment * axial_rate)
+    return gyroscopic_precession_rate(m * g * l, axial_moment * axial_rate)

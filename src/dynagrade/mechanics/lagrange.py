@@ -10,20 +10,28 @@ functions below derive the equations of motion
 
 symbolically; Q_i are the generalized forces not derived from V (e.g. dampers).
 """
+from __future__ import annotations
+
+from typing import Sequence
+
 import sympy as sp
 
+Coordinates = Sequence[sp.Expr]
+"""The generalized coordinates q_i: sympy functions of the time symbol (or plain symbols)."""
 
-def generalized_velocities(q, t):
+
+def generalized_velocities(q: Coordinates, t: sp.Symbol) -> list[sp.Expr]:
     """Generalized velocities q_i' = d q_i / d t of the coordinates q, Section 4.1."""
     return [sp.diff(qi, t) for qi in q]
 
 
-def lagrangian(T, V):
+def lagrangian(T: sp.Expr, V: sp.Expr) -> sp.Expr:
     """Lagrangian L = T - V, Section 4.1."""
     return T - V
 
 
-def equations_of_motion(T, V, q, t, Q=None):
+def equations_of_motion(T: sp.Expr, V: sp.Expr, q: Coordinates, t: sp.Symbol,
+                        Q: Sequence[sp.Expr] | None = None) -> list[sp.Expr]:
     """Lagrange equations d/dt(dL/dq_i') - dL/dq_i - Q_i = 0, Section 4.1.
 
     Returns a list of sympy expressions, one per coordinate, each of which vanishes
@@ -39,13 +47,13 @@ def equations_of_motion(T, V, q, t, Q=None):
     return equations
 
 
-def mass_matrix(T, q, t):
+def mass_matrix(T: sp.Expr, q: Coordinates, t: sp.Symbol) -> sp.Matrix:
     """Generalized mass matrix M_ij = d^2 T / (dq_i' dq_j'), Section 4.1 (T = q'^T M q' / 2)."""
     qd = generalized_velocities(q, t)
     return sp.Matrix(len(q), len(q), lambda i, j: sp.diff(T, qd[i], qd[j]))
 
 
-def generalized_forces(V, q, Q=None):
+def generalized_forces(V: sp.Expr, q: Coordinates, Q: Sequence[sp.Expr] | None = None) -> sp.Matrix:
     """Generalized forces Q_i = -dV/dq_i (+ non-potential Q_i), Section 4.1."""
     forces = [-sp.diff(V, qi) for qi in q]
     if Q is not None:
@@ -53,7 +61,7 @@ def generalized_forces(V, q, Q=None):
     return sp.Matrix(forces)
 
 
-def dissipative_forces(D, q, t):
+def dissipative_forces(D: sp.Expr, q: Coordinates, t: sp.Symbol) -> list[sp.Expr]:
     """Generalized damping forces Q_i = -dD/dq_i' of a dissipation function D, Section 4.1.
 
     For dampers of coefficient c_j whose elongation rate is u_j', D = sum c_j u_j'^2 / 2.
@@ -61,7 +69,8 @@ def dissipative_forces(D, q, t):
     return [-sp.diff(D, qd) for qd in generalized_velocities(q, t)]
 
 
-def accelerations(T, V, q, t, Q=None):
+def accelerations(T: sp.Expr, V: sp.Expr, q: Coordinates, t: sp.Symbol,
+                  Q: Sequence[sp.Expr] | None = None) -> list[sp.Expr]:
     """Generalized accelerations q'' solved from the Lagrange equations, Section 4.1.
 
     Returns a list of sympy expressions for q_i'' in terms of q, q' and the parameters.
@@ -74,7 +83,7 @@ def accelerations(T, V, q, t, Q=None):
     return [sp.simplify(s) for s in solution]
 
 
-def effective_potential(T, V, q, t):
+def effective_potential(T: sp.Expr, V: sp.Expr, q: Coordinates, t: sp.Symbol) -> sp.Expr:
     """Effective potential V* = V - T_0, Section 4.1 (used for equilibria in Section 4.2).
 
     T_0 is the part of T that does not depend on the generalized velocities (e.g. the
@@ -85,7 +94,7 @@ def effective_potential(T, V, q, t):
     return sp.simplify(V - T0)
 
 
-def state_symbols(q):
+def state_symbols(q: Coordinates) -> tuple[list[sp.Symbol], list[sp.Symbol], list[sp.Symbol]]:
     """Plain sympy symbols (q_i, q_i', q_i'') standing for the coordinates, their rates and
     accelerations, named e.g. theta, theta_dot, theta_ddot (for lambdify), Section 4.1."""
     names = [qi.func.__name__ if hasattr(qi, "func") else str(qi) for qi in q]
@@ -95,7 +104,7 @@ def state_symbols(q):
     return pos, vel, acc
 
 
-def in_state_symbols(expr, q, t):
+def in_state_symbols(expr: sp.Expr, q: Coordinates, t: sp.Symbol) -> sp.Expr:
     """The expression ``expr`` with q_i'', q_i' and q_i(t) replaced by plain symbols of
     :func:`state_symbols` (highest derivatives first), Section 4.1."""
     pos, vel, acc = state_symbols(q)

@@ -2,41 +2,43 @@
 chapter-1 examples, and a numerical integrator of the linear momentum balance (1.61).
 SI units; vectors as numpy arrays of 2 or 3 components.
 """
+from __future__ import annotations
+
 from dataclasses import dataclass
+from typing import Sequence
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
-from dynagrade.mechanics.incline import time_up_slope
+from dynagrade.mechanics._common import ArrayLike, Field, Quantity
 
 
-def linear_momentum(m, v):
+def particle_linear_momentum(m: ArrayLike, v: ArrayLike) -> Quantity:
     """Linear momentum P = m v, eq. (1.59)."""
     return m * np.asarray(v, dtype=float)
 
 
-def acceleration(m, *forces):
+def acceleration(m: ArrayLike, *forces: ArrayLike) -> Quantity:
     """Acceleration from the linear momentum balance at constant mass, sum F = m a, eq. (1.63)."""
     return np.sum([np.asarray(f, dtype=float) for f in forces], axis=0) / m
 
 
-def resultant_force(m, a):
+def resultant_force(m: ArrayLike, a: ArrayLike) -> Quantity:
     """Resultant force that gives a particle of constant mass m the acceleration a,
     sum F = m a, eq. (1.63)."""
     return m * np.asarray(a, dtype=float)
 
 
-def weight(m, g):
+def weight(m: ArrayLike, g: ArrayLike) -> Quantity:
     """Weight m g for the gravity vector g (e.g. (0, -9.81)), eq. (1.96)."""
     return m * np.asarray(g, dtype=float)
 
 
-def spring_force(k, x, x0):
+def spring_force(k: ArrayLike, x: ArrayLike, x0: ArrayLike) -> Quantity:
     """Force of a linear spring along its axis, -k (x - x0), eq. (1.97)."""
     return -k * (np.asarray(x, dtype=float) - x0)
 
 
-def kinetic_friction(N, v, mu):
+def kinetic_friction(N: ArrayLike, v: ArrayLike, mu: ArrayLike) -> Quantity:
     """Coulomb sliding friction R = -mu |N| v/|v|, eq. (1.74)/(1.103); zero when v = 0."""
     v = np.asarray(v, dtype=float)
     speed = np.linalg.norm(v, axis=-1, keepdims=True)
@@ -45,23 +47,24 @@ def kinetic_friction(N, v, mu):
     return -mu * np.abs(np.asarray(N, dtype=float))[..., None] * direction
 
 
-def linear_drag_force(v, k):
+def linear_drag_force(v: ArrayLike, k: ArrayLike) -> Quantity:
     """Viscous (Stokes) drag F_d = -k v, eq. (1.104)."""
     return -k * np.asarray(v, dtype=float)
 
 
-def quadratic_drag_force(v, c):
+def quadratic_drag_force(v: ArrayLike, c: ArrayLike) -> Quantity:
     """Rayleigh drag F_d = -c |v| v (footnote 2 of Example 1.2)."""
     v = np.asarray(v, dtype=float)
     return -c * np.linalg.norm(v, axis=-1, keepdims=True) * v
 
 
-def floor_normal_force(m, g):
+def floor_normal_force(m: ArrayLike, g: ArrayLike) -> Quantity:
     """Normal force on a particle sliding on a horizontal floor, N = m g, eq. (1.70)."""
     return m * g
 
 
-def floor_normal_force_under_pull(m, g, F, theta):
+def floor_normal_force_under_pull(m: ArrayLike, g: ArrayLike, F: ArrayLike,
+                                  theta: ArrayLike) -> Quantity:
     """Normal force on a particle kept on a horizontal floor while a force F pulls it at the
     angle theta above the floor: no acceleration normal to the floor, so
     N = m g - F sin(theta) (the e2 component of the balance, eqs. (1.68)-(1.69), with the
@@ -69,17 +72,17 @@ def floor_normal_force_under_pull(m, g, F, theta):
     return floor_normal_force(m, g) - F * np.sin(theta)
 
 
-def string_tension(m, l, omega):
+def string_tension(m: ArrayLike, l: ArrayLike, omega: ArrayLike) -> Quantity:
     """Magnitude of the string force on a particle circling at radius l with constant
     angular velocity omega (no gravity), |S| = m l omega^2, eq. (1.84)."""
     return m * l * omega**2
 
 
-def sliding_stop_time(v0, mu, g):
+def sliding_stop_time(v0: ArrayLike, mu: ArrayLike, g: ArrayLike) -> Quantity:
     """Time for Coulomb friction to stop a particle sliding on a horizontal floor,
     v0/(mu g), eq. (1.73) with alpha = 0 integrated as in Example 1.1 (the slope's time to
     rest with a level slope)."""
-    return time_up_slope(v0, 0.0, mu, g)
+    return v0 / (g * mu)
 
 
 @dataclass(frozen=True)
@@ -101,8 +104,9 @@ class Trajectory:
         return y[:d].T, y[d:].T
 
 
-def simulate(m, r0, v0, force, t_end, events=(), rtol=1e-9, atol=1e-12, method="DOP853",
-             max_step=np.inf):
+def simulate(m: ArrayLike, r0: ArrayLike, v0: ArrayLike, force: Field, t_end: ArrayLike,
+             events: Sequence[Field] = (), rtol: float = 1e-9, atol: float = 1e-12,
+             method: str = "DOP853", max_step: float = np.inf) -> Trajectory:
     """Integrate the linear momentum balance m r'' = F(t, r, v) (eq. 1.61 at constant mass)
     from r(0) = r0, v(0) = v0 up to t_end with scipy's solve_ivp.
 
@@ -110,6 +114,7 @@ def simulate(m, r0, v0, force, t_end, events=(), rtol=1e-9, atol=1e-12, method="
     ``event(t, r, v)`` with optional ``terminal``/``direction`` attributes as in solve_ivp.
     The default DOP853 with rtol 1e-9 and atol 1e-12 keeps the energy drift of short runs
     near 1e-10 of the total."""
+    from scipy.integrate import solve_ivp
     r0 = np.asarray(r0, dtype=float)
     d = r0.size
 

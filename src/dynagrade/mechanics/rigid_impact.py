@@ -7,37 +7,45 @@ a body pinned at O w = d_O^2/I_O. With these, the impulse follows from the two-p
 relation of Section 2.3.1 (`collisions.impact_impulse`) and the restitution condition on
 the normal velocities of the two contact points.
 """
+from __future__ import annotations
+
+from dynagrade.mechanics._common import ArrayLike, Quantity
 from dynagrade.mechanics.collisions import impact_impulse
 
 
-def inverse_effective_mass_free_body(mass, moment_centre, lever_arm):
+def inverse_effective_mass_free_body(m: ArrayLike, moment_centre: ArrayLike,
+                                     lever_arm: ArrayLike) -> Quantity:
     """Effective inverse mass of a free rigid body for an impulse whose line of action
     passes at distance d from the centre of mass: w = 1/m + d^2 / I_C (Section 3.3)."""
-    return 1.0 / mass + lever_arm**2 / moment_centre
+    return 1.0 / m + lever_arm**2 / moment_centre
 
 
-def inverse_effective_mass_pinned_body(moment_pivot, lever_arm):
+def inverse_effective_mass_pinned_body(moment_pivot: ArrayLike, lever_arm: ArrayLike) -> Quantity:
     """Effective inverse mass of a body pinned at O for an impulse whose line of action
     passes at distance d from O: w = d^2 / I_O (Section 3.3)."""
     return lever_arm**2 / moment_pivot
 
 
-def eccentric_impact_impulse(w1, w2, approach_speed, e):
+def eccentric_impact_impulse(w1: ArrayLike, w2: ArrayLike, approach_speed: ArrayLike,
+                             e: ArrayLike) -> Quantity:
     """Impulse of an eccentric impact between two bodies with effective inverse masses
     w1, w2 and normal approach speed of the contact points v_rel:
     F_hat = (1 + e) v_rel / (w1 + w2) (Section 3.3)."""
     return impact_impulse(w1, w2, approach_speed, e)
 
 
-def angular_velocity_change(impulse, lever_arm, moment_of_inertia):
+def angular_velocity_change(impulse: ArrayLike, lever_arm: ArrayLike,
+                            moment_of_inertia: ArrayLike) -> Quantity:
     """Jump of the angular velocity of a body hit by the impulse F_hat with lever arm d
     about its centre of mass (free body) or its pivot (pinned body):
     Delta omega = F_hat d / I (angular impulse balance, Section 3.3)."""
     return impulse * lever_arm / moment_of_inertia
 
 
-def angular_velocity_after_plastic_impact_on_pinned_body(particle_mass, particle_speed,
-                                                         lever_arm, moment_pivot):
+def angular_velocity_after_plastic_impact_on_pinned_body(particle_mass: ArrayLike,
+                                                         particle_speed: ArrayLike,
+                                                         lever_arm: ArrayLike,
+                                                         moment_pivot: ArrayLike) -> Quantity:
     """Angular velocity of a pinned body at rest after a particle of mass m and speed v,
     moving perpendicular to the radius at distance d from the pivot, sticks to it:
     m v d = (I_O + m d^2) omega (ballistic pendulum; angular momentum about the pivot,
@@ -47,15 +55,17 @@ def angular_velocity_after_plastic_impact_on_pinned_body(particle_mass, particle
     return angular_velocity_change(impulse, lever_arm, moment_pivot)
 
 
-def pivot_impulse(impulse, lever_arm, mass, pivot_to_centre, moment_pivot):
+def pivot_impulse(impulse: ArrayLike, lever_arm: ArrayLike, m: ArrayLike,
+                  pivot_to_centre: ArrayLike, moment_pivot: ArrayLike) -> Quantity:
     """Impulsive reaction at the pivot of a body at rest struck with F_hat at distance d
     from the pivot, along the same line: R_hat = m d_C Delta omega - F_hat, with
     Delta omega = F_hat d / I_O (linear impulse balance, Section 3.3)."""
     delta_omega = angular_velocity_change(impulse, lever_arm, moment_pivot)
-    return mass * pivot_to_centre * delta_omega - impulse
+    return m * pivot_to_centre * delta_omega - impulse
 
 
-def centre_of_percussion_distance(moment_pivot, mass, pivot_to_centre):
+def centre_of_percussion_distance(moment_pivot: ArrayLike, m: ArrayLike,
+                                  pivot_to_centre: ArrayLike) -> Quantity:
     """Distance from the pivot at which a blow causes no impulsive pivot reaction,
     d = I_O / (m d_C) (Section 3.3)."""
-    return moment_pivot / (mass * pivot_to_centre)
+    return moment_pivot / (m * pivot_to_centre)

@@ -3,9 +3,11 @@
 Planar motion: vectors have two components (e1, e2), the angular velocity and the
 angular acceleration are scalars about e3. Spatial motion: 3-vectors throughout.
 """
+from __future__ import annotations
+
 import numpy as np
 
-from dynagrade.mechanics.systems import _cross3
+from dynagrade.mechanics._common import ArrayLike, Quantity, spatial_cross
 
 
 def _planar_or_spatial(omega, r):
@@ -13,17 +15,18 @@ def _planar_or_spatial(omega, r):
     r = np.asarray(r, dtype=float)
     if np.ndim(omega) == 0:
         w = np.array([0.0, 0.0, float(omega)])
-        return _cross3(w, r)[: r.shape[-1]]
-    return _cross3(omega, r)
+        return spatial_cross(w, r)[: r.shape[-1]]
+    return spatial_cross(omega, r)
 
 
-def velocity_of_point(v_a, omega, r_ab):
+def velocity_of_point(v_a: ArrayLike, omega: ArrayLike, r_ab: ArrayLike) -> Quantity:
     """Velocity of a point B of a rigid body from that of A, v_B = v_A + omega x r_AB
     (velocity transfer, Sections 3.1.1 and 3.1.2)."""
     return np.asarray(v_a, dtype=float) + _planar_or_spatial(omega, r_ab)
 
 
-def acceleration_of_point(a_a, omega, alpha, r_ab):
+def acceleration_of_point(a_a: ArrayLike, omega: ArrayLike, alpha: ArrayLike,
+                          r_ab: ArrayLike) -> Quantity:
     """Acceleration of a point B of a rigid body from that of A,
     a_B = a_A + alpha x r_AB + omega x (omega x r_AB) (Sections 3.1.1 and 3.1.2);
     in 2D the last term is -omega^2 r_AB."""
@@ -32,44 +35,47 @@ def acceleration_of_point(a_a, omega, alpha, r_ab):
     return np.asarray(a_a, dtype=float) + tangential + centripetal
 
 
-def planar_angular_velocity(r_a, v_a, r_b, v_b):
+def planar_angular_velocity(r_a: ArrayLike, v_a: ArrayLike, r_b: ArrayLike,
+                            v_b: ArrayLike) -> float:
     """Angular velocity of a body in plane motion from the velocities of two of its points,
     omega = e3 . (r_AB x (v_B - v_A)) / |r_AB|^2 (Section 3.1.1)."""
     r_ab = np.asarray(r_b, dtype=float) - np.asarray(r_a, dtype=float)
     dv = np.asarray(v_b, dtype=float) - np.asarray(v_a, dtype=float)
-    return float(_cross3(r_ab, dv)[2] / np.dot(r_ab, r_ab))
+    return float(spatial_cross(r_ab, dv)[2] / np.dot(r_ab, r_ab))
 
 
-def instantaneous_centre_of_rotation(r_a, v_a, omega):
+def instantaneous_centre_of_rotation(r_a: ArrayLike, v_a: ArrayLike, omega: ArrayLike) -> Quantity:
     """Position of the instantaneous centre of rotation (the point of zero velocity) of a
     body in plane motion, r_ICR = r_A + (e3 x v_A) / omega, omega != 0 (Section 3.1.1)."""
     return np.asarray(r_a, dtype=float) + _planar_or_spatial(1.0, v_a) / omega
 
 
-def rolling_angular_velocity(centre_speed, radius):
+def rolling_angular_velocity(centre_speed: ArrayLike, R: ArrayLike) -> Quantity:
     """Angular velocity of a wheel rolling without slipping, omega = v_C / R; the contact
     point is the instantaneous centre of rotation (Section 3.1.1). Positive omega is
     clockwise for a wheel rolling in +e1 (the signed value about e3 is -v_C/R)."""
-    return centre_speed / radius
+    return centre_speed / R
 
 
-def rim_point_velocity(centre_speed, radius, angle):
+def rim_point_velocity(centre_speed: ArrayLike, R: ArrayLike, phi: ArrayLike) -> Quantity:
     """Velocity (e1, e2 components) of a point on the rim of a wheel rolling without
     slipping to the right with centre speed v_C; the point sits at the angle phi measured
     from the contact point, counter-clockwise seen from +e3 about the centre. By velocity
     transfer from the centre with omega e3 = -(v_C / R) e3 (Section 3.1.1)."""
-    r_cp = radius * np.array([np.sin(angle), -np.cos(angle)])
-    omega = -rolling_angular_velocity(centre_speed, radius)
+    r_cp = R * np.array([np.sin(phi), -np.cos(phi)])
+    omega = -rolling_angular_velocity(centre_speed, R)
     return velocity_of_point(np.array([centre_speed, 0.0]), omega, r_cp)
 
 
-def connecting_rod_angle(crank_radius, rod_length, crank_angle):
+def connecting_rod_angle(crank_radius: ArrayLike, rod_length: ArrayLike,
+                         crank_angle: ArrayLike) -> Quantity:
     """Angle beta of the connecting rod of a crank-slider mechanism with the slider on the
     line through the crank pivot: l sin(beta) = r sin(theta) (Section 3.1.1)."""
     return np.arcsin(crank_radius * np.sin(crank_angle) / rod_length)
 
 
-def connecting_rod_angular_velocity(crank_radius, rod_length, crank_angle, crank_rate):
+def connecting_rod_angular_velocity(crank_radius: ArrayLike, rod_length: ArrayLike,
+                                    crank_angle: ArrayLike, crank_rate: ArrayLike) -> Quantity:
     """Angular velocity of the connecting rod, beta_dot = r omega cos(theta) /
     (l cos(beta)), from transferring the crank-pin velocity to the slider whose velocity
     is along the slider line (Section 3.1.1). Signed like theta_dot, beta measured
@@ -78,7 +84,8 @@ def connecting_rod_angular_velocity(crank_radius, rod_length, crank_angle, crank
     return crank_radius * crank_rate * np.cos(crank_angle) / (rod_length * np.cos(beta))
 
 
-def slider_velocity(crank_radius, rod_length, crank_angle, crank_rate):
+def slider_velocity(crank_radius: ArrayLike, rod_length: ArrayLike, crank_angle: ArrayLike,
+                    crank_rate: ArrayLike) -> float:
     """Velocity of the slider of a crank-slider mechanism along the slider line (positive
     away from the crank pivot): crank pin A at r(cos theta, sin theta), slider B at
     (r cos theta + l cos beta, 0), v_B = v_A + omega_rod x r_AB (Section 3.1.1)."""

@@ -3,83 +3,71 @@
 Masses are given as a sequence of length N, positions and velocities as arrays of
 shape (N, d) with d = 2 or 3. All quantities in SI units.
 """
+from __future__ import annotations
+
 from dataclasses import dataclass
 
 import numpy as np
 
-from dynagrade.mechanics.energy import kinetic_energy as particle_kinetic_energy
-from dynagrade.mechanics.kinematics import spatial_vector
+from dynagrade.mechanics._common import (ArrayLike, Quantity, as_floats, as_vectors, spatial_cross,
+                                         spatial_vector)
+from dynagrade.mechanics.energy import particle_kinetic_energy
 
 
-def _as_masses(masses):
-    return np.asarray(masses, dtype=float)
-
-
-def _as_vectors(vectors, n):
-    arr = np.asarray(vectors, dtype=float)
-    if arr.ndim == 1:
-        arr = arr.reshape(n, -1)
-    return arr
-
-
-def _cross3(a, b):
-    """Cross product with planar (2-component) vectors taken in the e1-e2 plane."""
-    return np.cross(spatial_vector(a), spatial_vector(b))
-
-
-def total_mass(masses):
+def total_mass(masses: ArrayLike) -> float:
     """Total mass M = sum of m_i of a system of particles (Section 2.1)."""
-    return float(np.sum(_as_masses(masses)))
+    return float(np.sum(as_floats(masses)))
 
 
-def centre_of_mass(masses, positions):
+def centre_of_mass(masses: ArrayLike, positions: ArrayLike) -> Quantity:
     """Position of the centre of mass r_C = (1/M) sum m_i r_i (Section 2.1)."""
-    m = _as_masses(masses)
-    r = _as_vectors(positions, m.size)
+    m = as_floats(masses)
+    r = as_vectors(positions, m.size)
     return (m[:, None] * r).sum(axis=0) / m.sum()
 
 
-def total_momentum(masses, velocities):
+def total_momentum(masses: ArrayLike, velocities: ArrayLike) -> Quantity:
     """Total linear momentum P = sum m_i v_i = M v_C of a system (Section 2.2.1)."""
-    m = _as_masses(masses)
-    v = _as_vectors(velocities, m.size)
+    m = as_floats(masses)
+    v = as_vectors(velocities, m.size)
     return (m[:, None] * v).sum(axis=0)
 
 
-def centre_of_mass_acceleration(total_external_force, mass):
+def centre_of_mass_acceleration(total_external_force: ArrayLike, M: ArrayLike) -> Quantity:
     """Acceleration of the centre of mass a_C = F_ext / M: the centre of mass moves like a
     particle of the total mass under the total external force; internal forces cancel
     pairwise (balance of linear momentum of a system, Section 2.2.1)."""
-    return np.asarray(total_external_force, dtype=float) / mass
+    return np.asarray(total_external_force, dtype=float) / M
 
 
-def kinetic_energy(masses, velocities):
+def system_kinetic_energy(masses: ArrayLike, velocities: ArrayLike) -> float:
     """Kinetic energy T = sum 1/2 m_i |v_i|^2 of a system of particles (Section 2.2.2)."""
-    m = _as_masses(masses)
-    return float(np.sum(particle_kinetic_energy(m, _as_vectors(velocities, m.size))))
+    m = as_floats(masses)
+    return float(np.sum(particle_kinetic_energy(m, as_vectors(velocities, m.size))))
 
 
-def kinetic_energy_relative_to_centre_of_mass(masses, velocities):
+def kinetic_energy_relative_to_centre_of_mass(masses: ArrayLike, velocities: ArrayLike) -> Quantity:
     """Kinetic energy of the motion relative to the centre of mass,
     T' = sum 1/2 m_i |v_i - v_C|^2, so that T = 1/2 M |v_C|^2 + T' (Section 2.2.2)."""
-    m = _as_masses(masses)
-    v = _as_vectors(velocities, m.size)
+    m = as_floats(masses)
+    v = as_vectors(velocities, m.size)
     v_c = total_momentum(m, v) / m.sum()
-    return kinetic_energy(m, v - v_c)
+    return system_kinetic_energy(m, v - v_c)
 
 
-def reduced_mass(m1, m2):
+def reduced_mass(m1: ArrayLike, m2: ArrayLike) -> Quantity:
     """Reduced mass mu = m1 m2 / (m1 + m2) of two particles (Sections 2.2.2 and 2.3.1)."""
     return m1 * m2 / (m1 + m2)
 
 
-def relative_kinetic_energy(m1, m2, relative_speed):
+def relative_kinetic_energy(m1: ArrayLike, m2: ArrayLike, relative_speed: ArrayLike) -> Quantity:
     """Kinetic energy of the relative motion of two particles, 1/2 mu v_rel^2: the part
     of T that internal forces between the two can change (Section 2.2.2)."""
     return 0.5 * reduced_mass(m1, m2) * relative_speed**2
 
 
-def relative_speed_from_internal_work(m1, m2, internal_work, initial_relative_speed=0.0):
+def relative_speed_from_internal_work(m1: ArrayLike, m2: ArrayLike, internal_work: ArrayLike,
+                                      initial_relative_speed: ArrayLike = 0.0) -> Quantity:
     """Relative speed of two particles after internal forces did the work W_int on them
     (e.g. a compressed spring between two carts released): 1/2 mu v_rel^2 grows by W_int
     while the centre-of-mass motion is unchanged (work-energy balance, Section 2.2.2)."""
@@ -95,7 +83,8 @@ class PairSpeeds:
     v2: float
 
 
-def speeds_relative_to_centre_of_mass(m1, m2, relative_speed):
+def speeds_relative_to_centre_of_mass(m1: ArrayLike, m2: ArrayLike,
+                                      relative_speed: ArrayLike) -> PairSpeeds:
     """How the relative speed of two particles splits between them in the centre-of-mass
     frame: m1 v1 = m2 v2 (total momentum zero) and v1 + v2 = v_rel give
     v1 = m2/(m1+m2) v_rel, v2 = m1/(m1+m2) v_rel, opposite in direction
@@ -104,26 +93,29 @@ def speeds_relative_to_centre_of_mass(m1, m2, relative_speed):
     return PairSpeeds(m2 / total * relative_speed, m1 / total * relative_speed)
 
 
-def angular_momentum_about_point(masses, positions, velocities, point):
+def system_angular_momentum_about_point(masses: ArrayLike, positions: ArrayLike,
+                                        velocities: ArrayLike, point: ArrayLike) -> Quantity:
     """Angular momentum of a system about a fixed point B,
     H_B = sum (r_i - r_B) x m_i v_i (Section 2.2.3). Planar input returns a 3-vector."""
-    m = _as_masses(masses)
-    r = _as_vectors(positions, m.size) - np.asarray(point, dtype=float)
-    v = _as_vectors(velocities, m.size)
-    return (m[:, None] * _cross3(r, v)).sum(axis=0)
+    m = as_floats(masses)
+    r = as_vectors(positions, m.size) - np.asarray(point, dtype=float)
+    v = as_vectors(velocities, m.size)
+    return (m[:, None] * spatial_cross(r, v)).sum(axis=0)
 
 
-def angular_momentum_about_centre_of_mass(masses, positions, velocities):
+def angular_momentum_about_centre_of_mass(masses: ArrayLike, positions: ArrayLike,
+                                          velocities: ArrayLike) -> Quantity:
     """Angular momentum about the centre of mass, H_C = sum (r_i - r_C) x m_i (v_i - v_C)
     (relative and absolute velocities give the same H_C; Section 2.2.3)."""
-    m = _as_masses(masses)
-    r = _as_vectors(positions, m.size)
-    v = _as_vectors(velocities, m.size)
+    m = as_floats(masses)
+    r = as_vectors(positions, m.size)
+    v = as_vectors(velocities, m.size)
     v_c = total_momentum(m, v) / m.sum()
-    return angular_momentum_about_point(m, r, v - v_c, centre_of_mass(m, r))
+    return system_angular_momentum_about_point(m, r, v - v_c, centre_of_mass(m, r))
 
 
-def angular_momentum_transfer(h_c, mass, r_bc, v_c):
+def angular_momentum_transfer(h_c: ArrayLike, M: ArrayLike, r_bc: ArrayLike,
+                              v_c: ArrayLike) -> Quantity:
     """Angular momentum about a point B from that about the centre of mass,
     H_B = H_C + r_BC x M v_C (Section 2.2.3; for rigid bodies Section 3.2.4)."""
-    return np.asarray(h_c, dtype=float) + mass * _cross3(r_bc, v_c)
+    return np.asarray(h_c, dtype=float) + M * spatial_cross(r_bc, v_c)
