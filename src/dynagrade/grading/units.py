@@ -83,9 +83,25 @@ def registry():
     return _registry
 
 
-@lru_cache(maxsize=2048)
 def lookup(name: str) -> tuple[float, tuple]:
     """(factor to SI, dimension) of one unit name; AnswerError when unknown."""
+    found = _lookup(name)
+    if isinstance(found, str):
+        raise AnswerError(found)
+    return found
+
+
+@lru_cache(maxsize=2048)
+def _lookup(name: str) -> tuple[float, tuple] | str:
+    """What :func:`lookup` answers, or the message why not (unknown names are asked of
+    pint once, not once per answer)."""
+    try:
+        return _find(name)
+    except AnswerError as error:
+        return error.message
+
+
+def _find(name: str) -> tuple[float, tuple]:
     if name in BUILTIN:
         return BUILTIN[name]
     if name in _REFUSED:
