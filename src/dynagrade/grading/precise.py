@@ -27,7 +27,6 @@ from __future__ import annotations
 import math
 import threading
 
-import mpmath
 import numpy as np
 
 from .evaluate import evaluate_with_magnitude
@@ -56,9 +55,12 @@ class _GiveUp(Exception):
 
 
 def _context(digits: int):
-    """This thread's mpmath context (contexts are not shared between threads)."""
+    """This thread's mpmath context (contexts are not shared between threads); mpmath
+    is imported on first use, or by :func:`dynagrade.grading.prepare`."""
     mp = getattr(_CONTEXTS, "mp", None)
     if mp is None:
+        import mpmath
+
         mp = _CONTEXTS.mp = mpmath.MPContext()
     mp.dps = digits
     return mp

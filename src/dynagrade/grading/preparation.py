@@ -17,6 +17,7 @@ def prepare() -> None:
     import gc
 
     from . import choice, numeric, symbolic, units, vector  # noqa: F401
+    import mpmath  # noqa: F401  (the precision check of formulas)
     import sympy  # noqa: F401  (the exact check of formulas)
 
     units.registry().get_root_units("meter")  # pint parses its definitions lazily

@@ -14,8 +14,6 @@ from __future__ import annotations
 import math
 from decimal import ROUND_HALF_UP, Decimal
 
-import numpy as np
-
 #: Absolute tolerance used when a part sets none, in the part's unit.
 DEFAULT_ATOL = 1e-9
 #: Relative tolerance of numeric and vector parts that set none.
@@ -29,9 +27,11 @@ def allowed_error(expected, rtol: float, atol: float | None, scale=None):
     ``atol`` defaulting to :data:`DEFAULT_ATOL` and ``s = |expected|`` unless ``scale``
     is given; element by element on arrays."""
     floor = DEFAULT_ATOL if atol is None else atol
-    if isinstance(expected, np.ndarray) or isinstance(scale, np.ndarray):
-        return np.maximum(floor, rtol * (np.abs(expected) if scale is None else scale))
-    return max(floor, rtol * (abs(expected) if scale is None else scale))
+    if isinstance(expected, (int, float)) and (scale is None or isinstance(scale, (int, float))):
+        return max(floor, rtol * (abs(expected) if scale is None else scale))
+    import numpy as np
+
+    return np.maximum(floor, rtol * (np.abs(expected) if scale is None else scale))
 
 
 def is_close(answer, expected, rtol: float, atol: float | None, scale=None):
@@ -41,10 +41,12 @@ def is_close(answer, expected, rtol: float, atol: float | None, scale=None):
     The one rule for numbers and vector components alike: on arrays it answers
     element by element (vectors pass the scale of each component).
     """
-    if not (isinstance(answer, np.ndarray) or isinstance(expected, np.ndarray)):
+    if isinstance(answer, float) and isinstance(expected, float):
         floor = DEFAULT_ATOL if atol is None else atol  # allowed_error, inlined: this runs per candidate
         allowed = max(floor, rtol * (abs(expected) if scale is None else scale))
         return math.isfinite(answer) and abs(answer - expected) <= allowed + _ROUNDING * max(abs(answer), abs(expected))
+    import numpy as np  # arrays come from graders that have loaded numpy already
+
     a = np.asarray(answer, dtype=np.float64)
     e = np.asarray(expected, dtype=np.float64)
     with np.errstate(invalid="ignore", over="ignore"):
@@ -52,16 +54,20 @@ def is_close(answer, expected, rtol: float, atol: float | None, scale=None):
                                  + _ROUNDING * np.maximum(np.abs(a), np.abs(e)))
 
 
-def point_tolerance(target: np.ndarray, rtol: float) -> np.ndarray:
+def point_tolerance(target, rtol: float):
     """The formula rule, per sample point: ``rtol * max(|t_i|, 1e-3*M)`` with M the
     median of |t| over the points (an absolute 1e-12 when the target is identically 0)."""
+    import numpy as np
+
     scale = median(np.abs(target))
     floor = 1e-3 * scale if scale > 0 else 1e-12 / max(rtol, 1e-300)
     return rtol * np.maximum(np.abs(target), floor)
 
 
-def median(values: np.ndarray) -> float:
+def median(values) -> float:
     """``np.median`` of the few values of the sample points (NaN if any is NaN), without its overhead."""
+    import numpy as np
+
     ordered = np.sort(values, axis=None)
     n = ordered.size
     if n == 0 or np.isnan(ordered[-1]):
