@@ -1,0 +1,160 @@
+"""The exam the server delivers: the one place that reads the manifest.
+
+:class:`ExamData` holds what ``dynagrade exam`` wrote (students, their variants with the
+stored reference answers, part points, the policy) and the bank's exercises that grade
+them. It renders a student's statement (HTML with MathML; the figure ``dynagrade exam``
+drew), reads answers (:mod:`dynagrade.grading.readability`) and grades them exactly as
+class grading does (:func:`dynagrade.exam.classgrade.grade_student`), so a regrade of the
+server's submissions with ``dynagrade grade`` gives the same points.
+"""
+
+from __future__ import annotations
+
+import secrets
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+from ..exam.classgrade import ManifestError, grade_student, load_manifest
+from ..exam.policy import Policy
+from ..exam.submissions import Submission
+from ..exercise.loader import Bank, open_bank
+from ..exercise.model import ConstraintError, Exercise
+from ..grading.readability import readability
+
+#: Longest answer text accepted for one part (longer answers are refused, not graded).
+MAX_ANSWER_CHARS = 2000
+
+
+@dataclass(frozen=True)
+class PartInfo:
+    """One answer part as the student page shows it."""
+
+    name: str
+    label: str
+    kind: str
+    unit: str  # as printed ("m/s²")
+    points: float
+    hint: str
+
+
+class ExamData:
+    """An exam manifest with its exercises, ready to show and grade."""
+
+    def __init__(self, manifest_path: str | Path, bank: Bank | None = None):
+        self.path = Path(manifest_path)
+        self.manifest = load_manifest(self.path)
+        exam = self.manifest["exam"]
+        self.exam_id: str = exam["id"]
+        self.title: str = exam["title"]
+        self.instructions: str = exam.get("instructions", "")
+        self.policy = Policy.from_json(exam.get("policy"))
+        self.exercises_meta = {e["id"]: e for e in self.manifest["exercises"]}
+        self.exercise_ids = [e["id"] for e in self.manifest["exercises"]]
+        self.manifest_parts = {e["id"]: e["parts"] for e in self.manifest["exercises"]}
+        self.students = {s["student_id"]: s for s in self.manifest["students"]}
+        bank = bank or open_bank()
+        self.exercises: dict[str, Exercise] = {}
+        for exercise_id in self.exercise_ids:
+            try:
+                self.exercises[exercise_id] = bank.get(exercise_id)
+            except KeyError as error:
+                raise ManifestError(f"{self.path}: {error.args[0]} (needed to serve this "
+                                    "exam; point --exercises at its folder)") from None
+
+    # -- what the pages show --------------------------------------------------------------
+
+    def parts(self, exercise_id: str) -> list[PartInfo]:
+        from ..exercise.units import pretty_unit
+
+        return [PartInfo(p["name"], p["label"], p["kind"],
+                         pretty_unit(p["unit"]) if p.get("unit") else "",
+                         float(p["points"]), p.get("hint", ""))
+                for p in self.manifest_parts[exercise_id]]
+
+    def entry(self, student_id: str, exercise_id: str, seed: int | None = None) -> dict:
+        """The student's variant as the manifest stores it, or a practice draw ``seed``."""
+        if seed is None:
+            return next(v for v in self.students[student_id]["variants"]
+                        if v["exercise"] == exercise_id)
+        return _practice_entry(self, exercise_id, seed)
+
+    def statement_html(self, student_id: str, exercise_id: str,
+                       seed: int | None = None) -> str:
+        entry = self.entry(student_id, exercise_id, seed)
+        return _statement_html(self, exercise_id, int(entry["seed"]),
+                               tuple(sorted(entry["params"].items())))
+
+    def figure_svg(self, student_id: str, exercise_id: str) -> str | None:
+        """The figure ``dynagrade exam`` drew for the student's variant, inline."""
+        from ..exercise.figure import inline_svg
+
+        path = self.path.parent / "students" / student_id / "figures" / f"{exercise_id}.svg"
+        try:
+            return inline_svg(path.read_text(encoding="utf-8"))
+        except (OSError, UnicodeDecodeError):
+            return None
+
+    # -- reading and grading --------------------------------------------------------------
+
+    def read(self, student_id: str, exercise_id: str, part: str, text: str,
+             seed: int | None = None) -> tuple[bool, str]:
+        """How ``text`` reads as an answer to ``part`` (never reveals correctness)."""
+        if len(text) > MAX_ANSWER_CHARS:
+            return False, f"the answer is longer than {MAX_ANSWER_CHARS} characters"
+        exercise = self.exercises[exercise_id]
+        entry = self.entry(student_id, exercise_id, seed)
+        spec = exercise.part(part).spec(exercise.si(entry["params"]))
+        found = readability(spec, text)
+        return found.readable, found.message
+
+    def grade(self, student_id: str, exercise_id: str, answers: dict[str, str],
+              seed: int | None = None) -> list[dict]:
+        """Each submitted part read and graded, with points in the exam's scale."""
+        entry = self.entry(student_id, exercise_id, seed)
+        student = {"student_id": student_id, "variants": [entry]}
+        submission = Submission("server", student_id, exercise_id, dict(answers))
+        graded = grade_student(student, {exercise_id: self.manifest_parts[exercise_id]},
+                               {exercise_id: self.exercises[exercise_id]},
+                               {exercise_id: submission})[exercise_id]
+        out = []
+        for part in graded["parts"]:
+            if part["name"] not in answers:
+                continue
+            readable, message = self.read(student_id, exercise_id, part["name"],
+                                          answers[part["name"]], seed)
+            out.append({"part": part["name"], "raw": answers[part["name"]],
+                        "readable": readable, "message": message, "status": part["status"],
+                        "correct": part["status"] == "correct",
+                        "score": part["score"], "max_score": part["points"],
+                        "feedback": part["feedback"] or ""})
+        return out
+
+    def new_practice_seed(self, exercise_id: str) -> int:
+        """A fresh seed whose draw meets the exercise's constraints."""
+        for _ in range(20):
+            seed = secrets.randbits(48)
+            try:
+                _practice_entry(self, exercise_id, seed)
+            except ConstraintError:
+                continue
+            return seed
+        raise ConstraintError(f"no practice variant of {exercise_id!r} could be drawn")
+
+
+@lru_cache(maxsize=4096)
+def _statement_html(data: ExamData, exercise_id: str, seed: int, params: tuple) -> str:
+    from ..render.markup import markdown_to_html
+
+    variant = data.exercises[exercise_id].variant_from_params(seed, dict(params))
+    return markdown_to_html(variant.statement, heading_offset=2)
+
+
+@lru_cache(maxsize=1024)
+def _practice_entry(data: ExamData, exercise_id: str, seed: int) -> dict:
+    exercise = data.exercises[exercise_id]
+    variant = exercise.variant(seed, data.exercises_meta[exercise_id].get("set") or {})
+    return {"exercise": exercise_id, "seed": seed, "params": variant.params,
+            "answers": {k: list(v) if isinstance(v, tuple) else v
+                        for k, v in variant.answers.items()}}
+
