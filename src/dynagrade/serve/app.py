@@ -343,4 +343,13 @@ def _base(request: Request) -> str:
     return request.scope.get("root_path", "")
 
 
-__all__ = ["create_app", "describe"]
+__all__ = ["create_app", "app_from_environment", "describe"]
+
+
+def app_from_environment() -> FastAPI:
+    """The app ``dynagrade serve`` describes in ``$DYNAGRADE_SERVE`` (one per worker)."""
+    import json
+
+    settings = json.loads(os.environ["DYNAGRADE_SERVE"])
+    return create_app(settings["manifest"], settings["db"], tuple(settings["folders"]),
+                      settings["base_url"], settings["grading_workers"])

@@ -110,25 +110,43 @@ class ExamData:
 
     def grade(self, student_id: str, exercise_id: str, answers: dict[str, str],
               seed: int | None = None) -> list[dict]:
-        """Each submitted part read and graded, with points in the exam's scale."""
+        """Each submitted part read and graded, with points in the exam's scale.
+
+        A part whose grading fails (a fault of the grader, not of the student) gets the
+        status "error", 0 points and a message; the other parts are graded as usual.
+        """
+        try:
+            graded = self._grade_parts(student_id, exercise_id, answers, seed)
+        except Exception:  # grade part by part so that one failure costs one part
+            graded = {}
+            for name, text in answers.items():
+                try:
+                    graded.update(self._grade_parts(student_id, exercise_id,
+                                                    {name: text}, seed))
+                except Exception as error:
+                    graded[name] = _failed(self.manifest_parts[exercise_id], name, error)
+        out = []
+        for part in self.manifest_parts[exercise_id]:
+            name = part["name"]
+            if name not in answers:
+                continue
+            readable, message = self.read(student_id, exercise_id, name, answers[name], seed)
+            verdict = graded[name]
+            out.append({"part": name, "raw": answers[name], "readable": readable,
+                        "message": message, "status": verdict["status"],
+                        "correct": verdict["status"] == "correct", "score": verdict["score"],
+                        "max_score": verdict["points"], "feedback": verdict["feedback"] or ""})
+        return out
+
+    def _grade_parts(self, student_id: str, exercise_id: str, answers: dict[str, str],
+                     seed: int | None) -> dict[str, dict]:
         entry = self.entry(student_id, exercise_id, seed)
         student = {"student_id": student_id, "variants": [entry]}
         submission = Submission("server", student_id, exercise_id, dict(answers))
         graded = grade_student(student, {exercise_id: self.manifest_parts[exercise_id]},
                                {exercise_id: self.exercises[exercise_id]},
                                {exercise_id: submission})[exercise_id]
-        out = []
-        for part in graded["parts"]:
-            if part["name"] not in answers:
-                continue
-            readable, message = self.read(student_id, exercise_id, part["name"],
-                                          answers[part["name"]], seed)
-            out.append({"part": part["name"], "raw": answers[part["name"]],
-                        "readable": readable, "message": message, "status": part["status"],
-                        "correct": part["status"] == "correct",
-                        "score": part["score"], "max_score": part["points"],
-                        "feedback": part["feedback"] or ""})
-        return out
+        return {part["name"]: part for part in graded["parts"] if part["name"] in answers}
 
     def new_practice_seed(self, exercise_id: str) -> int:
         """A fresh seed whose draw meets the exercise's constraints."""
@@ -140,6 +158,13 @@ class ExamData:
                 continue
             return seed
         raise ConstraintError(f"no practice variant of {exercise_id!r} could be drawn")
+
+
+def _failed(parts: list[dict], name: str, error: Exception) -> dict:
+    points = next(float(p["points"]) for p in parts if p["name"] == name)
+    return {"status": "error", "score": 0.0, "points": points,
+            "feedback": f"this answer could not be graded ({type(error).__name__}); the "
+                        "staff will look at it"}
 
 
 @lru_cache(maxsize=4096)

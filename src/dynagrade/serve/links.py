@@ -33,7 +33,7 @@ def write_links(data: ExamData, engine, out: Path, base_url: str,
     """Write ``out`` (student_id,name,email,url per roster student); returns notices."""
     previous = {} if rotate else _previous_urls(out)
     issued = db.issue_tokens(engine, data.exam_id, list(data.students), rotate=rotate)
-    notices, rows = [], []
+    rows, unknown = [], []
     for student_id, student in data.students.items():
         token = issued[student_id]
         if token is not None:
@@ -41,8 +41,7 @@ def write_links(data: ExamData, engine, out: Path, base_url: str,
         else:
             url = _still_valid(engine, data.exam_id, student_id, previous.get(student_id))
             if url is None:
-                notices.append(f"{student_id}: has a link, but it is not in {out}; "
-                               "run with --rotate to make new links for everyone")
+                unknown.append(student_id)
                 url = ""
         rows.append((student_id, student["name"], student.get("email", ""), url))
     buffer = io.StringIO()
@@ -54,7 +53,11 @@ def write_links(data: ExamData, engine, out: Path, base_url: str,
     temporary.write_text(buffer.getvalue(), encoding="utf-8")
     temporary.chmod(0o600)  # the links are the students' passwords
     temporary.replace(out)
-    return notices
+    if not unknown:
+        return []
+    return [f"{len(unknown)} students ({', '.join(unknown[:5])}{', ...' if len(unknown) > 5 else ''})"
+            f" have links that are not in the earlier {out.name}, so their url is empty; "
+            "run with --rotate to make new links for everyone"]
 
 
 def _previous_urls(path: Path) -> dict[str, str]:
