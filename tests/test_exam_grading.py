@@ -161,6 +161,7 @@ def test_the_command_line_grades_a_class_and_single_files_as_before(graded):
 
 
 def test_response_csvs_report_bad_rows_and_let_a_later_row_win(graded, tmp_path):
+    from dynagrade.exam.manifest import from_dict
     from dynagrade.exam.submissions import collect
 
     manifest = graded["manifest"]
@@ -178,7 +179,7 @@ def test_response_csvs_report_bad_rows_and_let_a_later_row_win(graded, tmp_path)
         f"{student['student_id']},{variant['exercise']}\n", encoding="utf-8")
     wrong_header = tmp_path / "wrong.csv"
     wrong_header.write_text("student,exercise,part,answer\n", encoding="utf-8")
-    chosen, problems = collect([responses, wrong_header], manifest)
+    chosen, problems = collect([responses, wrong_header], from_dict(manifest))
     submission = chosen[(student["student_id"], variant["exercise"])]
     assert submission.answers == {name: "2"}
     messages = [(p.source.rsplit(", ", 1)[-1], p.level, p.message.split(":")[0])

@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 
+from dynagrade.exam.manifest import PartEntry
 from dynagrade.exam.stats import correlation, part_statistics, upper_lower_index
 
 
@@ -26,7 +27,7 @@ def test_the_upper_lower_index_compares_the_best_and_weakest_27_percent():
 
 
 def test_part_statistics_use_the_rest_of_the_exam_and_count_wrong_answers():
-    part = {"name": "x", "label": "x", "points": 2.0}
+    part = PartEntry("x", "x", "numeric", "m", 2.0, rtol=0.01, atol=None)
     graded = [
         {"total": 10.0, "parts": {("e", "x"): {"fraction": 1.0, "status": "correct",
                                                "answer": "4.2", "misconception": None}}},

@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import csv
 import io
-import json
 import os
 import time
 from dataclasses import dataclass, field
@@ -31,18 +30,15 @@ from pathlib import Path
 
 from ..exercise.loader import Bank, open_bank
 from ..exercise.model import Exercise, Variant
-from ..exercise.numbers import format_number
+from ..exercise.numbers import GRADEBOOK_DECIMALS, points_text
 from ..exercise.scoring import grade_variant
 from .files import write_atomic
-from .generate import MANIFEST_FORMAT, file_sha256
+from .generate import file_sha256
+from .manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
 from .stats import part_statistics
 from .submissions import Problem, Submission, collect
 
 GRADE_STATUSES = ("graded", "incomplete", "absent")
-
-
-class ManifestError(ValueError):
-    """The manifest cannot be used for grading; the message says why."""
 
 
 @dataclass
@@ -62,37 +58,21 @@ class ClassOutcome:
                 "problems": [p.__dict__ for p in self.problems]}
 
 
-def load_manifest(path: str | os.PathLike) -> dict:
-    """The manifest at ``path``, checked for the fields grading reads."""
-    path = Path(path)
-    try:
-        manifest = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as error:
-        raise ManifestError(f"{path}: not a readable exam manifest ({error})") from None
-    if not isinstance(manifest, dict) or manifest.get("format") != MANIFEST_FORMAT:
-        raise ManifestError(f"{path}: not a dynagrade exam manifest (written by "
-                            "`dynagrade exam`)")
-    for key in ("exam", "exercises", "students"):
-        if key not in manifest:
-            raise ManifestError(f"{path}: the manifest has no {key!r}")
-    return manifest
-
-
-def _exercises(manifest: dict, bank: Bank, problems: list[Problem],
+def _exercises(manifest: Manifest, bank: Bank, problems: list[Problem],
                where: str) -> dict[str, Exercise]:
     exercises = {}
-    for described in manifest["exercises"]:
+    for described in manifest.exercises:
         try:
-            exercise = bank.get(described["id"])
+            exercise = bank.get(described.id)
         except KeyError as error:
             raise ManifestError(f"{where}: {error.args[0]} (needed to grade this exam; "
                                 "point --exercises at the folder it came from)") from None
         names = {p.name for p in exercise.parts}
-        missing = [p["name"] for p in described["parts"] if p["name"] not in names]
+        missing = [p.name for p in described.parts if p.name not in names]
         if missing:
             raise ManifestError(f"{where}: exercise {exercise.id!r} no longer has the parts "
                                 f"{missing} that the exam was generated with")
-        if exercise.path and file_sha256(exercise.path) != described["sha256"]:
+        if exercise.path and file_sha256(exercise.path) != described.sha256:
             problems.append(Problem("warning", exercise.path,
                                     "the exercise file changed since the exam was generated; "
                                     "its grading rules are used with the reference answers "
@@ -101,22 +81,19 @@ def _exercises(manifest: dict, bank: Bank, problems: list[Problem],
     return exercises
 
 
-def stored_variant(exercise: Exercise, entry: dict) -> Variant:
+def stored_variant(exercise: Exercise, entry: VariantEntry) -> Variant:
     """The student's variant as the manifest stored it (answers not recomputed)."""
-    answers = {}
-    for part in exercise.parts:
-        value = entry["answers"].get(part.name)
-        answers[part.name] = tuple(value) if isinstance(value, list) else value
-    return Variant(exercise.id, int(entry["seed"]), dict(entry["params"]), answers, "")
+    answers = {part.name: entry.answers.get(part.name) for part in exercise.parts}
+    return Variant(exercise.id, int(entry.seed), dict(entry.params), answers, "")
 
 
-def grade_student(student: dict, manifest_parts: dict[str, list[dict]],
+def grade_student(student: StudentEntry, manifest_parts: dict[str, tuple[PartEntry, ...]],
                   exercises: dict[str, Exercise],
                   submissions: dict[str, Submission]) -> dict:
     """One roster student's results: points per exercise and a verdict per part."""
     results = {}
-    for entry in student["variants"]:
-        exercise_id = entry["exercise"]
+    for entry in student.variants:
+        exercise_id = entry.exercise
         submission = submissions.get(exercise_id)
         parts = manifest_parts[exercise_id]
         if submission is None:
@@ -128,14 +105,14 @@ def grade_student(student: dict, manifest_parts: dict[str, list[dict]],
         by_name = {p.name: p for p in result.parts}
         graded_parts = []
         for part in parts:
-            verdict = by_name[part["name"]]
+            verdict = by_name[part.name]
             fraction = verdict.score / verdict.max_score if verdict.max_score else 0.0
             graded_parts.append({
-                "name": part["name"], "label": part["label"], "status": verdict.status,
-                "fraction": fraction, "score": fraction * part["points"],
-                "points": part["points"], "answer": verdict.answer,
+                "name": part.name, "label": part.label, "status": verdict.status,
+                "fraction": fraction, "score": fraction * part.points,
+                "points": part.points, "answer": verdict.answer,
                 "feedback": verdict.feedback, "misconception": verdict.misconception,
-                "expected": entry["answers"][part["name"]], "unit": part.get("unit"),
+                "expected": entry.answers[part.name], "unit": part.unit,
             })
         results[exercise_id] = {"source": submission.source, "parts": graded_parts,
                                 "score": round(sum(p["score"] for p in graded_parts), 6)}
@@ -162,27 +139,27 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
     """Grade every submission in ``paths`` and, with ``out_dir``, write the outputs."""
     started = time.perf_counter()
     progress = progress or (lambda stage, done, total: None)
-    manifest = load_manifest(manifest_path)
+    manifest = load(manifest_path)
     problems: list[Problem] = []
     exercises = _exercises(manifest, bank or open_bank(), problems, str(manifest_path))
-    manifest_parts = {e["id"]: e["parts"] for e in manifest["exercises"]}
+    manifest_parts = {e.id: e.parts for e in manifest.exercises}
     chosen, found = collect(paths, manifest)
     problems += found
     timings = {"collect": time.perf_counter() - started}
 
     stage = time.perf_counter()
-    students = manifest["students"]
-    work = [(s, {e: chosen[(s["student_id"], e)] for e in manifest_parts
-                 if (s["student_id"], e) in chosen}) for s in students]
+    students = manifest.students
+    work = [(s, {e: chosen[(s.student_id, e)] for e in manifest_parts
+                 if (s.student_id, e) in chosen}) for s in students]
     graded = _run(work, manifest_parts, exercises, jobs, progress)
     timings["grading"] = time.perf_counter() - stage
 
-    exercise_ids = [e["id"] for e in manifest["exercises"]]
-    max_total = sum(float(e["points"]) for e in manifest["exercises"])
+    exercise_ids = manifest.exercise_ids
+    max_total = sum(float(e.points) for e in manifest.exercises)
     rows, analysed, feedback = [], [], {}
     for student, results in zip(students, graded):
         submitted = [e for e in exercise_ids if results[e] is not None]
-        row = {"student_id": student["student_id"]}
+        row = {"student_id": student.student_id}
         for exercise_id in exercise_ids:
             row[exercise_id] = results[exercise_id]["score"] if results[exercise_id] else 0.0
         total = round(sum(row[e] for e in exercise_ids), 6)
@@ -192,13 +169,13 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
                    percent=round(100.0 * total / max_total, 2) if max_total else 0.0,
                    status=status)
         rows.append(row)
-        feedback[student["student_id"]] = {"student": student, "results": results,
+        feedback[student.student_id] = {"student": student, "results": results,
                                            "row": row}
         if submitted:
             analysed.append({"total": total, "parts": {
                 (e, p["name"]): p for e in submitted for p in results[e]["parts"]}})
-    ordered_parts = [(e["id"], p) for e in manifest["exercises"] for p in e["parts"]]
-    outcome = ClassOutcome(manifest["exam"]["title"], exercise_ids, rows, problems,
+    ordered_parts = [(e.id, p) for e in manifest.exercises for p in e.parts]
+    outcome = ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
                            part_statistics(ordered_parts, analysed), feedback, timings)
     if out_dir is not None:
         stage = time.perf_counter()
@@ -241,10 +218,14 @@ def gradebook_csv(outcome: ClassOutcome) -> str:
     writer.writerow(columns)
     for row in outcome.rows:
         writer.writerow([row["student_id"],
-                         *(_points(row[e]) for e in outcome.exercise_ids),
-                         _points(row["total"]), _points(row["max_total"]),
+                         *(_recorded(row[e]) for e in outcome.exercise_ids),
+                         _recorded(row["total"]), _recorded(row["max_total"]),
                          f"{row['percent']:.2f}", row["status"]])
     return buffer.getvalue()
+
+
+def _recorded(points: float) -> str:
+    return points_text(points, GRADEBOOK_DECIMALS)
 
 
 def problems_csv(problems: list[Problem]) -> str:
@@ -256,21 +237,17 @@ def problems_csv(problems: list[Problem]) -> str:
     return buffer.getvalue()
 
 
-def _points(value: float) -> str:
-    return format_number(round(float(value), 6), 10)
-
-
-def write_outputs(outcome: ClassOutcome, manifest: dict, out: Path, progress) -> None:
+def write_outputs(outcome: ClassOutcome, manifest: Manifest, out: Path, progress) -> None:
     from ..render.report import feedback_html, feedback_markdown, report_html
 
-    exercises = {e["id"]: e for e in manifest["exercises"]}
+    exercises = {e.id: e for e in manifest.exercises}
     total = len(outcome.feedback)
     for done, (student_id, data) in enumerate(outcome.feedback.items(), 1):
         write_atomic(out / "feedback" / f"{student_id}.md",
-                     feedback_markdown(manifest["exam"], exercises, data))
+                     feedback_markdown(manifest.exam, exercises, data))
         write_atomic(out / "feedback" / f"{student_id}.html",
-                     feedback_html(manifest["exam"], exercises, data))
+                     feedback_html(manifest.exam, exercises, data))
         progress("feedback", done, total)
-    write_atomic(out / "report.html", report_html(manifest["exam"], outcome))
+    write_atomic(out / "report.html", report_html(manifest.exam, outcome))
     write_atomic(out / "problems.csv", problems_csv(outcome.problems))
     write_atomic(out / "grades.csv", gradebook_csv(outcome))

@@ -20,7 +20,6 @@ the manifest last: a folder with a manifest holds a whole exam.
 from __future__ import annotations
 
 import hashlib
-import json
 import os
 import re
 import time
@@ -38,11 +37,10 @@ from ..exercise.units import pretty_unit
 from ..render.sheets import (SheetExercise, SheetPart, StudentSheet, sheet_html,
                              sheet_markdown, sheet_typst_body, typst_preamble)
 from .files import write_atomic
+from .manifest import (ExamEntry, ExerciseEntry, Generator, Manifest, PartEntry,
+                       StudentEntry, VariantEntry, dump)
 from .spec import ExamSpec, ExamSpecError, Student, read_exam_spec, read_roster
 from .variants import exam_variant
-
-MANIFEST_FORMAT = "dynagrade-exam-manifest"
-MANIFEST_VERSION = 1
 
 Progress = Callable[[str, int, int], None]
 
@@ -74,30 +72,29 @@ def _init_worker(spec: ExamSpec, paths: dict[str, str], parts: dict, out_dir: st
 
 
 def _student_job(student: Student) -> dict:
-    """Variants, figures, sheets and the PDF of one student; returns the manifest entry,
-    the typst body (for the combined PDF) and the key rows."""
+    """Variants, figures, sheets and the PDF of one student; returns the manifest entry
+    and the typst body (for the combined PDF)."""
     spec: ExamSpec = _STATE["spec"]
     folder = _STATE["out_dir"] / "students" / student.student_id
     entries, sheet_exercises = [], []
     for number, item in enumerate(spec.exercises, 1):
         exercise: Exercise = _STATE["exercises"][item.id]
         variant, redraws = exam_variant(exercise, spec.id, student.student_id, item.set)
-        entries.append({
-            "exercise": exercise.id, "seed": variant.seed, "params": variant.params,
-            "answers": {k: list(v) if isinstance(v, tuple) else v
-                        for k, v in variant.answers.items()},
-            "redraws": [r.to_json() for r in redraws],
-        })
+        entries.append(VariantEntry(exercise.id, variant.seed, variant.params,
+                                    dict(variant.answers), redraws))
         fill_in = f"{exercise.id}.py"
+        scaled = {entry.name: entry.points for entry in _STATE["parts"][exercise.id]}
         write_atomic(folder / fill_in,
-                     write_sheet(exercise, variant, student.student_id, fill_in))
+                     write_sheet(exercise, variant, student.student_id, fill_in, scaled))
         svg = _figure(exercise, variant)
         figure_file = None
         if svg is not None:
             figure_file = f"figures/{exercise.id}.svg"
             write_atomic(folder / figure_file, svg)
-        parts = tuple(SheetPart(p["name"], p["label"], p["kind"], p["shown_unit"], p["points"],
-                                p["hint"]) for p in _STATE["parts"][exercise.id])
+        parts = tuple(SheetPart(entry.name, entry.label, entry.kind,
+                                pretty_unit(entry.unit) if entry.unit else "", entry.points,
+                                part.input_hint())
+                      for entry, part in zip(_STATE["parts"][exercise.id], exercise.parts))
         sheet_exercises.append(SheetExercise(number, exercise.id, exercise.title,
                                              exercise.source, item.points, variant.statement,
                                              parts, fill_in, svg, figure_file))
@@ -108,7 +105,8 @@ def _student_job(student: Student) -> dict:
     body = sheet_typst_body(sheet)
     if _STATE["pdf"]:
         write_atomic(folder / "sheet.pdf", compile_pdf(_STATE["preamble"] + body))
-    return {"entry": {**student.to_json(), "variants": entries}, "body": body}
+    entry = StudentEntry(student.student_id, student.name, student.email, tuple(entries))
+    return {"entry": entry, "body": body}
 
 
 _FIGURES: dict[tuple, str | None] = {}
@@ -193,30 +191,14 @@ def load_exam(exam_path, roster_path, bank: Bank | None = None):
     return spec, roster, exercises
 
 
-def exercise_parts(exercise: Exercise, points: float) -> list[dict]:
+def exercise_parts(exercise: Exercise, points: float) -> tuple[PartEntry, ...]:
     """The parts of ``exercise`` with points scaled so that they sum to ``points``."""
     total = sum(p.points for p in exercise.parts)
     scale = points / total if total else 0.0
-    described = []
-    for part in exercise.parts:
-        entry = {"name": part.name, "label": part.label or part.name, "kind": part.kind,
-                 "unit": part.unit, "points": part.points * scale,
-                 "shown_unit": pretty_unit(part.unit) if part.unit else "", "hint": ""}
-        if part.kind == "numeric":
-            entry["rtol"] = part.rtol
-            entry["atol"] = part.atol
-        elif part.kind == "vector":
-            entry.update(rtol=part.rtol, atol=part.atol, size=part.size)
-            entry["hint"] = f"{part.size} components"
-        elif part.kind == "symbolic":
-            entry["hint"] = "in " + ", ".join(part.variables)
-        elif part.kind == "choice":
-            entry["options"] = list(part.options)
-            entry["multiple"] = part.multiple
-            entry["hint"] = ("one or more of " if part.multiple else "one of ") \
-                + ", ".join(part.options)
-        described.append(entry)
-    return described
+    return tuple(PartEntry(part.name, part.label or part.name, part.kind, part.unit,
+                           part.points * scale,
+                           **{name: getattr(part, name) for name in part.manifest_fields})
+                 for part in exercise.parts)
 
 
 def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
@@ -253,8 +235,7 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
         report.timings["students"] = time.perf_counter() - stage
 
         manifest = build_manifest(spec, exercises, parts, [r["entry"] for r in results])
-        report.redraws = sum(len(v["redraws"]) for s in manifest["students"]
-                             for v in s["variants"])
+        report.redraws = sum(len(v.redraws) for s in manifest.students for v in s.variants)
         stage = time.perf_counter()
         write_atomic(out / "key.csv", key_csv(manifest))
         write_atomic(out / "moodle.xml", moodle_xml(manifest, exercises))
@@ -284,7 +265,7 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
     finally:
         if executor is not None:
             executor.shutdown()
-    write_atomic(out / "manifest.json", manifest_text(manifest))
+    dump(manifest, out / "manifest.json")
     report.timings["total"] = time.perf_counter() - started
     return report
 
@@ -300,33 +281,21 @@ def _executor(jobs: int, init_args) -> ProcessPoolExecutor | None:
                                initializer=_init_worker, initargs=init_args)
 
 
-def build_manifest(spec: ExamSpec, exercises: dict[str, Exercise], parts: dict,
-                   students: list[dict]) -> dict:
+def build_manifest(spec: ExamSpec, exercises: dict[str, Exercise],
+                   parts: dict[str, tuple[PartEntry, ...]],
+                   students: list[StudentEntry]) -> Manifest:
     """The manifest: everything grading needs, independent of later code or numpy."""
     import numpy
 
-    described = []
-    for item in spec.exercises:
-        exercise = exercises[item.id]
-        described.append({
-            "id": exercise.id, "title": exercise.title, "source": exercise.source,
-            "points": item.points, "set": dict(item.set),
-            "file": "/".join(Path(exercise.path).parts[-2:]),
-            "sha256": file_sha256(exercise.path),
-            "parts": [{k: v for k, v in p.items() if k not in ("shown_unit", "hint")}
-                      for p in parts[item.id]],
-        })
-    return {
-        "format": MANIFEST_FORMAT, "version": MANIFEST_VERSION,
-        "generator": {"dynagrade": _version(), "numpy": numpy.__version__},
-        "exam": {**spec.to_json(), "points": spec.total_points},
-        "exercises": described,
-        "students": students,
-    }
-
-
-def manifest_text(manifest: dict) -> str:
-    return json.dumps(manifest, indent=1, ensure_ascii=False, allow_nan=False) + "\n"
+    described = tuple(
+        ExerciseEntry(exercises[item.id].id, exercises[item.id].title,
+                      exercises[item.id].source, item.points, dict(item.set),
+                      "/".join(Path(exercises[item.id].path).parts[-2:]),
+                      file_sha256(exercises[item.id].path), parts[item.id])
+        for item in spec.exercises)
+    exam = ExamEntry(spec.id, spec.title, spec.date, spec.instructions, spec.total_points)
+    return Manifest(Generator(_version(), numpy.__version__), exam, described,
+                    tuple(students))
 
 
 def _version() -> str:

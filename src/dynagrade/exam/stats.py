@@ -15,6 +15,8 @@ import math
 from collections import Counter
 from dataclasses import dataclass, field
 
+from .manifest import PartEntry
+
 GROUP_FRACTION = 0.27
 
 
@@ -60,7 +62,7 @@ def upper_lower_index(fractions: list[float], totals: list[float]) -> float | No
     return (sum(fractions[i] for i in upper) - sum(fractions[i] for i in lower)) / size
 
 
-def part_statistics(exercise_parts: list[tuple[str, dict]], graded: list[dict],
+def part_statistics(exercise_parts: list[tuple[str, PartEntry]], graded: list[dict],
                     top: int = 5) -> list[PartStats]:
     """Statistics for each ``(exercise_id, part)``; ``graded`` holds per student
     ``{"total": float, "parts": {(exercise_id, part): {...}}}`` with each part's
@@ -68,13 +70,13 @@ def part_statistics(exercise_parts: list[tuple[str, dict]], graded: list[dict],
     submit an exercise have no entry for its parts)."""
     stats = []
     for exercise_id, part in exercise_parts:
-        key = (exercise_id, part["name"])
+        key = (exercise_id, part.name)
         entries = [(g["parts"][key], g["total"]) for g in graded if key in g["parts"]]
-        item = PartStats(exercise_id, part["name"], part.get("label", part["name"]),
-                         part["points"], answered=len(entries))
+        item = PartStats(exercise_id, part.name, part.label, part.points,
+                         answered=len(entries))
         if entries:
             fractions = [e["fraction"] for e, _ in entries]
-            rest = [total - e["fraction"] * part["points"] for e, total in entries]
+            rest = [total - e["fraction"] * part.points for e, total in entries]
             totals = [total for _, total in entries]
             item.difficulty = sum(fractions) / len(fractions)
             item.point_biserial = correlation(fractions, rest)

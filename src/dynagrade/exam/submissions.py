@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..exercise.sheet import MAX_SHEET_BYTES, SheetError, read_sheet
+from .manifest import Manifest
 
 RESPONSE_HEADER = ("student_id", "exercise_id", "part", "answer")
 MAX_CSV_BYTES = 50_000_000
@@ -52,12 +53,12 @@ class Submission:
 class _Exam:
     """What the checks need from the manifest."""
 
-    def __init__(self, manifest: dict):
-        self.students = {s["student_id"]: s for s in manifest["students"]}
-        self.seeds = {(s["student_id"], v["exercise"]): v["seed"]
-                      for s in manifest["students"] for v in s["variants"]}
-        self.parts = {e["id"]: [p["name"] for p in e["parts"]] for e in manifest["exercises"]}
-        self.exam_id = manifest["exam"]["id"]
+    def __init__(self, manifest: Manifest):
+        self.students = {s.student_id: s for s in manifest.students}
+        self.seeds = {(s.student_id, v.exercise): v.seed
+                      for s in manifest.students for v in s.variants}
+        self.parts = {e.id: [p.name for p in e.parts] for e in manifest.exercises}
+        self.exam_id = manifest.exam.id
 
 
 def expand(paths) -> list[Path]:
@@ -75,7 +76,7 @@ def expand(paths) -> list[Path]:
     return files
 
 
-def collect(paths, manifest: dict) -> tuple[dict[tuple[str, str], Submission], list[Problem]]:
+def collect(paths, manifest: Manifest) -> tuple[dict[tuple[str, str], Submission], list[Problem]]:
     """The submission that counts for each (student, exercise), and every problem found."""
     exam = _Exam(manifest)
     problems: list[Problem] = []

@@ -9,29 +9,18 @@ manifest, so the choice can be checked and explained.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Mapping
 
 from ..exercise.model import ConstraintError, Exercise, Variant
 from ..exercise.seeds import exam_seed, stable_seed
 from ..exercise.verify import variant_problems
+from .manifest import Redraw
 
 MAX_ATTEMPTS = 25
 
 
 class NoUsableVariant(RuntimeError):
     """Every seed tried gave a variant that cannot discriminate."""
-
-
-@dataclass(frozen=True)
-class Redraw:
-    """A seed that was not handed out, and why."""
-
-    seed: int
-    problems: tuple[str, ...]
-
-    def to_json(self) -> dict:
-        return {"seed": self.seed, "problems": list(self.problems)}
 
 
 def attempt_seed(exam_id: str, student_id: str, exercise_id: str, attempt: int) -> int:

@@ -1,14 +1,28 @@
 """Answer parts of an exercise: what is asked, in which unit, for how many points.
 
-Each part turns a variant's reference answer into the grader's specification
-(:mod:`dynagrade.grading.spec`). Reference answers arrive from the solver in SI; a part
-converts them into its own unit, which is also the unit a bare number is read in.
+A part kind (:class:`Numeric`, :class:`Vector`, :class:`Symbolic`, :class:`Options`) owns
+everything that differs between kinds, behind the small contract of :class:`Part`:
+
+- ``reference`` / ``in_part_unit``: the solver's SI answer in the part's own unit;
+- ``spec``: the grader's specification (:mod:`dynagrade.grading.spec`);
+- ``describe(points)``: the part's line in a fill-in file, with the points as the exam
+  scales them; ``input_hint`` / ``input_options``: what an answer box shows;
+- ``answer_text`` / ``shown_answer``: a reference answer as a student would type it
+  and as a person reads it (the one answer formatter, :func:`.numbers.answer_text`);
+- ``near_misses`` / ``misconception_answer`` / ``cross_check``: what ``dynagrade
+  verify`` tries against a variant;
+- ``manifest_fields``: the settings the exam manifest stores; ``follows_through``.
+
+No other module asks which kind a part is; code that needs a new behaviour per kind adds
+a method here. Reference answers arrive from the solver in SI; a part converts them into
+its own unit, which is also the unit a bare number is read in.
 """
 
 from __future__ import annotations
 
+import textwrap
 from dataclasses import dataclass, field
-from typing import Any, Callable, Mapping
+from typing import Any, Callable, ClassVar, Mapping
 
 from ..grading.spec import (
     ChoiceSpec,
@@ -18,8 +32,15 @@ from ..grading.spec import (
     Variable,
     VectorSpec,
 )
+from ..grading.tolerance import DEFAULT_RTOL
+from .numbers import answer_text, format_number, points_phrase
 from .params import ParamValues
-from .units import from_si
+from .units import from_si, to_si, with_unit
+
+#: how far off a near miss is: an answer 5 % too large must fail its part
+PERTURBATION = 0.05
+#: how closely a formula must reproduce the mechanics core's number (``Symbolic.equals``)
+CROSS_CHECK_RTOL = 1e-6
 
 __all__ = ["Misconception", "Numeric", "Vector", "Symbolic", "Options", "Variable", "Part"]
 
@@ -48,6 +69,8 @@ class Part:
     misconceptions: tuple[Misconception, ...] = ()
 
     kind = "part"
+    #: the settings the exam manifest stores for parts of this kind (attribute names)
+    manifest_fields: ClassVar[tuple[str, ...]] = ()
 
     def __post_init__(self):
         if not self.name.isidentifier():
@@ -80,6 +103,51 @@ class Part:
     def unit(self) -> str | None:
         return None
 
+    @property
+    def follows_through(self) -> bool:
+        """Whether a wrong answer may be graded again against the student's own earlier
+        answers (:mod:`.scoring`)."""
+        return False
+
+    def asks(self) -> str:
+        """What the answer is, in words (``a number in m/s``)."""
+        raise NotImplementedError
+
+    def describe(self, points: float) -> str:
+        """The part's line in a fill-in file; ``points`` as the exam scales them (the
+        part's own points outside an exam)."""
+        return textwrap.shorten(f"{self.label or self.name}: {self.asks()} "
+                                f"({points_phrase(points)})", 200)
+
+    def input_hint(self) -> str:
+        """What the answer looks like, for a sheet's part line or an input's placeholder."""
+        return ""
+
+    def input_options(self) -> tuple[str, ...]:
+        """The values an answer box offers to pick from (none: free text)."""
+        return ()
+
+    def answer_text(self, value, digits: int = 12) -> str:
+        """A reference answer written as a student would write it."""
+        return answer_text(value, digits)
+
+    def shown_answer(self, value, digits: int = 6) -> str:
+        """A reference answer with its unit, as a person reads it."""
+        return with_unit(answer_text(value, digits), self.unit)
+
+    def near_misses(self, expected) -> list[tuple[str, str]]:
+        """Answers close to ``expected`` that must be wrong, each with what it is."""
+        return []
+
+    def misconception_answer(self, misconception: Misconception, params: ParamValues) -> str:
+        """The answer a declared misconception gives in the variant with ``params``."""
+        return self.answer_text(self.in_part_unit(misconception.value(params)))
+
+    def cross_check(self, params: ParamValues, answers: Mapping[str, Any],
+                    part: Callable[[str], Part]) -> list[str]:
+        """Disagreements with the variant's other answers (``part(name)`` looks one up)."""
+        return []
+
 
 @dataclass(frozen=True)
 class Numeric(Part):
@@ -92,7 +160,7 @@ class Numeric(Part):
     """
 
     unit: str | None = None
-    rtol: float = 1e-2
+    rtol: float = DEFAULT_RTOL
     atol: float | None = None
     sigfigs: int | None = None
     follow_through: Callable[[ParamValues, Mapping[str, float]], float] | None = None
@@ -101,9 +169,22 @@ class Numeric(Part):
     unit_credit: float | None = None
 
     kind = "numeric"
+    manifest_fields = ("rtol", "atol")
 
     def in_part_unit(self, value):
         return from_si(float(value), self.unit)
+
+    @property
+    def follows_through(self) -> bool:
+        return self.follow_through is not None
+
+    def asks(self) -> str:
+        return f"a number in {self.unit}" if self.unit else "a number"
+
+    def near_misses(self, expected):
+        if expected == 0:
+            return []
+        return [(self.answer_text(expected * (1 + PERTURBATION)), "an answer 5 % too large")]
 
     def spec(self, params):
         return NumericSpec(unit=self.unit, rtol=self.rtol, atol=self.atol,
@@ -117,10 +198,11 @@ class Vector(Part):
 
     unit: str | None = None
     size: int = 2
-    rtol: float = 1e-2
+    rtol: float = DEFAULT_RTOL
     atol: float | None = None
 
     kind = "vector"
+    manifest_fields = ("rtol", "atol", "size")
 
     def in_part_unit(self, value):
         values = tuple(from_si(float(v), self.unit) for v in value)
@@ -128,6 +210,18 @@ class Vector(Part):
             raise ValueError(f"part {self.name!r} expects {self.size} components, "
                              f"the solver gave {len(values)}")
         return values
+
+    def asks(self) -> str:
+        return f"a vector of {self.size} components" + (f" in {self.unit}" if self.unit else "")
+
+    def input_hint(self) -> str:
+        return f"{self.size} components"
+
+    def near_misses(self, expected):
+        if not any(expected):
+            return []
+        return [(self.answer_text(tuple(v * (1 + PERTURBATION) for v in expected)),
+                 "a vector 5 % too long")]
 
     def spec(self, params):
         return VectorSpec(size=self.size, unit=self.unit, rtol=self.rtol, atol=self.atol,
@@ -156,6 +250,33 @@ class Symbolic(Part):
     def reference(self, solved):
         return self.expected
 
+    def asks(self) -> str:
+        return "a formula in " + ", ".join(self.variables)
+
+    def input_hint(self) -> str:
+        return "in " + ", ".join(self.variables)
+
+    def near_misses(self, expected):
+        return [(f"{1 + PERTURBATION}*({expected})", "the formula times 1.05")]
+
+    def misconception_answer(self, misconception, params):
+        return misconception.value
+
+    def cross_check(self, params, answers, part):
+        """The formula, evaluated at the variant's parameters, against the numeric part it
+        ``equals`` (the mechanics core's number)."""
+        if not self.equals:
+            return []
+        from ..grading import evaluate_expression
+
+        target = part(self.equals)
+        value = to_si(answers[target.name], target.unit)
+        formula = evaluate_expression(self.expected, dict(params))
+        if abs(formula - value) > CROSS_CHECK_RTOL * max(abs(value), 1e-300):
+            return [f"part {self.name}: the formula gives {format_number(formula)} in SI but "
+                    f"the core gives {format_number(value)} for part {target.name}"]
+        return []
+
     def spec(self, params):
         known = tuple(KnownWrong(m.name, m.value, m.feedback, m.score)
                       for m in self.misconceptions)
@@ -171,6 +292,7 @@ class Options(Part):
     multiple: bool = False
 
     kind = "choice"
+    manifest_fields = ("options", "multiple")
 
     def in_part_unit(self, value):
         chosen = (value,) if isinstance(value, str) else tuple(value)
@@ -180,5 +302,29 @@ class Options(Part):
                              f"not among the options {list(self.options)}")
         return chosen if self.multiple else chosen[0]
 
+    def asks(self) -> str:
+        return self.input_hint()
+
+    def input_hint(self) -> str:
+        return ("one or more of " if self.multiple else "one of ") + ", ".join(self.options)
+
+    def input_options(self) -> tuple[str, ...]:
+        return tuple(self.options)
+
+    def near_misses(self, expected):
+        if not self.multiple:
+            return [(option, f"option {option!r}") for option in self.options
+                    if option != expected]
+        others = [o for o in self.options if o not in expected]
+        if not others and len(expected) <= 1:
+            return []
+        wrong = expected[:-1] if len(expected) > 1 else expected + tuple(others[:1])
+        return [(", ".join(wrong), "a different set of options")]
+
     def spec(self, params):
         return ChoiceSpec(options=tuple(self.options), multiple=self.multiple)
+
+
+#: every part kind by its name (the ``kind`` of a part and of a manifest's part entry)
+PART_KINDS: dict[str, type[Part]] = {cls.kind: cls for cls in (Numeric, Vector, Symbolic,
+                                                                 Options)}

@@ -73,7 +73,7 @@ def grade_variant(exercise: Exercise, variant: Variant,
         else:
             verdict = grade(part.spec(params_si), variant.answers[part.name], text)
             followed = None
-            if not verdict.correct and isinstance(part, Numeric) and part.follow_through:
+            if not verdict.correct and part.follows_through:
                 followed = _follow_through(exercise, part, variant, answers)
             verdict = followed or verdict
             status = ("correct" if verdict.correct else "follow-through" if followed

@@ -10,9 +10,9 @@ from __future__ import annotations
 
 import ast
 import re
-import textwrap
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Mapping
 
 from .model import Exercise, Variant
 
@@ -52,15 +52,17 @@ class Sheet:
 
 
 def write_sheet(exercise: Exercise, variant: Variant, student: str | None,
-                filename: str = "exercise.py") -> str:
-    """The text of a fill-in file for ``variant``."""
+                filename: str = "exercise.py", points: Mapping[str, float] | None = None) -> str:
+    """The text of a fill-in file for ``variant``; ``points`` gives each part's points as
+    an exam scales them (the printed sheet shows the same), else the part's own."""
+    points = points or {}
     lines = ['"""', f"{exercise.title} ({exercise.source})", ""]
     lines += _docstring_safe(variant.statement).rstrip().splitlines()
     lines += ["", *GUIDE.format(filename=filename).rstrip().splitlines(), '"""', ""]
     lines += [f"EXERCISE = {exercise.id!r}", f"SEED = {variant.seed}"]
     lines += [f"STUDENT = {student!r}" if student is not None else "STUDENT = None", ""]
     for part in exercise.parts:
-        lines.append(f"# {_describe(part)}")
+        lines.append(f"# {part.describe(points.get(part.name, part.points))}")
         lines.append(f"{part.name} = None")
         lines.append("")
     return "\n".join(lines)
@@ -150,25 +152,6 @@ def _literal(node: ast.expr) -> str | None:
             ast.Attribute: "an attribute"}.get(type(node), type(node).__name__)
     raise ValueError(f"the answer is {kind}; write a number or put the answer in quotes, "
                      "e.g. \"2*pi\"")
-
-
-def _describe(part) -> str:
-    kinds = {
-        "numeric": lambda p: f"{p.label or p.name}: a number in {p.unit}" if p.unit
-        else f"{p.label or p.name}: a number",
-        "vector": lambda p: f"{p.label or p.name}: a vector of {p.size} components"
-        + (f" in {p.unit}" if p.unit else ""),
-        "symbolic": lambda p: f"{p.label or p.name}: a formula in "
-        + ", ".join(p.variables),
-        "choice": lambda p: f"{p.label or p.name}: "
-        + ("one or more of " if p.multiple else "one of ") + ", ".join(p.options),
-    }
-    described = kinds[part.kind](part)
-    return textwrap.shorten(f"{described}  ({_points(part.points)})", 200)
-
-
-def _points(points: float) -> str:
-    return f"{points:g} point" + ("" if points == 1 else "s")
 
 
 def _docstring_safe(text: str) -> str:

@@ -20,13 +20,14 @@ from __future__ import annotations
 
 import json
 import math
+from dataclasses import dataclass
 from typing import Iterable, Iterator
 
 from .dispatch import grade
 from .errors import AnswerError, SpecError
 from .spec import ChoiceSpec, KnownWrong, NumericSpec, SymbolicSpec, Variable, VectorSpec
+from .tolerance import DEFAULT_RTOL
 
-KINDS = ("numeric", "symbolic", "vector", "choice")
 
 
 class RecordError(ValueError):
@@ -129,46 +130,61 @@ def _variables(record: dict) -> dict:
     return out
 
 
-def build(record: dict):
-    """(spec, expected, answer) from a record; RecordError when malformed."""
-    kind = _string(record, "kind", required=True)
-    if kind not in KINDS:
-        raise RecordError(f"field 'kind' must be one of {', '.join(KINDS)}, got {kind!r}")
-    if "expected" not in record:
-        raise RecordError("missing field 'expected'")
-    answer = _string(record, "answer", required=True)
-    unit = _string(record, "unit")
-    rtol = _number(record, "rtol")
-    atol = _number(record, "atol")
-    reveal = _flag(record, "reveal")
-    misconceptions = _misconceptions(record)
-    if kind == "numeric":
-        expected, unit = _numeric_expected(record, unit)
-        sigfigs = _number(record, "sigfigs", integer=True)
-        unit_credit = _number(record, "unit_credit")
-        spec = NumericSpec(unit=unit, rtol=1e-2 if rtol is None else float(rtol),
-                           atol=None if atol is None else float(atol), sigfigs=sigfigs,
-                           misconceptions=misconceptions, require_unit=_flag(record, "require_unit"),
-                           unit_credit=None if unit_credit is None else float(unit_credit), reveal=reveal)
-        return spec, expected, answer
-    if kind == "symbolic":
-        expected = _string(record, "expected", required=True)
-        form = record.get("form") or ()
-        if not isinstance(form, (list, tuple)) or not all(isinstance(f, str) for f in form):
-            raise RecordError("field 'form' must be a list of strings")
-        spec = SymbolicSpec(_variables(record), rtol=1e-6 if rtol is None else float(rtol),
-                            misconceptions=misconceptions, form=tuple(form), reveal=reveal)
-        return spec, expected, answer
-    if kind == "vector":
-        expected = record["expected"]
-        if not isinstance(expected, list) or not all(
-                isinstance(x, (int, float)) and not isinstance(x, bool) for x in expected):
-            raise RecordError("field 'expected' of a vector must be a list of numbers")
-        size = _number(record, "size", integer=True) or len(expected)
-        spec = VectorSpec(size, unit=unit, rtol=1e-2 if rtol is None else float(rtol),
-                          atol=None if atol is None else float(atol), misconceptions=misconceptions,
-                          require_unit=_flag(record, "require_unit"), reveal=reveal)
-        return spec, tuple(float(x) for x in expected), answer
+@dataclass(frozen=True)
+class _Common:
+    """The fields every kind of record may carry, already checked."""
+
+    unit: str | None
+    rtol: float | None
+    atol: float | None
+    reveal: bool
+    misconceptions: tuple[KnownWrong, ...]
+
+    @property
+    def numeric_rtol(self) -> float:
+        return DEFAULT_RTOL if self.rtol is None else float(self.rtol)
+
+    @property
+    def numeric_atol(self) -> float | None:
+        return None if self.atol is None else float(self.atol)
+
+
+def _numeric(record: dict, common: _Common):
+    expected, unit = _numeric_expected(record, common.unit)
+    sigfigs = _number(record, "sigfigs", integer=True)
+    unit_credit = _number(record, "unit_credit")
+    spec = NumericSpec(unit=unit, rtol=common.numeric_rtol, atol=common.numeric_atol,
+                       sigfigs=sigfigs, misconceptions=common.misconceptions,
+                       require_unit=_flag(record, "require_unit"),
+                       unit_credit=None if unit_credit is None else float(unit_credit),
+                       reveal=common.reveal)
+    return spec, expected
+
+
+def _symbolic(record: dict, common: _Common):
+    expected = _string(record, "expected", required=True)
+    form = record.get("form") or ()
+    if not isinstance(form, (list, tuple)) or not all(isinstance(f, str) for f in form):
+        raise RecordError("field 'form' must be a list of strings")
+    spec = SymbolicSpec(_variables(record), rtol=1e-6 if common.rtol is None else float(common.rtol),
+                        misconceptions=common.misconceptions, form=tuple(form),
+                        reveal=common.reveal)
+    return spec, expected
+
+
+def _vector(record: dict, common: _Common):
+    expected = record["expected"]
+    if not isinstance(expected, list) or not all(
+            isinstance(x, (int, float)) and not isinstance(x, bool) for x in expected):
+        raise RecordError("field 'expected' of a vector must be a list of numbers")
+    size = _number(record, "size", integer=True) or len(expected)
+    spec = VectorSpec(size, unit=common.unit, rtol=common.numeric_rtol,
+                      atol=common.numeric_atol, misconceptions=common.misconceptions,
+                      require_unit=_flag(record, "require_unit"), reveal=common.reveal)
+    return spec, tuple(float(x) for x in expected)
+
+
+def _choice(record: dict, common: _Common):
     choices = record.get("choices")
     if not isinstance(choices, list) or not choices or not all(isinstance(c, str) for c in choices):
         raise RecordError("field 'choices' must be a non-empty list of strings")
@@ -178,7 +194,26 @@ def build(record: dict):
     if not (isinstance(expected, str) or (isinstance(expected, tuple) and all(isinstance(x, str) for x in expected))):
         raise RecordError("field 'expected' of a choice must be a label or a list of labels")
     spec = ChoiceSpec(tuple(choices), multiple=_flag(record, "multiple") or isinstance(expected, tuple),
-                      reveal=reveal)
+                      reveal=common.reveal)
+    return spec, expected
+
+
+#: the spec and reference of a record, by its ``kind`` (one builder per kind)
+BUILDERS = {"numeric": _numeric, "symbolic": _symbolic, "vector": _vector, "choice": _choice}
+KINDS = tuple(BUILDERS)
+
+
+def build(record: dict):
+    """(spec, expected, answer) from a record; RecordError when malformed."""
+    kind = _string(record, "kind", required=True)
+    if kind not in BUILDERS:
+        raise RecordError(f"field 'kind' must be one of {', '.join(KINDS)}, got {kind!r}")
+    if "expected" not in record:
+        raise RecordError("missing field 'expected'")
+    answer = _string(record, "answer", required=True)
+    common = _Common(_string(record, "unit"), _number(record, "rtol"), _number(record, "atol"),
+                     _flag(record, "reveal"), _misconceptions(record))
+    spec, expected = BUILDERS[kind](record, common)
     return spec, expected, answer
 
 

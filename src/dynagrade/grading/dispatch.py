@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from importlib import import_module
+
 from .errors import AnswerError, SpecError
 from .spec import ChoiceSpec, NumericSpec, SymbolicSpec, VectorSpec
 from .verdict import Verdict, unreadable
@@ -18,23 +20,9 @@ def grade(spec, expected, answer: str) -> Verdict:
     """
     if not isinstance(answer, str):
         return unreadable("the answer must be text")
+    grader = _grader(spec)
     try:
-        if isinstance(spec, NumericSpec):
-            from .numeric import grade_numeric
-
-            return grade_numeric(spec, expected, answer)
-        if isinstance(spec, SymbolicSpec):
-            from .symbolic import grade_symbolic
-
-            return grade_symbolic(spec, expected, answer)
-        if isinstance(spec, VectorSpec):
-            from .vector import grade_vector
-
-            return grade_vector(spec, expected, answer)
-        if isinstance(spec, ChoiceSpec):
-            from .choice import grade_choice
-
-            return grade_choice(spec, expected, answer)
+        return grader(spec, expected, answer)
     except SpecError:
         raise
     except AnswerError as error:
@@ -43,4 +31,18 @@ def grade(spec, expected, answer: str) -> Verdict:
         return unreadable("the answer is too deeply nested to read")
     except MemoryError:
         return unreadable("the answer is too large to read")
-    raise SpecError(f"unknown kind of part: {type(spec).__name__}")
+
+
+#: the module and function that grade each kind of spec (imported on first use, so that
+#: grading a number never loads the symbolic machinery)
+GRADERS = {NumericSpec: ("numeric", "grade_numeric"), SymbolicSpec: ("symbolic", "grade_symbolic"),
+           VectorSpec: ("vector", "grade_vector"), ChoiceSpec: ("choice", "grade_choice")}
+
+
+def _grader(spec):
+    """The grading function of ``spec``'s kind (a subclass grades as its base)."""
+    found = next((GRADERS[c] for c in type(spec).__mro__ if c in GRADERS), None)
+    if found is None:
+        raise SpecError(f"unknown kind of part: {type(spec).__name__}")
+    module, function = found
+    return getattr(import_module(f".{module}", __package__), function)

@@ -11,6 +11,8 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
 
+from .tolerance import DEFAULT_RTOL
+
 #: Form tests a symbolic part may require on top of equivalence.
 FORM_TESTS = ("no_decimals", "simplified", "no_functions")
 
@@ -45,7 +47,7 @@ class NumericSpec:
     """
 
     unit: str | None = None
-    rtol: float = 1e-2
+    rtol: float = DEFAULT_RTOL
     atol: float | None = None
     sigfigs: int | None = None
     misconceptions: tuple[KnownWrong, ...] = ()
@@ -131,7 +133,7 @@ class VectorSpec:
 
     size: int
     unit: str | None = None
-    rtol: float = 1e-2
+    rtol: float = DEFAULT_RTOL
     atol: float | None = None
     misconceptions: tuple[KnownWrong, ...] = ()
     require_unit: bool = False

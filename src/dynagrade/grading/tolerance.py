@@ -16,13 +16,21 @@ from decimal import ROUND_HALF_UP, Decimal
 
 #: Absolute tolerance used when a part sets none, in the part's unit.
 DEFAULT_ATOL = 1e-9
+#: Relative tolerance of numeric and vector parts that set none.
+DEFAULT_RTOL = 1e-2
+
+
+def allowed_error(expected: float, rtol: float, atol: float | None) -> float:
+    """The largest ``|answer - expected|`` the rule accepts: ``max(atol, rtol*|expected|)``
+    with ``atol`` defaulting to :data:`DEFAULT_ATOL`."""
+    floor = DEFAULT_ATOL if atol is None else atol
+    return max(floor, rtol * abs(expected))
 
 
 def is_close(answer: float, expected: float, rtol: float, atol: float | None) -> bool:
     """The tolerance rule; the boundary is inclusive up to float rounding (2.02 for 2 at 1 %)."""
-    floor = DEFAULT_ATOL if atol is None else atol
     slack = 8 * 2.0 ** -52 * max(abs(answer), abs(expected))
-    return abs(answer - expected) <= max(floor, rtol * abs(expected)) + slack
+    return abs(answer - expected) <= allowed_error(expected, rtol, atol) + slack
 
 
 def round_sig(value: float, digits: int) -> Decimal:

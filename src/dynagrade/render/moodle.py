@@ -4,8 +4,10 @@ A quiz then draws a random question from each category, so every student meets o
 the exam's variants. An exercise whose only gradable part is numeric becomes a
 ``numerical`` question; any other becomes a ``cloze`` question with one embedded answer
 per part (``{2:NUMERICAL:=4.43:0.0443}``; a vector has one field per component, a
-choice part a drop-down). Moodle's numerical answers take an absolute tolerance: it is
-``max(atol, rtol*|answer|)`` of the variant's own answer. Symbolic parts cannot be
+choice part a drop-down; :data:`MOODLE_KINDS` holds each kind's form). Moodle's
+numerical answers take an absolute tolerance: it comes from the grader's own tolerance
+functions, so Moodle accepts what ``dynagrade grade`` accepts (``max(atol, rtol*|answer|)``
+with the grader's absolute floor; a vector's zero component judged against its length). Symbolic parts cannot be
 checked by Moodle and are listed as not part of the quiz. ``penalty`` is set to 0
 (no deduction per retry) on every question.
 
@@ -16,11 +18,15 @@ the statements stays TeX between ``\\(`` and ``\\)`` for Moodle's MathJax filter
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
-from typing import Mapping
+from dataclasses import dataclass
+from typing import Callable, Mapping
 
+from ..exam.manifest import ExerciseEntry, Manifest, PartEntry, VariantEntry
 from ..exercise.model import Exercise
 from ..exercise.statement import render_statement
 from ..exercise.units import pretty_unit
+from ..grading.spec import VectorSpec
+from ..grading.tolerance import allowed_error
 from .markup import markdown_to_html
 
 PENALTY = "0"
@@ -28,8 +34,21 @@ _CLOZE_SPECIAL = str.maketrans({c: "\\" + c for c in "}#~/\"\\"})
 
 
 def tolerance(value: float, rtol: float, atol: float | None) -> float:
-    """The absolute tolerance of a numeric answer: ``max(atol, rtol*|value|)``."""
-    return max(atol or 0.0, rtol * abs(value))
+    """The absolute tolerance of a numeric answer: the grader's own
+    :func:`~dynagrade.grading.tolerance.allowed_error` (with its absolute floor)."""
+    return allowed_error(value, rtol, atol)
+
+
+def vector_tolerances(values, rtol: float, atol: float | None) -> list[float]:
+    """The absolute tolerance of each component of a vector answer: the grader's own
+    :func:`~dynagrade.grading.vector.component_tolerance` (a zero component is judged
+    against the vector's length, as dynagrade grades it)."""
+    import numpy as np
+
+    from ..grading.vector import component_tolerance
+
+    spec = VectorSpec(len(values), rtol=rtol, atol=atol)
+    return [float(t) for t in component_tolerance(spec, np.asarray(values, dtype=float))]
 
 
 def _number(value: float) -> str:
@@ -55,46 +74,65 @@ def _text(parent: ET.Element, tag: str, text: str, format: str | None = None) ->
     return element
 
 
-def _cloze_field(part: dict, value, weight: int) -> str:
-    kind = part["kind"]
-    if kind == "numeric":
-        tol = tolerance(value, part["rtol"], part["atol"])
-        return f"{{{weight}:NUMERICAL:={_number(value)}:{_tolerance_text(tol)}}}"
-    if kind == "vector":
-        fields = [f"{{{weight}:NUMERICAL:={_number(v)}:"
-                  f"{_tolerance_text(tolerance(v, part['rtol'], part['atol']))}}}"
-                  for v in value]
-        return "[" + ", ".join(fields) + "]"
-    if kind == "choice":
-        correct = set(value) if isinstance(value, list) else {value}
-        options = [str(o).translate(_CLOZE_SPECIAL) for o in part["options"]]
-        if part.get("multiple"):
-            share = 100 / max(1, len(correct))
-            marks = [f"%{share:g}%{o}" if raw in correct else f"%-100%{o}"
-                     for raw, o in zip(part["options"], options)]
-            return f"{{{weight}:MULTIRESPONSE:" + "~".join(marks) + "}"
-        marks = [f"={o}" if raw in correct else o for raw, o in zip(part["options"], options)]
-        return f"{{{weight}:MULTICHOICE:" + "~".join(marks) + "}"
-    raise ValueError(f"a {kind} part has no Moodle field")
+def _numeric_field(part: PartEntry, value, weight: int) -> str:
+    tol = tolerance(value, part.rtol, part.atol)
+    return f"{{{weight}:NUMERICAL:={_number(value)}:{_tolerance_text(tol)}}}"
 
 
-def moodle_xml(manifest: dict, exercises: Mapping[str, Exercise]) -> bytes:
+def _vector_field(part: PartEntry, value, weight: int) -> str:
+    fields = [f"{{{weight}:NUMERICAL:={_number(v)}:{_tolerance_text(tol)}}}"
+              for v, tol in zip(value, vector_tolerances(value, part.rtol, part.atol))]
+    return "[" + ", ".join(fields) + "]"
+
+
+def _choice_field(part: PartEntry, value, weight: int) -> str:
+    correct = set(value) if isinstance(value, (list, tuple)) else {value}
+    options = [str(o).translate(_CLOZE_SPECIAL) for o in part.options]
+    if part.multiple:
+        share = 100 / max(1, len(correct))
+        marks = [f"%{share:g}%{o}" if raw in correct else f"%-100%{o}"
+                 for raw, o in zip(part.options, options)]
+        return f"{{{weight}:MULTIRESPONSE:" + "~".join(marks) + "}"
+    marks = [f"={o}" if raw in correct else o for raw, o in zip(part.options, options)]
+    return f"{{{weight}:MULTICHOICE:" + "~".join(marks) + "}"
+
+
+@dataclass(frozen=True)
+class MoodleKind:
+    """How a kind of part goes into Moodle: ``field(part, value, weight)`` writes its
+    embedded cloze answer (None: Moodle cannot check it, the part is listed as not in
+    the quiz); ``numerical``: a lone part of this kind becomes a ``numerical`` question."""
+
+    field: Callable[[PartEntry, object, int], str] | None
+    numerical: bool = False
+
+
+#: every part kind's Moodle form (a test holds it complete)
+MOODLE_KINDS: dict[str, MoodleKind] = {
+    "numeric": MoodleKind(_numeric_field, numerical=True),
+    "vector": MoodleKind(_vector_field),
+    "choice": MoodleKind(_choice_field),
+    "symbolic": MoodleKind(None),
+}
+
+
+def moodle_xml(manifest: Manifest, exercises: Mapping[str, Exercise]) -> bytes:
     """The Moodle XML document (UTF-8 bytes) for every variant in ``manifest``."""
     quiz = ET.Element("quiz")
-    exam = manifest["exam"]
-    for described in manifest["exercises"]:
-        exercise = exercises[described["id"]]
+    exam = manifest.exam
+    for described in manifest.exercises:
+        exercise = exercises[described.id]
         category = _sub(quiz, "question", type="category")
         _text(category, "category",
-              f"$course$/top/{_category_name(exam['title'])}/{described['id']}")
-        _text(category, "info", f"{described['title']} ({described['source']}), "
-              f"{exam['title']}", format="html")
+              f"$course$/top/{_category_name(exam.title)}/{described.id}")
+        _text(category, "info", f"{described.title} ({described.source}), "
+              f"{exam.title}", format="html")
         seen = set()
-        for student in manifest["students"]:
-            for variant in student["variants"]:
-                if variant["exercise"] != described["id"] or variant["seed"] in seen:
+        for student in manifest.students:
+            for variant in student.variants:
+                if variant.exercise != described.id or variant.seed in seen:
                     continue
-                seen.add(variant["seed"])
+                seen.add(variant.seed)
                 _question(quiz, exercise, described, variant)
     ET.indent(quiz, space=" ")
     return (b'<?xml version="1.0" encoding="UTF-8"?>\n'
@@ -105,29 +143,30 @@ def _category_name(title: str) -> str:
     return title.replace("/", "//")
 
 
-def _question(quiz: ET.Element, exercise: Exercise, described: dict, variant: dict) -> None:
-    parts = described["parts"]
-    answers = variant["answers"]
-    statement = render_statement(exercise.statement, exercise.params, variant["params"])
+def _question(quiz: ET.Element, exercise: Exercise, described: ExerciseEntry,
+              variant: VariantEntry) -> None:
+    parts = described.parts
+    answers = variant.answers
+    statement = render_statement(exercise.statement, exercise.params, variant.params)
     text = markdown_to_html(statement, math="tex")
-    gradable = [p for p in parts if p["kind"] in ("numeric", "vector", "choice")]
-    name = f"{described['id']} (seed {variant['seed']})"
-    if len(gradable) == 1 and len(parts) == 1 and gradable[0]["kind"] == "numeric":
+    gradable = [p for p in parts if MOODLE_KINDS[p.kind].field is not None]
+    name = f"{described.id} (seed {variant.seed})"
+    if len(gradable) == 1 and len(parts) == 1 and MOODLE_KINDS[gradable[0].kind].numerical:
         part = gradable[0]
         question = _sub(quiz, "question", type="numerical")
         _text(question, "name", name)
-        unit = f" (in {pretty_unit(part['unit'])})" if part["unit"] else ""
-        _text(question, "questiontext", text + f"<p>{_html(part['label'])}{_html(unit)}</p>",
+        unit = f" (in {pretty_unit(part.unit)})" if part.unit else ""
+        _text(question, "questiontext", text + f"<p>{_html(part.label)}{_html(unit)}</p>",
               format="html")
         _text(question, "generalfeedback", "", format="html")
-        _sub(question, "defaultgrade", _number(described["points"]))
+        _sub(question, "defaultgrade", _number(described.points))
         _sub(question, "penalty", PENALTY)
         _sub(question, "hidden", "0")
-        _sub(question, "idnumber", f"{described['id']}-{variant['seed']}")
-        value = answers[part["name"]]
+        _sub(question, "idnumber", f"{described.id}-{variant.seed}")
+        value = answers[part.name]
         answer = _sub(question, "answer", fraction="100", format="moodle_auto_format")
         _sub(answer, "text", _number(value))
-        _sub(answer, "tolerance", _tolerance_text(tolerance(value, part["rtol"], part["atol"])))
+        _sub(answer, "tolerance", _tolerance_text(tolerance(value, part.rtol, part.atol)))
         _text(answer, "feedback", "", format="html")
         _sub(question, "unitgradingtype", "0")
         _sub(question, "unitpenalty", "0")
@@ -135,13 +174,13 @@ def _question(quiz: ET.Element, exercise: Exercise, described: dict, variant: di
         _sub(question, "unitsleft", "0")
         return
     lines = []
-    smallest = min((p["points"] for p in gradable if p["points"] > 0), default=1.0)
+    smallest = min((p.points for p in gradable if p.points > 0), default=1.0)
     for part in parts:
-        label = _html(part["label"])
-        unit = f" {_html(pretty_unit(part['unit']))}" if part.get("unit") else ""
+        label = _html(part.label)
+        unit = f" {_html(pretty_unit(part.unit))}" if part.unit else ""
         if part in gradable:
-            weight = max(1, round(part["points"] / smallest))  # Moodle wants integers
-            field = _cloze_field(part, answers[part["name"]], weight)
+            weight = max(1, round(part.points / smallest))  # Moodle wants integers
+            field = MOODLE_KINDS[part.kind].field(part, answers[part.name], weight)
             lines.append(f"<li>{label}: {field}{unit}</li>")
         else:
             lines.append(f"<li>{label}: not part of this quiz (a formula, graded from the "
@@ -150,10 +189,10 @@ def _question(quiz: ET.Element, exercise: Exercise, described: dict, variant: di
     _text(question, "name", name)
     _text(question, "questiontext", text + "<ol>" + "".join(lines) + "</ol>", format="html")
     _text(question, "generalfeedback", "", format="html")
-    _sub(question, "defaultgrade", _number(described["points"]))
+    _sub(question, "defaultgrade", _number(described.points))
     _sub(question, "penalty", PENALTY)
     _sub(question, "hidden", "0")
-    _sub(question, "idnumber", f"{described['id']}-{variant['seed']}")
+    _sub(question, "idnumber", f"{described.id}-{variant.seed}")
 
 
 def _html(text: str) -> str:

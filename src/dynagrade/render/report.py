@@ -7,24 +7,25 @@ report is one self-contained HTML file that shows the same on every run.
 from __future__ import annotations
 
 import io
+from typing import TYPE_CHECKING
 
 from ..exercise.figure import SVG_SETTINGS, inline_svg
-from ..exercise.numbers import format_number
-from ..exercise.units import pretty_unit
-from .keys import answer_text
+from ..exercise.numbers import answer_text, format_number
+from ..exercise.units import with_unit
 from .sheets import render_template
+
+if TYPE_CHECKING:
+    from ..exam.manifest import ExamEntry, ExerciseEntry
 
 
 def _shown(value, unit) -> str:
-    text = answer_text(value)
-    shown_unit = pretty_unit(unit) if unit else ""
-    return f"{text} {shown_unit}".strip() if isinstance(value, (int, float, list)) else text
+    return with_unit(answer_text(value), unit)
 
 
 def _feedback_context(exam, exercises, data) -> dict:
     sections = []
-    for entry in data["student"]["variants"]:
-        exercise_id = entry["exercise"]
+    for entry in data["student"].variants:
+        exercise_id = entry.exercise
         result = data["results"][exercise_id]
         described = exercises[exercise_id]
         parts = []
@@ -33,18 +34,18 @@ def _feedback_context(exam, exercises, data) -> dict:
                 parts.append({**part, "expected_shown": _shown(part["expected"], part["unit"]),
                               "answer_shown": part["answer"] if part["answer"] is not None
                               else "—"})
-        sections.append({"id": exercise_id, "title": described["title"],
-                         "points": described["points"], "result": result, "parts": parts})
+        sections.append({"id": exercise_id, "title": described.title,
+                         "points": described.points, "result": result, "parts": parts})
     return {"exam": exam, "student": data["student"], "row": data["row"],
             "sections": sections}
 
 
-def feedback_markdown(exam: dict, exercises: dict, data: dict) -> str:
+def feedback_markdown(exam: ExamEntry, exercises: dict[str, ExerciseEntry], data: dict) -> str:
     """One student's feedback as Markdown."""
     return render_template("feedback.md", **_feedback_context(exam, exercises, data))
 
 
-def feedback_html(exam: dict, exercises: dict, data: dict) -> str:
+def feedback_html(exam: ExamEntry, exercises: dict[str, ExerciseEntry], data: dict) -> str:
     """One student's feedback as a self-contained HTML page."""
     return render_template("feedback.html", **_feedback_context(exam, exercises, data))
 
@@ -92,7 +93,7 @@ def items_svg(stats) -> str:
     return _svg(figure)
 
 
-def report_html(exam: dict, outcome) -> str:
+def report_html(exam: ExamEntry, outcome) -> str:
     """The class report: summary, histogram, item statistics and common wrong answers."""
     present = [r for r in outcome.rows if r["status"] != "absent"]
     percents = [r["percent"] for r in present]

@@ -21,7 +21,7 @@ import jinja2
 from markupsafe import Markup
 
 from ..exercise.figure import inline_svg
-from ..exercise.numbers import format_number
+from ..exercise.numbers import format_number, points_phrase, points_text
 from .markup import inline_html, inline_typst, markdown_to_html, markdown_to_typst, typst_text
 from .mathtex import typst_string
 
@@ -70,12 +70,6 @@ class StudentSheet:
         return sum(e.points for e in self.exercises)
 
 
-def points_text(points: float) -> str:
-    """``2 points``, ``1 point``, ``1.5 points``."""
-    shown = format_number(round(points, 4))
-    return f"{shown} point" + ("" if shown == "1" else "s")
-
-
 @lru_cache(maxsize=4)
 def _environment(kind: str) -> jinja2.Environment:
     options = {"loader": jinja2.FileSystemLoader(str(TEMPLATES)),
@@ -89,7 +83,7 @@ def _environment(kind: str) -> jinja2.Environment:
         options["comment_end_string"] = "##}"
     environment = jinja2.Environment(**options)
     environment.filters.update({
-        "points": points_text, "number": format_number,
+        "points": points_phrase, "points_number": points_text, "number": format_number,
         "md_html": lambda text, offset=0: Markup(markdown_to_html(text, offset)),
         "inline_html": lambda text: Markup(inline_html(text)),
         "md_typst": markdown_to_typst, "inline_typst": inline_typst, "typst_text": typst_text,

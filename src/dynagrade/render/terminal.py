@@ -9,8 +9,7 @@ from rich.panel import Panel
 from rich.progress import Progress
 from rich.table import Table
 
-from ..exercise.numbers import format_number
-from ..exercise.units import with_unit
+from ..exercise.numbers import points_text
 
 _STATUS_STYLE = {"correct": "green", "follow-through": "yellow", "partial": "yellow",
                  "wrong": "red", "not answered": "dim"}
@@ -29,23 +28,12 @@ def exercise_table(exercises) -> None:
     _console().print(table)
 
 
-def shown_answer(part, value) -> str:
-    """A reference answer with its unit, as a person reads it."""
-    if part.kind == "numeric":
-        return with_unit(format_number(value), part.unit)
-    if part.kind == "vector":
-        return with_unit("[" + ", ".join(format_number(v) for v in value) + "]", part.unit)
-    if isinstance(value, tuple):
-        return ", ".join(value)
-    return str(value)
-
-
 def answers_table(exercise, variant) -> None:
     table = Table(title=f"{exercise.id}, seed {variant.seed}")
     table.add_column("part")
     table.add_column("answer")
     for part in exercise.parts:
-        table.add_row(part.name, shown_answer(part, variant.answers[part.name]))
+        table.add_row(part.name, part.shown_answer(variant.answers[part.name]))
     _console().print(table)
 
 
@@ -67,8 +55,9 @@ def result_table(exercise, result) -> None:
     for part in result.parts:
         style = _STATUS_STYLE.get(part.status, "")
         table.add_row(part.name, f"[{style}]{part.status}[/]",
-                      f"{part.score:g} / {part.max_score:g}", part.feedback)
-    table.caption = f"total {result.score:g} / {result.max_score:g}"
+                      f"{points_text(part.score)} / {points_text(part.max_score)}",
+                      part.feedback)
+    table.caption = f"total {points_text(result.score)} / {points_text(result.max_score)}"
     _console().print(table)
 
 
@@ -118,11 +107,6 @@ class progress_reporter:
         return self._progress.__exit__(*exc)
 
 
-def _points(value: float) -> str:
-    """Points as a person reads them on screen: two decimals at most (grades.csv keeps more)."""
-    return format_number(round(value, 2))
-
-
 def gradebook_table(outcome) -> None:
     """The class's grades, one row per roster student."""
     table = Table(title=f"{outcome.exam_title}: {len(outcome.rows)} students")
@@ -132,7 +116,7 @@ def gradebook_table(outcome) -> None:
                          ("student", "status") else "right")
     table.caption = "  ".join(f"{n}: {e}" for n, e in zip(numbers, outcome.exercise_ids))
     for row in outcome.rows:
-        table.add_row(row["student_id"], *(_points(row[e]) for e in outcome.exercise_ids),
-                      f"{_points(row['total'])} / {_points(row['max_total'])}",
-                      _points(row["percent"]), row["status"])
+        table.add_row(row["student_id"], *(points_text(row[e]) for e in outcome.exercise_ids),
+                      f"{points_text(row['total'])} / {points_text(row['max_total'])}",
+                      f"{row['percent']:.2f}", row["status"])
     _console().print(table)

@@ -1,0 +1,169 @@
+"""Part kinds own their behaviour: no module outside the kinds' own code asks which kind a
+part is, every table keyed by kind names every kind, and what a kind says about itself
+(fill-in line, answer text, near misses, hints) is what the sheets and verify use."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+from dynagrade.exercise import Exercise, Numeric, Options, Symbolic, Vector
+from dynagrade.exercise.parts import PART_KINDS
+from dynagrade.exercise.sheet import parse_sheet, write_sheet
+
+SRC = Path(__file__).resolve().parent.parent / "src" / "dynagrade"
+KIND_NAMES = set(PART_KINDS)
+KIND_CLASSES = {"Part", "Numeric", "Vector", "Symbolic", "Options", "NumericSpec",
+                "VectorSpec", "SymbolicSpec", "ChoiceSpec"}
+#: the kinds' own code: the part kinds, and the grader of each kind of spec
+OWN_CODE = {"exercise/parts.py", "grading/numeric.py", "grading/vector.py",
+            "grading/symbolic.py", "grading/choice.py"}
+
+
+def _is_kind_literal(node: ast.AST) -> bool:
+    if isinstance(node, ast.Constant):
+        return node.value in KIND_NAMES
+    if isinstance(node, (ast.Tuple, ast.List, ast.Set)):
+        return any(_is_kind_literal(element) for element in node.elts)
+    return False
+
+
+def _names(node: ast.AST) -> set[str]:
+    if isinstance(node, ast.Name):
+        return {node.id}
+    if isinstance(node, ast.Attribute):
+        return {node.attr}
+    if isinstance(node, ast.Tuple):
+        return set().union(*(_names(e) for e in node.elts))
+    return set()
+
+
+def kind_branches(source: str) -> list[tuple[int, str]]:
+    """Every place in ``source`` that compares with a part kind's name or asks
+    ``isinstance`` of a part or spec class, as (line, code)."""
+    found = []
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, ast.Compare) and any(
+                _is_kind_literal(side) for side in (node.left, *node.comparators)):
+            found.append((node.lineno, ast.unparse(node)))
+        elif (isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
+              and node.func.id in ("isinstance", "issubclass") and len(node.args) == 2
+              and _names(node.args[1]) & KIND_CLASSES):
+            found.append((node.lineno, ast.unparse(node)))
+    return found
+
+
+def test_the_scan_finds_the_switches_it_is_meant_to_forbid():
+    source = ('if part.kind == "numeric": pass\n'
+              'ok = p["kind"] in ("vector", "choice")\n'
+              'if isinstance(part, (Numeric, Vector)): pass\n'
+              'if isinstance(spec, grading.SymbolicSpec): pass\n'
+              'if token.kind == "ident": pass\n')
+    assert [line for line, _ in kind_branches(source)] == [1, 2, 3, 4]
+
+
+def test_no_module_outside_the_kinds_branches_on_the_kind_of_a_part():
+    offenders = []
+    for path in sorted(SRC.rglob("*.py")):
+        relative = path.relative_to(SRC).as_posix()
+        if relative in OWN_CODE:
+            continue
+        offenders += [f"{relative}:{line}: {code}"
+                      for line, code in kind_branches(path.read_text(encoding="utf-8"))]
+    assert offenders == []
+
+
+def test_every_table_keyed_by_kind_names_every_kind():
+    from dynagrade.exam.manifest import PartEntry
+    from dynagrade.grading.compare import BUILDERS
+    from dynagrade.grading.dispatch import GRADERS
+    from dynagrade.render.moodle import MOODLE_KINDS
+
+    assert set(MOODLE_KINDS) == KIND_NAMES
+    assert set(BUILDERS) == KIND_NAMES
+    specs = {type(kind("x", **_required(kind)).spec({})) for kind in PART_KINDS.values()}
+    assert specs == set(GRADERS)
+    for kind in PART_KINDS.values():
+        assert set(kind.manifest_fields) <= set(PartEntry.__dataclass_fields__), kind
+
+
+def _required(kind) -> dict:
+    return {"options": ("a", "b")} if kind is Options else {}
+
+
+def _exercise(parts) -> Exercise:
+    from dynagrade.exercise import Constant
+
+    return Exercise(id="kinds", title="Kinds", source="Example 1.1",
+                    params=(Constant("v0", 10.0, unit="m/s", symbol="v_0"),),
+                    statement="A speed $v_0 = {{ v0 }}$.",
+                    solve=lambda p: {"v": p.v0, "r": (p.v0, 0.0), "c": "a"}, parts=parts)
+
+
+def test_the_fill_in_file_states_the_points_the_printed_sheet_shows():
+    """An exercise whose parts carry 2 and 1 points, in an exam worth 6: the sheet prints
+    4 and 2 points, and so must the fill-in file (it used to print "(2 points)")."""
+    exercise = _exercise((Numeric("v", "speed", points=2, unit="m/s"),
+                          Vector("r", "position", points=1, unit="m")))
+    variant = exercise.variant(1)
+    text = write_sheet(exercise, variant, "s1", points={"v": 4.0, "r": 2.0})
+    assert "# speed: a number in m/s (4 points)" in text
+    assert "# position: a vector of 2 components in m (2 points)" in text
+    third = write_sheet(exercise, variant, "s1", points={"v": 8 / 3, "r": 4 / 3})
+    assert "(2.6667 points)" in third and "(1.3333 points)" in third
+    practice = write_sheet(exercise, variant, "s1")
+    assert "(2 points)" in practice and "(1 point)" in practice
+    assert parse_sheet(text).answers == {"v": None, "r": None}
+
+
+def test_a_generated_exam_prints_the_same_points_on_sheet_and_fill_in_file(tmp_path, bank,
+                                                                          exam_toml):
+    """car-in-a-looping has parts of 2, 1, 1, 1, 1, 1 points and 8 points in the exam:
+    its first part is worth 8·2/7 = 2.2857 points on the sheet and in the fill-in file."""
+    from dynagrade.exam.generate import generate_exam
+
+    exam = tmp_path / "exam.toml"
+    exam.write_text(exam_toml, encoding="utf-8")
+    roster = tmp_path / "roster.csv"
+    roster.write_text("student_id,name\na,A\n", encoding="utf-8")
+    generate_exam(exam, roster, tmp_path / "out", bank=bank, jobs=1, pdf=False)
+    folder = tmp_path / "out" / "students" / "a"
+    fill_in = (folder / "car-in-a-looping.py").read_text(encoding="utf-8")
+    sheet = (folder / "sheet.md").read_text(encoding="utf-8")
+    assert "(2.2857 points)" in fill_in and "— 2.2857 points" in sheet
+    assert "(1.1429 points)" in fill_in and "— 1.1429 points" in sheet
+
+
+@pytest.mark.parametrize("part, value, typed, shown", [
+    (Numeric("v", unit="km/h"), 45.0, "45", "45 km/h"),
+    (Vector("r", unit="m", size=2), (1.5, -0.25), "[1.5, -0.25]", "[1.5, -0.25] m"),
+    (Symbolic("f", expected="v0*t"), "v0*t", "v0*t", "v0*t"),
+    (Options("c", options=("a", "b", "c"), multiple=True), ("a", "c"), "a, c", "a, c"),
+])
+def test_each_kind_writes_its_answer_as_a_student_types_it_and_a_person_reads_it(
+        part, value, typed, shown):
+    assert part.answer_text(value) == typed
+    assert part.shown_answer(value) == shown
+
+
+def test_near_misses_are_the_wrong_answers_each_kind_must_refuse():
+    assert Numeric("v").near_misses(2.0) == [("2.1", "an answer 5 % too large")]
+    assert Numeric("v").near_misses(0.0) == []
+    assert Vector("r").near_misses((2.0, -4.0)) == [("[2.1, -4.2]", "a vector 5 % too long")]
+    assert Symbolic("f", expected="g*t").near_misses("g*t") == [("1.05*(g*t)",
+                                                                 "the formula times 1.05")]
+    single = Options("c", options=("a", "b", "c"))
+    assert single.near_misses("b") == [("a", "option 'a'"), ("c", "option 'c'")]
+    several = Options("c", options=("a", "b", "c"), multiple=True)
+    assert several.near_misses(("a", "c")) == [("a", "a different set of options")]
+    assert several.near_misses(("a",)) == [("a, b", "a different set of options")]
+
+
+def test_input_hooks_give_a_placeholder_and_the_options_to_pick_from():
+    assert Numeric("v", unit="m").input_hint() == ""
+    assert Vector("r", size=3).input_hint() == "3 components"
+    options = Options("c", options=("a", "b"))
+    assert options.input_hint() == "one of a, b" and options.input_options() == ("a", "b")
+    assert Numeric("v").input_options() == ()
