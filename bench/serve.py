@@ -38,8 +38,8 @@ ROOT = Path(__file__).resolve().parent.parent
 
 def build_exam(folder: Path, students: int) -> Path:
     """The manifest of the example exam for ``students`` synthetic students."""
-    from dynagrade.exam.generate import (build_manifest, exercise_parts, load_exam,
-                                         manifest_text)
+    from dynagrade.exam.generate import build_manifest, exercise_parts, load_exam
+    from dynagrade.exam.manifest import StudentEntry, VariantEntry, dump
     from dynagrade.exam.variants import exam_variant
 
     roster = folder / "roster.csv"
@@ -51,20 +51,19 @@ def build_exam(folder: Path, students: int) -> Path:
     for person in people:
         variants = []
         for item in spec.exercises:
-            variant, _ = exam_variant(exercises[item.id], spec.id, person.student_id, item.set)
-            variants.append({"exercise": item.id, "seed": variant.seed, "params": variant.params,
-                             "answers": {k: list(v) if isinstance(v, tuple) else v
-                                         for k, v in variant.answers.items()},
-                             "redraws": []})
-        entries.append({**person.to_json(), "variants": variants})
+            variant, redraws = exam_variant(exercises[item.id], spec.id, person.student_id,
+                                            item.set)
+            variants.append(VariantEntry(item.id, variant.seed, variant.params,
+                                         dict(variant.answers), redraws))
+        entries.append(StudentEntry(person.student_id, person.name, person.email,
+                                    tuple(variants)))
     path = folder / "manifest.json"
-    path.write_text(manifest_text(build_manifest(spec, exercises, parts, entries)),
-                    encoding="utf-8")
+    dump(build_manifest(spec, exercises, parts, entries), path)
     return path
 
 
 def _answer_text(value, factor: float) -> str:
-    if isinstance(value, list):
+    if isinstance(value, tuple):
         return "(" + ", ".join(repr(v * factor) for v in value) + ")"
     if isinstance(value, float):
         return repr(value * factor)
@@ -73,19 +72,19 @@ def _answer_text(value, factor: float) -> str:
 
 def plan(manifest_path: Path, tokens: dict[str, str], wave: str) -> list[dict]:
     """Three submits per student and exercise: right, 10 % off, right."""
-    import json
+    from dynagrade.exam.manifest import load
 
-    manifest = json.loads(manifest_path.read_text(encoding="utf-8"))
+    manifest = load(manifest_path)
     requests = []
     for round_ in range(3):
         factor = 1.1 if round_ == 1 else 1.0
-        for student in manifest["students"]:
-            for variant in student["variants"]:
+        for student in manifest.students:
+            for variant in student.variants:
                 requests.append({
-                    "token": tokens[student["student_id"]], "key": f"{wave}-{uuid.uuid4().hex}",
-                    "body": {"exercise": variant["exercise"],
+                    "token": tokens[student.student_id], "key": f"{wave}-{uuid.uuid4().hex}",
+                    "body": {"exercise": variant.exercise,
                              "answers": {k: _answer_text(v, factor)
-                                         for k, v in variant["answers"].items()}}})
+                                         for k, v in variant.answers.items()}}})
     return requests
 
 

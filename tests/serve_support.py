@@ -9,7 +9,6 @@ that needs another policy copies it and rewrites the manifest's ``policy``, whic
 from __future__ import annotations
 
 import datetime as dt
-import json
 import os
 import shutil
 import socket
@@ -58,14 +57,18 @@ def exam_dir(tmp_path_factory) -> Path:
 
 def exam_copy(exam_dir: Path, target: Path, **policy) -> Path:
     """A copy of the exam whose manifest carries ``policy`` (over the exam defaults)."""
+    import dataclasses
+
+    from dynagrade.exam import manifest as records
     from dynagrade.exam.policy import Policy
 
     shutil.copytree(exam_dir, target, ignore=shutil.ignore_patterns("serve.sqlite3*"))
-    manifest = json.loads((target / "manifest.json").read_text(encoding="utf-8"))
+    path = target / "manifest.json"
+    manifest = records.load(path)
     merged = {**Policy().to_json(), **{k: _iso(v) for k, v in policy.items()}}
-    manifest["exam"]["policy"] = merged
-    (target / "manifest.json").write_text(json.dumps(manifest), encoding="utf-8")
-    return target / "manifest.json"
+    records.dump(dataclasses.replace(
+        manifest, exam=dataclasses.replace(manifest.exam, policy=merged)), path)
+    return path
 
 
 def _iso(value):
@@ -180,7 +183,7 @@ class Served:
     def staff_get(self, path: str):
         return self.client.get(path, headers={"Authorization": f"Bearer {self.staff}"})
 
-    def variant(self, student: str, exercise: str) -> dict:
+    def variant(self, student: str, exercise: str):
         return self.app.state.data.entry(student, exercise)
 
 
@@ -219,6 +222,6 @@ def serve(manifest: Path, db_url: str | None = None, clock=None):
 def reference_answers(served: Served, student: str, exercise: str) -> dict[str, str]:
     """The manifest's reference answers as text (a correct submission)."""
     out = {}
-    for name, value in served.variant(student, exercise)["answers"].items():
-        out[name] = ", ".join(map(repr, value)) if isinstance(value, list) else str(value)
+    for name, value in served.variant(student, exercise).answers.items():
+        out[name] = ", ".join(map(repr, value)) if isinstance(value, tuple) else str(value)
     return out

@@ -82,7 +82,7 @@ def test_exam_page_shows_no_reference_answer(exam_dir, tmp_path, database):
         assert page.status_code == 200
         assert "Bo Two" in page.text and "<math" in page.text and "<svg" in page.text
         for exercise in ("projectile-range", "sliding-up-a-slope"):
-            for name, value in served.variant("s2", exercise)["answers"].items():
+            for name, value in served.variant("s2", exercise).answers.items():
                 if isinstance(value, float):
                     assert repr(value) not in page.text
                     assert f"{value:.4g}" not in page.text, (exercise, name)
@@ -305,7 +305,7 @@ def test_practice_draws_are_graded_but_not_counted(exam_dir, tmp_path, database)
                           drawn.headers["location"]).group(1)
         seed = int(value.split(".")[0])
         data = served.app.state.data
-        fresh = data.entry("s1", "projectile-range", seed)["answers"]["x_max"]
+        fresh = data.entry("s1", "projectile-range", seed).answers["x_max"]
         submitted = served.client.post(f"/s/{token}/submit", data={
             "csrf": csrf, "exercise": "projectile-range", "practice": value,
             "answer.x_max": repr(fresh), "key": "practice-0001"}, follow_redirects=False)

@@ -65,14 +65,14 @@ def running(exam_dir, tmp_path):
 def test_a_student_answers_in_the_browser_and_the_staff_downloads_grades(running, tmp_path):
     from playwright.sync_api import expect, sync_playwright
 
-    import json
+    from dynagrade.exam.manifest import load
 
     manifest, rows, staff = running
     student = rows[0]
-    variant = next(v for s in json.loads(manifest.read_text())["students"]
-                   if s["student_id"] == student["student_id"] for v in s["variants"]
-                   if v["exercise"] == "projectile-range")
-    right = repr(variant["answers"]["x_max"])
+    records = load(manifest)
+    variant = next(s for s in records.students
+                   if s.student_id == student["student_id"]).variant("projectile-range")
+    right = repr(variant.answers["x_max"])
     with sync_playwright() as playwright:
         browser = playwright.chromium.launch(executable_path=str(CHROMIUM), args=ARGS)
         try:
@@ -103,7 +103,6 @@ def test_a_student_answers_in_the_browser_and_the_staff_downloads_grades(running
         finally:
             browser.close()
     grades = {r["student_id"]: r for r in csv.DictReader(io.StringIO(saved.read_text()))}
-    points = next(p["points"] for e in json.loads(manifest.read_text())["exercises"]
-                  if e["id"] == "projectile-range" for p in e["parts"] if p["name"] == "x_max")
+    points = records.exercise("projectile-range").part("x_max").points
     assert float(grades[student["student_id"]]["projectile-range"]) == pytest.approx(points)
     assert grades[rows[1]["student_id"]]["status"] == "absent"

@@ -74,3 +74,21 @@ def test_bad_policies_are_refused_with_file_line_and_field(tmp_path, lines, line
         _spec(tmp_path, lines)
     message = str(error.value)
     assert f"exam.toml, line {line}, field '{field}'" in message and words in message
+
+
+def test_dynagrade_exam_writes_the_policy_into_the_manifest(tmp_path):
+    from dynagrade.exam.generate import generate_exam
+    from dynagrade.exam.manifest import load
+
+    (tmp_path / "roster.csv").write_text("student_id,name\ns1,Ada\n", encoding="utf-8")
+    plain = tmp_path / "plain.toml"
+    plain.write_text(HEAD + TAIL, encoding="utf-8")
+    generate_exam(plain, tmp_path / "roster.csv", tmp_path / "a", pdf=False, jobs=1)
+    assert load(tmp_path / "a" / "manifest.json").exam.policy is None  # as before: defaults
+    homework = tmp_path / "homework.toml"
+    homework.write_text(HEAD + 'mode = "homework"\nattempts = 3\n'
+                        'closes = 2025-05-01T12:00:00Z\n' + TAIL, encoding="utf-8")
+    generate_exam(homework, tmp_path / "roster.csv", tmp_path / "b", pdf=False, jobs=1)
+    stored = Policy.from_json(load(tmp_path / "b" / "manifest.json").exam.policy)
+    assert stored == Policy(mode="homework", attempts=3, feedback="immediate", counts="best",
+                            closes=dt.datetime(2025, 5, 1, 12, tzinfo=dt.timezone.utc))

@@ -77,7 +77,7 @@ class ExamSpec:
 
     def to_json(self) -> dict:
         return {"id": self.id, "title": self.title, "date": self.date,
-                "instructions": self.instructions, "policy": self.policy.to_json()}
+                "instructions": self.instructions}
 
 
 @dataclass(frozen=True)

@@ -302,7 +302,7 @@ def _student_html(request: Request, token: str, student_id: str, practice: str |
                 (a.counted if seed is None else a.seed == seed and not a.counted)]
         last = {a.part: a.raw for a in mine}
         exercises.append({
-            "id": exercise_id, "title": meta["title"], "points": meta["points"],
+            "id": exercise_id, "title": meta.title, "points": meta.points,
             "statement": Markup(data.statement_html(student_id, exercise_id, seed)),
             "figure": Markup(data.figure_svg(student_id, exercise_id) or "")
             if seed is None else "",

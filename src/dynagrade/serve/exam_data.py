@@ -15,7 +15,8 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
-from ..exam.classgrade import ManifestError, grade_student, load_manifest
+from ..exam.classgrade import grade_student
+from ..exam.manifest import ManifestError, PartEntry, StudentEntry, VariantEntry, load
 from ..exam.policy import Policy
 from ..exam.submissions import Submission
 from ..exercise.loader import Bank, open_bank
@@ -43,16 +44,18 @@ class ExamData:
 
     def __init__(self, manifest_path: str | Path, bank: Bank | None = None):
         self.path = Path(manifest_path)
-        self.manifest = load_manifest(self.path)
-        exam = self.manifest["exam"]
-        self.exam_id: str = exam["id"]
-        self.title: str = exam["title"]
-        self.instructions: str = exam.get("instructions", "")
-        self.policy = Policy.from_json(exam.get("policy"))
-        self.exercises_meta = {e["id"]: e for e in self.manifest["exercises"]}
-        self.exercise_ids = [e["id"] for e in self.manifest["exercises"]]
-        self.manifest_parts = {e["id"]: e["parts"] for e in self.manifest["exercises"]}
-        self.students = {s["student_id"]: s for s in self.manifest["students"]}
+        self.manifest = load(self.path)
+        exam = self.manifest.exam
+        self.exam_id: str = exam.id
+        self.title: str = exam.title
+        self.instructions: str = exam.instructions
+        self.policy = Policy.from_json(exam.policy)
+        self.exercises_meta = {e.id: e for e in self.manifest.exercises}
+        self.exercise_ids = self.manifest.exercise_ids
+        self.manifest_parts: dict[str, tuple[PartEntry, ...]] = {
+            e.id: e.parts for e in self.manifest.exercises}
+        self.students: dict[str, StudentEntry] = {s.student_id: s
+                                                  for s in self.manifest.students}
         bank = bank or open_bank()
         self.exercises: dict[str, Exercise] = {}
         for exercise_id in self.exercise_ids:
@@ -67,23 +70,23 @@ class ExamData:
     def parts(self, exercise_id: str) -> list[PartInfo]:
         from ..exercise.units import pretty_unit
 
-        return [PartInfo(p["name"], p["label"], p["kind"],
-                         pretty_unit(p["unit"]) if p.get("unit") else "",
-                         float(p["points"]), p.get("hint", ""))
+        exercise = self.exercises[exercise_id]
+        return [PartInfo(p.name, p.label, p.kind, pretty_unit(p.unit) if p.unit else "",
+                         float(p.points), exercise.part(p.name).input_hint())
                 for p in self.manifest_parts[exercise_id]]
 
-    def entry(self, student_id: str, exercise_id: str, seed: int | None = None) -> dict:
+    def entry(self, student_id: str, exercise_id: str,
+              seed: int | None = None) -> VariantEntry:
         """The student's variant as the manifest stores it, or a practice draw ``seed``."""
         if seed is None:
-            return next(v for v in self.students[student_id]["variants"]
-                        if v["exercise"] == exercise_id)
+            return self.students[student_id].variant(exercise_id)
         return _practice_entry(self, exercise_id, seed)
 
     def statement_html(self, student_id: str, exercise_id: str,
                        seed: int | None = None) -> str:
         entry = self.entry(student_id, exercise_id, seed)
-        return _statement_html(self, exercise_id, int(entry["seed"]),
-                               tuple(sorted(entry["params"].items())))
+        return _statement_html(self, exercise_id, entry.seed,
+                               tuple(sorted(entry.params.items())))
 
     def figure_svg(self, student_id: str, exercise_id: str) -> str | None:
         """The figure ``dynagrade exam`` drew for the student's variant, inline."""
@@ -104,7 +107,7 @@ class ExamData:
             return False, f"the answer is longer than {MAX_ANSWER_CHARS} characters"
         exercise = self.exercises[exercise_id]
         entry = self.entry(student_id, exercise_id, seed)
-        spec = exercise.part(part).spec(exercise.si(entry["params"]))
+        spec = exercise.part(part).spec(exercise.si(entry.params))
         found = readability(spec, text)
         return found.readable, found.message
 
@@ -127,7 +130,7 @@ class ExamData:
                     graded[name] = _failed(self.manifest_parts[exercise_id], name, error)
         out = []
         for part in self.manifest_parts[exercise_id]:
-            name = part["name"]
+            name = part.name
             if name not in answers:
                 continue
             readable, message = self.read(student_id, exercise_id, name, answers[name], seed)
@@ -141,7 +144,7 @@ class ExamData:
     def _grade_parts(self, student_id: str, exercise_id: str, answers: dict[str, str],
                      seed: int | None) -> dict[str, dict]:
         entry = self.entry(student_id, exercise_id, seed)
-        student = {"student_id": student_id, "variants": [entry]}
+        student = StudentEntry(student_id, "", "", (entry,))
         submission = Submission("server", student_id, exercise_id, dict(answers))
         graded = grade_student(student, {exercise_id: self.manifest_parts[exercise_id]},
                                {exercise_id: self.exercises[exercise_id]},
@@ -160,8 +163,8 @@ class ExamData:
         raise ConstraintError(f"no practice variant of {exercise_id!r} could be drawn")
 
 
-def _failed(parts: list[dict], name: str, error: Exception) -> dict:
-    points = next(float(p["points"]) for p in parts if p["name"] == name)
+def _failed(parts: tuple[PartEntry, ...], name: str, error: Exception) -> dict:
+    points = next(float(p.points) for p in parts if p.name == name)
     return {"status": "error", "score": 0.0, "points": points,
             "feedback": f"this answer could not be graded ({type(error).__name__}); the "
                         "staff will look at it"}
@@ -176,10 +179,8 @@ def _statement_html(data: ExamData, exercise_id: str, seed: int, params: tuple) 
 
 
 @lru_cache(maxsize=1024)
-def _practice_entry(data: ExamData, exercise_id: str, seed: int) -> dict:
+def _practice_entry(data: ExamData, exercise_id: str, seed: int) -> VariantEntry:
     exercise = data.exercises[exercise_id]
-    variant = exercise.variant(seed, data.exercises_meta[exercise_id].get("set") or {})
-    return {"exercise": exercise_id, "seed": seed, "params": variant.params,
-            "answers": {k: list(v) if isinstance(v, tuple) else v
-                        for k, v in variant.answers.items()}}
+    variant = exercise.variant(seed, dict(data.exercises_meta[exercise_id].set))
+    return VariantEntry(exercise_id, seed, variant.params, dict(variant.answers))
 

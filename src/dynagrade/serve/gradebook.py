@@ -37,7 +37,7 @@ def counted_answers(data: ExamData, stored: list[StoredAnswer]
 
 def gradebook_rows(data: ExamData, chosen: dict) -> list[dict]:
     """One row per roster student, as class grading's grades.csv has them."""
-    max_total = sum(float(data.exercises_meta[e]["points"]) for e in data.exercise_ids)
+    max_total = sum(float(data.exercises_meta[e].points) for e in data.exercise_ids)
     rows = []
     for student_id in data.students:
         row = {"student_id": student_id}
@@ -80,7 +80,7 @@ def responses_csv(data: ExamData, stored: list[StoredAnswer]) -> str:
 
 def progress(data: ExamData, stored: list[StoredAnswer]) -> list[dict]:
     """Per student: submissions per exercise and the time of the latest."""
-    seen: dict[str, dict] = {s: {"student_id": s, "name": data.students[s]["name"],
+    seen: dict[str, dict] = {s: {"student_id": s, "name": data.students[s].name,
                                  "exercises": {}, "last": None} for s in data.students}
     for answer in stored:
         if not answer.counted or answer.student_id not in seen:
@@ -102,4 +102,4 @@ def class_report_html(data: ExamData, stored: list[StoredAnswer], folders=()) ->
         path = Path(folder) / "responses.csv"
         path.write_text(responses_csv(data, stored), encoding="utf-8")
         outcome = grade_class(data.path, [path], bank=open_bank(folders), jobs=1)
-    return report_html(data.manifest["exam"], outcome)
+    return report_html(data.manifest.exam, outcome)

@@ -43,7 +43,7 @@ def write_links(data: ExamData, engine, out: Path, base_url: str,
             if url is None:
                 unknown.append(student_id)
                 url = ""
-        rows.append((student_id, student["name"], student.get("email", ""), url))
+        rows.append((student_id, student.name, student.email, url))
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(LINK_HEADER)

@@ -87,7 +87,7 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
     if graded is None:
         graded = [_not_in_time(data, exercise_id, name, text) for name, text in given.items()]
     seed = practice_seed if practice_seed is not None else \
-        int(data.entry(student_id, exercise_id)["seed"])
+        data.entry(student_id, exercise_id).seed
     for _ in range(20):
         last, per_part = await run_in_threadpool(
             db.part_attempts, state.engine, data.exam_id, student_id, exercise_id, counted)
