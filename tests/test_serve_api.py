@@ -81,6 +81,8 @@ def test_exam_page_shows_no_reference_answer(exam_dir, tmp_path, database):
         page = served.client.get(f"/s/{served.tokens['s2']}")
         assert page.status_code == 200
         assert "Bo Two" in page.text and "<math" in page.text and "<svg" in page.text
+        assert page.headers["referrer-policy"] == "no-referrer"  # the token is in the URL
+        assert page.headers["cache-control"] == "no-store"
         for exercise in ("projectile-range", "sliding-up-a-slope"):
             for name, value in served.variant("s2", exercise).answers.items():
                 if isinstance(value, float):

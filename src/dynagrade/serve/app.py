@@ -87,8 +87,10 @@ def create_app(manifest: str | os.PathLike, db_url: str | None = None,
                   root_path=base, docs_url="/api/docs", redoc_url=None,
                   openapi_url="/api/openapi.json")
     app.add_middleware(limits.BodySizeLimit)
+    app.add_middleware(limits.PrivateHeaders)
     app.state.data, app.state.engine, app.state.secret = data, engine, secret
     app.state.limiter = limits.RateLimiter()
+    app.state.identities = limits.RecentlySeen()
     app.state.clock = clock or db.now
     _routes(app, base)
     return app
@@ -107,7 +109,10 @@ def _holder(request: Request, token: str, role: str) -> db.Identity:
     state = request.app.state
     if not state.limiter.allow(token):
         raise HTTPException(429, "too many requests; slow down", headers={"Retry-After": "1"})
-    identity = db.identify(state.engine, state.data.exam_id, token)
+    identity = state.identities.get(token)
+    if identity is None:
+        identity = db.identify(state.engine, state.data.exam_id, token)
+        state.identities.put(token, identity)
     if identity is None or identity.role != role:
         raise HTTPException(401 if identity is None else 403,
                             "unknown link" if identity is None else "not a link for this page")

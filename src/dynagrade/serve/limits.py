@@ -60,6 +60,56 @@ def signed_ok(secret: str, text: str, signature: str) -> bool:
     return hmac.compare_digest(sign(secret, text), signature or "")
 
 
+class RecentlySeen:
+    """Who recently seen tokens belong to, for ``seconds`` (a submit then needs one
+    database query less). A revoked link keeps working in a worker for at most that
+    long; unknown tokens are not remembered, so a new link works at once."""
+
+    def __init__(self, seconds: float = 30.0, size: int = 50_000):
+        self.seconds, self.size = seconds, size
+        self._seen: dict[str, tuple[float, object]] = {}
+        self._lock = threading.Lock()
+
+    def get(self, token: str):
+        with self._lock:
+            found = self._seen.get(token)
+        if found is None or time.monotonic() - found[0] > self.seconds:
+            return None
+        return found[1]
+
+    def put(self, token: str, identity) -> None:
+        if identity is None:
+            return
+        with self._lock:
+            if len(self._seen) >= self.size:
+                self._seen.clear()
+            self._seen[token] = (time.monotonic(), identity)
+
+
+class PrivateHeaders:
+    """ASGI middleware: pages and answers are private to their token's holder: never
+    cached, never sent as a referrer, never sniffed as another type."""
+
+    HEADERS = [(b"referrer-policy", b"no-referrer"), (b"cache-control", b"no-store"),
+               (b"x-content-type-options", b"nosniff"), (b"x-frame-options", b"DENY")]
+
+    def __init__(self, app):
+        self.app = app
+
+    async def __call__(self, scope, receive, send):
+        if scope["type"] != "http":
+            return await self.app(scope, receive, send)
+
+        async def with_headers(message):
+            if message["type"] == "http.response.start":
+                names = {name.lower() for name, _ in message.get("headers", [])}
+                message["headers"] = list(message.get("headers", [])) + [
+                    h for h in self.HEADERS if h[0] not in names]
+            await send(message)
+
+        await self.app(scope, receive, with_headers)
+
+
 class BodySizeLimit:
     """ASGI middleware: 413 for a body over ``limit`` bytes (declared or streamed)."""
 

@@ -80,6 +80,7 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
     key = key or uuid.uuid4().hex
     if counted:
         _check_open(policy, now)
+    if counted and policy.attempts:  # refuse before grading; checked again when storing
         _, per_part = await run_in_threadpool(db.part_attempts, state.engine, data.exam_id,
                                               student_id, exercise_id)
         _check_attempts(policy, per_part, given)
