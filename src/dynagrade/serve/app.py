@@ -202,12 +202,8 @@ def _routes(app: FastAPI, base: str) -> None:
 
     @app.post("/s/{token}/submit")
     async def student_submit(request: Request, token: str):
-        identity = await run_in_threadpool(_holder, request, token, "student")
+        identity, form, exercise_id = await _posted_form(request, token)
         state = request.app.state
-        form = await request.form()
-        if not limits.csrf_ok(state.secret, token, form.get("csrf")):
-            raise HTTPException(403, "the form is stale or not from this page; reload it")
-        exercise_id = str(form.get("exercise", ""))
         answers = {k[len("answer."):]: str(v) for k, v in form.items()
                    if k.startswith("answer.")}
         practice = form.get("practice") or None
@@ -224,12 +220,8 @@ def _routes(app: FastAPI, base: str) -> None:
 
     @app.post("/s/{token}/practice")
     async def student_practice(request: Request, token: str):
-        identity = await run_in_threadpool(_holder, request, token, "student")
+        identity, _, exercise_id = await _posted_form(request, token)
         state = request.app.state
-        form = await request.form()
-        if not limits.csrf_ok(state.secret, token, form.get("csrf")):
-            raise HTTPException(403, "the form is stale or not from this page; reload it")
-        exercise_id = str(form.get("exercise", ""))
         if state.data.policy.mode != "practice" or exercise_id not in state.data.exercises_meta:
             raise HTTPException(422, "new variants are offered in practice mode only")
         seed = await run_in_threadpool(state.data.new_practice_seed, exercise_id)
@@ -258,6 +250,16 @@ def _routes(app: FastAPI, base: str) -> None:
         state = request.app.state
         stored = db.all_answers(state.engine, state.data.exam_id)
         return HTMLResponse(gradebook.class_report_html(state.data, stored))
+
+
+async def _posted_form(request: Request, token: str):
+    """The student, the form and its exercise of a form posted from a student page,
+    after the CSRF check."""
+    identity = await run_in_threadpool(_holder, request, token, "student")
+    form = await request.form()
+    if not limits.csrf_ok(request.app.state.secret, token, form.get("csrf")):
+        raise HTTPException(403, "the form is stale or not from this page; reload it")
+    return identity, form, str(form.get("exercise", ""))
 
 
 def _csv(request: Request, render, filename: str) -> PlainTextResponse:
