@@ -63,3 +63,10 @@ def test_the_check_is_the_same_whatever_the_reference():
     # it takes no reference: a right and a wrong answer of the same form read alike
     spec = NumericSpec(unit="m")
     assert readability(spec, "28.9 m").readable == readability(spec, "2.89 m").readable
+
+
+def test_every_kind_the_grader_grades_can_be_checked_for_readability():
+    from dynagrade.grading.dispatch import GRADERS
+    from dynagrade.grading.readability import READERS
+
+    assert set(READERS) == set(GRADERS)

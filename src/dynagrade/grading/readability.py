@@ -31,15 +31,11 @@ def readability(spec, text: str) -> Readability:
     """How ``text`` reads as an answer to a part with ``spec`` (a grading spec)."""
     if not isinstance(text, str) or not text.strip():
         return Readability(False, "no answer yet")
+    reader = next((READERS[c] for c in type(spec).__mro__ if c in READERS), None)
+    if reader is None:
+        return Readability(False, "this kind of answer cannot be checked here")
     try:
-        if isinstance(spec, NumericSpec):
-            return _numeric(spec, text)
-        if isinstance(spec, VectorSpec):
-            return _vector(spec, text)
-        if isinstance(spec, SymbolicSpec):
-            return _symbolic(spec, text)
-        if isinstance(spec, ChoiceSpec):
-            return _choice(spec, text)
+        return reader(spec, text)
     except AnswerError as error:
         return Readability(False, str(error))
     except (RecursionError, MemoryError):
@@ -47,7 +43,6 @@ def readability(spec, text: str) -> Readability:
     except Exception:  # a reader's own failure on odd input: still an answer, not a crash
         return Readability(False, "the answer cannot be read; write a number, a unit and "
                                   "operators only")
-    return Readability(False, "this kind of answer cannot be checked here")
 
 
 def _numeric(spec: NumericSpec, text: str) -> Readability:
@@ -114,3 +109,8 @@ def _choice(spec: ChoiceSpec, text: str) -> Readability:
         return Readability(False, "choose only one option")
     chosen = [o for o in spec.options if any(o.replace(" ", "").casefold() == p for p in picks)]
     return Readability(True, "reads as " + ", ".join(chosen))
+
+
+#: how each kind of spec is read (the kinds of :data:`dynagrade.grading.dispatch.GRADERS`)
+READERS = {NumericSpec: _numeric, VectorSpec: _vector, SymbolicSpec: _symbolic,
+           ChoiceSpec: _choice}
