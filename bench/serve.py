@@ -174,7 +174,8 @@ def main(argv=None) -> int:
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--grading-workers", type=int, default=1,
                         help="grading processes per server worker")
-    parser.add_argument("--concurrency", type=int, default=32)
+    parser.add_argument("--concurrency", type=int, default=8,
+                        help="requests in flight at once (the server is saturated at about 8 on 2 cores)")
     parser.add_argument("--db", help="database URL (default: SQLite beside the manifest)")
     parser.add_argument("--port", type=int, default=0)
     args = parser.parse_args(argv)
