@@ -70,6 +70,12 @@ def test_exam_mode_saves_and_shows_only_readability(exam_dir, tmp_path, database
         assert late.status_code == 403 and "closed" in late.json()["detail"]
         page = served.client.get(f"/s/{served.tokens['s1']}").text
         assert "45 km/h" in page and "28.9 m" in page  # the history: both attempts kept
+        preview = served.client.post("/api/v1/preview", json={
+            "exercise": "projectile-range", "part": "x_max_formula",
+            "answer": "v0^2 sin(2 alpha)/g"},
+            headers={"Authorization": f"Bearer {served.tokens['s1']}"}).json()
+        assert preview["readable"] and "<mfrac>" in preview["formula"]
+        assert "<mi>α</mi>" in preview["formula"] and "correct" not in preview
         clock.now = OPENS - dt.timedelta(minutes=1)
         early = served.submit("s1", "projectile-range", {"x_max": "1 m"})
         assert early.status_code == 403 and "opens" in early.json()["detail"]

@@ -85,13 +85,21 @@ def test_a_student_answers_in_the_browser_and_the_staff_downloads_grades(running
             expect(preview).to_contain_text("reads as 45 km = 4.5e4 m")
             box.fill("3 kg")
             expect(preview).to_contain_text("expected a length")
+            formula = page.locator("#projectile-range--x_max_formula")
+            formula.fill("sqrt(2 g h)")  # h is not a name of this part
+            shown = page.locator("#projectile-range output[data-preview-for=x_max_formula]")
+            expect(shown).to_contain_text("unknown name 'h'")
+            formula.fill("v0^2 sin(2 alpha)/g")  # typeset back: a fraction in MathML
+            expect(shown.locator("math mfrac")).to_have_count(1)
             box.fill(right)
             expect(preview).to_contain_text("reads as")
             page.locator("#projectile-range button[type=submit]").click()
             history = page.locator("#projectile-range table.history")
             expect(history).to_contain_text("correct")
             page.reload()
-            expect(history.locator("tr")).to_have_count(2)  # header and the one attempt
+            # the header, then the attempt's two parts (the formula is the reference's)
+            expect(history.locator("tr")).to_have_count(3)
+            expect(history.locator("td.correct")).to_have_count(2)
             expect(history).to_contain_text(right)
 
             page.goto(staff)
@@ -103,6 +111,7 @@ def test_a_student_answers_in_the_browser_and_the_staff_downloads_grades(running
         finally:
             browser.close()
     grades = {r["student_id"]: r for r in csv.DictReader(io.StringIO(saved.read_text()))}
-    points = records.exercise("projectile-range").part("x_max").points
+    exercise = records.exercise("projectile-range")
+    points = exercise.part("x_max").points + exercise.part("x_max_formula").points
     assert float(grades[student["student_id"]]["projectile-range"]) == pytest.approx(points)
     assert grades[rows[1]["student_id"]]["status"] == "absent"

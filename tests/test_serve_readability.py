@@ -70,3 +70,20 @@ def test_every_kind_the_grader_grades_can_be_checked_for_readability():
     from dynagrade.grading.readability import READERS
 
     assert set(READERS) == set(GRADERS)
+
+
+@pytest.mark.parametrize("text, names, tex", [
+    ("sqrt(2 g h)", ("g", "h"), r"\sqrt{2 \cdot g \cdot h}"),
+    ("v0^2*sin(2*alpha)/g", ("v0", "alpha", "g"),
+     r"\frac{{v_{0}}^{2} \cdot \sin\left(2 \cdot \alpha\right)}{g}"),
+    ("m g (1 - cos(phi))", ("m", "g", "phi"),
+     r"m \cdot g \cdot \left(1 - \cos\left(\phi\right)\right)"),
+    ("-(a+b)^2", ("a", "b"), r"-{\left(a + b\right)}^{2}"),
+])
+def test_a_formula_is_typeset_back_as_it_was_read(text, names, tex):
+    from dynagrade.grading.parser import parse_expression
+    from dynagrade.serve.formula import formula_mathml, to_tex
+
+    assert to_tex(parse_expression(text, names)) == tex
+    assert formula_mathml(text, names).startswith('<math display="inline"')
+    assert formula_mathml("sqrt(2 g x)", ("g", "h")) is None  # not readable: nothing shown

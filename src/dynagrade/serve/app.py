@@ -182,8 +182,8 @@ def _routes(app: FastAPI, base: str) -> None:
         seed = _practice_seed(state, identity.student_id, body.exercise, body.practice)
         read = await state.pool.read(identity.student_id, body.exercise, body.part,
                                      body.answer, seed)
-        readable, message = read if read is not None else (False, "could not be read in time")
-        return {"readable": readable, "message": message}
+        return read or {"readable": False, "message": "could not be read in time",
+                        "formula": None}
 
     @app.get("/api/v1/grades.csv")
     def api_grades(request: Request):

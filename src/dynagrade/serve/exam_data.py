@@ -111,6 +111,17 @@ class ExamData:
         found = readability(spec, text)
         return found.readable, found.message
 
+    def preview(self, student_id: str, exercise_id: str, part: str, text: str,
+                seed: int | None = None) -> dict:
+        """How ``text`` reads (:meth:`read`) and, for a formula, the formula typeset as
+        MathML (``formula``: None otherwise)."""
+        from .formula import formula_mathml
+
+        readable, message = self.read(student_id, exercise_id, part, text, seed)
+        variables = getattr(self.exercises[exercise_id].part(part), "variables", None)
+        shown = formula_mathml(text, tuple(variables)) if readable and variables else None
+        return {"readable": readable, "message": message, "formula": shown}
+
     def grade(self, student_id: str, exercise_id: str, answers: dict[str, str],
               seed: int | None = None) -> list[dict]:
         """Each submitted part read and graded, with points in the exam's scale.

@@ -41,7 +41,7 @@ def _grade(student_id, exercise_id, answers, seed):
 
 
 def _read(student_id, exercise_id, part, text, seed):
-    return _EXAM["data"].read(student_id, exercise_id, part, text, seed)
+    return _EXAM["data"].preview(student_id, exercise_id, part, text, seed)
 
 
 class GradingPool:
@@ -71,8 +71,9 @@ class GradingPool:
         return await self._run(budget(len(answers)), _grade, student_id, exercise_id,
                                answers, seed)
 
-    async def read(self, student_id, exercise_id, part, text, seed) -> tuple[bool, str] | None:
-        """How an answer reads, or ``None`` when reading took too long."""
+    async def read(self, student_id, exercise_id, part, text, seed) -> dict | None:
+        """How an answer reads (``ExamData.preview``), or ``None`` when reading took too
+        long."""
         return await self._run(budget(1), _read, student_id, exercise_id, part, text, seed)
 
     async def _run(self, seconds, function, *args):
