@@ -260,6 +260,9 @@ def test_downloaded_submissions_regrade_to_the_same_gradebook(exam_dir, tmp_path
         responses = served.staff_get("/api/v1/submissions.csv")
         staff_page = served.client.get(f"/i/{served.staff}")
         page_grades = served.client.get(f"/i/{served.staff}/grades.csv")
+        report = served.client.get(f"/i/{served.staff}/report.html")
+        assert report.status_code == 200 and "Serve test" in report.text
+        assert "<svg" in report.text  # the score histogram of class grading
     assert grades.status_code == responses.status_code == staff_page.status_code == 200
     assert page_grades.text == grades.text
     assert "Ada One" in staff_page.text and "gradebook" in staff_page.text

@@ -91,6 +91,7 @@ def create_app(manifest: str | os.PathLike, db_url: str | None = None,
     app.state.data, app.state.engine, app.state.secret = data, engine, secret
     app.state.limiter = limits.RateLimiter()
     app.state.identities = limits.RecentlySeen()
+    app.state.folders = tuple(folders)
     app.state.clock = clock or db.now
     _routes(app, base)
     return app
@@ -249,7 +250,7 @@ def _routes(app: FastAPI, base: str) -> None:
         _holder(request, token, "staff")
         state = request.app.state
         stored = db.all_answers(state.engine, state.data.exam_id)
-        return HTMLResponse(gradebook.class_report_html(state.data, stored))
+        return HTMLResponse(gradebook.class_report_html(state.data, stored, state.folders))
 
 
 async def _posted_form(request: Request, token: str):
