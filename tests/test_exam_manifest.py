@@ -161,3 +161,24 @@ def test_grading_against_a_hand_edited_manifest_reports_the_field_not_a_key_erro
     assert result.exit_code != 0
     assert "students[1].variants[0]: missing 'answers'" in result.output
     assert not isinstance(result.exception, KeyError)
+
+
+def test_no_module_but_the_manifest_reads_the_manifests_fields_by_string():
+    """Readers take the records: no ``x["students"]``, ``x["variants"]``, … outside
+    exam/manifest.py (the names below are the manifest's own; a stage of the timings
+    shares one)."""
+    import ast
+    from pathlib import Path
+
+    fields = {"students", "exercises", "variants", "redraws", "sha256", "generator"}
+    src = Path(mf.__file__).resolve().parent.parent
+    found = []
+    for path in sorted(src.rglob("*.py")):
+        if path.name == "manifest.py" and path.parent.name == "exam":
+            continue
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            key = node.slice if isinstance(node, ast.Subscript) else None
+            timing = "timings" in ast.unparse(node.value) if key is not None else False
+            if isinstance(key, ast.Constant) and key.value in fields and not timing:
+                found.append(f"{path.relative_to(src)}:{node.lineno}: {ast.unparse(node)}")
+    assert found == []

@@ -13,7 +13,7 @@ import matplotlib
 import pytest
 
 from dynagrade.exercise import open_bank
-from dynagrade.exercise.figure import SVG_SETTINGS, figure_svg
+from dynagrade.render.figures import SVG_SETTINGS, figure_svg
 from dynagrade.exercise.numbers import format_number
 
 matplotlib.use("Agg")

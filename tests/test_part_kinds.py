@@ -118,7 +118,7 @@ def test_the_fill_in_file_states_the_points_the_printed_sheet_shows():
     assert parse_sheet(text).answers == {"v": None, "r": None}
 
 
-def test_a_generated_exam_prints_the_same_points_on_sheet_and_fill_in_file(tmp_path, bank,
+def test_a_generated_exam_prints_the_same_points_on_sheet_fill_in_file_and_key(tmp_path, bank,
                                                                           exam_toml):
     """car-in-a-looping has parts of 2, 1, 1, 1, 1, 1 points and 8 points in the exam:
     its first part is worth 8·2/7 = 2.2857 points on the sheet and in the fill-in file."""
@@ -134,6 +134,9 @@ def test_a_generated_exam_prints_the_same_points_on_sheet_and_fill_in_file(tmp_p
     sheet = (folder / "sheet.md").read_text(encoding="utf-8")
     assert "(2.2857 points)" in fill_in and "— 2.2857 points" in sheet
     assert "(1.1429 points)" in fill_in and "— 1.1429 points" in sheet
+    key = (tmp_path / "out" / "key.csv").read_text(encoding="utf-8").splitlines()
+    looping = [line.rsplit(",", 1)[1] for line in key if ",car-in-a-looping," in line]
+    assert looping == ["2.2857"] + ["1.1429"] * 5  # the key prints points the same way
 
 
 @pytest.mark.parametrize("part, value, typed, shown", [

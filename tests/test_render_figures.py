@@ -9,7 +9,7 @@ import math
 import pytest
 from matplotlib.patches import Circle, Polygon
 
-from dynagrade.exercise.figure import figure_svg, inline_svg
+from dynagrade.render.figures import figure_svg, inline_svg
 
 
 @pytest.mark.parametrize("seed", [0, 7, 31])

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from dynagrade.exam.generate import compile_pdf
+from dynagrade.render.pdf import compile_pdf
 from dynagrade.render.markup import markdown_to_html, markdown_to_typst, math_warnings
 from dynagrade.render.mathtex import to_mathml, to_typst, unknown_commands
 

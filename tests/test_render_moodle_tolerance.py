@@ -32,7 +32,7 @@ def test_a_number_within_the_moodle_tolerance_is_right_for_the_grader_and_beyond
 
 @settings(max_examples=150, deadline=None)
 @given(st.lists(values, min_size=2, max_size=3), rtols, atols, st.data())
-def test_each_vector_component_within_its_moodle_tolerance_is_right_for_the_grader_and_beyond_it_wrong(
+def test_a_vector_component_within_its_moodle_tolerance_is_right_and_beyond_it_wrong(
         expected, rtol, atol, data):
     tols = vector_tolerances(expected, rtol, atol)
     index = data.draw(st.integers(0, len(expected) - 1))

@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import csv
 import io
-import os
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -33,10 +32,11 @@ from ..exercise.model import Exercise, Variant
 from ..exercise.numbers import GRADEBOOK_DECIMALS, points_text
 from ..exercise.scoring import grade_variant
 from .files import write_atomic
-from .generate import file_sha256
+from .run import GradingRun, file_sha256
 from .manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
 from .stats import part_statistics
 from .submissions import Problem, Submission, collect
+from .workers import Pool, default_jobs
 
 GRADE_STATUSES = ("graded", "incomplete", "absent")
 
@@ -119,19 +119,10 @@ def grade_student(student: StudentEntry, manifest_parts: dict[str, tuple[PartEnt
     return results
 
 
-def _grade_chunk(chunk):
-    """Worker: grade ``[(student, submissions), ...]`` with the shared state."""
-    return [grade_student(student, _WORKER["parts"], _WORKER["exercises"], subs)
-            for student, subs in chunk]
-
-
-_WORKER: dict = {}
-
-
-def _init_worker(parts, paths):
-    from ..exercise.loader import load_file
-
-    _WORKER.update(parts=parts, exercises={i: load_file(p) for i, p in paths.items()})
+def _grade_one(run: GradingRun, work: tuple[StudentEntry, dict[str, Submission]]) -> dict:
+    """Worker: one student's results, with the grading run's exercises and parts."""
+    student, submissions = work
+    return grade_student(student, run.parts, run.exercises, submissions)
 
 
 def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
@@ -146,37 +137,12 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
     chosen, found = collect(paths, manifest)
     problems += found
     timings = {"collect": time.perf_counter() - started}
-
     stage = time.perf_counter()
-    students = manifest.students
     work = [(s, {e: chosen[(s.student_id, e)] for e in manifest_parts
-                 if (s.student_id, e) in chosen}) for s in students]
+                 if (s.student_id, e) in chosen}) for s in manifest.students]
     graded = _run(work, manifest_parts, exercises, jobs, progress)
     timings["grading"] = time.perf_counter() - stage
-
-    exercise_ids = manifest.exercise_ids
-    max_total = sum(float(e.points) for e in manifest.exercises)
-    rows, analysed, feedback = [], [], {}
-    for student, results in zip(students, graded):
-        submitted = [e for e in exercise_ids if results[e] is not None]
-        row = {"student_id": student.student_id}
-        for exercise_id in exercise_ids:
-            row[exercise_id] = results[exercise_id]["score"] if results[exercise_id] else 0.0
-        total = round(sum(row[e] for e in exercise_ids), 6)
-        status = ("absent" if not submitted else
-                  "graded" if len(submitted) == len(exercise_ids) else "incomplete")
-        row.update(total=total, max_total=max_total,
-                   percent=round(100.0 * total / max_total, 2) if max_total else 0.0,
-                   status=status)
-        rows.append(row)
-        feedback[student.student_id] = {"student": student, "results": results,
-                                           "row": row}
-        if submitted:
-            analysed.append({"total": total, "parts": {
-                (e, p["name"]): p for e in submitted for p in results[e]["parts"]}})
-    ordered_parts = [(e.id, p) for e in manifest.exercises for p in e.parts]
-    outcome = ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
-                           part_statistics(ordered_parts, analysed), feedback, timings)
+    outcome = _outcome(manifest, graded, problems, timings)
     if out_dir is not None:
         stage = time.perf_counter()
         write_outputs(outcome, manifest, Path(out_dir), progress)
@@ -185,28 +151,51 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
     return outcome
 
 
-def _run(work, manifest_parts, exercises, jobs, progress) -> list[dict]:
-    jobs = max(1, jobs if jobs is not None else min(2, os.cpu_count() or 1))
-    if jobs == 1 or len(work) < 40:
-        results = []
-        for done, (student, subs) in enumerate(work, 1):
-            results.append(grade_student(student, manifest_parts, exercises, subs))
-            progress("grading", done, len(work))
-        return results
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
+def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
+             timings: dict[str, float]) -> ClassOutcome:
+    """The gradebook, the feedback per student and the item statistics."""
+    exercise_ids = manifest.exercise_ids
+    max_total = sum(float(e.points) for e in manifest.exercises)
+    rows, analysed, feedback = [], [], {}
+    for student, results in zip(manifest.students, graded):
+        row = gradebook_row(student.student_id, results, exercise_ids, max_total)
+        rows.append(row)
+        feedback[student.student_id] = {"student": student, "results": results, "row": row}
+        submitted = [e for e in exercise_ids if results[e] is not None]
+        if submitted:
+            analysed.append({"total": row["total"], "parts": {
+                (e, p["name"]): p for e in submitted for p in results[e]["parts"]}})
+    ordered_parts = [(e.id, p) for e in manifest.exercises for p in e.parts]
+    return ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
+                        part_statistics(ordered_parts, analysed), feedback, timings)
 
-    methods = multiprocessing.get_all_start_methods()
-    context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
+
+def gradebook_row(student_id: str, results: dict, exercise_ids: list[str],
+                  max_total: float) -> dict:
+    """A student's row: points per exercise (0 when not submitted), total, percent and
+    status (absent: nothing submitted; incomplete: some exercises missing)."""
+    row = {"student_id": student_id}
+    for exercise_id in exercise_ids:
+        row[exercise_id] = results[exercise_id]["score"] if results[exercise_id] else 0.0
+    submitted = [e for e in exercise_ids if results[e] is not None]
+    total = round(sum(row[e] for e in exercise_ids), 6)
+    status = ("absent" if not submitted else
+              "graded" if len(submitted) == len(exercise_ids) else "incomplete")
+    row.update(total=total, max_total=max_total,
+               percent=round(100.0 * total / max_total, 2) if max_total else 0.0,
+               status=status)
+    return row
+
+
+def _run(work, manifest_parts, exercises, jobs, progress) -> list[dict]:
+    """Every student's results in roster order; a class of fewer than 40 is graded here,
+    a larger one in worker processes (in chunks, so that progress moves)."""
+    jobs = default_jobs(jobs) if len(work) >= 40 else 1
     size = max(1, len(work) // (jobs * 8))
-    chunks = [work[i:i + size] for i in range(0, len(work), size)]
-    paths = {i: e.path for i, e in exercises.items()}
-    results, done = [], 0
-    with ProcessPoolExecutor(jobs, mp_context=context, initializer=_init_worker,
-                             initargs=(manifest_parts, paths)) as pool:
-        for chunk_results in pool.map(_grade_chunk, chunks):
-            results += chunk_results
-            done += len(chunk_results)
+    results = []
+    with Pool(GradingRun(exercises, manifest_parts), jobs) as pool:
+        for done, result in enumerate(pool.map(_grade_one, work, chunksize=size), 1):
+            results.append(result)
             progress("grading", done, len(work))
     return results
 

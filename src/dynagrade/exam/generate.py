@@ -12,37 +12,36 @@ Output folder::
     key.csv, key.pdf                answer keys
     moodle.xml                      a question category per exercise, a question per variant
 
-Work per student runs in a pool of processes (``jobs``); results are put together in
-roster order, so the files do not depend on the pool. Every file is written atomically and
-the manifest last: a folder with a manifest holds a whole exam.
+This module is the driver: it loads the exam into a run (:mod:`.run`), has each
+student's work done in a pool of processes (:mod:`.student`, :mod:`.workers`), then
+writes the keys, the Moodle export, the printing PDF and the manifest. Results are put
+together in roster order, so the files do not depend on the pool. Every file is written
+atomically and the manifest last: a folder with a manifest holds a whole exam.
 """
 
 from __future__ import annotations
 
-import hashlib
-import os
-import re
 import time
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
 from .. import __name__ as _package
-from ..exercise.figure import figure_svg
-from ..exercise.loader import Bank, ExerciseFileError, load_file, open_bank
+from ..exercise.loader import Bank, ExerciseFileError, open_bank
 from ..exercise.model import ConstraintError, Exercise
-from ..exercise.sheet import write_sheet
-from ..exercise.units import pretty_unit
-from ..render.sheets import (SheetExercise, SheetPart, StudentSheet, sheet_html,
-                             sheet_markdown, sheet_typst_body, typst_preamble)
+from ..render.pdf import embedded_pages_source
+from ..render.sheets import typst_preamble
 from .files import write_atomic
 from .manifest import (ExamEntry, ExerciseEntry, Generator, Manifest, PartEntry,
-                       StudentEntry, VariantEntry, dump)
+                       StudentEntry, dump)
+from .run import GenerationRun, file_sha256
 from .spec import ExamSpec, ExamSpecError, Student, read_exam_spec, read_roster
-from .variants import exam_variant
+from .student import StudentResult, student_job
+from .workers import Pool, default_jobs
 
 Progress = Callable[[str, int, int], None]
+
+_PAGE_BREAK = "\n#pagebreak(weak: true)\n"
 
 
 @dataclass
@@ -57,114 +56,33 @@ class GenerationReport:
     warnings: list[str] = field(default_factory=list)
 
 
-# -- the work of one student (runs in a worker process) ----------------------------------
-
-_STATE: dict = {}
-
-
-def _init_worker(spec: ExamSpec, paths: dict[str, str], parts: dict, out_dir: str,
-                 pdf: bool) -> None:
-    exercises = {}
-    for exercise_id, path in paths.items():
-        exercises[exercise_id] = load_file(path)
-    _STATE.update(spec=spec, exercises=exercises, parts=parts, out_dir=Path(out_dir), pdf=pdf,
-                  preamble=typst_preamble(spec.to_json()))
-
-
-def _student_job(student: Student) -> dict:
-    """Variants, figures, sheets and the PDF of one student; returns the manifest entry
-    and the typst body (for the combined PDF)."""
-    spec: ExamSpec = _STATE["spec"]
-    folder = _STATE["out_dir"] / "students" / student.student_id
-    entries, sheet_exercises = [], []
-    for number, item in enumerate(spec.exercises, 1):
-        exercise: Exercise = _STATE["exercises"][item.id]
-        variant, redraws = exam_variant(exercise, spec.id, student.student_id, item.set)
-        entries.append(VariantEntry(exercise.id, variant.seed, variant.params,
-                                    dict(variant.answers), redraws))
-        fill_in = f"{exercise.id}.py"
-        scaled = {entry.name: entry.points for entry in _STATE["parts"][exercise.id]}
-        write_atomic(folder / fill_in,
-                     write_sheet(exercise, variant, student.student_id, fill_in, scaled))
-        svg = _figure(exercise, variant)
-        figure_file = None
-        if svg is not None:
-            figure_file = f"figures/{exercise.id}.svg"
-            write_atomic(folder / figure_file, svg)
-        parts = tuple(SheetPart(entry.name, entry.label, entry.kind,
-                                pretty_unit(entry.unit) if entry.unit else "", entry.points,
-                                part.input_hint())
-                      for entry, part in zip(_STATE["parts"][exercise.id], exercise.parts))
-        sheet_exercises.append(SheetExercise(number, exercise.id, exercise.title,
-                                             exercise.source, item.points, variant.statement,
-                                             parts, fill_in, svg, figure_file))
-    sheet = StudentSheet(spec.to_json(), student.student_id, student.name,
-                         tuple(sheet_exercises))
-    write_atomic(folder / "sheet.md", sheet_markdown(sheet))
-    write_atomic(folder / "sheet.html", sheet_html(sheet))
-    body = sheet_typst_body(sheet)
-    if _STATE["pdf"]:
-        write_atomic(folder / "sheet.pdf", compile_pdf(_STATE["preamble"] + body))
-    entry = StudentEntry(student.student_id, student.name, student.email, tuple(entries))
-    return {"entry": entry, "body": body}
+def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
+                  jobs: int | None = None, pdf: bool = True,
+                  progress: Progress | None = None) -> GenerationReport:
+    """Write the whole exam into ``out_dir`` (see the module docstring)."""
+    started = time.perf_counter()
+    progress = progress or (lambda stage, done, total: None)
+    run, roster = open_run(exam_path, roster_path, Path(out_dir), bank, pdf)
+    report = GenerationReport(run.out_dir, len(roster), len(roster) * len(run.spec.exercises), 0)
+    report.timings["load"] = time.perf_counter() - started
+    with Pool(run, default_jobs(jobs)) as pool:
+        stage = time.perf_counter()
+        results = _students(pool, roster, progress)
+        report.timings["students"] = time.perf_counter() - stage
+        stage = time.perf_counter()
+        manifest = build_manifest(run.spec, run.exercises, run.parts,
+                                  [r.entry for r in results])
+        report.redraws = manifest.redraw_count
+        _write_key_and_moodle(run, manifest)
+        if pdf:
+            _write_printing_pdfs(run, pool, manifest, roster, results, progress)
+        report.timings["keys, moodle, combined PDFs"] = time.perf_counter() - stage
+    dump(manifest, run.out_dir / "manifest.json")
+    report.timings["total"] = time.perf_counter() - started
+    return report
 
 
-_FIGURES: dict[tuple, str | None] = {}
-
-
-def _figure(exercise: Exercise, variant) -> str | None:
-    key = (exercise.id, tuple(sorted(variant.params.items())))
-    if key not in _FIGURES:
-        if len(_FIGURES) > 2000:
-            _FIGURES.clear()
-        _FIGURES[key] = figure_svg(exercise, variant)
-    return _FIGURES[key]
-
-
-_COMPILERS: dict[str, object] = {}
-
-
-def compile_pdf(source: str, root: str | None = None) -> bytes:
-    """A typst document compiled in-process, with typst's own fonts only (the same PDF on
-    every machine; no package downloads). One compiler per process and root is kept: it
-    holds the loaded fonts and typst's caches, which makes later documents ~2x faster."""
-    import typst
-
-    key = root or ""
-    if key not in _COMPILERS:
-        _COMPILERS[key] = typst.Compiler(root=root, ignore_system_fonts=True)
-    return _COMPILERS[key].compile(input=source.encode("utf-8"))
-
-
-def _compile_to(path: str, source: str, root: str | None = None) -> str:
-    write_atomic(path, compile_pdf(source, root))
-    return path
-
-
-_PAGE = re.compile(rb"/Type\s*/Page\b")
-
-
-def combined_source(out: Path, student_ids: list[str], fallback: Callable[[], str]) -> str:
-    """The typst source of the printing PDF: every student's own PDF, page by page, as
-    embedded vector pages (no second layout of the sheets). ``fallback()`` gives a source
-    that lays the sheets out again, used when a page count cannot be read."""
-    lines = ['#set page(paper: "a4", margin: 0pt, header: none, numbering: none)']
-    for student_id in student_ids:
-        path = out / "students" / student_id / "sheet.pdf"
-        pages = len(_PAGE.findall(path.read_bytes()))
-        if pages == 0:
-            return fallback()
-        for page in range(1, pages + 1):
-            lines.append(f'#page(image("/students/{student_id}/sheet.pdf", page: {page}, '
-                         'width: 100%))')
-    return "\n".join(lines) + "\n"
-
-
-# -- the whole exam -----------------------------------------------------------------------
-
-
-def file_sha256(path: str | os.PathLike) -> str:
-    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+# -- the steps ----------------------------------------------------------------------------
 
 
 def load_exam(exam_path, roster_path, bank: Bank | None = None):
@@ -180,6 +98,12 @@ def load_exam(exam_path, roster_path, bank: Bank | None = None):
     spec = read_exam_spec(exam_path, known)
     roster = read_roster(roster_path)
     exercises = {item.id: bank.get(item.id) for item in spec.exercises}
+    _check_set_values(spec, exercises)
+    return spec, roster, exercises
+
+
+def _check_set_values(spec: ExamSpec, exercises: dict[str, Exercise]) -> None:
+    """The values an exam sets (``[exercise.set]``) must leave the constraints satisfiable."""
     for item in spec.exercises:
         if item.set:
             try:
@@ -188,7 +112,15 @@ def load_exam(exam_path, roster_path, bank: Bank | None = None):
                 raise ExamSpecError(f"{spec.path}, line {item.line}, [[exercise]] {item.id}, "
                                     f"field 'set': the values set break a constraint: "
                                     f"{error}") from None
-    return spec, roster, exercises
+
+
+def open_run(exam_path, roster_path, out: Path, bank: Bank | None,
+             pdf: bool) -> tuple[GenerationRun, list[Student]]:
+    """The generation's run (spec, exercises, scaled parts, caches) and the roster."""
+    spec, roster, exercises = load_exam(exam_path, roster_path, bank)
+    parts = {item.id: exercise_parts(exercises[item.id], item.points)
+             for item in spec.exercises}
+    return GenerationRun(spec, exercises, parts, out, pdf), roster
 
 
 def exercise_parts(exercise: Exercise, points: float) -> tuple[PartEntry, ...]:
@@ -201,84 +133,60 @@ def exercise_parts(exercise: Exercise, points: float) -> tuple[PartEntry, ...]:
                  for part in exercise.parts)
 
 
-def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
-                  jobs: int | None = None, pdf: bool = True,
-                  progress: Progress | None = None) -> GenerationReport:
-    """Write the whole exam into ``out_dir`` (see the module docstring)."""
-    from ..render.keys import key_csv, key_typst
+def _students(pool: Pool, roster: list[Student], progress: Progress) -> list[StudentResult]:
+    """Every student's job, in roster order."""
+    results = []
+    for done, result in enumerate(pool.map(student_job, roster, chunksize=4), 1):
+        results.append(result)
+        progress("students", done, len(roster))
+    return results
+
+
+def _write_key_and_moodle(run: GenerationRun, manifest: Manifest) -> None:
+    from ..render.keys import key_csv
     from ..render.moodle import moodle_xml
 
-    started = time.perf_counter()
-    out = Path(out_dir)
-    progress = progress or (lambda stage, done, total: None)
-    spec, roster, exercises = load_exam(exam_path, roster_path, bank)
-    parts = {item.id: exercise_parts(exercises[item.id], item.points)
-             for item in spec.exercises}
-    paths = {exercise_id: exercise.path for exercise_id, exercise in exercises.items()}
-    report = GenerationReport(out, len(roster), len(roster) * len(spec.exercises), 0)
-    report.timings["load"] = time.perf_counter() - started
+    write_atomic(run.out_dir / "key.csv", key_csv(manifest))
+    write_atomic(run.out_dir / "moodle.xml", moodle_xml(manifest, run.exercises))
 
-    jobs = max(1, jobs if jobs is not None else min(2, os.cpu_count() or 1))
-    init_args = (spec, paths, parts, str(out), pdf)
-    stage = time.perf_counter()
-    results = []
-    executor = _executor(jobs, init_args)
+
+def _write_printing_pdfs(run: GenerationRun, pool: Pool, manifest: Manifest,
+                         roster: list[Student], results: list[StudentResult],
+                         progress: Progress) -> None:
+    """key.pdf (in a worker, meanwhile) and sheets.pdf."""
+    from ..render.keys import key_typst
+
+    title = f"{run.spec.title}: answer key"
+    key_job = pool.submit(_compile_key,
+                          typst_preamble(run.spec.to_json(), title) + key_typst(manifest))
+    _write_sheets_pdf(run, roster, results)
+    progress("combined PDFs", 1, 2)
+    key_job.result()
+    progress("combined PDFs", 2, 2)
+
+
+def _write_sheets_pdf(run: GenerationRun, roster: list[Student],
+                      results: list[StudentResult]) -> None:
+    """sheets.pdf: every student's PDF embedded page by page, or, where typst cannot
+    embed PDFs, the sheets laid out again."""
+    preamble = typst_preamble(run.spec.to_json(), f"{run.spec.title}: all sheets")
+
+    def laid_out() -> str:
+        return preamble + _PAGE_BREAK.join(r.body for r in results)
+
+    combined = embedded_pages_source(
+        run.out_dir, [f"students/{s.student_id}/sheet.pdf" for s in roster], laid_out)
+    if not combined.startswith("#set document"):
+        combined = preamble + combined
     try:
-        if executor is None:
-            _init_worker(*init_args)
-            mapped = map(_student_job, roster)
-        else:
-            mapped = executor.map(_student_job, roster, chunksize=4)
-        for done, result in enumerate(mapped, 1):
-            results.append(result)
-            progress("students", done, len(roster))
-        report.timings["students"] = time.perf_counter() - stage
-
-        manifest = build_manifest(spec, exercises, parts, [r["entry"] for r in results])
-        report.redraws = sum(len(v.redraws) for s in manifest.students for v in s.variants)
-        stage = time.perf_counter()
-        write_atomic(out / "key.csv", key_csv(manifest))
-        write_atomic(out / "moodle.xml", moodle_xml(manifest, exercises))
-        if pdf:
-            key_source = typst_preamble(spec.to_json(), f"{spec.title}: answer key") \
-                + key_typst(manifest)
-            key_job = (executor.submit(_compile_to, str(out / "key.pdf"), key_source)
-                       if executor is not None else None)
-            preamble = typst_preamble(spec.to_json(), f"{spec.title}: all sheets")
-            combined = combined_source(
-                out, [s.student_id for s in roster],
-                lambda: preamble + "\n#pagebreak(weak: true)\n".join(r["body"] for r in results))
-            if not combined.startswith("#set document"):
-                combined = preamble + combined
-            try:
-                _compile_to(str(out / "sheets.pdf"), combined, str(out.resolve()))
-            except Exception:  # a typst without PDF images: lay the sheets out again
-                _compile_to(str(out / "sheets.pdf"), preamble + "\n#pagebreak(weak: true)\n"
-                            .join(r["body"] for r in results))
-            progress("combined PDFs", 1, 2)
-            if key_job is None:
-                _compile_to(str(out / "key.pdf"), key_source)
-            else:
-                key_job.result()
-            progress("combined PDFs", 2, 2)
-        report.timings["keys, moodle, combined PDFs"] = time.perf_counter() - stage
-    finally:
-        if executor is not None:
-            executor.shutdown()
-    dump(manifest, out / "manifest.json")
-    report.timings["total"] = time.perf_counter() - started
-    return report
+        pdf = run.compiler.compile(combined, str(run.out_dir.resolve()))
+    except Exception:  # a typst without PDF images: lay the sheets out again
+        pdf = run.compiler.compile(laid_out())
+    write_atomic(run.out_dir / "sheets.pdf", pdf)
 
 
-def _executor(jobs: int, init_args) -> ProcessPoolExecutor | None:
-    if jobs <= 1:
-        return None
-    import multiprocessing
-
-    methods = multiprocessing.get_all_start_methods()
-    context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
-    return ProcessPoolExecutor(max_workers=jobs, mp_context=context,
-                               initializer=_init_worker, initargs=init_args)
+def _compile_key(run: GenerationRun, source: str) -> None:
+    write_atomic(run.out_dir / "key.pdf", run.compiler.compile(source))
 
 
 def build_manifest(spec: ExamSpec, exercises: dict[str, Exercise],

@@ -177,6 +177,11 @@ class Manifest:
     def exercise_ids(self) -> list[str]:
         return [e.id for e in self.exercises]
 
+    @property
+    def redraw_count(self) -> int:
+        """Draws rejected, over every student and exercise, before a variant was handed out."""
+        return sum(len(v.redraws) for s in self.students for v in s.variants)
+
 
 # -- writing ------------------------------------------------------------------------------
 

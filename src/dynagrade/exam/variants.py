@@ -9,7 +9,7 @@ manifest, so the choice can be checked and explained.
 
 from __future__ import annotations
 
-from typing import Mapping
+from typing import Callable, Mapping
 
 from ..exercise.model import ConstraintError, Exercise, Variant
 from ..exercise.seeds import exam_seed, stable_seed
@@ -30,22 +30,18 @@ def attempt_seed(exam_id: str, student_id: str, exercise_id: str, attempt: int) 
     return stable_seed("exam", exam_id, student_id, exercise_id, "redraw", str(attempt))
 
 
-_PROBLEMS: dict[tuple, tuple[str, ...]] = {}
-
-
-def cached_problems(exercise: Exercise, variant: Variant) -> tuple[str, ...]:
-    """:func:`variant_problems`, remembered for identical parameters of one exercise."""
-    key = (exercise.id, tuple(sorted(variant.params.items())))
-    if key not in _PROBLEMS:
-        if len(_PROBLEMS) > 50_000:
-            _PROBLEMS.clear()
-        _PROBLEMS[key] = tuple(variant_problems(exercise, variant))
-    return _PROBLEMS[key]
+def check_variant(exercise: Exercise, variant: Variant) -> tuple[str, ...]:
+    """Why ``variant`` cannot be handed out (:func:`variant_problems`); empty when it can."""
+    return tuple(variant_problems(exercise, variant))
 
 
 def exam_variant(exercise: Exercise, exam_id: str, student_id: str,
-                 overrides: Mapping[str, float] | None = None) -> tuple[Variant, tuple[Redraw, ...]]:
-    """The variant handed to ``student_id``, and the draws rejected before it."""
+                 overrides: Mapping[str, float] | None = None,
+                 problems: Callable[[Exercise, Variant], tuple[str, ...]] = check_variant,
+                 ) -> tuple[Variant, tuple[Redraw, ...]]:
+    """The variant handed to ``student_id``, and the draws rejected before it.
+    ``problems`` is :func:`check_variant` or a run's cache of it
+    (:attr:`dynagrade.exam.run.GenerationRun.problems`)."""
     redraws = []
     for attempt in range(MAX_ATTEMPTS):
         seed = attempt_seed(exam_id, student_id, exercise.id, attempt)
@@ -54,10 +50,10 @@ def exam_variant(exercise: Exercise, exam_id: str, student_id: str,
         except ConstraintError as error:
             redraws.append(Redraw(seed, (str(error),)))
             continue
-        problems = cached_problems(exercise, variant)
-        if not problems:
+        found = problems(exercise, variant)
+        if not found:
             return variant, tuple(redraws)
-        redraws.append(Redraw(seed, problems))
+        redraws.append(Redraw(seed, found))
     reasons = sorted({p for r in redraws for p in r.problems})
     raise NoUsableVariant(f"exercise {exercise.id!r}, student {student_id!r}: none of "
                           f"{MAX_ATTEMPTS} draws can be handed out: " + "; ".join(reasons[:3]))

@@ -1,60 +1,22 @@
-"""A variant's figure as SVG text, the same bytes on every run.
+"""Drawing helpers for exercise figures, drawn to scale with matplotlib.
 
 An exercise may declare ``figure=draw``, where ``draw(p)`` receives the parameters in SI
-and returns a :class:`matplotlib.figure.Figure` drawn to scale. This module renders it
-with matplotlib's SVG writer (the Agg backend selected, no display needed), a fixed hash salt (so element ids do not change from run
-to run), glyphs as paths (so every viewer, typst included, shows the same letters) and no
-date in the metadata.
+and returns a :class:`matplotlib.figure.Figure`; these helpers draw the usual parts of a
+mechanics sketch (arrows, angle arcs, ground, blocks, springs, dampers, dimensions).
+Rendering the figure to SVG is :func:`dynagrade.render.figures.figure_svg`.
 
 Usage::
 
-    svg = figure_svg(exercise, variant)    # str, or None when the exercise has no figure
+    from dynagrade.exercise.figure import arrow, ground, new_drawing
+
+    def draw(p):
+        figure, axes = new_drawing()
+        ground(axes, 0.0, 2.0)
+        arrow(axes, (0, 0), (1, 0.5), "$v_0$")
+        return figure
 """
 
 from __future__ import annotations
-
-import io
-import re
-
-from .model import Exercise, Variant
-
-SVG_SETTINGS = {"svg.hashsalt": "dynagrade", "svg.fonttype": "path", "svg.image_inline": True,
-                "path.simplify": False}
-_HEADER = re.compile(r"^\s*<\?xml[^>]*>\s*(<!DOCTYPE[^>]*>\s*)?", re.S)
-
-
-def figure_svg(exercise: Exercise, variant: Variant) -> str | None:
-    """The variant's figure as a standalone SVG document, or ``None`` without a figure."""
-    if exercise.figure is None:
-        return None
-    import sys
-
-    import matplotlib
-
-    if "matplotlib.pyplot" not in sys.modules:
-        matplotlib.use("Agg")
-    figure = exercise.figure(exercise.si(variant.params))
-    buffer = io.StringIO()
-    with matplotlib.rc_context(SVG_SETTINGS):
-        # "tight" keeps labels that reach past the axes in the picture
-        figure.savefig(buffer, format="svg", bbox_inches="tight", pad_inches=0.04,
-                       metadata={"Date": None, "Creator": "dynagrade"})
-    _close(figure)
-    return buffer.getvalue()
-
-
-def inline_svg(svg: str) -> str:
-    """An SVG document without its XML declaration and DOCTYPE, to embed in HTML."""
-    return _HEADER.sub("", svg, count=1)
-
-
-def _close(figure) -> None:
-    """Release a figure made with pyplot (a plain ``Figure`` needs nothing)."""
-    import sys
-
-    pyplot = sys.modules.get("matplotlib.pyplot")
-    if pyplot is not None:
-        pyplot.close(figure)
 
 
 # -- drawing helpers for exercise figures ---------------------------------------------------

@@ -26,7 +26,6 @@ from typing import Iterable, Iterator
 from .dispatch import grade
 from .errors import AnswerError, SpecError
 from .spec import ChoiceSpec, KnownWrong, NumericSpec, SymbolicSpec, Variable, VectorSpec
-from .tolerance import DEFAULT_RTOL
 
 
 
@@ -140,21 +139,18 @@ class _Common:
     reveal: bool
     misconceptions: tuple[KnownWrong, ...]
 
-    @property
-    def numeric_rtol(self) -> float:
-        return DEFAULT_RTOL if self.rtol is None else float(self.rtol)
-
-    @property
-    def numeric_atol(self) -> float | None:
-        return None if self.atol is None else float(self.atol)
+    def tolerances(self, names: tuple[str, ...] = ("rtol", "atol")) -> dict[str, float]:
+        """The tolerances the record sets (a spec keeps its own default for the others)."""
+        values = {"rtol": self.rtol, "atol": self.atol}
+        return {name: float(values[name]) for name in names if values[name] is not None}
 
 
 def _numeric(record: dict, common: _Common):
     expected, unit = _numeric_expected(record, common.unit)
     sigfigs = _number(record, "sigfigs", integer=True)
     unit_credit = _number(record, "unit_credit")
-    spec = NumericSpec(unit=unit, rtol=common.numeric_rtol, atol=common.numeric_atol,
-                       sigfigs=sigfigs, misconceptions=common.misconceptions,
+    spec = NumericSpec(unit=unit, **common.tolerances(), sigfigs=sigfigs,
+                       misconceptions=common.misconceptions,
                        require_unit=_flag(record, "require_unit"),
                        unit_credit=None if unit_credit is None else float(unit_credit),
                        reveal=common.reveal)
@@ -166,7 +162,7 @@ def _symbolic(record: dict, common: _Common):
     form = record.get("form") or ()
     if not isinstance(form, (list, tuple)) or not all(isinstance(f, str) for f in form):
         raise RecordError("field 'form' must be a list of strings")
-    spec = SymbolicSpec(_variables(record), rtol=1e-6 if common.rtol is None else float(common.rtol),
+    spec = SymbolicSpec(_variables(record), **common.tolerances(("rtol",)),
                         misconceptions=common.misconceptions, form=tuple(form),
                         reveal=common.reveal)
     return spec, expected
@@ -178,8 +174,8 @@ def _vector(record: dict, common: _Common):
             isinstance(x, (int, float)) and not isinstance(x, bool) for x in expected):
         raise RecordError("field 'expected' of a vector must be a list of numbers")
     size = _number(record, "size", integer=True) or len(expected)
-    spec = VectorSpec(size, unit=common.unit, rtol=common.numeric_rtol,
-                      atol=common.numeric_atol, misconceptions=common.misconceptions,
+    spec = VectorSpec(size, unit=common.unit, **common.tolerances(),
+                      misconceptions=common.misconceptions,
                       require_unit=_flag(record, "require_unit"), reveal=common.reveal)
     return spec, tuple(float(x) for x in expected)
 

@@ -7,9 +7,9 @@ per part (``{2:NUMERICAL:=4.43:0.0443}``; a vector has one field per component, 
 choice part a drop-down; :data:`MOODLE_KINDS` holds each kind's form). Moodle's
 numerical answers take an absolute tolerance: it comes from the grader's own tolerance
 functions, so Moodle accepts what ``dynagrade grade`` accepts (``max(atol, rtol*|answer|)``
-with the grader's absolute floor; a vector's zero component judged against its length). Symbolic parts cannot be
-checked by Moodle and are listed as not part of the quiz. ``penalty`` is set to 0
-(no deduction per retry) on every question.
+with the grader's absolute floor; a vector's zero component judged against its length).
+Symbolic parts cannot be checked by Moodle and are listed as not part of the quiz.
+``penalty`` is set to 0 (no deduction per retry) on every question.
 
 The XML is written by :mod:`xml.etree.ElementTree`, which escapes all text; the math of
 the statements stays TeX between ``\\(`` and ``\\)`` for Moodle's MathJax filter.
@@ -100,11 +100,13 @@ def _choice_field(part: PartEntry, value, weight: int) -> str:
 @dataclass(frozen=True)
 class MoodleKind:
     """How a kind of part goes into Moodle: ``field(part, value, weight)`` writes its
-    embedded cloze answer (None: Moodle cannot check it, the part is listed as not in
-    the quiz); ``numerical``: a lone part of this kind becomes a ``numerical`` question."""
+    embedded cloze answer (None: Moodle cannot check it, and the part is listed as not in
+    the quiz, saying ``absent``); ``numerical``: a lone part of this kind becomes a
+    ``numerical`` question."""
 
     field: Callable[[PartEntry, object, int], str] | None
     numerical: bool = False
+    absent: str = ""
 
 
 #: every part kind's Moodle form (a test holds it complete)
@@ -112,7 +114,7 @@ MOODLE_KINDS: dict[str, MoodleKind] = {
     "numeric": MoodleKind(_numeric_field, numerical=True),
     "vector": MoodleKind(_vector_field),
     "choice": MoodleKind(_choice_field),
-    "symbolic": MoodleKind(None),
+    "symbolic": MoodleKind(None, absent="a formula, graded from the fill-in file"),
 }
 
 
@@ -145,54 +147,65 @@ def _category_name(title: str) -> str:
 
 def _question(quiz: ET.Element, exercise: Exercise, described: ExerciseEntry,
               variant: VariantEntry) -> None:
-    parts = described.parts
-    answers = variant.answers
     statement = render_statement(exercise.statement, exercise.params, variant.params)
     text = markdown_to_html(statement, math="tex")
-    gradable = [p for p in parts if MOODLE_KINDS[p.kind].field is not None]
-    name = f"{described.id} (seed {variant.seed})"
-    if len(gradable) == 1 and len(parts) == 1 and MOODLE_KINDS[gradable[0].kind].numerical:
-        part = gradable[0]
-        question = _sub(quiz, "question", type="numerical")
-        _text(question, "name", name)
-        unit = f" (in {pretty_unit(part.unit)})" if part.unit else ""
-        _text(question, "questiontext", text + f"<p>{_html(part.label)}{_html(unit)}</p>",
-              format="html")
-        _text(question, "generalfeedback", "", format="html")
-        _sub(question, "defaultgrade", _number(described.points))
-        _sub(question, "penalty", PENALTY)
-        _sub(question, "hidden", "0")
-        _sub(question, "idnumber", f"{described.id}-{variant.seed}")
-        value = answers[part.name]
-        answer = _sub(question, "answer", fraction="100", format="moodle_auto_format")
-        _sub(answer, "text", _number(value))
-        _sub(answer, "tolerance", _tolerance_text(tolerance(value, part.rtol, part.atol)))
-        _text(answer, "feedback", "", format="html")
-        _sub(question, "unitgradingtype", "0")
-        _sub(question, "unitpenalty", "0")
-        _sub(question, "showunits", "3")
-        _sub(question, "unitsleft", "0")
-        return
-    lines = []
-    smallest = min((p.points for p in gradable if p.points > 0), default=1.0)
-    for part in parts:
-        label = _html(part.label)
-        unit = f" {_html(pretty_unit(part.unit))}" if part.unit else ""
-        if part in gradable:
-            weight = max(1, round(part.points / smallest))  # Moodle wants integers
-            field = MOODLE_KINDS[part.kind].field(part, answers[part.name], weight)
-            lines.append(f"<li>{label}: {field}{unit}</li>")
-        else:
-            lines.append(f"<li>{label}: not part of this quiz (a formula, graded from the "
-                         "fill-in file)</li>")
-    question = _sub(quiz, "question", type="cloze")
-    _text(question, "name", name)
-    _text(question, "questiontext", text + "<ol>" + "".join(lines) + "</ol>", format="html")
+    parts = described.parts
+    if len(parts) == 1 and MOODLE_KINDS[parts[0].kind].numerical:
+        _numerical_question(quiz, described, variant, text)
+    else:
+        _cloze_question(quiz, described, variant, text)
+
+
+def _question_head(quiz: ET.Element, kind: str, described: ExerciseEntry,
+                   variant: VariantEntry, text: str) -> ET.Element:
+    """A question's name, text, grade and ids, the same for every type."""
+    question = _sub(quiz, "question", type=kind)
+    _text(question, "name", f"{described.id} (seed {variant.seed})")
+    _text(question, "questiontext", text, format="html")
     _text(question, "generalfeedback", "", format="html")
     _sub(question, "defaultgrade", _number(described.points))
     _sub(question, "penalty", PENALTY)
     _sub(question, "hidden", "0")
     _sub(question, "idnumber", f"{described.id}-{variant.seed}")
+    return question
+
+
+def _numerical_question(quiz: ET.Element, described: ExerciseEntry, variant: VariantEntry,
+                        text: str) -> None:
+    """A lone numeric part: a ``numerical`` question with the grader's tolerance."""
+    (part,) = described.parts
+    unit = f" (in {pretty_unit(part.unit)})" if part.unit else ""
+    question = _question_head(quiz, "numerical", described, variant,
+                              text + f"<p>{_html(part.label)}{_html(unit)}</p>")
+    value = variant.answers[part.name]
+    answer = _sub(question, "answer", fraction="100", format="moodle_auto_format")
+    _sub(answer, "text", _number(value))
+    _sub(answer, "tolerance", _tolerance_text(tolerance(value, part.rtol, part.atol)))
+    _text(answer, "feedback", "", format="html")
+    for tag, setting in (("unitgradingtype", "0"), ("unitpenalty", "0"), ("showunits", "3"),
+                         ("unitsleft", "0")):
+        _sub(question, tag, setting)
+
+
+def _cloze_question(quiz: ET.Element, described: ExerciseEntry, variant: VariantEntry,
+                    text: str) -> None:
+    """Every part as an embedded field (weights: the parts' relative points), or as a line
+    saying why Moodle cannot check it."""
+    gradable = [p for p in described.parts if MOODLE_KINDS[p.kind].field is not None]
+    smallest = min((p.points for p in gradable if p.points > 0), default=1.0)
+    lines = []
+    for part in described.parts:
+        label = _html(part.label)
+        unit = f" {_html(pretty_unit(part.unit))}" if part.unit else ""
+        form = MOODLE_KINDS[part.kind]
+        if form.field is None:
+            lines.append(f"<li>{label}: not part of this quiz ({form.absent})</li>")
+            continue
+        weight = max(1, round(part.points / smallest))  # Moodle wants integers
+        lines.append(f"<li>{label}: {form.field(part, variant.answers[part.name], weight)}"
+                     f"{unit}</li>")
+    _question_head(quiz, "cloze", described, variant,
+                   text + "<ol>" + "".join(lines) + "</ol>")
 
 
 def _html(text: str) -> str:

@@ -9,7 +9,7 @@ from __future__ import annotations
 import io
 from typing import TYPE_CHECKING
 
-from ..exercise.figure import SVG_SETTINGS, inline_svg
+from .figures import SVG_SETTINGS, inline_svg
 from ..exercise.numbers import answer_text, format_number
 from ..exercise.units import with_unit
 from .sheets import render_template

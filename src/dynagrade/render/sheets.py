@@ -20,7 +20,7 @@ from pathlib import Path
 import jinja2
 from markupsafe import Markup
 
-from ..exercise.figure import inline_svg
+from .figures import inline_svg
 from ..exercise.numbers import format_number, points_phrase, points_text
 from .markup import inline_html, inline_typst, markdown_to_html, markdown_to_typst, typst_text
 from .mathtex import typst_string

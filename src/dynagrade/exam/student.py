@@ -1,0 +1,79 @@
+"""The work of one student in an exam generation: their variant of every exercise, the
+fill-in files and figures, and the sheet as Markdown, HTML and PDF.
+
+:func:`student_job` runs in a worker process (:mod:`.workers`) with the generation's
+run; it writes the student's folder and returns the student's manifest entry and the
+typst body of their sheet (for the printing PDF, should the PDFs not embed).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..exercise.model import Exercise, Variant
+from ..exercise.sheet import write_sheet
+from ..exercise.units import pretty_unit
+from ..render.sheets import (SheetExercise, SheetPart, StudentSheet, sheet_html,
+                             sheet_markdown, sheet_typst_body, typst_preamble)
+from .files import write_atomic
+from .manifest import StudentEntry, VariantEntry
+from .run import GenerationRun
+from .spec import ExamExercise, Student
+from .variants import exam_variant
+
+
+@dataclass(frozen=True)
+class StudentResult:
+    """What one student's job hands back: the manifest entry and the sheet's typst body."""
+
+    entry: StudentEntry
+    body: str
+
+
+def student_job(run: GenerationRun, student: Student) -> StudentResult:
+    """Variants, fill-in files, figures, sheets and the PDF of ``student``."""
+    entries, sheet_exercises = [], []
+    for number, item in enumerate(run.spec.exercises, 1):
+        exercise = run.exercises[item.id]
+        variant, redraws = exam_variant(exercise, run.spec.id, student.student_id, item.set,
+                                        run.problems)
+        entries.append(VariantEntry(exercise.id, variant.seed, variant.params,
+                                    dict(variant.answers), redraws))
+        sheet_exercises.append(_exercise_files(run, student, number, item, exercise, variant))
+    sheet = StudentSheet(run.spec.to_json(), student.student_id, student.name,
+                         tuple(sheet_exercises))
+    body = _write_sheets(run, student, sheet)
+    entry = StudentEntry(student.student_id, student.name, student.email, tuple(entries))
+    return StudentResult(entry, body)
+
+
+def _exercise_files(run: GenerationRun, student: Student, number: int, item: ExamExercise,
+                    exercise: Exercise, variant: Variant) -> SheetExercise:
+    """The fill-in file and figure of one exercise; its section of the sheet."""
+    folder = run.out_dir / "students" / student.student_id
+    scaled = run.parts[exercise.id]
+    fill_in = f"{exercise.id}.py"
+    write_atomic(folder / fill_in, write_sheet(exercise, variant, student.student_id, fill_in,
+                                               {entry.name: entry.points for entry in scaled}))
+    svg = run.figures(exercise, variant)
+    figure_file = None
+    if svg is not None:
+        figure_file = f"figures/{exercise.id}.svg"
+        write_atomic(folder / figure_file, svg)
+    parts = tuple(SheetPart(entry.name, entry.label, entry.kind, pretty_unit(entry.unit),
+                            entry.points, part.input_hint())
+                  for entry, part in zip(scaled, exercise.parts))
+    return SheetExercise(number, exercise.id, exercise.title, exercise.source, item.points,
+                         variant.statement, parts, fill_in, svg, figure_file)
+
+
+def _write_sheets(run: GenerationRun, student: Student, sheet: StudentSheet) -> str:
+    """sheet.md, sheet.html and (with PDFs) sheet.pdf; returns the typst body."""
+    folder = run.out_dir / "students" / student.student_id
+    write_atomic(folder / "sheet.md", sheet_markdown(sheet))
+    write_atomic(folder / "sheet.html", sheet_html(sheet))
+    body = sheet_typst_body(sheet)
+    if run.pdf:
+        preamble = typst_preamble(run.spec.to_json())
+        write_atomic(folder / "sheet.pdf", run.compiler.compile(preamble + body))
+    return body

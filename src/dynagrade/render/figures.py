@@ -1,0 +1,58 @@
+"""A variant's figure as SVG text, the same bytes on every run.
+
+The exercise's ``figure(p)`` (drawn with :mod:`dynagrade.exercise.figure`) is rendered
+with matplotlib's SVG writer (the Agg backend selected, no display needed), a fixed hash
+salt (so element ids do not change from run to run), glyphs as paths (so every viewer,
+typst included, shows the same letters) and no date in the metadata.
+
+Usage::
+
+    svg = figure_svg(exercise, variant)    # str, or None when the exercise has no figure
+    html = inline_svg(svg)                 # without the XML header, to embed in a page
+"""
+
+from __future__ import annotations
+
+import io
+import re
+
+from ..exercise.model import Exercise, Variant
+
+SVG_SETTINGS = {"svg.hashsalt": "dynagrade", "svg.fonttype": "path", "svg.image_inline": True,
+                "path.simplify": False}
+_HEADER = re.compile(r"^\s*<\?xml[^>]*>\s*(<!DOCTYPE[^>]*>\s*)?", re.S)
+
+
+def figure_svg(exercise: Exercise, variant: Variant) -> str | None:
+    """The variant's figure as a standalone SVG document, or ``None`` without a figure."""
+    if exercise.figure is None:
+        return None
+    import sys
+
+    import matplotlib
+
+    if "matplotlib.pyplot" not in sys.modules:
+        matplotlib.use("Agg")
+    figure = exercise.figure(exercise.si(variant.params))
+    buffer = io.StringIO()
+    with matplotlib.rc_context(SVG_SETTINGS):
+        # "tight" keeps labels that reach past the axes in the picture
+        figure.savefig(buffer, format="svg", bbox_inches="tight", pad_inches=0.04,
+                       metadata={"Date": None, "Creator": "dynagrade"})
+    _close(figure)
+    return buffer.getvalue()
+
+
+def inline_svg(svg: str) -> str:
+    """An SVG document without its XML declaration and DOCTYPE, to embed in HTML."""
+    return _HEADER.sub("", svg, count=1)
+
+
+def _close(figure) -> None:
+    """Release a figure made with pyplot (a plain ``Figure`` needs nothing)."""
+    import sys
+
+    pyplot = sys.modules.get("matplotlib.pyplot")
+    if pyplot is not None:
+        pyplot.close(figure)
+
