@@ -90,7 +90,7 @@ class ExamData:
 
     def figure_svg(self, student_id: str, exercise_id: str) -> str | None:
         """The figure ``dynagrade exam`` drew for the student's variant, inline."""
-        from ..exercise.figure import inline_svg
+        from ..render.figures import inline_svg
 
         path = self.path.parent / "students" / student_id / "figures" / f"{exercise_id}.svg"
         try:

@@ -15,7 +15,7 @@ import io
 import tempfile
 from pathlib import Path
 
-from ..exam.classgrade import ClassOutcome, gradebook_csv, grade_class
+from ..exam.classgrade import ClassOutcome, grade_class, gradebook_csv, gradebook_row
 from ..exam.submissions import RESPONSE_HEADER
 from .db import StoredAnswer
 from .exam_data import ExamData
@@ -40,20 +40,13 @@ def gradebook_rows(data: ExamData, chosen: dict) -> list[dict]:
     max_total = sum(float(data.exercises_meta[e].points) for e in data.exercise_ids)
     rows = []
     for student_id in data.students:
-        row = {"student_id": student_id}
-        submitted = 0
+        results = {}
         for exercise_id in data.exercise_ids:
             scores = [chosen[(student_id, exercise_id, p.name)].score
                       for p in data.parts(exercise_id)
                       if (student_id, exercise_id, p.name) in chosen]
-            submitted += bool(scores)
-            row[exercise_id] = round(sum(scores), 6)
-        total = round(sum(row[e] for e in data.exercise_ids), 6)
-        row.update(total=total, max_total=max_total,
-                   percent=round(100.0 * total / max_total, 2) if max_total else 0.0,
-                   status="absent" if not submitted else
-                   "graded" if submitted == len(data.exercise_ids) else "incomplete")
-        rows.append(row)
+            results[exercise_id] = {"score": round(sum(scores), 6)} if scores else None
+        rows.append(gradebook_row(student_id, results, data.exercise_ids, max_total))
     return rows
 
 
@@ -81,13 +74,13 @@ def responses_csv(data: ExamData, stored: list[StoredAnswer]) -> str:
 def progress(data: ExamData, stored: list[StoredAnswer]) -> list[dict]:
     """Per student: submissions per exercise and the time of the latest."""
     seen: dict[str, dict] = {s: {"student_id": s, "name": data.students[s].name,
-                                 "exercises": {}, "last": None} for s in data.students}
+                                 "attempts": {}, "last": None} for s in data.students}
     for answer in stored:
         if not answer.counted or answer.student_id not in seen:
             continue
         entry = seen[answer.student_id]
-        entry["exercises"][answer.exercise_id] = max(
-            entry["exercises"].get(answer.exercise_id, 0), answer.attempt)
+        entry["attempts"][answer.exercise_id] = max(
+            entry["attempts"].get(answer.exercise_id, 0), answer.attempt)
         entry["last"] = answer.created_at
     return list(seen.values())
 
