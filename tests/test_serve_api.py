@@ -48,6 +48,8 @@ def test_exam_mode_saves_and_shows_only_readability(exam_dir, tmp_path, database
     clock = Clock()
     with serve(manifest, database, clock) as served:
         assert served.client.get("/healthz").status_code == 200
+        described = served.client.get("/api/openapi.json").json()["paths"]
+        assert {"/api/v1/answers", "/api/v1/preview", "/api/v1/grades.csv"} <= set(described)
         first = served.submit("s1", "projectile-range", {"x_max": "45 km/h", "h_max": "3 kg"})
         assert first.status_code == 200
         body = first.json()

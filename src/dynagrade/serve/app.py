@@ -343,7 +343,7 @@ def _staff_html(request: Request, token: str) -> str:
     return _TEMPLATES.get_template("staff.html").render(
         title=data.title, token=token, base=_base(request), rows=rows, columns=columns,
         progress=gradebook.progress(data, stored), exercise_ids=data.exercise_ids,
-        counts=db.counts(state.engine, data.exam_id),
+        counts=db.counts(state.engine, data.exam_id), refresh=60,
         policy_text=_policy_text(data.policy, state.clock()))
 
 
