@@ -36,11 +36,12 @@ from typing import Callable
 
 from ..errors import DynagradeError
 from . import roster
+from .policy import POLICY_KEYS, Policy, PolicyError, read_policy
 from .roster import Student
 
 _EXAM_ID = re.compile(r"[a-z0-9]+(-[a-z0-9]+)*")  # fullmatch: `$` would take "x\n"
 MAX_POINTS = 1000.0  # more for one exercise is a typo, and sums must stay exact
-_TOP_KEYS = {"id", "title", "date", "instructions", "exercise"}
+_TOP_KEYS = {"id", "title", "date", "instructions", "exercise"} | POLICY_KEYS
 _EXERCISE_KEYS = {"id", "points", "set"}
 
 
@@ -68,14 +69,14 @@ class ExamSpec:
     instructions: str
     exercises: tuple[ExamExercise, ...]
     path: str = ""
+    policy: Policy = Policy()  # delivery by `dynagrade serve` (exam/policy.py)
     secret: str = ""  # set by the generation; never on a sheet (not in to_json)
 
     @property
     def mode(self) -> str:
         """"exam" (the default: fill-in files carry variant tokens, the self-check only
         reads) or "homework"/"practice" (seeds, full verdicts)."""
-        policy = getattr(self, "policy", None)
-        return policy.mode if policy is not None else "exam"
+        return self.policy.mode
 
     @property
     def total_points(self) -> float:
@@ -139,7 +140,11 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
         line = lines[index] if index < len(lines) else 0
         at = f"{where}, line {line}, [[exercise]] #{index + 1}"
         exercises.append(_exercise(table, at, line, seen, known))
-    return ExamSpec(exam_id, title, date, instructions, tuple(exercises), str(path))
+    try:
+        policy = read_policy(data, where, lambda key: _key_line(text, key))
+    except PolicyError as error:
+        raise ExamSpecError(str(error)) from None
+    return ExamSpec(exam_id, title, date, instructions, tuple(exercises), str(path), policy)
 
 
 def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExercise:
