@@ -102,12 +102,6 @@ class Found:
 SUFFIXES = (".py", ".csv")
 
 
-def expand(paths) -> list[Path]:
-    """Files to read, in command-line order, each folder's ``*.py`` and ``*.csv`` files in
-    path order (links out of the folder and non-regular files left out)."""
-    return [found.path for found in walk(paths, (), [])]
-
-
 def walk(paths, roster, problems: list[Problem]) -> list[Found]:
     """Every submission file in ``paths`` with its owner (:mod:`.layouts`); what cannot be
     a submission (a link out of the folder, a device, a FIFO) is reported."""
