@@ -478,3 +478,10 @@ def test_grade_on_an_exam_file_says_how_each_answer_reads_never_whether_it_is_ri
     assert by_name["x_max"]["readable"] and not by_name["h_max"]["readable"]
     assert "unit" in by_name["h_max"]["message"]
     assert "correct" not in result.output and "score" not in result.output
+
+
+def test_the_current_folder_is_refused_as_an_output_folder(exam, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(main, ["grade", "--manifest", str(exam / "manifest.json"),
+                                       str(tmp_path), "-o", "."])
+    assert result.exit_code == 1 and "a folder of its own" in result.output

@@ -31,6 +31,9 @@ def staging_folder(target: str | os.PathLike) -> Path:
     """A fresh, empty staging folder beside ``target`` (a stale one from a killed run is
     removed first)."""
     target = Path(target)
+    if not target.name or target.name == ".." or target.resolve() == Path.cwd().resolve():
+        raise OutputFolderError(f"{target}: give a folder of its own to write into (the run "
+                                "replaces it whole), not the current or a parent folder")
     staging = target.with_name(f".{target.name}.partial")
     try:
         if target.exists() and not target.is_dir():
