@@ -6,6 +6,7 @@
     title = "Dynamics, midterm"
     date = 2025-04-14                # a TOML date or "YYYY-MM-DD"
     instructions = "Answer every part. Give numbers to three significant figures."
+    language = "de"                  # optional, default "en": the sheets' declared language
 
     [[exercise]]
     id = "projectile-range"
@@ -38,7 +39,8 @@ from typing import Callable
 
 _EXAM_ID = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
 _STUDENT_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]*$")
-_TOP_KEYS = {"id", "title", "date", "instructions", "exercise"}
+_TOP_KEYS = {"id", "title", "date", "instructions", "language", "exercise"}
+_LANGUAGE = re.compile(r"^[a-z]{2,3}(-[A-Za-z0-9]{2,8})*$")
 _EXERCISE_KEYS = {"id", "points", "set"}
 ROSTER_HEADERS = (("student_id", "name"), ("student_id", "name", "email"))
 
@@ -67,6 +69,7 @@ class ExamSpec:
     instructions: str
     exercises: tuple[ExamExercise, ...]
     path: str = ""
+    language: str = "en"  # a BCP 47 tag: HTML lang and the PDFs' language
 
     @property
     def total_points(self) -> float:
@@ -74,7 +77,7 @@ class ExamSpec:
 
     def to_json(self) -> dict:
         return {"id": self.id, "title": self.title, "date": self.date,
-                "instructions": self.instructions}
+                "instructions": self.instructions, "language": self.language}
 
 
 @dataclass(frozen=True)
@@ -132,6 +135,10 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
     title = _string(data, "title", where, text, required=True)
     instructions = _string(data, "instructions", where, text, required=False)
     date = _date(data.get("date"), where, _key_line(text, "date"))
+    language = data.get("language", "en")
+    if not isinstance(language, str) or not _LANGUAGE.match(language):
+        raise ExamSpecError(f"{where}, line {_key_line(text, 'language')}, field 'language': "
+                            f"{language!r} is not a language tag; give e.g. \"en\" or \"de\"")
 
     tables = data.get("exercise")
     if not isinstance(tables, list) or not tables:
@@ -142,7 +149,8 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
         line = lines[index] if index < len(lines) else 0
         at = f"{where}, line {line}, [[exercise]] #{index + 1}"
         exercises.append(_exercise(table, at, line, seen, known))
-    return ExamSpec(exam_id, title, date, instructions, tuple(exercises), str(path))
+    return ExamSpec(exam_id, title, date, instructions, tuple(exercises), str(path),
+                    language)
 
 
 def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExercise:

@@ -18,7 +18,7 @@ import html
 import re
 
 __all__ = ["accessible_svg", "figure_description", "figure_labels", "prefixed_ids",
-           "sentence_list"]
+           "sentence_list", "svg_text_alternative"]
 
 _SVG_OPEN = re.compile(r"<svg\b[^>]*>", re.S)
 _ID = re.compile(r'\bid="([^"]+)"')
@@ -99,3 +99,13 @@ def prefixed_ids(svg: str, prefix: str) -> str:
         return f'{match.group(1)}"{names}"'
 
     return re.sub(r'(\baria-(?:labelledby|describedby)=)"([^"]*)"', aria, svg)
+
+
+def svg_text_alternative(svg: str) -> tuple[str, str]:
+    """The ``(title, description)`` that :func:`accessible_svg` gave ``svg`` (plain text;
+    empty strings where missing)."""
+    found = []
+    for tag in ("title", "desc"):
+        match = re.search(rf"<{tag}\b[^>]*>(.*?)</{tag}>", svg, re.S)
+        found.append(html.unescape(match.group(1)).strip() if match else "")
+    return found[0], found[1]
