@@ -230,8 +230,22 @@ def block(axes, center, width: float, height: float, label: str = "", angle: flo
     axes.add_patch(Polygon(points, closed=True, facecolor=color, edgecolor="0.1", lw=1.0))
     _drawn(axes, _named("a block", label))
     if label:
-        axes.text(center[0], center[1], label, color="white", ha="center", va="center",
-                  fontsize=9, rotation=np.degrees(angle), rotation_mode="anchor")
+        axes.text(center[0], center[1], label, color=_label_colour(color), ha="center",
+                  va="center", fontsize=9, rotation=np.degrees(angle),
+                  rotation_mode="anchor")
+
+
+def _label_colour(face) -> str:
+    """White or black, whichever contrasts more with the colour ``face`` (WCAG 2.1
+    relative luminance), for a label written on it."""
+    from matplotlib.colors import to_rgb
+
+    def linear(c):
+        return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
+
+    red, green, blue = (linear(c) for c in to_rgb(face))
+    luminance = 0.2126 * red + 0.7152 * green + 0.0722 * blue
+    return "white" if 1.05 / (luminance + 0.05) >= (luminance + 0.05) / 0.05 else "black"
 
 
 def pivot(axes, point, size: float) -> None:

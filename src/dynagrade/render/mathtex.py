@@ -268,11 +268,39 @@ def unknown_commands(tex: str) -> tuple[str, ...]:
 
 
 def to_mathml(tex: str, display: bool = False) -> str:
-    """``tex`` as a MathML Core ``<math>`` element (no scripts, no network)."""
+    """``tex`` as a MathML Core ``<math>`` element (no scripts, no network).
+
+    There is no ``alttext``: a screen reader speaks the MathML itself, and the TeX source
+    would be read out as "backslash frac"."""
     body = _mathml(parse(tex))
     mode = "block" if display else "inline"
-    return (f'<math display="{mode}" alttext="{html.escape(tex.strip(), quote=True)}">'
-            f"{body}</math>")
+    return f'<math display="{mode}">{body}</math>'
+
+
+def _bold_character(char: str) -> str:
+    """``char`` as its Mathematical Bold character (U+1D400 and following), so that bold
+    survives without CSS and a screen reader says "bold r"; other characters unchanged."""
+    code = ord(char)
+    if "A" <= char <= "Z":
+        return chr(0x1D400 + code - ord("A"))
+    if "a" <= char <= "z":
+        return chr(0x1D41A + code - ord("a"))
+    if "0" <= char <= "9":
+        return chr(0x1D7CE + code - ord("0"))
+    if 0x391 <= code <= 0x3A9:
+        return chr(0x1D6B9) if code == 0x3A2 else chr(0x1D6A8 + code - 0x391)
+    if 0x3B1 <= code <= 0x3C9:
+        return chr(0x1D6C2 + code - 0x3B1)
+    return _BOLD_SYMBOLS.get(char, char)
+
+
+_BOLD_SYMBOLS = {"∇": "\U0001D6C1", "∂": "\U0001D6DB", "ϵ": "\U0001D6DC", "ϑ": "\U0001D6DD",
+                 "ϰ": "\U0001D6DE", "ϕ": "\U0001D6DF", "ϱ": "\U0001D6E0", "ϖ": "\U0001D6E1"}
+
+
+def bold_text(text: str) -> str:
+    """``text`` in Mathematical Bold characters (see :func:`_bold_character`)."""
+    return "".join(_bold_character(char) for char in text)
 
 
 def _mathml(node: MathNode) -> str:
@@ -282,7 +310,7 @@ def _mathml(node: MathNode) -> str:
     if kind == "ident":
         text = html.escape(node.text, quote=False)
         if node.style == "bold":
-            return f'<mi style="font-weight:bold">{text}</mi>'
+            return f'<mi mathvariant="bold">{bold_text(text)}</mi>'
         if node.style in ("upright", "function") and len(node.text) == 1:
             return f'<mi mathvariant="normal">{text}</mi>'
         return f"<mi>{text}</mi>"

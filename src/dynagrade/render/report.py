@@ -125,7 +125,7 @@ def items_svg(stats) -> str:
     axes.set_yticks(positions, labels, fontsize=7)
     axes.set_xlim(-0.5, 1.0)
     axes.axvline(0, color="0.3", lw=0.6)
-    axes.legend(fontsize=7, loc="lower right")
+    axes.legend(fontsize=7, loc="lower right", edgecolor="0.4")
     values = [f"{s.exercise_id} {s.part}: difficulty {_stat(s.difficulty)}, "
               f"point-biserial {_stat(s.point_biserial)}" for s in stats]
     description = ("Horizontal bar chart, two bars per part (difficulty, blue; point-"
