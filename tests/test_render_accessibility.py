@@ -495,3 +495,28 @@ def test_the_pdf_is_tagged_in_the_exam_language_with_alternative_text_on_figures
     params = outputs["manifest"]["students"][0]["variants"][0]["params"]
     looping = next(a for a in alternatives if a.startswith("Car in a looping"))
     assert f"R = {params['R']:g} m" in looping and "counter-clockwise" in looping
+
+
+def test_the_pdf_declares_pdf_ua_1_which_typst_checked(outputs):
+    objects = _pdf_objects(outputs["out"] / "students" / "s-0" / "sheet.pdf")
+    assert re.search(rb"<pdfuaid:part>1</pdfuaid:part>|pdfuaid:part=\"1\"", objects)
+
+
+def test_every_exercise_of_the_bank_makes_a_pdf_ua_1_sheet(bank):
+    """typst refuses a PDF/UA-1 document with an image or an equation without alternative
+    text; every statement and figure of the bank passes, so no exam can fail on it."""
+    from dynagrade.render.pdf import ACCESSIBLE, compile_pdf
+    from dynagrade.render.sheets import (SheetExercise, StudentSheet, sheet_typst_body,
+                                         typst_preamble)
+
+    exam = {"id": "bank", "title": "Every exercise", "date": "2025-04-14",
+            "instructions": "Use $\\mathbf{r}$.", "language": "en"}
+    exercises = []
+    for number, exercise in enumerate(bank.all(), 1):
+        variant = exercise.variant(0)
+        exercises.append(SheetExercise(number, exercise.id, exercise.title, exercise.source,
+                                       1.0, variant.statement, (), f"{exercise.id}.py",
+                                       figure_svg(exercise, variant)))
+    sheet = StudentSheet(exam, "x-1", "Every Exercise", tuple(exercises))
+    pdf = compile_pdf(typst_preamble(exam) + sheet_typst_body(sheet), standards=ACCESSIBLE)
+    assert pdf.startswith(b"%PDF")

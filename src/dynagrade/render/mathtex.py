@@ -4,12 +4,15 @@ Statements write math between dollar signs in the TeX subset that physics statem
 need: letters and numbers, Greek letters, sub- and superscripts, ``\\frac``, ``\\sqrt``,
 ``\\mathrm``/``\\text``/``\\mathbf``, accents (``\\dot``, ``\\vec``, ...), common
 operators and function names, and spacing. One parser turns it into a small tree that
-two writers print: MathML Core (which browsers lay out natively) and typst math.
+three writers print: MathML Core (which browsers lay out natively), typst math, and a
+spoken form (the alternative text of an equation in a tagged PDF).
 
 Usage::
 
     to_mathml(r"x_{1,\\max} = \\frac{v_0^2}{g}")   # '<math ...>...</math>'
     to_typst(r"\\alpha = 30")                     # 'α = 30'
+    to_speech(r"\\mathbf{r} = \\frac{a}{2}")       # 'bold r equals fraction a over 2 end
+                                                 #  fraction'
 
 A command outside the subset is shown as its own text, and listed by :func:`unknown_commands`
 so that an author can be told.
@@ -22,7 +25,7 @@ import re
 from dataclasses import dataclass, field
 from functools import lru_cache
 
-__all__ = ["parse", "to_mathml", "to_typst", "unknown_commands", "MathNode"]
+__all__ = ["parse", "to_mathml", "to_typst", "to_speech", "unknown_commands", "MathNode"]
 
 _GREEK = {
     "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ϵ",
@@ -350,6 +353,63 @@ def _wrapped(node: MathNode) -> str:
     """A node as exactly one MathML element (an argument of mfrac, mroot, mover)."""
     text = _mathml(node)
     return text if node.kind != "row" or text.startswith("<mrow>") else f"<mrow>{text}</mrow>"
+
+
+# -- spoken form --------------------------------------------------------------------------
+
+_SPOKEN_OPERATORS = {
+    "=": "equals", "+": "plus", "−": "minus", "±": "plus or minus", "⋅": "times",
+    "×": "cross", "/": "over", "<": "is less than", ">": "is greater than",
+    "≤": "is less than or equal to", "≥": "is greater than or equal to",
+    "≠": "is not equal to", "≈": "is approximately", "→": "to", "∝": "is proportional to",
+    "′": "prime", "°": "degrees", "∑": "sum", "∫": "integral", "∥": "parallel to",
+    "⊥": "perpendicular to", "≪": "is much less than", "≫": "is much greater than",
+}
+_SPOKEN_ACCENTS = {"˙": "{} dot", "¨": "{} double dot", "→": "vector {}", "^": "{} hat",
+                   "¯": "{} bar", "~": "{} tilde", "ˇ": "{} check", "˘": "{} breve"}
+_SPOKEN_POWERS = {"2": "squared", "3": "cubed"}
+
+
+def to_speech(tex: str) -> str:
+    """``tex`` read out in English words, as a screen reader would say it ("v sub 0
+    squared over 2 g"); symbols it has no word for are kept."""
+    return " ".join(_speech(parse(tex)).split())
+
+
+def _speech(node: MathNode) -> str:
+    kind = node.kind
+    if kind == "row":
+        return " ".join(_speech(c) for c in node.children)
+    if kind == "ident":
+        return f"bold {node.text}" if node.style == "bold" else node.text
+    if kind in ("number", "text"):
+        return node.text
+    if kind == "op":
+        return _SPOKEN_OPERATORS.get(node.text, node.text)
+    if kind == "space":
+        return ""
+    if kind == "script":
+        base, sub, sup = node.children
+        words = _speech(base)
+        if sub is not None:
+            words += f" sub {_speech(sub)}"
+        if sup is not None:
+            power = _speech(sup)
+            words += " " + (_SPOKEN_POWERS.get(power) or
+                            (power if power == "prime" else f"to the power {power} end power"))
+        return words
+    if kind == "frac":
+        numerator, denominator = (_speech(c) for c in node.children)
+        return f"fraction {numerator} over {denominator} end fraction"
+    if kind == "sqrt":
+        if len(node.children) == 2:
+            return (f"root of index {_speech(node.children[1])} of "
+                    f"{_speech(node.children[0])} end root")
+        return f"square root of {_speech(node.children[0])} end root"
+    if kind == "accent":
+        return _SPOKEN_ACCENTS.get(node.text, "{} " + node.text).format(
+            _speech(node.children[0]))
+    raise ValueError(f"unknown math node {kind!r}")
 
 
 # -- typst --------------------------------------------------------------------------------
