@@ -47,15 +47,17 @@ def sentence_list(items: list[str]) -> str:
 
 def figure_description(figure) -> str:
     """The description of an exercise figure: the author's sentences, then what the
-    drawing helpers drew (with directions), then every text label it shows."""
+    drawing helpers drew (with directions and their labels), then every other text
+    label it shows."""
     from ..exercise.figure import figure_notes
 
     notes = figure_notes(figure)
     sentences = [s if s.endswith(".") else s + "." for s in notes["author"]]
-    if notes["drawn"]:
-        drawn = sentence_list(notes["drawn"])
-        sentences.append("Drawn: " + drawn + ".")
-    labels = figure_labels(figure)
+    drawn = "; ".join(notes["drawn"])
+    if drawn:
+        sentences.append(f"Drawn: {drawn}.")
+    labels = [label for label in figure_labels(figure)
+              if not re.search(rf"(?<!\w){re.escape(label)}(?!\w)", drawn)]
     if labels:
         sentences.append("Labels: " + "; ".join(labels) + ".")
     return " ".join(sentences) or "A figure without labels."
