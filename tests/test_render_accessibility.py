@@ -159,6 +159,44 @@ def test_at_phone_width_a_page_does_not_scroll_sideways(outputs, browser, kind):
     assert overflow <= 0
 
 
+# -- the language follows the spec ----------------------------------------------------------
+
+
+def test_the_language_is_read_from_the_spec_english_by_default(tmp_path):
+    from dynagrade.exam.spec import ExamSpecError, read_exam_spec
+
+    exam = tmp_path / "exam.toml"
+    exam.write_text(EXAM, encoding="utf-8")
+    assert read_exam_spec(exam).language == "de"
+    exam.write_text(EXAM.replace('language = "de"\n', ""), encoding="utf-8")
+    assert read_exam_spec(exam).language == "en"
+    exam.write_text(EXAM.replace('"de"', '"Deutsch"'), encoding="utf-8")
+    with pytest.raises(ExamSpecError, match=r"line 4, field 'language': 'Deutsch' is not a "
+                                            r"language tag"):
+        read_exam_spec(exam)
+
+
+def test_the_manifest_keeps_the_language_and_reads_older_manifests_as_english(outputs):
+    from dynagrade.exam.manifest import from_dict, to_dict
+
+    data = outputs["manifest"]
+    assert data["exam"]["language"] == "de"
+    assert from_dict(data).exam.language == "de"
+    older = json.loads(json.dumps(data))
+    del older["exam"]["language"]
+    assert from_dict(older).exam.language == "en"
+    assert "language" not in to_dict(from_dict(older))["exam"]
+
+
+def test_an_english_sheet_says_en_and_a_swiss_german_pdf_de_ch():
+    from dynagrade.render.sheets import StudentSheet, sheet_html, typst_preamble
+
+    exam = {"id": "e", "title": "T", "date": "2025-04-14", "instructions": ""}
+    assert '<html lang="en">' in sheet_html(StudentSheet(exam, "s", "S", ()))
+    preamble = typst_preamble({**exam, "language": "de-CH"})
+    assert 'lang: "de", region: "CH"' in preamble
+
+
 # -- what axe cannot see ------------------------------------------------------------------
 
 

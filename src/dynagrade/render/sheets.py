@@ -146,7 +146,7 @@ def typst_preamble(exam: dict, title: str | None = None) -> str:
     reproduce)."""
     return render_template("preamble.typ", exam=exam, title=title or exam["title"],
                            date=typst_date(exam["date"]),
-                           language=typst_language(exam.get("language", "en")))
+                           language=typst_language(exam.get("language") or "en"))
 
 
 def sheet_typst_body(sheet: StudentSheet) -> str:
