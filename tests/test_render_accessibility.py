@@ -558,3 +558,12 @@ def test_every_exercise_of_the_bank_makes_a_pdf_ua_1_sheet(bank):
     sheet = StudentSheet(exam, "x-1", "Every Exercise", tuple(exercises))
     pdf = compile_pdf(typst_preamble(exam) + sheet_typst_body(sheet), standards=ACCESSIBLE)
     assert pdf.startswith(b"%PDF")
+
+
+def test_a_vector_verdict_says_right_or_wrong_beside_its_marks():
+    """"✓" and "✗" alone are read as "check mark" and "ballot x"; the words come along."""
+    from dynagrade.grading import VectorSpec, grade
+
+    verdict = grade(VectorSpec(2, unit="m/s"), (1.2, -3.4), "(1.2, 5) m/s")
+    assert not verdict.correct and verdict.score == 0.5
+    assert "(1: ✓ right, 2: ✗ wrong)" in verdict.feedback
