@@ -234,7 +234,7 @@ def build_manifest(spec: ExamSpec, exercises: dict[str, Exercise],
         for item in spec.exercises)
     exam = ExamEntry(spec.id, spec.title, spec.date, spec.instructions, spec.total_points,
                      spec.policy.to_json() if spec.policy != type(spec.policy)() else None,
-                     secret=spec.secret or None)
+                     language=spec.language, secret=spec.secret or None)
     return Manifest(Generator(_version(), numpy.__version__), exam, described,
                     tuple(students))
 

@@ -15,7 +15,8 @@ Usage::
 Shape (``docs/exams.md`` shows a whole file)::
 
     Manifest        format, version, generator, exam, exercises[], students[]
-    ExamEntry       id, title, date, instructions, [policy], points, [secret]
+    ExamEntry       id, title, date, instructions, [policy], [language], points,
+                    [secret]
     ExerciseEntry   id, title, source, points, set, file, sha256, parts[]
     PartEntry       name, label, kind, unit, points, and the settings its kind
                     stores (``Part.manifest_fields``: rtol/atol, size, options/multiple)
@@ -152,6 +153,7 @@ class ExamEntry:
     instructions: str
     points: float
     policy: Mapping[str, Any] | None = None
+    language: str = "en"  # written only when not "en"
     secret: str | None = None
 
 
@@ -208,6 +210,8 @@ def _exam_dict(exam: ExamEntry) -> dict:
              "instructions": exam.instructions}
     if exam.policy is not None:
         entry["policy"] = dict(exam.policy)
+    if exam.language != "en":
+        entry["language"] = exam.language
     entry["points"] = exam.points
     if exam.secret is not None:
         entry["secret"] = exam.secret
@@ -286,6 +290,7 @@ def from_dict(data: Any) -> Manifest:
         exam=ExamEntry(exam.string("id"), exam.string("title"), exam.string("date"),
                        exam.string("instructions"), exam.number("points"),
                        exam.mapping("policy", optional=True),
+                       exam.string("language") if "language" in exam.data else "en",
                        exam.string("secret") if "secret" in exam.data else None),
         exercises=tuple(_exercise(item) for item in root.objects("exercises")),
         students=tuple(_student(item) for item in root.objects("students")),
