@@ -146,7 +146,7 @@ def test_every_written_solution_shows_each_parts_key_answer_at_two_seeds(exercis
         text = render_solution(exercise, variant)
         for part in exercise.parts:
             assert part.shown_answer(variant.answers[part.name]) in text, (seed, part.name)
-        for error_sign in ("Undefined", "Traceback", "{{", "}}", "{%"):
+        for error_sign in ("Undefined", "Traceback", "{{", "{%"):
             assert error_sign not in text, (seed, error_sign)
         assert not re.search(r"\b(nan|inf)\b", text), seed
         assert solution_problems(exercise, variant) == [], seed

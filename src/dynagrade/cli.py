@@ -222,19 +222,24 @@ def grade_command(context, files, as_json, manifest, output, jobs):
 @click.option("--jobs", type=click.IntRange(1), default=None,
               help="Worker processes (default: up to 2).")
 @click.option("--no-pdf", is_flag=True, help="Skip the PDFs (faster drafts).")
+@click.option("--solutions", is_flag=True,
+              help="Write each student's worked solutions (students/<id>/solution.*) and "
+                   "solutions.pdf with all of them, for the staff.")
 @click.pass_obj
-def exam(context, exam_file, roster, output, jobs, no_pdf):
+def exam(context, exam_file, roster, output, jobs, no_pdf, solutions):
     """Generate an exam: every student's variants, sheets, keys, Moodle XML, manifest."""
     from .exam.generate import generate_exam
     from .exam.spec import ExamSpecError
     from .exam.variants import NoUsableVariant
+    from .exercise.solution import SolutionError
     from .render.terminal import progress_reporter
 
     try:
         with progress_reporter() as progress:
             report = generate_exam(exam_file, roster, output, bank=context.bank, jobs=jobs,
-                                   pdf=not no_pdf, progress=progress)
-    except (ExamSpecError, NoUsableVariant, loader.ExerciseFileError) as error:
+                                   pdf=not no_pdf, progress=progress, solutions=solutions)
+    except (ExamSpecError, NoUsableVariant, loader.ExerciseFileError,
+            SolutionError) as error:
         raise click.ClickException(str(error)) from None
     click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
                f"({report.redraws} draws replaced because they could not discriminate; see "
