@@ -213,7 +213,9 @@ def build_manifest(spec: ExamSpec, exercises: dict[str, Exercise],
                       "/".join(Path(exercises[item.id].path).parts[-2:]),
                       file_sha256(exercises[item.id].path), parts[item.id])
         for item in spec.exercises)
-    exam = ExamEntry(spec.id, spec.title, spec.date, spec.instructions, spec.total_points)
+    policy = {"solutions": spec.solutions} if spec.solutions else None
+    exam = ExamEntry(spec.id, spec.title, spec.date, spec.instructions, spec.total_points,
+                     policy)
     return Manifest(Generator(_version(), numpy.__version__), exam, described,
                     tuple(students))
 
