@@ -25,6 +25,7 @@ def solve(p):
         "a_rotated": rotations.actively_rotated_vector(rot, _vector(p)),
         "a_in_B": rotations.components_in_rotated_frame(rot, _vector(p)),
         "angle": rotations.rotation_angle(rot),
+        "trace_R": float(np.trace(rot)),
     }
 
 
@@ -63,6 +64,28 @@ $(a_1, a_2, a_3)$ = ({{ a1 }}, {{ a2 }}, {{ a3 }}).
 2. What are the components of the (unmoved) vector $a$ in the body frame $B$ after the
    turn (passive rotation)?
 3. By which single angle (between 0° and 180°) is the body turned in total?
+""",
+    solution=r"""
+A turn about a fixed axis that follows another multiplies its matrix from the left
+(rotation matrices, Section 3.4.1), so the combined turn is
+$$R = R_1(\beta)\,R_3(\gamma),\qquad
+R_3(\gamma) = \begin{pmatrix}\cos\gamma & -\sin\gamma & 0\\ \sin\gamma & \cos\gamma & 0\\ 0 & 0 & 1\end{pmatrix},\quad
+R_1(\beta) = \begin{pmatrix}1 & 0 & 0\\ 0 & \cos\beta & -\sin\beta\\ 0 & \sin\beta & \cos\beta\end{pmatrix},$$
+with $\gamma$ = {{ gamma }} and $\beta$ = {{ beta }}.
+
+1. **Active rotation.** The arrow turns with the body, so its new components in the fixed
+   frame are $a' = R\,a$. With $a$ = ({{ a1 }}, {{ a2 }}, {{ a3 }}):
+   $a' = R\,a$ = {{ answers.a_rotated }}.
+2. **Passive rotation.** The vector stays where it is and we ask for its components along
+   the turned axes $R\,e_i$: $a_i^B = (R\,e_i)\cdot a$, i.e. $a^B = R^{\mathsf T} a$:
+   $a^B = R^{\mathsf T} a$ = {{ answers.a_in_B }}.
+   Active and passive use differ: $R$ versus its inverse $R^{\mathsf T}$.
+3. **Total angle.** Every rotation is a single turn by an angle $\varphi$ about one axis,
+   and the trace of its matrix is $\operatorname{tr} R = 1 + 2\cos\varphi$. Here
+   $\operatorname{tr} R$ = {{ si.trace_R }}, so
+   $$\varphi = \arccos\frac{\operatorname{tr} R - 1}{2},$$
+   so the body is turned by $\varphi$ = {{ answers.angle }} in total.
+   The angles $\gamma$ and $\beta$ about different axes do not simply add.
 """,
     solve=solve,
     parts=(
