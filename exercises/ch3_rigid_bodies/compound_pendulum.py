@@ -83,8 +83,8 @@ O and the work-energy balance (Section 3.2.2), both with the moment of inertia a
    With $m_r$ = {{ m_r }}, $L$ = {{ L }}, $m_d$ = {{ m_d }} and $R$ = {{ R }}:
    $I_O$ = {{ answers.I_O }}.
 2. **Angular acceleration at release.** The centre of mass lies at
-   $$d_C = \frac{m_r L/2 + m_d L}{m_r + m_d}$$
-   = {{ si.d_C }} m below O. With the rod horizontal the weight's moment about O is $(m_r + m_d)\,g\,d_C$,
+   $$d_C = \frac{m_r L/2 + m_d L}{m_r + m_d},$$
+   here $d_C$ = {{ si.d_C }} m below O. With the rod horizontal the weight's moment about O is $(m_r + m_d)\,g\,d_C$,
    and $I_O\ddot\varphi = (m_r + m_d)\,g\,d_C$ gives
    $$\ddot\varphi = \frac{(m_r + m_d)\,g\,d_C}{I_O},$$
    so just after release $\ddot\varphi$ = {{ answers.alpha0 }}.

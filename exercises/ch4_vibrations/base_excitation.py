@@ -68,8 +68,8 @@ $m\ddot x + c(\dot x - \dot y) + k(x - y) = 0$.
 3. **Body amplitude.** With the frequency ratio $\eta = \Omega/\omega_n$ = {{ si.eta }} and
    the damping ratio $\zeta = c/(2\sqrt{k m})$ = {{ si.zeta }} ($c$ = {{ c }}), the steady
    state has the amplitude ratio (transmissibility)
-   $$\frac{X}{Y} = \sqrt{\frac{1 + (2\zeta\eta)^2}{(1 - \eta^2)^2 + (2\zeta\eta)^2}}$$
-   = {{ si.TR }}. With $Y$ = {{ Y }}: $X$ = {{ answers.X }}. Spring and damper both pass
+   $$\frac{X}{Y} = \sqrt{\frac{1 + (2\zeta\eta)^2}{(1 - \eta^2)^2 + (2\zeta\eta)^2}},$$
+   here $X/Y$ = {{ si.TR }}. With $Y$ = {{ Y }}: $X$ = {{ answers.X }}. Spring and damper both pass
    the road's motion on, hence the $(2\zeta\eta)^2$ in the numerator.
 """,
     solve=solve,

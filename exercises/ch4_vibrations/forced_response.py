@@ -60,8 +60,8 @@ and $\Omega$ = {{ Omega }}.
 
 1. **Amplitude.** The amplitude is the static deflection $F_0/k$ times the amplification
    factor
-   $$V = \frac{1}{\sqrt{(1 - \eta^2)^2 + (2\zeta\eta)^2}}$$
-   = {{ si.V }}, so with $F_0$ = {{ F0 }}: $X = \frac{F_0}{k}V$ = {{ answers.X }}.
+   $$V = \frac{1}{\sqrt{(1 - \eta^2)^2 + (2\zeta\eta)^2}},$$
+   here $V$ = {{ si.V }}, so with $F_0$ = {{ F0 }}: $X = \frac{F_0}{k}V$ = {{ answers.X }}.
 2. **Phase lag.** $$\tan\varphi = \frac{2\zeta\eta}{1 - \eta^2},$$ with $\varphi$ between
    0° and 90° below resonance ($\eta < 1$) and between 90° and 180° above it:
    $\varphi$ = {{ answers.phi }}.
