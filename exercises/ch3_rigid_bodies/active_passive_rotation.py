@@ -68,10 +68,11 @@ $(a_1, a_2, a_3)$ = ({{ a1 }}, {{ a2 }}, {{ a3 }}).
     solution=r"""
 A turn about a fixed axis that follows another multiplies its matrix from the left
 (rotation matrices, Section 3.4.1), so the combined turn is
-$$R = R_1(\beta)\,R_3(\gamma),\qquad
-R_3(\gamma) = \begin{pmatrix}\cos\gamma & -\sin\gamma & 0\\ \sin\gamma & \cos\gamma & 0\\ 0 & 0 & 1\end{pmatrix},\quad
-R_1(\beta) = \begin{pmatrix}1 & 0 & 0\\ 0 & \cos\beta & -\sin\beta\\ 0 & \sin\beta & \cos\beta\end{pmatrix},$$
-with $\gamma$ = {{ gamma }} and $\beta$ = {{ beta }}.
+$$R = R_1(\beta)\,R_3(\gamma),$$
+with $\gamma$ = {{ gamma }} and $\beta$ = {{ beta }}. The columns of $R_3(\gamma)$ are the
+turned axes $(\cos\gamma, \sin\gamma, 0)$, $(-\sin\gamma, \cos\gamma, 0)$ and $(0, 0, 1)$;
+those of $R_1(\beta)$ are $(1, 0, 0)$, $(0, \cos\beta, \sin\beta)$ and
+$(0, -\sin\beta, \cos\beta)$.
 
 1. **Active rotation.** The arrow turns with the body, so its new components in the fixed
    frame are $a' = R\,a$. With $a$ = ({{ a1 }}, {{ a2 }}, {{ a3 }}):

@@ -47,10 +47,10 @@ $v = g t$ downward.
    the vertical turns a vertical velocity; the Coriolis acceleration points east and grows
    with the fall speed:
    $$\ddot x_{\mathrm{east}} = 2\,\Omega_E\cos\lambda\; g\,t .$$
-   Integrating twice from rest, $x_{\mathrm{east}}(t) = \tfrac13\,\Omega_E\,g\cos\lambda\;t^3$.
+   Integrating twice from rest, $x_{\mathrm{east}}(t) = \tfrac{1}{3}\,\Omega_E\,g\cos\lambda\;t^3$.
    The fall lasts $t_f = \sqrt{2h/g}$ = {{ si.t_fall }} s, so with $h$ = {{ h }},
    $\lambda$ = {{ lat }}, $\Omega_E$ = {{ Omega_E }} and $g$ = {{ g }}
-   $$d = \tfrac13\,\Omega_E\,g\cos\lambda\;t_f^{\,3},$$
+   $$d = \tfrac{1}{3}\,\Omega_E\,g\cos\lambda\;t_f^{\,3},$$
    and the stone lands $d$ = {{ answers.d }} east of the plumb line.
 2. **As a formula.** Inserting $t_f$:
    $$d = \frac{\Omega_E\,g\cos\lambda}{3}\left(\frac{2h}{g}\right)^{3/2},$$

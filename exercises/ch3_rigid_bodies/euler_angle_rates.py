@@ -59,10 +59,9 @@ where $e_1'$ is the line of nodes. To add them we need all three in the body fra
 1. **Body-frame components.** The spin axis is $e_3^B$ itself; the line of nodes has the
    components $(\cos\varphi, -\sin\varphi, 0)$; the vertical $e_3$ has
    $(\sin\theta\sin\varphi, \sin\theta\cos\varphi, \cos\theta)$. Hence
-   $$\omega^B = \begin{pmatrix}
-   \dot\psi\sin\theta\sin\varphi + \dot\theta\cos\varphi\\
-   \dot\psi\sin\theta\cos\varphi - \dot\theta\sin\varphi\\
-   \dot\psi\cos\theta + \dot\varphi\end{pmatrix}.$$
+   $$\omega_1^B = \dot\psi\sin\theta\sin\varphi + \dot\theta\cos\varphi,\qquad
+   \omega_2^B = \dot\psi\sin\theta\cos\varphi - \dot\theta\sin\varphi,\qquad
+   \omega_3^B = \dot\psi\cos\theta + \dot\varphi .$$
    With $\theta$ = {{ theta }}, $\varphi$ = {{ phi }}, $\dot\psi$ = {{ psi_dot }},
    $\dot\theta$ = {{ theta_dot }} and $\dot\varphi$ = {{ phi_dot }}:
    $\omega^B$ = {{ answers.omega_body }}.

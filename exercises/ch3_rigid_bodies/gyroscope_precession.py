@@ -54,8 +54,8 @@ change $\dot\psi\,e_3\times H$ equals the moment (gyroscope, Section 3.5.2).
 
 1. **Spin angular momentum.** The disk spins about its axis of symmetry with
    $\omega_s = 2\pi n$ = {{ si.omega_spin }} rad/s ($n$ = {{ n }}), and its axial moment of
-   inertia is $I_3 = \tfrac12 m R^2$ = {{ si.I3 }} kg·m² ($m$ = {{ m }}, $R$ = {{ R }}). So
-   $$H = I_3\,\omega_s = \tfrac12 m R^2\,\omega_s,$$
+   inertia is $I_3 = \tfrac{1}{2} m R^2$ = {{ si.I3 }} kg·m² ($m$ = {{ m }}, $R$ = {{ R }}). So
+   $$H = I_3\,\omega_s = \tfrac{1}{2} m R^2\,\omega_s,$$
    which gives $H$ = {{ answers.H }}.
 2. **Precession rate.** The weight acts at $l$ = {{ l }} from the pivot, so its moment is
    $M = m g l$, horizontal and normal to the axle. With the axle horizontal,

@@ -113,7 +113,7 @@ the rod, so we use the impulse balances of an eccentric impact on a body pinned 
 together with the coefficient of restitution (impact of rigid bodies, Section 3.3).
 
 **Moment of inertia and impulse.** About its end the rod has
-$I_O = \tfrac13 M L^2$ = {{ si.I_O }} kg·m² ($M$ = {{ M }}, $L$ = {{ L }}). The ball
+$I_O = \tfrac{1}{3} M L^2$ = {{ si.I_O }} kg·m² ($M$ = {{ M }}, $L$ = {{ L }}). The ball
 changes its momentum by $-\hat F$; the rod its angular momentum about O by $\hat F d$:
 $$m v' = m v - \hat F,\qquad I_O\,\omega = \hat F d .$$
 Restitution says the hit point of the rod, moving at $\omega d$, separates from the ball
@@ -131,7 +131,7 @@ $v$ = {{ v }}, $d$ = {{ d }} and $e$ = {{ e }}: $\hat F$ = {{ si.impulse }} N·s
    that is $|\hat R|$ = {{ answers.R_pivot }}.
 4. **Centre of percussion.** The pivot impulse vanishes when
    $M\,\frac{L}{2}\,\frac{\hat F d}{I_O} = \hat F$, i.e.
-   $$d_P = \frac{I_O}{M\,L/2} = \tfrac23 L,$$
+   $$d_P = \frac{I_O}{M\,L/2} = \tfrac{2}{3} L,$$
    so $d_P$ = {{ answers.d_percussion }}, whatever the ball and its speed.
 """,
     solve=solve,

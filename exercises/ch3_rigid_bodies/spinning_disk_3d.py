@@ -60,7 +60,7 @@ $\Omega$ = {{ Omega }}, $d$ = {{ d }}, $R$ = {{ R }}, $\gamma$ = {{ gamma }}.
    that is $\omega$ = {{ answers.omega_vec }}.
 2. **Velocity of P.** O is fixed, so $v_P = \omega\times r_{OP}$ with
    $r_{OP} = (d,\; R\sin\gamma,\; R\cos\gamma)$:
-   $$v_P = \begin{pmatrix} -\Omega R\sin\gamma\\ \Omega d - \omega_s R\cos\gamma\\ \omega_s R\sin\gamma\end{pmatrix},$$
+   $$v_P = \bigl(-\Omega R\sin\gamma,\;\; \Omega d - \omega_s R\cos\gamma,\;\; \omega_s R\sin\gamma\bigr),$$
    that is $v_P$ = {{ answers.v_P }}. Both rotations must be in $\omega\times r$: with
    the spin alone the axle's turning would be missing.
 3. **Speed.** $|v_P| = \sqrt{v_1^2 + v_2^2 + v_3^2}$ = {{ answers.speed }}.

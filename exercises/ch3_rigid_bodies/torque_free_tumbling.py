@@ -69,8 +69,8 @@ rotation, Section 3.4.4).
 
 1. **Principal moments.** The body axes through the centre are principal axes of the box;
    about each the moment is $m/12$ times the sum of the squares of the two other edges:
-   $$I_1 = \tfrac1{12} m (b^2 + c^2),\quad I_2 = \tfrac1{12} m (a^2 + c^2),\quad
-   I_3 = \tfrac1{12} m (a^2 + b^2).$$
+   $$I_1 = \tfrac{1}{12} m (b^2 + c^2),\quad I_2 = \tfrac{1}{12} m (a^2 + c^2),\quad
+   I_3 = \tfrac{1}{12} m (a^2 + b^2).$$
    With $m$ = {{ m }}, $a$ = {{ a }}, $b$ = {{ b }} and $c$ = {{ c }}: $I_1$ = {{ si.I_1 }},
    $I_2$ = {{ si.I_2 }} and $I_3$ = {{ si.I_3 }} kg·m². The largest is
    $I_{\max}$ = {{ answers.I_max }}, about {{ si.axis_max }}.

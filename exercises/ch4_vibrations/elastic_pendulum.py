@@ -76,11 +76,11 @@ from the downward vertical); $g$ = {{ g }}.
     solution=r"""
 A holonomic system with the two coordinates $r$, $\varphi$: Lagrange's equations from
 $T$ and $V$, the equilibrium where $\partial V/\partial q = 0$, and the linearisation about
-it (Sections 4.1 and 4.2).
+it (Section 4.1; equilibrium and linearisation, Section 4.2).
 
 1. **Lagrange equations.** In polar coordinates
-   $$T = \tfrac12 m\bigl(\dot r^2 + r^2\dot\varphi^2\bigr),\qquad
-   V = \tfrac12 k (r - L_0)^2 - m g r\cos\varphi .$$
+   $$T = \tfrac{1}{2} m\bigl(\dot r^2 + r^2\dot\varphi^2\bigr),\qquad
+   V = \tfrac{1}{2} k (r - L_0)^2 - m g r\cos\varphi .$$
    For $r$: $\frac{d}{dt}\frac{\partial T}{\partial\dot r} - \frac{\partial T}{\partial r}
    + \frac{\partial V}{\partial r} = m\ddot r - m r\dot\varphi^2 + k(r - L_0) - m g\cos\varphi = 0$;
    for $\varphi$: $m r^2\ddot\varphi + 2 m r\dot r\dot\varphi + m g r\sin\varphi = 0$. The

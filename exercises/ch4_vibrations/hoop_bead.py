@@ -55,7 +55,7 @@ point of the hoop, measured at the hoop's centre.
 Seen from the spinning hoop the bead has one degree of freedom, $\theta$, and moves in the
 effective potential of gravity and the centrifugal term (equilibrium and stability,
 Section 4.2):
-$$V^*(\theta) = -m g R\cos\theta - \tfrac12 m R^2\Omega^2\sin^2\theta .$$
+$$V^*(\theta) = -m g R\cos\theta - \tfrac{1}{2} m R^2\Omega^2\sin^2\theta .$$
 Equilibria are where $V^{*\prime} = m R\sin\theta\,(g - R\Omega^2\cos\theta) = 0$; they are
 stable where $V^{*\prime\prime} = m R\,(g\cos\theta - R\Omega^2\cos 2\theta) > 0$.
 Here $m$ = {{ m }}, $R$ = {{ R }}, $g$ = {{ g }} and $\Omega$ = {{ Omega }} = {{ si.Omega }} rad/s.

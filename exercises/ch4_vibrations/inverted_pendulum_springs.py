@@ -67,7 +67,7 @@ $J\ddot\theta + V''(0)\,\theta = 0$ (equilibrium and stability, Section 4.2).
 
 1. **Potential energy.** The centre of mass is at height $\tfrac{L}{2}\cos\theta$; each
    spring is stretched (or compressed) by $a\sin\theta$:
-   $$V(\theta) = \frac{m g L}{2}\cos\theta + 2\cdot\tfrac12 k\,(a\sin\theta)^2,$$
+   $$V(\theta) = \frac{m g L}{2}\cos\theta + 2\cdot\tfrac{1}{2} k\,(a\sin\theta)^2,$$
    written as `{{ answers.V }}`.
 2. **Smallest stiffness.** $V'(0) = 0$, and
    $$V''(0) = 2 k a^2 - \frac{m g L}{2}$$
@@ -75,7 +75,7 @@ $J\ddot\theta + V''(0)\,\theta = 0$ (equilibrium and stability, Section 4.2).
    $$k_{\min} = \frac{m g L}{4 a^2};$$
    with $m$ = {{ m }}, $L$ = {{ L }}, $a$ = {{ si.a }} m and $g$ = {{ g }}:
    $k_{\min}$ = {{ answers.k_min }}.
-3. **Small oscillations.** The rod turns about its end, $J = \tfrac13 m L^2$, and with
+3. **Small oscillations.** The rod turns about its end, $J = \tfrac{1}{3} m L^2$, and with
    $k$ = {{ k }}
    $$\omega = \sqrt{\frac{V''(0)}{J}} = \sqrt{\frac{2 k a^2 - m g L/2}{m L^2/3}},$$
    that is $\omega$ = {{ answers.omega }}.

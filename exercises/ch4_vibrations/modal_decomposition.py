@@ -67,8 +67,8 @@ The equations of motion $\mathbf M\ddot x + \mathbf K x = 0$ decouple in modal c
 the free motion is a sum of the modes, each oscillating at its own natural frequency with
 an amplitude fixed by the initial state (modal decomposition, Section 4.4.4).
 
-1. **Natural frequencies.** With $\mathbf M = m\,\mathbf I$ and
-   $\mathbf K = \begin{pmatrix} k + k_c & -k_c\\ -k_c & k + k_c\end{pmatrix}$,
+1. **Natural frequencies.** With $\mathbf M = m\,\mathbf I$ and the stiffness matrix
+   $K_{11} = K_{2 2} = k + k_c$, $K_{12} = K_{2 1} = -k_c$,
    $\det(\mathbf K - \omega^2\mathbf M) = 0$ gives the in-phase mode $(1, 1)$, which does not
    stretch the coupling spring, and the opposite-phase mode $(1, -1)$, which stretches it
    twice:
@@ -77,8 +77,7 @@ an amplitude fixed by the initial state (modal decomposition, Section 4.4.4).
    and $\omega_2$ = {{ answers.omega2 }}.
 2. **Modal amplitudes.** Released from rest, each mode moves as $\cos\omega_i t$. The
    initial displacement splits into the modes:
-   $$\begin{pmatrix} a\\ 0\end{pmatrix} = \frac a2\begin{pmatrix} 1\\ 1\end{pmatrix}
-   + \frac a2\begin{pmatrix} 1\\ -1\end{pmatrix},$$
+   $$(a,\; 0) = \frac a2\,(1,\; 1) + \frac a2\,(1,\; -1),$$
    so the first mode carries $A_1 = a/2$ = {{ answers.A1 }} of $x_1$ ($a$ = {{ a }}).
 3. **Displacements at $t_1$.** Adding the modes,
    $$x_1(t) = \frac a2\bigl(\cos\omega_1 t + \cos\omega_2 t\bigr),\qquad

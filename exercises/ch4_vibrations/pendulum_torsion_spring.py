@@ -71,7 +71,7 @@ hanging position.
 
 1. **Equation of motion.** The mass moves on a circle of radius $L$; gravity and the
    torsional spring both store energy:
-   $$T = \tfrac12 m L^2\dot\theta^2,\qquad V = -m g L\cos\theta + \tfrac12 k_t\theta^2 .$$
+   $$T = \tfrac{1}{2} m L^2\dot\theta^2,\qquad V = -m g L\cos\theta + \tfrac{1}{2} k_t\theta^2 .$$
    Lagrange's equation gives $m L^2\ddot\theta + m g L\sin\theta + k_t\theta = 0$, so
    $$\ddot\theta = -\frac{g}{L}\sin\theta - \frac{k_t\,\theta}{m L^2},$$
    written as `{{ answers.theta_ddot }}`.

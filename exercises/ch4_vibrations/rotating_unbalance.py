@@ -112,7 +112,7 @@ motion is possible.
 The unbalance $m_u$ at eccentricity $e$ spinning at $\Omega$ shakes the machine with the
 vertical force $m_u e\,\Omega^2\cos\Omega t$: a harmonic forcing whose amplitude grows with
 $\Omega^2$ (rotating unbalance, Section 4.3.3). The operating speed is
-$n$ = {{ n }}, i.e. $\Omega = 2\pi n/60$ = {{ si.n }} rad/s.
+$n$ = {{ n }}, i.e. $\Omega$ = {{ si.n }} rad/s (one revolution is $2\pi$).
 
 1. **Critical speed.** Resonance when $\Omega = \omega_n = \sqrt{k/M}$; with $M$ = {{ M }} and
    $k$ = {{ k }}, $\omega_n$ = {{ si.n_crit }} rad/s, that is $n_{\mathrm{crit}}$ = {{ answers.n_crit }}.

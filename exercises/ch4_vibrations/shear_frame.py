@@ -104,8 +104,8 @@ in parallel (column stiffness, Section 5.1).
    $$k = n\,\frac{12 E I}{h^3},$$
    so $k$ = {{ answers.k }}.
 2. **Natural frequencies.** With $x_1$, $x_2$ the floor displacements,
-   $$\mathbf M = \begin{pmatrix} m_1 & 0\\ 0 & m_2\end{pmatrix},\qquad
-   \mathbf K = \begin{pmatrix} 2k & -k\\ -k & k\end{pmatrix},$$
+   the mass matrix is $\operatorname{diag}(m_1, m_2)$ and the stiffness matrix has
+   $K_{11} = 2k$ (both storeys resist $x_1$), $K_{12} = K_{2 1} = -k$ and $K_{2 2} = k$,
    and $\det(\mathbf K - \omega^2\mathbf M) = 0$ reads
    $$m_1 m_2\,\omega^4 - k\,(m_1 + 2m_2)\,\omega^2 + k^2 = 0 .$$
    With $m_1$ = {{ m1 }} and $m_2$ = {{ m2 }} its roots are $\omega_1$ = {{ si.omega1 }} rad/s

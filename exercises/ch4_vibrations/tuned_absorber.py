@@ -66,8 +66,8 @@ force; a second mass tuned to $\Omega$ can take up the force and keep the machin
 3. **Absorber amplitude.** Its spring force $k_a X_a$ must balance $F_0$:
    $|X_a| = F_0/k_a$ = {{ answers.X_a }}.
 4. **Natural frequencies with absorber.** With
-   $\mathbf K = \begin{pmatrix} k + k_a & -k_a\\ -k_a & k_a\end{pmatrix}$ and
-   $\mathbf M = \begin{pmatrix} m & 0\\ 0 & m_a\end{pmatrix}$,
+   the mass matrix $\operatorname{diag}(m, m_a)$ and the stiffness matrix
+   $K_{11} = k + k_a$, $K_{12} = K_{2 1} = -k_a$, $K_{2 2} = k_a$,
    $\det(\mathbf K - \omega^2\mathbf M) = 0$ gives two roots on either side of the
    operating frequency: $f_{\mathrm{low}}$ = {{ answers.f_low }} and
    $f_{\mathrm{high}}$ = {{ answers.f_high }}. The absorber splits the resonance in two,

@@ -63,11 +63,11 @@ Two rotors on a massless elastic shaft and no support moment: the system has a r
 mode ($\omega = 0$) and one torsional mode, in which the total angular momentum stays zero
 (multi-degree-of-freedom vibrations, Section 4.4.2).
 
-1. **Torsional stiffness.** For a solid circular shaft $I_p = \pi d^4/32$ = {{ si.I_p }} m⁴
+1. **Torsional stiffness.** For a solid circular shaft $I_p = \frac{\pi}{2}\bigl(\frac{d}{2}\bigr)^4$ = {{ si.I_p }} m⁴
    ($d$ = {{ d }}), and
    $$k_t = \frac{G I_p}{L},$$
    so with $G$ = {{ G }} and $L$ = {{ L }}: $k_t$ = {{ answers.kt }}.
-2. **Natural frequency.** The disks have $J_i = \tfrac12 m_i R_i^2$: $J_1$ = {{ si.J1 }} and
+2. **Natural frequency.** The disks have $J_i = \tfrac{1}{2} m_i R_i^2$: $J_1$ = {{ si.J1 }} and
    $J_2$ = {{ si.J2 }} kg·m² ($m_1$ = {{ m1 }}, $R_1$ = {{ R1 }}, $m_2$ = {{ m2 }},
    $R_2$ = {{ R2 }}). The equations $J_1\ddot\varphi_1 = k_t(\varphi_2 - \varphi_1)$ and
    $J_2\ddot\varphi_2 = -k_t(\varphi_2 - \varphi_1)$ give
