@@ -56,8 +56,8 @@ the spring carry the same force (series) or deform by the same amount (parallel)
 
 1. **Tip stiffness of the beam.** A cantilever under a tip force $F$ deflects
    $w = F L^3/(3EI)$, so
-   $$k_b = \frac{3 E I}{L^3},\qquad I = \frac{b h^3}{12}$$
-   = {{ si.I }} m⁴ (bent about the width, $b$ = {{ b }}, $h$ = {{ h }}). With $E$ = {{ E }}
+   $$k_b = \frac{3 E I}{L^3},\qquad I = \frac{b h^3}{12},$$
+   where $I$ = {{ si.I }} m⁴ (bent about the width, $b$ = {{ b }}, $h$ = {{ h }}). With $E$ = {{ E }}
    and $L$ = {{ L }}: $k_b$ = {{ answers.k_b }}.
 2. **Mass hanging on the spring.** Beam and spring carry the same force and their
    deflections add: springs in series,
@@ -66,8 +66,8 @@ the spring carry the same force (series) or deform by the same amount (parallel)
    $$f = \frac{1}{2\pi}\sqrt{\frac{k_s}{m}},$$
    that is $f$ = {{ answers.f_series }}. The softer element dominates.
 3. **Spring to the ground.** The mass's displacement deflects the beam and the spring by
-   the same amount and both push back: springs in parallel, $k_p = k_b + k$
-   = {{ si.k_parallel }} N/m, and $f = \frac{1}{2\pi}\sqrt{k_p/m}$ = {{ answers.f_parallel }}.
+   the same amount and both push back: springs in parallel, $k_p = k_b + k$ =
+   {{ si.k_parallel }} N/m, and $f = \frac{1}{2\pi}\sqrt{k_p/m}$ = {{ answers.f_parallel }}.
 """,
     solve=solve,
     parts=(

@@ -49,8 +49,8 @@ Here $\omega = 2\pi f$ = {{ si.omega }} rad/s ($f$ = {{ f }}), $EI = E\,b h^3/12
 $E$ = {{ E }}, $\rho$ = {{ rho }}).
 
 1. **Wavelength.** From the dispersion relation
-   $$k = \sqrt{\omega}\,\Bigl(\frac{\rho A}{EI}\Bigr)^{1/4}$$
-   = {{ si.k }} rad/m, and $\lambda = 2\pi/k$ = {{ answers.lam }}.
+   $$k = \sqrt{\omega}\,\Bigl(\frac{\rho A}{EI}\Bigr)^{1/4},$$
+   here $k$ = {{ si.k }} rad/m, and $\lambda = 2\pi/k$ = {{ answers.lam }}.
 2. **Phase speed.** $$c_p = \frac{\omega}{k} = \sqrt{\omega}\,\Bigl(\frac{EI}{\rho A}\Bigr)^{1/4},$$
    that is $c_p$ = {{ answers.c_p }}. It grows with $\sqrt\omega$: the beam is dispersive.
 3. **Group speed.** With $\omega = \sqrt{EI/(\rho A)}\;k^2$,

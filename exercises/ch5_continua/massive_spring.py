@@ -48,7 +48,7 @@ that of an effective mass moving with $m$ (effective mass, Section 5.2).
 
 1. **Effective mass.** A coil at distance $s$ from the fixed end (spring length $L$) moves
    with $\dot x\,s/L$, so
-   $$T_s = \tfrac12\int_0^L \frac{m_s}{L}\Bigl(\frac{s}{L}\,\dot x\Bigr)^2 ds = \tfrac12\,\frac{m_s}{3}\,\dot x^2 ,$$
+   $$T_s = \tfrac{1}{2}\int_0^L \frac{m_s}{L}\Bigl(\frac{s}{L}\,\dot x\Bigr)^2 ds = \tfrac{1}{2}\,\frac{m_s}{3}\,\dot x^2 ,$$
    and $m_{\mathrm{eff}} = m_s/3$ = {{ answers.m_eff }} ($m_s$ = {{ m_s }}).
 2. **Natural frequency.** One mass $m + m_s/3$ on the spring $k$:
    $$\omega = \sqrt{\frac{k}{m + m_s/3}};$$
