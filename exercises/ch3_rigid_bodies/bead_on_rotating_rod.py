@@ -58,7 +58,7 @@ to the rod, in the horizontal plane, the rod must supply the Coriolis term.
    $$\dot r(t) = r_0\,\Omega\sinh(\Omega t),$$
    so the bead slides outward at $\dot r$ = {{ answers.rdot_t }}.
 3. **Force of the rod.** Normal to the rod the relative acceleration is zero, so the rod's
-   force balances the Coriolis term $2m\,\Omega\times v_{\mathrm{rel}}$:
+   force balances the Coriolis term $2m\,\Omega\times v_{\mathrm{rel} }$:
    $$N = 2m\,\Omega\,\dot r,$$
    and with $m$ = {{ m }} the rod pushes with $N$ = {{ answers.N }}. It pushes the bead forward in the sense of rotation; the
    centrifugal term is along the rod and needs no force there.

@@ -91,7 +91,7 @@ O and the work-energy balance (Section 3.2.2), both with the moment of inertia a
 3. **Angular speed at the vertical.** From the horizontal to the vertical the centre of
    mass drops by $d_C$; the work of gravity becomes kinetic energy of rotation about O:
    $$\tfrac{1}{2} I_O\,\omega^2 = (m_r + m_d)\,g\,d_C
-   \quad\Rightarrow\quad \omega = \sqrt{\frac{2(m_r + m_d)\,g\,d_C}{I_O}},$$
+   \quad\Rightarrow\quad \omega = \sqrt{\frac{2(m_r + m_d)\,g\,d_C}{I_O} },$$
    and the rod passes the vertical at $\omega$ = {{ answers.omega_bottom }}.
 """,
     solve=solve,

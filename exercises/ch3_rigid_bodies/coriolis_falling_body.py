@@ -39,15 +39,15 @@ $\lambda$ = {{ lat }}. The Earth turns with $\Omega_E$ = {{ Omega_E }}; $g$ = {{
 """,
     solution=r"""
 In the frame of the rotating Earth the falling stone feels the Coriolis acceleration
-$-2\,\Omega_E\times v_{\mathrm{rel}}$ (relative motion in a rotating frame, Section 3.4.3).
+$-2\,\Omega_E\times v_{\mathrm{rel} }$ (relative motion in a rotating frame, Section 3.4.3).
 To first order in $\Omega_E$ we use the fall velocity of the non-rotating problem,
 $v = g t$ downward.
 
 1. **Deflection.** Only the component $\Omega_E\cos\lambda$ of the Earth's rate normal to
    the vertical turns a vertical velocity; the Coriolis acceleration points east and grows
    with the fall speed:
-   $$\ddot x_{\mathrm{east}} = 2\,\Omega_E\cos\lambda\; g\,t .$$
-   Integrating twice from rest, $x_{\mathrm{east}}(t) = \tfrac{1}{3}\,\Omega_E\,g\cos\lambda\;t^3$.
+   $$\ddot x_{\mathrm{east} } = 2\,\Omega_E\cos\lambda\; g\,t .$$
+   Integrating twice from rest, $x_{\mathrm{east} }(t) = \tfrac{1}{3}\,\Omega_E\,g\cos\lambda\;t^3$.
    The fall lasts $t_f = \sqrt{2h/g}$ = {{ si.t_fall }} s, so with $h$ = {{ h }},
    $\lambda$ = {{ lat }}, $\Omega_E$ = {{ Omega_E }} and $g$ = {{ g }}
    $$d = \tfrac{1}{3}\,\Omega_E\,g\cos\lambda\;t_f^{\,3},$$

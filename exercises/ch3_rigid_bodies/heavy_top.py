@@ -67,13 +67,13 @@ $\theta$ = {{ theta }}, $\omega_3$ = {{ w3 }} and $g$ = {{ g }}.
 
 1. **Smallest spin.** The quadratic in $\dot\psi$ has real roots only if its discriminant
    is not negative, $I_3^2\,\omega_3^2 \ge 4 I_1 m g l\cos\theta$:
-   $$\omega_{3,\min} = \frac{\sqrt{4 I_1 m g l\cos\theta}}{I_3},$$
+   $$\omega_{3,\min} = \frac{\sqrt{4 I_1 m g l\cos\theta} }{I_3},$$
    that is $\omega_{3,\min}$ = {{ answers.w_min }}.
 2. **Slow precession.** The smaller root,
-   $$\dot\psi_{\mathrm{slow}} = \frac{I_3\,\omega_3 - \sqrt{I_3^2\,\omega_3^2 - 4 I_1 m g l\cos\theta}}{2 I_1\cos\theta},$$
-   gives $\dot\psi_{\mathrm{slow}}$ = {{ answers.psi_slow }}.
+   $$\dot\psi_{\mathrm{slow} } = \frac{I_3\,\omega_3 - \sqrt{I_3^2\,\omega_3^2 - 4 I_1 m g l\cos\theta} }{2 I_1\cos\theta},$$
+   gives $\dot\psi_{\mathrm{slow} }$ = {{ answers.psi_slow }}.
 3. **Fast precession.** The larger root (plus sign in front of the square root) gives
-   $\dot\psi_{\mathrm{fast}}$ = {{ answers.psi_fast }}.
+   $\dot\psi_{\mathrm{fast} }$ = {{ answers.psi_fast }}.
 4. **Fast-top approximation.** For a fast top the term $I_1\dot\psi^2\cos\theta$ is small
    beside $I_3\,\omega_3\,\dot\psi$; dropping it leaves $m g l = \dot\psi\, I_3\,\omega_3$:
    $$\dot\psi \approx \frac{m g l}{I_3\,\omega_3},$$

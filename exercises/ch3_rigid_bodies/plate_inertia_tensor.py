@@ -85,7 +85,7 @@ $b$ = {{ b }}:
 5. **Smallest principal moment.** $e_3$ is a principal axis; the other two principal
    moments are the eigenvalues of the $2\times2$ block of $I_{11}$, $I_{12}$ and
    $I_{2 2} = \tfrac{1}{3} m a^2$,
-   $$I_{\min} = \frac{I_{11} + I_{2 2}}{2} - \sqrt{\Bigl(\frac{I_{11} - I_{2 2}}{2}\Bigr)^2 + I_{12}^2},$$
+   $$I_{\min} = \frac{I_{11} + I_{2 2} }{2} - \sqrt{\Bigl(\frac{I_{11} - I_{2 2} }{2}\Bigr)^2 + I_{12}^2},$$
    which gives $I_{\min}$ = {{ answers.I_min }}.
 """,
     solve=solve,

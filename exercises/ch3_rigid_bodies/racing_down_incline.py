@@ -76,11 +76,11 @@ $$a = \frac{g\sin\alpha}{1 + I_C/(m R^2)},\qquad F = \frac{I_C}{R^2}\,a .$$
 The three bodies differ only in $I_C/(mR^2)$: ½ for the cylinder, 2/5 for the sphere and
 1 for the hoop. Here $m$ = {{ m }}, $R$ = {{ R }}, $\alpha$ = {{ alpha }}, $g$ = {{ g }}.
 
-1. **Cylinder.** $a_{\mathrm{cyl}} = \frac{g\sin\alpha}{1 + 1/2} = \tfrac{2}{3} g\sin\alpha$,
-   so $a_{\mathrm{cyl}}$ = {{ answers.a_cyl }}.
-2. **Time of the sphere.** $a_{\mathrm{sph}} = \tfrac{5}{7} g\sin\alpha$ = {{ si.a_sphere }} m/s².
+1. **Cylinder.** $a_{\mathrm{cyl} } = \frac{g\sin\alpha}{1 + 1/2} = \tfrac{2}{3} g\sin\alpha$,
+   so $a_{\mathrm{cyl} }$ = {{ answers.a_cyl }}.
+2. **Time of the sphere.** $a_{\mathrm{sph} } = \tfrac{5}{7} g\sin\alpha$ = {{ si.a_sphere }} m/s².
    From rest at constant acceleration $s = \tfrac{1}{2} a t^2$, so over $s$ = {{ s }}
-   $$t = \sqrt{\frac{2 s}{a_{\mathrm{sph}}}},$$
+   $$t = \sqrt{\frac{2 s}{a_{\mathrm{sph} } } },$$
    that is $t$ = {{ answers.t_sphere }}.
 3. **Speed of the hoop.** The work-energy balance: the hoop drops $h = s\sin\alpha$ =
    {{ si.height }} m, and its kinetic energy is $\tfrac{1}{2} m v^2 + \tfrac{1}{2} m R^2 (v/R)^2 = m v^2$:
@@ -91,11 +91,11 @@ The three bodies differ only in $I_C/(mR^2)$: ½ for the cylinder, 2/5 for the s
    $$\mu \ge \frac{F}{m g\cos\alpha} = \tfrac{1}{3}\tan\alpha,$$
    so $\mu_{\min}$ = {{ answers.mu_min }}.
 5. **Who arrives first.** The smallest $I_C/(mR^2)$ gives the largest acceleration and the
-   shortest time: $a_{\mathrm{sph}}$ = {{ si.a_sphere }} m/s² > $a_{\mathrm{cyl}}$ >
-   $a_{\mathrm{hoop}}$ = {{ si.a_hoop }} m/s², with the times {{ answers.t_sphere }},
+   shortest time: $a_{\mathrm{sph} }$ = {{ si.a_sphere }} m/s² > $a_{\mathrm{cyl} }$ >
+   $a_{\mathrm{hoop} }$ = {{ si.a_hoop }} m/s², with the times {{ answers.t_sphere }},
    {{ si.t_cylinder }} s and {{ si.t_hoop }} s. First: **{{ answers.first }}**, whatever
    $m$, $R$ and $\alpha$.
-6. **As a formula.** From step 1, $a_{\mathrm{cyl}}$ = `{{ answers.a_cyl_formula }}`.
+6. **As a formula.** From step 1, $a_{\mathrm{cyl} }$ = `{{ answers.a_cyl_formula }}`.
 """,
     solve=solve,
     parts=(

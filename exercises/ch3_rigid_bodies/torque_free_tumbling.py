@@ -82,7 +82,7 @@ rotation, Section 3.4.4).
    $\lambda^2 > 0$ and it grows. The stable axes are therefore those of the largest
    ({{ si.axis_max }}) and the smallest ({{ si.axis_min }}) moment: **{{ answers.stable }}**.
 3. **Wobble frequency.** About the axis of the largest moment, with $\omega_0$ = {{ w }},
-   $$\nu = \omega_0\sqrt{\frac{(I_k - I_i)(I_k - I_j)}{I_i\,I_j}},$$
+   $$\nu = \omega_0\sqrt{\frac{(I_k - I_i)(I_k - I_j)}{I_i\,I_j} },$$
    which gives $\nu$ = {{ answers.nu }}.
 """,
     solve=solve,

@@ -56,7 +56,7 @@ from the axle, so the centre's speed and the spin are tied by $v = \omega r$.
 
 1. **Speed after dropping $h$.** With $I_C = \tfrac{1}{2} m R^2$ for the disk,
    $$m g h = \tfrac{1}{2} m v^2 + \tfrac{1}{2} I_C\Bigl(\frac{v}{r}\Bigr)^2
-   \quad\Rightarrow\quad v = \sqrt{\frac{2 g h}{1 + R^2/(2 r^2)}} .$$
+   \quad\Rightarrow\quad v = \sqrt{\frac{2 g h}{1 + R^2/(2 r^2)} } .$$
    With $m$ = {{ m }}, $R$ = {{ R }}, $r$ = {{ r }}, $h$ = {{ h }} and $g$ = {{ g }}:
    $v$ = {{ answers.v }}. The mass drops out.
 2. **Angular speed.** $\omega = v/r$ = {{ answers.omega }}.

@@ -63,12 +63,12 @@ $m\ddot x + c(\dot x - \dot y) + k(x - y) = 0$.
    and with $v$ = {{ v }} and $\lambda$ = {{ lam }}: $\Omega$ = {{ answers.Omega }}.
 2. **Resonant speed.** The natural frequency is $\omega_n = \sqrt{k/m}$ = {{ si.omega_n }} rad/s
    ($m$ = {{ m }}, $k$ = {{ k }}). Setting $\Omega = \omega_n$ and solving for the speed,
-   $$v_{\mathrm{res}} = \frac{\omega_n\lambda}{2\pi},$$
-   that is $v_{\mathrm{res}}$ = {{ answers.v_res }}.
+   $$v_{\mathrm{res} } = \frac{\omega_n\lambda}{2\pi},$$
+   that is $v_{\mathrm{res} }$ = {{ answers.v_res }}.
 3. **Body amplitude.** With the frequency ratio $\eta = \Omega/\omega_n$ = {{ si.eta }} and
    the damping ratio $\zeta = c/(2\sqrt{k m})$ = {{ si.zeta }} ($c$ = {{ c }}), the steady
    state has the amplitude ratio (transmissibility)
-   $$\frac{X}{Y} = \sqrt{\frac{1 + (2\zeta\eta)^2}{(1 - \eta^2)^2 + (2\zeta\eta)^2}},$$
+   $$\frac{X}{Y} = \sqrt{\frac{1 + (2\zeta\eta)^2}{(1 - \eta^2)^2 + (2\zeta\eta)^2} },$$
    here $X/Y$ = {{ si.TR }}. With $Y$ = {{ Y }}: $X$ = {{ answers.X }}. Spring and damper both pass
    the road's motion on, hence the $(2\zeta\eta)^2$ in the numerator.
 """,

@@ -66,7 +66,7 @@ with $J$ = {{ J }} and $k_t$ = {{ kt }}.
 3. **Overdamped.** With $\zeta$ = {{ ratio.value }} the roots are real,
    $\lambda_{1,2} = -\omega_n\bigl(\zeta \mp \sqrt{\zeta^2 - 1}\bigr)$, and the same initial
    conditions give
-   $$\theta(t) = \theta_0\,\frac{\lambda_2 e^{\lambda_1 t} - \lambda_1 e^{\lambda_2 t}}{\lambda_2 - \lambda_1},$$
+   $$\theta(t) = \theta_0\,\frac{\lambda_2 e^{\lambda_1 t} - \lambda_1 e^{\lambda_2 t} }{\lambda_2 - \lambda_1},$$
    so $\theta(t_1)$ = {{ answers.theta_over }}: more damping closes the door more slowly,
    because the slow root $\lambda_1$ moves toward zero.
 """,

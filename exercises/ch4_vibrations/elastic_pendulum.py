@@ -93,7 +93,7 @@ it (Section 4.1; equilibrium and linearisation, Section 4.2).
 3. **Small oscillations.** About $(r_s, 0)$ the mass matrix is
    $\operatorname{diag}(m,\; m r_s^2)$ and the stiffness matrix
    $\operatorname{diag}(k,\; m g r_s)$: the two motions decouple. Hence
-   $$\omega_r = \sqrt{\frac{k}{m}},\qquad \omega_\varphi = \sqrt{\frac{g}{r_s}},$$
+   $$\omega_r = \sqrt{\frac{k}{m} },\qquad \omega_\varphi = \sqrt{\frac{g}{r_s} },$$
    that is $\omega_r$ = {{ answers.omega_r }} and $\omega_\varphi$ = {{ answers.omega_phi }}
    — a pendulum of the stretched length $r_s$, not of $L_0$.
 """,

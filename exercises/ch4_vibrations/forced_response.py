@@ -60,16 +60,16 @@ and $\Omega$ = {{ Omega }}.
 
 1. **Amplitude.** The amplitude is the static deflection $F_0/k$ times the amplification
    factor
-   $$V = \frac{1}{\sqrt{(1 - \eta^2)^2 + (2\zeta\eta)^2}},$$
+   $$V = \frac{1}{\sqrt{(1 - \eta^2)^2 + (2\zeta\eta)^2} },$$
    here $V$ = {{ si.V }}, so with $F_0$ = {{ F0 }}: $X = \frac{F_0}{k}V$ = {{ answers.X }}.
 2. **Phase lag.** $$\tan\varphi = \frac{2\zeta\eta}{1 - \eta^2},$$ with $\varphi$ below $\pi/2$ under resonance ($\eta < 1$) and between $\pi/2$ and $\pi$
    above it:
    $\varphi$ = {{ answers.phi }}.
 3. **Resonance.** $V$ is largest where $(1 - \eta^2)^2 + (2\zeta\eta)^2$ is smallest,
    at $\eta = \sqrt{1 - 2\zeta^2}$:
-   $$\Omega_{\mathrm{res}} = \omega_n\sqrt{1 - 2\zeta^2},\qquad
-   X_{\max} = \frac{F_0}{k}\,\frac{1}{2\zeta\sqrt{1 - \zeta^2}},$$
-   that is $\Omega_{\mathrm{res}}$ = {{ answers.Omega_res }} and
+   $$\Omega_{\mathrm{res} } = \omega_n\sqrt{1 - 2\zeta^2},\qquad
+   X_{\max} = \frac{F_0}{k}\,\frac{1}{2\zeta\sqrt{1 - \zeta^2} },$$
+   that is $\Omega_{\mathrm{res} }$ = {{ answers.Omega_res }} and
    $X_{\max}$ = {{ answers.X_max }}.
 """,
     solve=solve,

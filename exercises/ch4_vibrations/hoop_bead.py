@@ -72,7 +72,7 @@ Here $m$ = {{ m }}, $R$ = {{ R }}, $g$ = {{ g }} and $\Omega$ = {{ Omega }} = {{
 4. **Small oscillations about $\theta^*$.** With $\cos\theta^* = g/(R\Omega^2)$ the curvature
    becomes $V^{*\prime\prime}(\theta^*) = m R^2\Omega^2\sin^2\theta^*$, and the equivalent
    mass is $m R^2$, so
-   $$\omega = \sqrt{\frac{V^{*\prime\prime}(\theta^*)}{m R^2}} = \Omega\sin\theta^*,$$
+   $$\omega = \sqrt{\frac{V^{*\prime\prime}(\theta^*)}{m R^2} } = \Omega\sin\theta^*,$$
    that is $\omega$ = {{ answers.omega }}.
 """,
     solve=solve,

@@ -77,7 +77,7 @@ $J\ddot\theta + V''(0)\,\theta = 0$ (equilibrium and stability, Section 4.2).
    $k_{\min}$ = {{ answers.k_min }}.
 3. **Small oscillations.** The rod turns about its end, $J = \tfrac{1}{3} m L^2$, and with
    $k$ = {{ k }}
-   $$\omega = \sqrt{\frac{V''(0)}{J}} = \sqrt{\frac{2 k a^2 - m g L/2}{m L^2/3}},$$
+   $$\omega = \sqrt{\frac{V''(0)}{J} } = \sqrt{\frac{2 k a^2 - m g L/2}{m L^2/3} },$$
    that is $\omega$ = {{ answers.omega }}.
 """,
     solve=solve,

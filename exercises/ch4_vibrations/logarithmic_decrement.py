@@ -62,12 +62,12 @@ $e^{\delta}$; from $\delta$ and the measured period we recover $\zeta$, $\omega_
    $$\delta = \frac1n\ln\frac{x_0}{x_n};$$
    with $x_0$ = {{ x0 }}, $x_n$ = {{ xn }} and $n$ = {{ n.value }}: $\delta$ = {{ answers.delta }}.
 2. **Damping ratio.** $\delta = 2\pi\zeta/\sqrt{1 - \zeta^2}$, solved for $\zeta$:
-   $$\zeta = \frac{\delta}{\sqrt{4\pi^2 + \delta^2}},$$
+   $$\zeta = \frac{\delta}{\sqrt{4\pi^2 + \delta^2} },$$
    that is $\zeta$ = {{ answers.zeta }}.
 3. **Natural frequency.** The peaks come at the damped period:
    $\omega_d = 2\pi/T_d$ = {{ si.omega_d }} rad/s ($T_d$ = {{ Td }}). With
    $\omega_d = \omega_n\sqrt{1 - \zeta^2}$,
-   $$\omega_n = \frac{\omega_d}{\sqrt{1 - \zeta^2}},$$
+   $$\omega_n = \frac{\omega_d}{\sqrt{1 - \zeta^2} },$$
    that is $\omega_n$ = {{ answers.omega_n }}.
 4. **Stiffness and damping.** With $m$ = {{ m }}: $k = m\,\omega_n^2$, so $k$ = {{ answers.k }},
    and $c = 2\zeta\sqrt{k m}$, so $c$ = {{ answers.c }}.

@@ -72,7 +72,7 @@ an amplitude fixed by the initial state (modal decomposition, Section 4.4.4).
    $\det(\mathbf K - \omega^2\mathbf M) = 0$ gives the in-phase mode $(1, 1)$, which does not
    stretch the coupling spring, and the opposite-phase mode $(1, -1)$, which stretches it
    twice:
-   $$\omega_1 = \sqrt{\frac{k}{m}},\qquad \omega_2 = \sqrt{\frac{k + 2k_c}{m}} .$$
+   $$\omega_1 = \sqrt{\frac{k}{m} },\qquad \omega_2 = \sqrt{\frac{k + 2k_c}{m} } .$$
    With $m$ = {{ m }}, $k$ = {{ k }} and $k_c$ = {{ kc }}: $\omega_1$ = {{ answers.omega1 }}
    and $\omega_2$ = {{ answers.omega2 }}.
 2. **Modal amplitudes.** Released from rest, each mode moves as $\cos\omega_i t$. The

@@ -77,7 +77,7 @@ hanging position.
    written as `{{ answers.theta_ddot }}`.
 2. **Natural angular frequency.** For small angles $\sin\theta \approx \theta$:
    $\ddot\theta + \bigl(\frac gL + \frac{k_t}{m L^2}\bigr)\theta = 0$, so
-   $$\omega = \sqrt{\frac{g}{L} + \frac{k_t}{m L^2}}$$
+   $$\omega = \sqrt{\frac{g}{L} + \frac{k_t}{m L^2} }$$
    (`{{ answers.omega_formula }}`). With $m$ = {{ m }}, $L$ = {{ L }}, $k_t$ = {{ kt }} and
    $g$ = {{ g }}: $\omega$ = {{ answers.omega }}.
 3. **Frequency and period.** $f = \omega/(2\pi)$ = {{ answers.f }} and

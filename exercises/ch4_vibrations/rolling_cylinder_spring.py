@@ -56,7 +56,7 @@ centre; consider small motions.
     solution=r"""
 A one-degree-of-freedom system in the coordinate $x$: write the kinetic and potential
 energies as $T = \tfrac{1}{2} m_{eq}\dot x^2$ and $V = \tfrac{1}{2} k_{eq} x^2$; then
-$\omega = \sqrt{k_{eq}/m_{eq}}$ (equivalent mass and stiffness, Section 4.3.1).
+$\omega = \sqrt{k_{eq}/m_{eq} }$ (equivalent mass and stiffness, Section 4.3.1).
 
 1. **Equivalent mass.** Rolling without slipping ties the rotation to the translation,
    $\dot\varphi = \dot x/r$, and the solid cylinder has $J = \tfrac{1}{2} m r^2$:
@@ -68,9 +68,9 @@ $\omega = \sqrt{k_{eq}/m_{eq}}$ (equivalent mass and stiffness, Section 4.3.1).
    is stretched that much:
    $$V = \tfrac{1}{2} k\Bigl(\frac{r + a}{r}\Bigr)^2 x^2,\qquad k_{eq} = k\Bigl(\frac{r + a}{r}\Bigr)^2,$$
    so with $k$ = {{ k }}, $r$ = {{ r }} and $a$ = {{ a }}: $k_{eq}$ = {{ answers.k_eq }}.
-3. **Natural frequency.** $\omega = \sqrt{k_{eq}/m_{eq}}$ = {{ answers.omega }} and
+3. **Natural frequency.** $\omega = \sqrt{k_{eq}/m_{eq} }$ = {{ answers.omega }} and
    $f = \omega/(2\pi)$ = {{ answers.f }}.
-4. **As a formula.** $$\omega = \frac{r + a}{r}\sqrt{\frac{2k}{3m}},$$ written as
+4. **As a formula.** $$\omega = \frac{r + a}{r}\sqrt{\frac{2k}{3m} },$$ written as
    `{{ answers.omega_formula }}`.
 """,
     solve=solve,

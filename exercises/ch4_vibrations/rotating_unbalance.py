@@ -115,7 +115,7 @@ $\Omega^2$ (rotating unbalance, Section 4.3.3). The operating speed is
 $n$ = {{ n }}, i.e. $\Omega$ = {{ si.n }} rad/s (one revolution is $2\pi$).
 
 1. **Critical speed.** Resonance when $\Omega = \omega_n = \sqrt{k/M}$; with $M$ = {{ M }} and
-   $k$ = {{ k }}, $\omega_n$ = {{ si.n_crit }} rad/s, that is $n_{\mathrm{crit}}$ = {{ answers.n_crit }}.
+   $k$ = {{ k }}, $\omega_n$ = {{ si.n_crit }} rad/s, that is $n_{\mathrm{crit} }$ = {{ answers.n_crit }}.
 2. **Amplitude.** With $\eta = \Omega/\omega_n$ = {{ si.eta }}, $\zeta$ = {{ zeta }} and the
    amplification factor $V = 1/\sqrt{(1 - \eta^2)^2 + (2\zeta\eta)^2}$ = {{ si.V }},
    $$X = \frac{m_u e}{M}\,\eta^2 V;$$

@@ -69,8 +69,8 @@ force; a second mass tuned to $\Omega$ can take up the force and keep the machin
    the mass matrix $\operatorname{diag}(m, m_a)$ and the stiffness matrix
    $K_{11} = k + k_a$, $K_{12} = K_{2 1} = -k_a$, $K_{2 2} = k_a$,
    $\det(\mathbf K - \omega^2\mathbf M) = 0$ gives two roots on either side of the
-   operating frequency: $f_{\mathrm{low}}$ = {{ answers.f_low }} and
-   $f_{\mathrm{high}}$ = {{ answers.f_high }}. The absorber splits the resonance in two,
+   operating frequency: $f_{\mathrm{low} }$ = {{ answers.f_low }} and
+   $f_{\mathrm{high} }$ = {{ answers.f_high }}. The absorber splits the resonance in two,
    so it works only near the tuned speed.
 """,
     solve=solve,

@@ -72,12 +72,12 @@ mode ($\omega = 0$) and one torsional mode, in which the total angular momentum 
    $R_2$ = {{ R2 }}). The equations $J_1\ddot\varphi_1 = k_t(\varphi_2 - \varphi_1)$ and
    $J_2\ddot\varphi_2 = -k_t(\varphi_2 - \varphi_1)$ give
    $\omega^2\bigl(J_1 J_2\,\omega^2 - k_t (J_1 + J_2)\bigr) = 0$, so besides $\omega = 0$
-   $$\omega = \sqrt{\frac{k_t\,(J_1 + J_2)}{J_1 J_2}},$$
+   $$\omega = \sqrt{\frac{k_t\,(J_1 + J_2)}{J_1 J_2} },$$
    here $\omega$ = {{ si.omega }} rad/s, and $f = \omega/(2\pi)$ = {{ answers.f }}.
 3. **Node.** In this mode $J_1\varphi_1 + J_2\varphi_2 = 0$: the disks turn against each
    other. The twist varies linearly along the shaft, so it vanishes at
-   $$x_{\mathrm{node}} = \frac{J_2}{J_1 + J_2}\,L$$
-   from disk 1, that is $x_{\mathrm{node}}$ = {{ answers.node }} — closer to the disk with the larger moment of inertia.
+   $$x_{\mathrm{node} } = \frac{J_2}{J_1 + J_2}\,L$$
+   from disk 1, that is $x_{\mathrm{node} }$ = {{ answers.node }} — closer to the disk with the larger moment of inertia.
 """,
     solve=solve,
     parts=(

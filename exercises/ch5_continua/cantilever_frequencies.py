@@ -62,7 +62,7 @@ the admissible $\beta$ (flexural vibration, Section 5.3.3).
    first, found numerically, is $\beta_1 L$ = {{ answers.beta1L }}, the second
    $\beta_2 L$ = {{ si.beta2L }}.
 2. **Natural frequencies.** Solving $\beta^4 = \rho A\,\omega^2/(EI)$ for $\omega$:
-   $$\omega_j = \frac{(\beta_j L)^2}{L^2}\sqrt{\frac{EI}{\rho A}},\qquad f_j = \frac{\omega_j}{2\pi}.$$
+   $$\omega_j = \frac{(\beta_j L)^2}{L^2}\sqrt{\frac{EI}{\rho A} },\qquad f_j = \frac{\omega_j}{2\pi}.$$
    The strip bends across its thickness, so $I = b h^3/12$ and $EI$ = {{ si.EI }} N·m²;
    $\rho A = \rho b h$ = {{ si.rhoA }} kg/m (with $b$ = {{ b }}, $h$ = {{ h }}, $E$ = {{ E }},
    $\rho$ = {{ rho }}). With $L$ = {{ L }}: $f_1$ = {{ answers.f1 }} and

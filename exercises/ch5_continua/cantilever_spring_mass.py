@@ -63,7 +63,7 @@ the spring carry the same force (series) or deform by the same amount (parallel)
    deflections add: springs in series,
    $$\frac{1}{k_s} = \frac{1}{k_b} + \frac{1}{k},$$
    so with $k$ = {{ k }}, $k_s$ = {{ si.k_series }} N/m and with $m$ = {{ m }}
-   $$f = \frac{1}{2\pi}\sqrt{\frac{k_s}{m}},$$
+   $$f = \frac{1}{2\pi}\sqrt{\frac{k_s}{m} },$$
    that is $f$ = {{ answers.f_series }}. The softer element dominates.
 3. **Spring to the ground.** The mass's displacement deflects the beam and the spring by
    the same amount and both push back: springs in parallel, $k_p = k_b + k$ =

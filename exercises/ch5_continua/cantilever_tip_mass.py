@@ -57,14 +57,14 @@ system is one mass on the tip spring (effective mass and Rayleigh's estimate, Se
 1. **Effective mass.** The bar's mass is $m_b = \rho\,\frac{\pi d^2}{4}\,L$ = {{ si.m_b }} kg
    ($d$ = {{ d }}, $L$ = {{ L }}, $\rho$ = {{ rho }}). With the static tip-load shape
    $w(x) = w_L\,\frac{x^2(3L - x)}{2L^3}$ the kinetic energy
-   $\tfrac{1}{2}\int_0^L \rho A\,\dot w^2\,dx$ equals $\tfrac{1}{2} m_{\mathrm{eff}}\dot w_L^2$ with
-   $$m_{\mathrm{eff}} = \frac{\rho A}{w_L^2}\int_0^L w^2\,dx,$$
+   $\tfrac{1}{2}\int_0^L \rho A\,\dot w^2\,dx$ equals $\tfrac{1}{2} m_{\mathrm{eff} }\dot w_L^2$ with
+   $$m_{\mathrm{eff} } = \frac{\rho A}{w_L^2}\int_0^L w^2\,dx,$$
    which evaluates to {{ answers.m_eff }}, about a quarter of $m_b$: the parts near the
    clamp hardly move.
 2. **Fundamental frequency.** The tip stiffness is $k = 3EI/L^3$ with
    $I = \frac{\pi}{4}\bigl(\frac d2\bigr)^4$ = {{ si.I }} m⁴, so with $E$ = {{ E }}:
    $k$ = {{ si.k }} N/m. With the tip mass $m$ = {{ m }},
-   $$\omega \approx \sqrt{\frac{k}{m + m_{\mathrm{eff}}}},$$
+   $$\omega \approx \sqrt{\frac{k}{m + m_{\mathrm{eff} } } },$$
    here $\omega$ = {{ si.omega }} rad/s, and $f = \omega/(2\pi)$ = {{ answers.f }}.
 """,
     solve=solve,

@@ -54,7 +54,7 @@ $E$ = {{ E }}, $\rho$ = {{ rho }}).
 2. **Phase speed.** $$c_p = \frac{\omega}{k} = \sqrt{\omega}\,\Bigl(\frac{EI}{\rho A}\Bigr)^{1/4},$$
    that is $c_p$ = {{ answers.c_p }}. It grows with $\sqrt\omega$: the beam is dispersive.
 3. **Group speed.** With $\omega = \sqrt{EI/(\rho A)}\;k^2$,
-   $$c_g = \frac{d\omega}{dk} = 2\sqrt{\frac{EI}{\rho A}}\;k = 2\,c_p,$$
+   $$c_g = \frac{d\omega}{dk} = 2\sqrt{\frac{EI}{\rho A} }\;k = 2\,c_p,$$
    so a wave packet's energy travels at $c_g$ = {{ answers.c_g }}.
 """,
     solve=solve,

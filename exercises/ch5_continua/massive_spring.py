@@ -49,15 +49,15 @@ that of an effective mass moving with $m$ (effective mass, Section 5.2).
 1. **Effective mass.** A coil at distance $s$ from the fixed end (spring length $L$) moves
    with $\dot x\,s/L$, so
    $$T_s = \tfrac{1}{2}\int_0^L \frac{m_s}{L}\Bigl(\frac{s}{L}\,\dot x\Bigr)^2 ds = \tfrac{1}{2}\,\frac{m_s}{3}\,\dot x^2 ,$$
-   and $m_{\mathrm{eff}} = m_s/3$ = {{ answers.m_eff }} ($m_s$ = {{ m_s }}).
+   and $m_{\mathrm{eff} } = m_s/3$ = {{ answers.m_eff }} ($m_s$ = {{ m_s }}).
 2. **Natural frequency.** One mass $m + m_s/3$ on the spring $k$:
-   $$\omega = \sqrt{\frac{k}{m + m_s/3}};$$
+   $$\omega = \sqrt{\frac{k}{m + m_s/3} };$$
    with $m$ = {{ m }} and $k$ = {{ k }}: $\omega$ = {{ answers.omega }} and
    $f = \omega/(2\pi)$ = {{ answers.f }}.
 3. **Compared with the continuous bar.** The root of $\kappa L\tan(\kappa L) = m_s/m$ in
-   $(0, \pi/2)$ gives the exact $\omega_{\mathrm{exact}} = c\,\kappa$ = {{ si.omega_exact }} rad/s,
+   $(0, \pi/2)$ gives the exact $\omega_{\mathrm{exact} } = c\,\kappa$ = {{ si.omega_exact }} rad/s,
    where $c = L\sqrt{k/m_s}$ is the spring's wave speed. The estimate exceeds it by
-   $\omega/\omega_{\mathrm{exact}} - 1$ = {{ answers.error }}: Rayleigh's method, with an
+   $\omega/\omega_{\mathrm{exact} } - 1$ = {{ answers.error }}: Rayleigh's method, with an
    assumed shape, always errs high, and very little while $m_s < m$.
 4. **As a formula.** `{{ answers.omega_formula }}`.
 """,

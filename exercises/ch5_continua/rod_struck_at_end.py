@@ -69,7 +69,7 @@ Longitudinal motion of a slender rod obeys the wave equation $u_{tt} = c^2 u_{xx
 $c = \sqrt{E/\rho}$; a sudden end velocity starts a step wave, and the free ends fix the
 natural modes (longitudinal waves, Section 5.3.1).
 
-1. **Wave speed.** $$c = \sqrt{\frac{E}{\rho}},$$ with $E$ = {{ E }} and $\rho$ = {{ rho }}:
+1. **Wave speed.** $$c = \sqrt{\frac{E}{\rho} },$$ with $E$ = {{ E }} and $\rho$ = {{ rho }}:
    $c$ = {{ answers.c }}.
 2. **Arrival time.** The front covers $L$ = {{ L }} at $c$: $t = L/c$ = {{ answers.t_arrival }}.
 3. **Stress in the wave.** Across the front the particles jump from rest to $v$; the

@@ -45,7 +45,7 @@ with $c_T = \sqrt{G/\rho}$; the clamped and the free end fix the natural modes
 1. **Wave speed.** The shear modulus of an isotropic material is
    $$G = \frac{E}{2(1 + \nu)},$$
    here $G$ = {{ si.G }} Pa ($E$ = {{ E }}, $\nu$ = {{ nu }}), and with $\rho$ = {{ rho }}
-   $$c_T = \sqrt{\frac{G}{\rho}},$$
+   $$c_T = \sqrt{\frac{G}{\rho} },$$
    that is $c_T$ = {{ answers.c_T }}. It does not depend on the shaft's diameter.
 2. **Natural frequencies.** Clamped at $x = 0$ ($\theta = 0$) and free at $x = L$
    (no torque, $\theta_x = 0$): the modes are $\sin\bigl((2j - 1)\pi x/(2L)\bigr)$, a quarter

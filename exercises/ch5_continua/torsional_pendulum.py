@@ -60,7 +60,7 @@ axis: $J\ddot\varphi + k_t\varphi = 0$ (torsional stiffness, Section 5.1).
    moment, not the bending moment of area $I_p/2$.)
 2. **Period.** The disk has $J = \tfrac{1}{2} m R^2$ = {{ si.J }} kg·m² ($m$ = {{ m }},
    $R$ = {{ R }}), so $\omega = \sqrt{k_t/J}$ and
-   $$T = 2\pi\sqrt{\frac{J}{k_t}},$$
+   $$T = 2\pi\sqrt{\frac{J}{k_t} },$$
    that is $T$ = {{ answers.T }}.
 """,
     solve=solve,
