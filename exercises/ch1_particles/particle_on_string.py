@@ -97,7 +97,7 @@ minute. Gravity acts perpendicular to the table.
                                   "The force grows with ω²: twice the rate, four times the force."),
                 )),
         Symbolic("S_formula", "string force as a formula", points=1, expected="m*l*omega^2",
-                 variables={"m": Variable(0.1, 5, "kg"), "l": Variable(0.1, 5, "m"),
+                 variables={"m": None, "l": None,
                             "omega": Variable(0.5, 30, "rad/s")},
                  misconceptions=(
                      Misconception("divided by l", "m*omega^2/l",

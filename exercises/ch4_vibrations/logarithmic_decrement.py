@@ -3,7 +3,8 @@ stiffness and damping coefficient (Section 4.3.2)."""
 
 import numpy as np
 
-from dynagrade.exercise import Choice, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import (Choice, Constraint, Exercise, Misconception, Numeric, Uniform,
+                                per_draw)
 from dynagrade.mechanics import vibrations
 
 
@@ -22,6 +23,7 @@ def solve(p):
             "omega_d": vibrations.angular_frequency_from_period(p.Td)}
 
 
+@per_draw
 def _zeta(p):
     return _identified(p)[1]
 

@@ -27,6 +27,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..errors import UnknownExercise
 from ..exercise.loader import Bank, open_bank
 from ..exercise.model import Exercise, Variant
 from ..exercise.numbers import GRADEBOOK_DECIMALS, points_text
@@ -64,8 +65,8 @@ def _exercises(manifest: Manifest, bank: Bank, problems: list[Problem],
     for described in manifest.exercises:
         try:
             exercise = bank.get(described.id)
-        except KeyError as error:
-            raise ManifestError(f"{where}: {error.args[0]} (needed to grade this exam; "
+        except UnknownExercise as error:
+            raise ManifestError(f"{where}: {error} (needed to grade this exam; "
                                 "point --exercises at the folder it came from)") from None
         names = {p.name for p in exercise.parts}
         missing = [p.name for p in described.parts if p.name not in names]

@@ -36,6 +36,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
+from ..errors import DynagradeError
+
 _EXAM_ID = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
 _STUDENT_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]*$")
 _TOP_KEYS = {"id", "title", "date", "instructions", "exercise"}
@@ -43,7 +45,7 @@ _EXERCISE_KEYS = {"id", "points", "set"}
 ROSTER_HEADERS = (("student_id", "name"), ("student_id", "name", "email"))
 
 
-class ExamSpecError(ValueError):
+class ExamSpecError(DynagradeError, ValueError):
     """A malformed exam specification or roster; the message says where and why."""
 
 
@@ -96,7 +98,7 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
     """The exam in ``path``.
 
     ``known(exercise_id)`` returns the exercise (an object with ``parameter(name)``) or
-    raises ``KeyError``; with it, exercise ids and the names in ``[exercise.set]`` are
+    raises a :class:`~dynagrade.errors.DynagradeError` saying why; with it, exercise ids and the names in ``[exercise.set]`` are
     checked too.
     """
     path = Path(path)
@@ -163,8 +165,8 @@ def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExe
     if known is not None:
         try:
             exercise = known(exercise_id)
-        except KeyError as error:
-            raise ExamSpecError(f"{at}, field 'id': {error.args[0]}") from None
+        except DynagradeError as error:
+            raise ExamSpecError(f"{at}, field 'id': {error}") from None
     points = table.get("points")
     if isinstance(points, bool) or not isinstance(points, (int, float)) \
             or not math.isfinite(points) or points <= 0:
@@ -184,9 +186,9 @@ def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExe
         if exercise is not None:
             try:
                 exercise.parameter(name)
-            except KeyError as error:
+            except DynagradeError as error:
                 raise ExamSpecError(f"{at} ({exercise_id}), field 'set.{name}': "
-                                    f"{error.args[0]}") from None
+                                    f"{error}") from None
         values[name] = float(value)
     return ExamExercise(exercise_id, float(points), values, line)
 
