@@ -27,6 +27,7 @@ from typing import TYPE_CHECKING, Any, Iterator, Mapping
 import jinja2
 from jinja2 import meta, nodes
 
+from ..errors import DefinitionError
 from .numbers import answer_text
 from .statement import ShownValue
 
@@ -37,7 +38,7 @@ if TYPE_CHECKING:
 CONTEXT_NAMES = ("answers", "si")
 
 
-class SolutionError(ValueError):
+class SolutionError(DefinitionError):
     """A solution template that does not compile, names what it cannot have, or fails to
     render for a variant; the message names the exercise and what is wrong."""
 
@@ -189,3 +190,12 @@ def render_solution(exercise: Exercise, variant: Variant) -> str | None:
     except (jinja2.UndefinedError, TypeError, ValueError) as error:
         raise SolutionError(f"{where}: {error}") from None
 
+
+
+def as_comments(exercise: Exercise, solution: str | None) -> str:
+    """The worked solution as comment lines closing a fill-in file (a practice sheet):
+    a fill-in file is read as data, so comments never change what is graded."""
+    lines = (solution or f"{exercise.id} has no worked solution yet.").splitlines()
+    body = "\n".join(f"# {line}".rstrip() for line in lines)
+    return (f"\n# -- Worked solution (try the exercise first) {'-' * 40}\n#\n"
+            f"{body}\n")
