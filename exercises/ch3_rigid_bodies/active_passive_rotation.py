@@ -86,9 +86,9 @@ $(0, -\sin\beta, \cos\beta)$.
    Active and passive use differ: $R$ versus its inverse $R^{\mathsf T}$.
 3. **Total angle.** Every rotation is a single turn by an angle $\varphi$ about one axis,
    and the trace of its matrix is $\operatorname{tr} R = 1 + 2\cos\varphi$. Here
-   $\operatorname{tr} R$ = {{ si.trace_R }}, so
-   $$\varphi = \arccos\frac{\operatorname{tr} R - 1}{2},$$
-   so the body is turned by $\varphi$ = {{ answers.angle }} in total.
+   $\operatorname{tr} R$ = {{ si.trace_R }}, and
+   $$\varphi = \arccos\frac{\operatorname{tr} R - 1}{2}$$
+   turns the body by $\varphi$ = {{ answers.angle }} in total.
    The angles $\gamma$ and $\beta$ about different axes do not simply add.
 """,
     solve=solve,

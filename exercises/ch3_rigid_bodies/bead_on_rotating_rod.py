@@ -60,8 +60,8 @@ to the rod, in the horizontal plane, the rod must supply the Coriolis term.
 3. **Force of the rod.** Normal to the rod the relative acceleration is zero, so the rod's
    force balances the Coriolis term $2m\,\Omega\times v_{\mathrm{rel} }$:
    $$N = 2m\,\Omega\,\dot r,$$
-   and with $m$ = {{ m }} the rod pushes with $N$ = {{ answers.N }}. It pushes the bead forward in the sense of rotation; the
-   centrifugal term is along the rod and needs no force there.
+   and with $m$ = {{ m }} the rod pushes with $N$ = {{ answers.N }},
+   forward in the sense of rotation. The centrifugal term is along the rod and needs no force there.
 """,
     solve=solve,
     parts=(

@@ -126,7 +126,7 @@ $v$ = {{ v }}, $d$ = {{ d }} and $e$ = {{ e }}: $\hat F$ = {{ si.impulse }} N·s
 
 1. **Angular speed of the rod.** $\omega = \hat F d / I_O$, so $\omega$ = {{ answers.omega }}.
 2. **Velocity of the ball.** $v' = v - \hat F/m$, so $v'$ = {{ answers.v_after }}
-   (negative: the ball bounces back).
+   (a negative value means the ball bounces back).
 3. **Pivot impulse.** The linear impulse balance of the rod, whose centre moves at
    $\omega L/2$ afterwards: $M\,\omega\,\tfrac{L}{2} = \hat F + \hat R$, so
    $$|\hat R| = \Bigl|M\,\omega\,\frac{L}{2} - \hat F\Bigr|,$$

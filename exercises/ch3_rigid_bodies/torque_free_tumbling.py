@@ -75,14 +75,14 @@ rotation, Section 3.4.4).
    I_3 = \tfrac{1}{12} m (a^2 + b^2).$$
    With $m$ = {{ m }}, $a$ = {{ a }}, $b$ = {{ b }} and $c$ = {{ c }}: $I_1$ = {{ si.I_1 }},
    $I_2$ = {{ si.I_2 }} and $I_3$ = {{ si.I_3 }} kg·m². The largest is
-   $I_{\max}$ = {{ answers.I_max }}, about {{ si.axis_max }}.
+   $I_{\max}$ = {{ answers.I_max }}, about `{{ si.axis_max }}`.
 2. **Stable axes.** A small disturbance of a spin $\Omega$ about principal axis $k$ grows
    like $e^{\lambda t}$ with
    $$\lambda^2 = \Omega^2\,\frac{(I_k - I_i)(I_j - I_k)}{I_i\,I_j}.$$
    For the largest or the smallest moment the two factors have opposite signs,
    $\lambda^2 < 0$, and the disturbance only oscillates; for the intermediate moment
    $\lambda^2 > 0$ and it grows. The stable axes are therefore those of the largest
-   ({{ si.axis_max }}) and the smallest ({{ si.axis_min }}) moment: **{{ answers.stable }}**.
+   (`{{ si.axis_max }}`) and the smallest (`{{ si.axis_min }}`) moment: **{{ answers.stable }}**.
 3. **Wobble frequency.** About the axis of the largest moment, with $\omega_0$ = {{ w }},
    $$\nu = \omega_0\sqrt{\frac{(I_k - I_i)(I_k - I_j)}{I_i\,I_j} },$$
    which gives $\nu$ = {{ answers.nu }}.

@@ -63,9 +63,10 @@ and $\Omega$ = {{ Omega }}.
    factor
    $$V = \frac{1}{\sqrt{(1 - \eta^2)^2 + (2\zeta\eta)^2} },$$
    here $V$ = {{ si.V }}, so with $F_0$ = {{ F0 }}: $X = \frac{F_0}{k}V$ = {{ answers.X }}.
-2. **Phase lag.** $$\tan\varphi = \frac{2\zeta\eta}{1 - \eta^2},$$ with $\varphi$ below $\pi/2$ under resonance ($\eta < 1$) and between $\pi/2$ and $\pi$
-   above it:
-   $\varphi$ = {{ answers.phi }}.
+2. **Phase lag.**
+   $$\tan\varphi = \frac{2\zeta\eta}{1 - \eta^2};$$
+   $\varphi$ lies below $\pi/2$ under resonance ($\eta < 1$) and between $\pi/2$ and $\pi$
+   above it. Here $\varphi$ = {{ answers.phi }}.
 3. **Resonance.** $V$ is largest where $(1 - \eta^2)^2 + (2\zeta\eta)^2$ is smallest,
    at $\eta = \sqrt{1 - 2\zeta^2}$:
    $$\Omega_{\mathrm{res} } = \omega_n\sqrt{1 - 2\zeta^2},\qquad

@@ -58,8 +58,8 @@ the admissible $\beta$ (flexural vibration, Section 5.3.3).
 1. **Characteristic equation.** At the clamped end $W = W' = 0$, at the free end
    $W'' = W''' = 0$ (no moment, no shear force). A non-zero solution exists only if
    $$\cos(\beta L)\cosh(\beta L) + 1 = 0 .$$
-   Since $\cosh$ grows fast, the roots lie close to where $\cos(\beta L) \approx 0$; the
-   first, found numerically, is $\beta_1 L$ = {{ answers.beta1L }}, the second
+   Since $\cosh$ grows fast, the higher roots approach the zeros of $\cos(\beta L)$;
+   the lowest ones must be found numerically: the first is $\beta_1 L$ = {{ answers.beta1L }}, the second
    $\beta_2 L$ = {{ si.beta2L }}.
 2. **Natural frequencies.** Solving $\beta^4 = \rho A\,\omega^2/(EI)$ for $\omega$:
    $$\omega_j = \frac{(\beta_j L)^2}{L^2}\sqrt{\frac{EI}{\rho A} },\qquad f_j = \frac{\omega_j}{2\pi}.$$
