@@ -9,6 +9,8 @@ Usage::
     dynagrade verify --variants 200
     dynagrade exam exam.toml --roster roster.csv -o out/
     dynagrade grade --manifest out/manifest.json out/submissions/ -o out/grading/
+    dynagrade links out/manifest.json -o links.csv --instructor
+    dynagrade serve out/manifest.json
 """
 
 from __future__ import annotations
@@ -176,18 +178,22 @@ def sheet(context, exercise_id, student, output, solution):
 @click.argument("exercise_ids", nargs=-1)
 @click.option("--variants", type=click.IntRange(1), default=50, show_default=True,
               help="Seeds to check per exercise (0 .. N-1).")
-@click.option("--require-solutions", is_flag=True,
-              help="An exercise without a worked solution fails (otherwise it is noted).")
+@click.option("--require-solutions/--allow-missing-solutions", default=None,
+              help="Whether an exercise without a worked solution fails or is only noted "
+                   "(default: it fails once every exercise of the shipped bank has one).")
 @click.pass_obj
 def verify(context, exercise_ids, variants, require_solutions):
     """Check exercises for variants that cannot tell right from wrong, and their worked
     solutions."""
+    from .exercise.solution_check import bank_is_complete
     from .exercise.verify import verify_exercise
     from .render.solutions import math_problems
     from .render.terminal import verify_progress
 
     exercises = ([context.exercise(i) for i in exercise_ids] if exercise_ids
                  else context.bank.all())
+    if require_solutions is None:
+        require_solutions = bank_is_complete()
     reports = verify_progress(exercises, lambda e: verify_exercise(
         e, range(variants), require_solution=require_solutions, math_check=math_problems))
     if any(not r.ok for r in reports):
@@ -371,6 +377,11 @@ def _parse_settings(exercise, settings) -> dict[str, float]:
             raise click.BadParameter(f"{setting!r}: {error}", param_hint="--set") from None
     return overrides
 
+
+from .serve.commands import links as _links, serve as _serve  # noqa: E402  (light: click only)
+
+main.add_command(_serve)
+main.add_command(_links)
 
 if __name__ == "__main__":
     main()
