@@ -101,21 +101,28 @@ def list_command(context, as_json):
 @click.option("--set", "settings", multiple=True, metavar="NAME=VALUE",
               help="Fix a parameter, in its unit or with one (alpha=30 or 'alpha=0.5 rad').")
 @click.option("--answers", is_flag=True, help="Show the reference answers too.")
+@click.option("--solution", is_flag=True, help="Show the worked solution too.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 @click.pass_obj
-def show(context, exercise_id, seed, student, settings, answers, as_json):
-    """Show an exercise's variant: its statement, and on request its answers."""
+def show(context, exercise_id, seed, student, settings, answers, solution, as_json):
+    """Show an exercise's variant: its statement, and on request its answers and worked
+    solution."""
     exercise = context.exercise(exercise_id)
     variant = _variant(exercise, seed, student, settings, force=None)
+    worked = _solution(exercise, variant) if solution else None
     if as_json:
         data = variant.to_json()
         if not answers:
             data.pop("answers")
+        if solution:
+            data["solution"] = worked
         click.echo(json.dumps(data, indent=2, ensure_ascii=False))
         return
-    from .render.terminal import variant_panel
+    from .render.terminal import solution_panel, variant_panel
 
     variant_panel(exercise, variant, with_answers=answers)
+    if solution:
+        solution_panel(exercise, variant, worked)
 
 
 @main.command()
@@ -155,16 +162,21 @@ def solve(context, exercise_id, seed, settings, as_json, force):
 @click.option("--student", required=True, help="The student's id.")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
               help="Where to write the file (default: print it).")
+@click.option("--solution", is_flag=True,
+              help="End the file with the worked solution, as comments (for practice).")
 @click.pass_obj
-def sheet(context, exercise_id, student, output):
+def sheet(context, exercise_id, student, output, solution):
     """Write a student's fill-in file for an exercise."""
     from .exercise.seeds import student_seed
     from .exercise.sheet import write_sheet
+    from .exercise.solution import as_comments
 
     exercise = context.exercise(exercise_id)
     variant = exercise.variant(student_seed(exercise.id, student))
     filename = Path(output).name if output else "exercise.py"
     text = write_sheet(exercise, variant, student, filename)
+    if solution:
+        text += as_comments(exercise, _solution(exercise, variant))
     if output:
         Path(output).write_text(text, encoding="utf-8")
         click.echo(f"wrote {output}: {exercise.title}, variant of {student}", err=True)
@@ -176,15 +188,24 @@ def sheet(context, exercise_id, student, output):
 @click.argument("exercise_ids", nargs=-1)
 @click.option("--variants", type=click.IntRange(1), default=50, show_default=True,
               help="Seeds to check per exercise (0 .. N-1).")
+@click.option("--require-solutions/--allow-missing-solutions", default=None,
+              help="Whether an exercise without a worked solution fails or is only noted "
+                   "(default: it fails once every exercise of the shipped bank has one).")
 @click.pass_obj
-def verify(context, exercise_ids, variants):
-    """Check exercises for variants that cannot tell right from wrong."""
+def verify(context, exercise_ids, variants, require_solutions):
+    """Check exercises for variants that cannot tell right from wrong, and their worked
+    solutions."""
+    from .exercise.solution_check import bank_is_complete
     from .exercise.verify import verify_exercise
+    from .render.solutions import math_problems
     from .render.terminal import verify_progress
 
     exercises = ([context.exercise(i) for i in exercise_ids] if exercise_ids
                  else context.bank.all())
-    reports = verify_progress(exercises, lambda e: verify_exercise(e, range(variants)))
+    if require_solutions is None:
+        require_solutions = bank_is_complete()
+    reports = verify_progress(exercises, lambda e: verify_exercise(
+        e, range(variants), require_solution=require_solutions, math_check=math_problems))
     if any(not r.ok for r in reports):
         sys.exit(1)
 
@@ -249,8 +270,11 @@ def grade_command(context, files, as_json, manifest, output, jobs, strict):
               help="Read the exam's secret from this file (created with a new random "
                    "secret when missing): the same secret gives the same variants and "
                    "byte-identical files. Default: a new random secret every run.")
+@click.option("--solutions", is_flag=True,
+              help="Write each student's worked solutions (students/<id>/solution.*) and "
+                   "solutions.pdf with all of them, for the staff.")
 @click.pass_obj
-def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file):
+def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file, solutions):
     """Generate an exam: every student's variants, sheets, keys, Moodle XML, manifest."""
     from .exam.generate import generate_exam
     from .exam.secret import load_secret
@@ -259,7 +283,8 @@ def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file):
     secret = load_secret(secret_file) if secret_file else None
     with progress_reporter() as progress:
         report = generate_exam(exam_file, roster, output, bank=context.bank, jobs=jobs,
-                               pdf=not no_pdf, progress=progress, secret=secret)
+                               pdf=not no_pdf, progress=progress, secret=secret,
+                               solutions=solutions)
     for warning in report.warnings:
         click.echo(f"notice: {warning}", err=True)
     click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
@@ -273,19 +298,20 @@ def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file):
 @click.command(cls=_Command, context_settings={"help_option_names": ["-h", "--help"]})
 @click.argument("file", type=click.Path(exists=True, dir_okay=False))
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@click.option("--solution", is_flag=True, help="Print the worked solution after the verdicts.")
 @_exercises_option
-def grade_main(file, as_json, folders):
+def grade_main(file, as_json, solution, folders):
     """Grade one filled-in exercise file and print feedback per part.
 
     The file is read, never run: each answer must be a number, a quoted string, a list
     of numbers or None.
     """
-    _grade_files(_Context(folders), (file,), as_json)
+    _grade_files(_Context(folders), (file,), as_json, solution)
 
 
-def _grade_files(context, files, as_json):
+def _grade_files(context, files, as_json, solution=False):
     """Grade practice and homework files; an exam's file (it carries a variant token)
-    gets the key-free self-check only."""
+    gets the key-free self-check only (and no solution: its variant is the staff's)."""
     from .exercise.sheet import read_sheet
 
     results = []
@@ -297,24 +323,32 @@ def _grade_files(context, files, as_json):
         notes += [f"{file}: {note}" for note in sheet.notes]
         for note in notes:
             click.echo(f"warning: {note}", err=True)
-        results.append((exercise, _self_check(exercise, sheet) if sheet.is_exam
-                        else _full_verdicts(file, exercise, sheet)))
+        if sheet.is_exam:
+            results.append((exercise, None, _self_check(exercise, sheet)))
+        else:
+            results.append((exercise, *_full_verdicts(file, exercise, sheet)))
     if as_json:
-        data = [r if isinstance(r, dict) else r.to_json() for _, r in results]
+        data = [r if isinstance(r, dict) else r.to_json() for _, _, r in results]
+        if solution:
+            for entry, (exercise, variant, _) in zip(data, results):
+                if variant is not None:
+                    entry["solution"] = _solution(exercise, variant)
         click.echo(json.dumps(data[0] if len(data) == 1 else data, indent=2,
                               ensure_ascii=False))
         return
-    from .render.terminal import result_table
+    from .render.terminal import result_table, solution_panel
 
-    for exercise, result in results:
+    for exercise, variant, result in results:
         if isinstance(result, dict):
             _print_self_check(result)
-        else:
-            result_table(exercise, result)
+            continue
+        result_table(exercise, result)
+        if solution:
+            solution_panel(exercise, variant, _solution(exercise, variant))
 
 
 def _full_verdicts(file, exercise, sheet):
-    """The verdicts on a practice or homework file (its variant is public)."""
+    """The variant of a practice or homework file (it is public) and the verdicts."""
     from .exercise.scoring import grade_variant
     from .exercise.seeds import student_seed
 
@@ -323,7 +357,7 @@ def _full_verdicts(file, exercise, sheet):
         click.echo(f"warning: {file}: this is not the practice variant of student "
                    f"{sheet.student!r}; graded the variant the file names", err=True)
     variant = exercise.variant(sheet.seed)
-    return grade_variant(exercise, variant, sheet.answers, sheet.problems)
+    return variant, grade_variant(exercise, variant, sheet.answers, sheet.problems)
 
 
 def _self_check(exercise, sheet) -> dict:
@@ -391,6 +425,13 @@ def _variant(exercise, seed, student, settings, force=False):
     for warning in variant.warnings:
         click.echo(f"warning: the values set break the constraint '{warning}'", err=True)
     return variant
+
+
+def _solution(exercise, variant) -> str | None:
+    """The variant's worked solution (Markdown), ``None`` when the exercise has none."""
+    from .exercise.solution import render_solution
+
+    return render_solution(exercise, variant)
 
 
 def _parse_settings(exercise, settings) -> dict[str, float]:

@@ -40,6 +40,9 @@ from ..exercise.scoring import grade_variant, graded_error
 from .files import write_atomic
 from .outputs import staging_folder, swap_in
 from .run import GradingRun, file_sha256
+from .policy import Policy
+from .solution_policy import with_feedback
+from .solutions import feedback_solutions
 from .manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
 from .stats import part_statistics
 from .submissions import Problem, Submission, collect
@@ -160,6 +163,9 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
     graded = _run(work, manifest_parts, exercises, jobs, progress)
     timings["grading"] = time.perf_counter() - stage
     outcome = _outcome(manifest, graded, problems, timings)
+    solutions = Policy.from_json(manifest.exam.policy).solutions
+    if out_dir is not None and with_feedback(solutions):
+        _add_solutions(outcome, manifest, exercises)
     if out_dir is not None:
         stage = time.perf_counter()
         staging = staging_folder(out_dir)
@@ -218,6 +224,19 @@ def rejected_files(problems: list[Problem]) -> dict[str, dict[str, list[str]]]:
             rejected.setdefault(problem.student_id, {}).setdefault(
                 problem.exercise_id, []).append(f"{name}: {problem.message}")
     return rejected
+
+
+def _add_solutions(outcome: ClassOutcome, manifest: Manifest,
+                   exercises: dict[str, Exercise]) -> None:
+    """Each student's worked solutions, to end their feedback (:mod:`.solutions`)."""
+    for student in manifest.students:
+        def warn(exercise_id: str, message: str, student_id=student.student_id) -> None:
+            outcome.problems.append(Problem("warning", "solution", message, student_id,
+                                            exercise_id))
+
+        solved = [(exercises[e.exercise], stored_variant(exercises[e.exercise], e))
+                  for e in student.variants]
+        outcome.feedback[student.student_id]["solutions"] = feedback_solutions(solved, warn)
 
 
 def gradebook_row(student_id: str, results: dict, exercise_ids: list[str],
