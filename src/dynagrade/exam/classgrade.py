@@ -37,6 +37,7 @@ from ..exercise.loader import Bank, open_bank
 from ..exercise.model import Exercise, Variant
 from ..exercise.numbers import GRADEBOOK_DECIMALS, points_text
 from ..exercise.scoring import grade_variant, graded_error
+from ..grading import prepare
 from .files import write_atomic
 from .outputs import staging_folder, swap_in
 from .run import GradingRun, file_sha256
@@ -263,6 +264,7 @@ def _run(work, manifest_parts, exercises, jobs, progress) -> list[dict]:
     a larger one in worker processes (in chunks, so that progress moves)."""
     jobs = default_jobs(jobs) if len(work) >= 40 else 1
     size = max(1, len(work) // (jobs * 8))
+    prepare()  # before any verdict's time budget starts (forked workers inherit it)
     results = []
     with Pool(GradingRun(exercises, manifest_parts), jobs) as pool:
         for done, result in enumerate(pool.map(_grade_one, work, chunksize=size), 1):
