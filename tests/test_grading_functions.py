@@ -10,10 +10,12 @@ import math
 import mpmath
 import numpy as np
 import pytest
-import sympy
 
 from dynagrade.grading.functions import FUNCTIONS, mp_call
 from dynagrade.grading.names import FUNCTION_ALIASES, canonical_function
+from deferred import deferred
+
+sympy = deferred("sympy")
 
 POINTS = 7
 
