@@ -16,8 +16,8 @@ from dynagrade.exercise.verify import verify_exercise
 from dynagrade.render.solutions import math_problems
 
 GOLDEN = Path(__file__).parent / "fixtures" / "solutions"
-BANK = open_bank()
-WITH_SOLUTION = [e for e in BANK.all() if e.solution is not None]
+#: the bank's ids, read without loading any exercise file (collection stays light)
+BANK_IDS = open_bank().ids()
 
 
 def _solve(p):
@@ -138,8 +138,11 @@ def test_a_missing_solution_is_noted_and_fails_only_when_required():
 # -- the bank's solutions --------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("exercise", WITH_SOLUTION, ids=lambda e: e.id)
-def test_every_written_solution_shows_each_parts_key_answer_at_two_seeds(exercise):
+@pytest.mark.parametrize("exercise_id", BANK_IDS)
+def test_every_exercise_has_a_solution_showing_each_parts_key_answer_at_two_seeds(
+        bank, exercise_id):
+    exercise = bank.get(exercise_id)
+    assert exercise.solution is not None, "no worked solution (solution=...)"
     offset = sum(map(ord, exercise.id)) * 100
     for seed in (offset, offset + 1):
         variant = exercise.variant(seed)
@@ -174,8 +177,8 @@ GOLDEN_PARAMS = {
 
 
 @pytest.mark.parametrize("exercise_id", sorted(GOLDEN_PARAMS))
-def test_the_golden_solutions_read_as_checked_by_hand(exercise_id):
-    exercise = BANK.get(exercise_id)
+def test_the_golden_solutions_read_as_checked_by_hand(bank, exercise_id):
+    exercise = bank.get(exercise_id)
     variant = exercise.variant(3)
     assert variant.params == GOLDEN_PARAMS[exercise_id]
     expected = (GOLDEN / f"{exercise_id}-seed3.md").read_text(encoding="utf-8")
@@ -200,7 +203,7 @@ def test_show_solution_prints_it_in_the_terminal_and_as_json_text():
 def _bare_exercise(folder: Path) -> str:
     """ballistic-pendulum without its solution, saved in ``folder`` as the exercise
     ``bare``; returns the id."""
-    source = Path(BANK.get("ballistic-pendulum").path).read_text(encoding="utf-8")
+    source = Path(open_bank().get("ballistic-pendulum").path).read_text(encoding="utf-8")
     start = source.index('    solution=r"""')
     end = source.index('""",', start) + len('""",\n')
     (folder / "bare.py").write_text(
@@ -220,7 +223,7 @@ def test_show_solution_of_an_exercise_without_one_says_so(tmp_path):
     assert as_json["solution"] is None
 
 
-def test_a_practice_sheet_ends_with_the_solution_as_comments_and_still_grades(tmp_path):
+def test_a_practice_sheet_ends_with_the_solution_as_comments_and_still_grades(bank, tmp_path):
     from dynagrade.cli import grade_main
 
     runner = CliRunner()
@@ -230,7 +233,7 @@ def test_a_practice_sheet_ends_with_the_solution_as_comments_and_still_grades(tm
     assert written.exit_code == 0, written.output
     text = sheet.read_text(encoding="utf-8")
     seed = int(re.search(r"^SEED = (\d+)$", text, re.M).group(1))
-    exercise = BANK.get("ballistic-pendulum")
+    exercise = bank.get("ballistic-pendulum")
     variant = exercise.variant(seed)
     solution = render_solution(exercise, variant)
     tail = text[text.index("# -- Worked solution"):]
@@ -246,7 +249,7 @@ def test_a_practice_sheet_ends_with_the_solution_as_comments_and_still_grades(tm
                         "V_formula": "not answered"}
 
 
-def test_grade_solution_prints_the_solution_after_the_verdicts(tmp_path):
+def test_grade_solution_prints_the_solution_after_the_verdicts(bank, tmp_path):
     from dynagrade.cli import grade_main
 
     runner = CliRunner()
@@ -257,14 +260,14 @@ def test_grade_solution_prints_the_solution_after_the_verdicts(tmp_path):
     assert shown.output.index("total") < shown.output.index("Solution")
     as_json = json.loads(runner.invoke(grade_main, [str(sheet), "--solution", "--json"]).output)
     seed = as_json["seed"]
-    exercise = BANK.get("damped-free-vibration")
+    exercise = bank.get("damped-free-vibration")
     assert as_json["solution"] == render_solution(exercise, exercise.variant(seed))
 
 
-def test_a_bank_is_complete_when_every_exercise_file_declares_a_solution(tmp_path):
+def test_a_bank_is_complete_when_every_exercise_file_declares_a_solution(bank, tmp_path):
     from dynagrade.exercise.solution_check import bank_is_complete
 
-    source = Path(BANK.get("ballistic-pendulum").path).read_text(encoding="utf-8")
+    source = Path(bank.get("ballistic-pendulum").path).read_text(encoding="utf-8")
     (tmp_path / "with_solution.py").write_text(source, encoding="utf-8")
     assert bank_is_complete(tmp_path)
     _bare_exercise(tmp_path)
