@@ -72,6 +72,8 @@ class Exercise:
     chapter: int | None = None
     figure: Callable[[ParamValues], Any] | None = None
     path: str | None = field(default=None, compare=False)
+    #: the worked solution: a jinja2 template like the statement (parameters, ``answers``, ``si``)
+    solution: str | None = None
 
     def __post_init__(self):
         if not _ID.match(self.id):
