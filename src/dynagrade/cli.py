@@ -86,21 +86,28 @@ def list_command(context, as_json):
 @click.option("--set", "settings", multiple=True, metavar="NAME=VALUE",
               help="Fix a parameter, in its unit or with one (alpha=30 or 'alpha=0.5 rad').")
 @click.option("--answers", is_flag=True, help="Show the reference answers too.")
+@click.option("--solution", is_flag=True, help="Show the worked solution too.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 @click.pass_obj
-def show(context, exercise_id, seed, student, settings, answers, as_json):
-    """Show an exercise's variant: its statement, and on request its answers."""
+def show(context, exercise_id, seed, student, settings, answers, solution, as_json):
+    """Show an exercise's variant: its statement, and on request its answers and worked
+    solution."""
     exercise = context.exercise(exercise_id)
     variant = _variant(exercise, seed, student, settings)
+    worked = _solution(exercise, variant) if solution else None
     if as_json:
         data = variant.to_json()
         if not answers:
             data.pop("answers")
+        if solution:
+            data["solution"] = worked
         click.echo(json.dumps(data, indent=2, ensure_ascii=False))
         return
-    from .render.terminal import variant_panel
+    from .render.terminal import solution_panel, variant_panel
 
     variant_panel(exercise, variant, with_answers=answers)
+    if solution:
+        solution_panel(exercise, variant, worked)
 
 
 @main.command()
@@ -330,6 +337,16 @@ def _variant(exercise, seed, student, settings):
     for warning in variant.warnings:
         click.echo(f"warning: the values set break the constraint '{warning}'", err=True)
     return variant
+
+
+def _solution(exercise, variant) -> str | None:
+    """The variant's worked solution (Markdown), ``None`` when the exercise has none."""
+    from .exercise.solution import SolutionError, render_solution
+
+    try:
+        return render_solution(exercise, variant)
+    except SolutionError as error:
+        raise click.ClickException(str(error)) from None
 
 
 def _parse_settings(exercise, settings) -> dict[str, float]:

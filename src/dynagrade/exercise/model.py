@@ -19,6 +19,7 @@ import numpy as np
 
 from .params import Constraint, Parameter, ParamValues, to_si_values
 from .parts import Part
+from .solution import check_solution
 from .statement import compile_statement, render_statement
 
 _ID = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
@@ -57,7 +58,10 @@ class Exercise:
     """An exercise template: parameters, constraints, statement, solver and parts.
 
     ``solve(p)`` receives the parameters in SI (``p.alpha`` in radians) and returns the
-    reference answer of every non-symbolic part, in SI, by calling the mechanics core.
+    reference answer of every non-symbolic part, in SI, by calling the mechanics core;
+    it may return extra keys beside the parts' names (intermediate quantities for the
+    worked ``solution``, never graded). ``solution`` is a jinja2 template of Markdown
+    (:mod:`.solution`).
     """
 
     id: str
@@ -71,6 +75,7 @@ class Exercise:
     constraints: tuple[Constraint, ...] = ()
     chapter: int | None = None
     figure: Callable[[ParamValues], Any] | None = None
+    solution: str | None = None
     path: str | None = field(default=None, compare=False)
     #: the worked solution: a jinja2 template like the statement (parameters, ``answers``, ``si``)
     solution: str | None = None
@@ -91,6 +96,7 @@ class Exercise:
             object.__setattr__(self, "chapter", int(match.group(1)) if match else 0)
         object.__setattr__(self, "topics", tuple(self.topics))
         compile_statement(self.statement)
+        check_solution(self)
 
     # -- parameters -------------------------------------------------------------------
 

@@ -48,6 +48,18 @@ def variant_panel(exercise, variant, with_answers: bool) -> None:
         answers_table(exercise, variant)
 
 
+def solution_panel(exercise, variant, solution: str | None) -> None:
+    """The variant's worked solution (Markdown), or a line saying there is none yet."""
+    from rich.markdown import Markdown
+
+    console = _console()
+    if solution is None:
+        console.print(f"[dim]{exercise.id} has no worked solution yet[/]")
+        return
+    console.print(Panel(Markdown(solution), title=f"Solution: {exercise.title}",
+                        subtitle=f"{exercise.id} · seed {variant.seed}"))
+
+
 def result_table(exercise, result) -> None:
     table = Table(title=f"{exercise.title} ({exercise.id}, seed {result.seed})")
     for column in ("part", "verdict", "points", "feedback"):
