@@ -77,8 +77,6 @@ class Exercise:
     figure: Callable[[ParamValues], Any] | None = None
     solution: str | None = None
     path: str | None = field(default=None, compare=False)
-    #: the worked solution: a jinja2 template like the statement (parameters, ``answers``, ``si``)
-    solution: str | None = None
 
     def __post_init__(self):
         if not _ID.match(self.id):
