@@ -83,7 +83,7 @@ slides down (eq. (1.74)).
    Here $\\mu$ = {{ mu }} is smaller than $\\tan\\alpha$: the acceleration is positive, the block
    keeps speeding up and never comes to rest — **{{ answers.stops }}**.
 {%- endif %}
-4. **Formula.** $\\ddot x_1$ = {{ answers.a_formula }}.
+4. **Formula.** $\\ddot x_1$ = `{{ answers.a_formula }}`.
 """,
     solve=solve,
     figure=figure,

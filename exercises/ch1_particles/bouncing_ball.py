@@ -57,7 +57,7 @@ floor reverses the normal velocity and scales it by the coefficient of restituti
    (with $m$ = {{ m }}).
 4. **Third rebound.** Every impact multiplies the height by $e^2$, so after three impacts
    $h_3 = e^6 h_0$ = {{ answers.h3 }}.
-5. **Formula.** $h_1$ = {{ answers.h1_formula }}.
+5. **Formula.** $h_1$ = `{{ answers.h1_formula }}`.
 """,
     solve=solve,
     parts=(

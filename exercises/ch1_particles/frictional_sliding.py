@@ -47,7 +47,7 @@ $T_2 - T_1 = W_{12}$, eq. (1.87), between the start ($T_1 = \\tfrac{1}{2} m v_0^
    $\\mu g$, so the speed $v_0 - \\mu g t$ vanishes at $t = v_0/(\\mu g)$ = {{ answers.t_stop }}.
 3. **Work of friction.** $W = -\\mu m g\\,\\Delta x$ with $m$ = {{ m }}: $W$ = {{ answers.W }} —
    negative, and in size exactly the kinetic energy $\\tfrac{1}{2} m v_0^2$ the crate had.
-4. **Formula.** $\\Delta x$ = {{ answers.dx_formula }}.
+4. **Formula.** $\\Delta x$ = `{{ answers.dx_formula }}`.
 """,
     solve=solve,
     parts=(

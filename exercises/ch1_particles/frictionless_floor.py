@@ -67,7 +67,7 @@ $\\sum F_i = m a$, eq. (1.63), component by component (Example 1.7):
 3. **Speed.** Constant acceleration: $v(t) = v_0 + \\ddot x_1 t$; with $v_0$ = {{ v0 }} and
    $t$ = {{ t }}: $v$ = {{ answers.v_t }}.
 4. **Without the rope.** $N = mg$ (eq. (1.70)) = {{ answers.N_free }}.
-5. **Formula.** $N$ = {{ answers.N_formula }}.
+5. **Formula.** $N$ = `{{ answers.N_formula }}`.
 """,
     solve=solve,
     parts=(

@@ -81,7 +81,7 @@ slides up.
    $a = g(\\sin\\alpha + \\mu\\cos\\alpha)$ = {{ answers.a_up }}. (Check: $v_0^2 = 2a\\,\\Delta x$.)
 3. **Time.** The deceleration is constant, so the speed $v_0 - at$ vanishes at
    $t = v_0/a$ = {{ answers.t_stop }}.
-4. **Formula.** $\\Delta x$ = {{ answers.delta_x_formula }}.
+4. **Formula.** $\\Delta x$ = `{{ answers.delta_x_formula }}`.
 """,
     solve=solve,
     figure=figure,

@@ -57,7 +57,7 @@ integrate (Example 1.2).
    linearly with distance, $x = (v_0 - v_1)/k$ = {{ answers.x_1 }}.
 4. **Total distance.** Let $v_1 \\to 0$: $x_\\infty = v_0/k$ = {{ answers.x_total }} — finite,
    although the particle never quite stops.
-5. **Formula.** $v(t)$ = {{ answers.v_formula }}.
+5. **Formula.** $v(t)$ = `{{ answers.v_formula }}`.
 """,
     solve=solve,
     parts=(

@@ -109,7 +109,7 @@ $R(1 - \\cos\\varphi)$ above the entry (Example 1.13).
 5. **Clamping moment.** The car pushes on the track with $N$ along the radius; that force
    has the lever arm $R\\sin\\varphi$ about A (eq. (1.122)), so
    $|M_A| = N R\\sin\\varphi$ = {{ answers.M_A }}.
-6. **Formula.** $v_{0,\\min}$ = {{ answers.v_min_formula }}.
+6. **Formula.** $v_{0,\\min}$ = `{{ answers.v_min_formula }}`.
 """,
     solve=solve,
     figure=figure,

@@ -95,7 +95,7 @@ $v_n' = e\\,v_n$ = {{ si.v_n_out }} m/s (with $e$ = {{ e }}) and $v_t' = v_t$.
    (with $m$ = {{ m }}).
 4. **Impulse.** Linear momentum balance across the impact: the impulse equals the change of
    momentum, which is purely normal, $J = m(v_n' + v_n) = (1 + e)\\, m v_n$ = {{ answers.J }}.
-5. **Formula.** $\\theta'$ = {{ answers.theta_formula }}.
+5. **Formula.** $\\theta'$ = `{{ answers.theta_formula }}`.
 """,
     solve=solve,
     figure=figure,

@@ -46,7 +46,7 @@ $\\rho = \\sqrt{1 + f'^2}^{\\,3}/|f''|$ (eq. (1.48)).
 3. **Normal acceleration.** Along a path $a = \\dot v\\,e_t + \\frac{v^2}{\\rho}\\,e_n$
    (eq. (1.51)); the normal part is $v^2/\\rho$ with $v$ = {{ v }}: $a_n$ = {{ answers.a_n }}.
    It does not depend on how the speed changes.
-4. **Formula.** $\\rho$ = {{ answers.rho_formula }}.
+4. **Formula.** $\\rho$ = `{{ answers.rho_formula }}`.
 """,
     solve=solve,
     parts=(

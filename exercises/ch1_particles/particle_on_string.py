@@ -87,7 +87,7 @@ $\\omega = 2\\pi n$ = {{ si.omega }} rad/s (with $n$ in revolutions per second).
 2. **Speed.** $v = l\\omega$ = {{ answers.v }}.
 3. **Twice the rate.** $S$ grows with $\\omega^2$: doubling the rate multiplies it by four,
    $S$ = {{ answers.S_double }}.
-4. **Formula.** $S$ = {{ answers.S_formula }}.
+4. **Formula.** $S$ = `{{ answers.S_formula }}`.
 """,
     solve=solve,
     figure=figure,

@@ -56,7 +56,7 @@ Only gravity acts during the flight and gravity is conservative, so $T + V$ is c
 3. **Kinetic energy at the top.** $T = \\tfrac{1}{2} m v_{\\text{top}}^2$ with $m$ = {{ m }}:
    $T$ = {{ answers.T_top }}, out of $\\tfrac{1}{2} m v_0^2$ = {{ si.T0 }} J at launch; the rest
    has become potential energy $mgh$.
-4. **Formula.** $h$ = {{ answers.h_formula }}.
+4. **Formula.** $h$ = `{{ answers.h_formula }}`.
 """,
     solve=solve,
     parts=(

@@ -70,7 +70,7 @@ $$\\ddot\\varphi = -\\frac{k}{m}\\dot\\varphi - \\frac{g}{R}\\sin\\varphi.$$
    (towards B); the drag is perpendicular to the string. So
    $S - mg\\cos\\varphi = mR\\dot\\varphi^2$, i.e. $S = mg\\cos\\varphi + mR\\dot\\varphi^2$
    = {{ answers.S }}.
-4. **Formula.** $\\ddot\\varphi$ = {{ answers.eom }}.
+4. **Formula.** $\\ddot\\varphi$ = `{{ answers.eom }}`.
 """,
     solve=solve,
     parts=(

@@ -69,7 +69,7 @@ $v_1(0)$ = {{ v01 }}, $v_2(0)$ = {{ v02 }}; $t$ = {{ t }}, $g$ = {{ g }}.
 2. **Velocity.** The horizontal component does not change, the vertical one decreases
    linearly: $v = (v_1(0),\\ v_2(0) - gt)$ = {{ answers.v_t }}.
 3. **Height.** The second component of the position: $x_2$ = {{ answers.x2_t }}.
-4. **Formula.** $x_2(t)$ = {{ answers.x2_formula }}.
+4. **Formula.** $x_2(t)$ = `{{ answers.x2_formula }}`.
 """,
     solve=solve,
     parts=(

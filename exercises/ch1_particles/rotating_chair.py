@@ -68,7 +68,7 @@ $r_0$ = {{ r0 }}, $r_1$ = {{ r1 }}).
    $W = \\tfrac{1}{2}(I_0 + m r_1^2)\\,\\omega_1^2 - \\tfrac{1}{2}(I_0 + m r_0^2)\\,\\omega_0^2$
    = {{ answers.W }} — positive: pulling the mass in against its tendency to fly outward
    costs work.
-4. **Formula.** $\\omega_1$ = {{ answers.omega_formula }}.
+4. **Formula.** $\\omega_1$ = `{{ answers.omega_formula }}`.
 """,
     solve=solve,
     parts=(

@@ -65,7 +65,7 @@ does. Use the angular momentum balance about the axis (Example 1.16).
 4. **Total angle.** Integrate once more: $\\varphi(\\infty) - \\varphi(0)
    = \\int_0^\\infty \\dot\\varphi_0 e^{-kt/m}\\,\\mathrm dt = m\\dot\\varphi_0/k$
    = {{ answers.phi_total }} — finite, although the particle never quite stops.
-5. **Formula.** $\\dot\\varphi(t)$ = {{ answers.omega_formula }}.
+5. **Formula.** $\\dot\\varphi(t)$ = `{{ answers.omega_formula }}`.
 """,
     solve=solve,
     parts=(

@@ -92,7 +92,7 @@ only force doing work, and it is conservative: the energy $T + V$ is conserved
    with $m$ = {{ m }}: $v$ = {{ answers.v }}. Linear momentum balance would need the
    integration of a force that changes direction and size along the way; the energy
    balance skips it.
-4. **Formula.** $v$ = {{ answers.v_formula }}.
+4. **Formula.** $v$ = `{{ answers.v_formula }}`.
 """,
     solve=solve,
     figure=figure,

@@ -56,7 +56,7 @@ Measure heights from the starting point.
 3. **Speed at the natural length.** The particle has then risen by $\\Delta x$ and the spring
    is relaxed: $\\tfrac{1}{2} k\\,\\Delta x^2 = \\tfrac{1}{2} m v^2 + mg\\,\\Delta x$, so
    $v = \\sqrt{k\\Delta x^2/m - 2g\\,\\Delta x}$ = {{ answers.v_release }}.
-4. **Formula.** $h$ = {{ answers.h_formula }}.
+4. **Formula.** $h$ = `{{ answers.h_formula }}`.
 """,
     solve=solve,
     parts=(

@@ -63,7 +63,7 @@ circumferential velocity $v_t = l\\omega$ contributes: $H_B = m\\,l\\,v_t$ (eq. 
    string force has a component along the (inward) path and does work. By the work–energy
    balance it equals the change of kinetic energy,
    $W = \\tfrac{1}{2} m\\,(v_t(l_1)^2 - v_t(0)^2)$; with $m$ = {{ m }}: $W$ = {{ answers.W }}.
-4. **Formula.** $\\omega_1$ = {{ answers.omega_formula }}.
+4. **Formula.** $\\omega_1$ = `{{ answers.omega_formula }}`.
 """,
     solve=solve,
     parts=(

@@ -56,7 +56,7 @@ Here $l$ = {{ l }}, $\\dot\\varphi = \\omega$ = {{ omega }} and $\\ddot\\varphi 
    = {{ answers.a_phi }}.
 4. **Magnitude.** The components are perpendicular:
    $|a| = \\sqrt{a_r^2 + a_\\varphi^2} = l\\sqrt{\\omega^4 + \\dot\\omega^2}$ = {{ answers.a_abs }}.
-5. **Formula.** $a_r$ = {{ answers.a_r_formula }}.
+5. **Formula.** $a_r$ = `{{ answers.a_r_formula }}`.
 """,
     solve=solve,
     parts=(
