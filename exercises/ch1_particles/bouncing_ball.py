@@ -42,18 +42,18 @@ rigid floor. The coefficient of restitution is $e$ = {{ e }}; $g$ = {{ g }}, no 
 4. How high does it rise after the third impact?
 5. Write the height after the first impact as a formula in $h_0$ and $e$.
 """,
-    solution="""
+    solution=r"""
 Between impacts only gravity acts, so energy is conserved (eq. (1.102)); in an impact the
 floor reverses the normal velocity and scales it by the coefficient of restitution $e$.
 
-1. **Rebound speed.** Energy conservation on the way down, $\\tfrac{1}{2} m v^2 = mgh_0$, gives the
-   impact speed $v = \\sqrt{2gh_0}$ = {{ si.v_in }} m/s. The impact reverses it and multiplies
-   it by $e$ = {{ e }}: $v' = e\\sqrt{2gh_0}$ = {{ answers.v_out }}.
+1. **Rebound speed.** Energy conservation on the way down, $\tfrac{1}{2} m v^2 = mgh_0$, gives the
+   impact speed $v = \sqrt{2gh_0}$ = {{ si.v_in }} m/s. The impact reverses it and multiplies
+   it by $e$ = {{ e }}: $v' = e\sqrt{2gh_0}$ = {{ answers.v_out }}.
 2. **First rebound height.** Energy conservation on the way up,
    $h_1 = v'^2/(2g) = e^2 h_0$ = {{ answers.h1 }}: the height goes with the speed squared.
-3. **Energy lost.** The kinetic energy before the impact is $\\tfrac{1}{2} m v^2 = mgh_0$ and
+3. **Energy lost.** The kinetic energy before the impact is $\tfrac{1}{2} m v^2 = mgh_0$ and
    keeps the fraction $e^2$, so
-   $\\Delta T = \\tfrac{1}{2} m (v^2 - v'^2) = (1 - e^2)\\, m g h_0$ = {{ answers.dT }}
+   $\Delta T = \tfrac{1}{2} m (v^2 - v'^2) = (1 - e^2)\, m g h_0$ = {{ answers.dT }}
    (with $m$ = {{ m }}).
 4. **Third rebound.** Every impact multiplies the height by $e^2$, so after three impacts
    $h_3 = e^6 h_0$ = {{ answers.h3 }}.

@@ -36,7 +36,7 @@ counted). How many degrees of freedom does it have when it
 4. is attached to a fixed point O by an elastic spring?
 5. Which of these cases need a constraint (reaction) force to enforce the motion?
 """,
-    solution="""
+    solution=r"""
 A particle in $d$ dimensions has $d$ degrees of freedom (eq. (1.2)); every kinematic
 constraint removes one, so with $k$ constraints it has $d - k$ (eq. (1.21), Example 1.4).
 Here $d$ = {{ d }}.

@@ -75,17 +75,17 @@ minute. Gravity acts perpendicular to the table.
 3. What would the string force be at twice the rate of revolution?
 4. Write the string force as a formula in $m$, $l$ and the angular velocity $\\omega$.
 """,
-    solution="""
+    solution=r"""
 The particle moves on a circle of radius $l$ at constant angular velocity, so its
-acceleration is purely centripetal, $a = -l\\omega^2 e_r$ (eq. (1.83)). On the table,
+acceleration is purely centripetal, $a = -l\omega^2 e_r$ (eq. (1.83)). On the table,
 gravity and the normal force cancel; the string force $S$ is the only force in the plane.
-First the rate in SI: one revolution is $2\\pi$, so $n$ = {{ n }} is
-$\\omega = 2\\pi n$ = {{ si.omega }} rad/s (with $n$ in revolutions per second).
+First the rate in SI: one revolution is $2\pi$, so $n$ = {{ n }} is
+$\omega = 2\pi n$ = {{ si.omega }} rad/s (with $n$ in revolutions per second).
 
-1. **String force.** Linear momentum balance along $e_r$, eq. (1.84): $-S = -m l \\omega^2$,
-   so $S = m l\\omega^2$. With $m$ = {{ m }} and $l$ = {{ l }}: $S$ = {{ answers.S }}.
-2. **Speed.** $v = l\\omega$ = {{ answers.v }}.
-3. **Twice the rate.** $S$ grows with $\\omega^2$: doubling the rate multiplies it by four,
+1. **String force.** Linear momentum balance along $e_r$, eq. (1.84): $-S = -m l \omega^2$,
+   so $S = m l\omega^2$. With $m$ = {{ m }} and $l$ = {{ l }}: $S$ = {{ answers.S }}.
+2. **Speed.** $v = l\omega$ = {{ answers.v }}.
+3. **Twice the rate.** $S$ grows with $\omega^2$: doubling the rate multiplies it by four,
    $S$ = {{ answers.S_double }}.
 4. **Formula.** $S$ = `{{ answers.S_formula }}`.
 """,
