@@ -46,7 +46,7 @@ class SiValue:
     """A value the solver returned (or a parameter), in SI, as a solution prints it."""
 
     def __init__(self, value: Any):
-        self.value = value
+        self.value = value.tolist() if hasattr(value, "tolist") else value
 
     def __str__(self) -> str:
         return answer_text(self.value)
