@@ -47,13 +47,13 @@ Only gravity acts during the flight and gravity is conservative, so $T + V$ is c
 
 1. **Speed at the top.** Gravity has no horizontal component, so the horizontal velocity
    $v_0\cos\alpha$ never changes; at the highest point the vertical velocity is zero. Hence
-   $v_{\text{top}} = v_0\cos\alpha$ = {{ answers.v_top }} (with $v_0$ = {{ v0 }},
+   $v_{\text{top} } = v_0\cos\alpha$ = {{ answers.v_top }} (with $v_0$ = {{ v0 }},
    $\alpha$ = {{ alpha }}).
 2. **Peak height.** Energy conservation between launch and top,
-   $\tfrac{1}{2} m v_0^2 = \tfrac{1}{2} m v_{\text{top}}^2 + mgh$, gives
-   $$h = \frac{v_0^2 - v_{\text{top}}^2}{2g} = \frac{v_0^2\sin^2\alpha}{2g}$$
+   $\tfrac{1}{2} m v_0^2 = \tfrac{1}{2} m v_{\text{top} }^2 + mgh$, gives
+   $$h = \frac{v_0^2 - v_{\text{top} }^2}{2g} = \frac{v_0^2\sin^2\alpha}{2g}$$
    (eq. (1.106)); with $g$ = {{ g }}: $h$ = {{ answers.h }}.
-3. **Kinetic energy at the top.** $T = \tfrac{1}{2} m v_{\text{top}}^2$ with $m$ = {{ m }}:
+3. **Kinetic energy at the top.** $T = \tfrac{1}{2} m v_{\text{top} }^2$ with $m$ = {{ m }}:
    $T$ = {{ answers.T_top }}, out of $\tfrac{1}{2} m v_0^2$ = {{ si.T0 }} J at launch; the rest
    has become potential energy $mgh$.
 4. **Formula.** $h$ = `{{ answers.h_formula }}`.

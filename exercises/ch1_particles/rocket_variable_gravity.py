@@ -56,7 +56,7 @@ $$\tfrac{1}{2} v^2 - \tfrac{1}{2} v_0^2 = -\int_0^x \frac{gR^2}{(R + \xi)^2}\,\m
    $$h_{\max} = \frac{R v_0^2}{2gR - v_0^2}$$
    = {{ answers.h_max }}.
 3. **Escape speed.** $h_{\max}$ grows without bound as $v_0^2 \to 2gR$: above
-   $v_{\text{esc}} = \sqrt{2gR}$ = {{ answers.v_esc }} the probe never comes back.
+   $v_{\text{esc} } = \sqrt{2gR}$ = {{ answers.v_esc }} the probe never comes back.
 4. **Formula.** $h_{\max}$ = `{{ answers.h_formula }}`.
 """,
     solve=solve,

@@ -88,7 +88,7 @@ only force doing work, and it is conservative: the energy $T + V$ is conserved
    $\delta$ = {{ si.stretch }} m: $V_1$ = {{ answers.V1 }}.
 3. **Speed below the fixed point.** There the spring has its natural length, $V_2 = 0$.
    $T_1 + V_1 = T_2 + V_2$ with $T_1 = 0$ and $T_2 = \tfrac{1}{2} m v^2$ gives (eq. (1.125))
-   $$v = \sqrt{\frac{k}{m}}\left(\sqrt{\Delta x^2 + l_0^2} - l_0\right);$$
+   $$v = \sqrt{\frac{k}{m} }\left(\sqrt{\Delta x^2 + l_0^2} - l_0\right);$$
    with $m$ = {{ m }}: $v$ = {{ answers.v }}. Linear momentum balance would need the
    integration of a force that changes direction and size along the way; the energy
    balance skips it.

@@ -52,7 +52,7 @@ Measure heights from the starting point.
    $$\tfrac{1}{2} k\,\Delta x^2 = mgh \quad\Rightarrow\quad h = \frac{k\,\Delta x^2}{2mg}.$$
    With $k$ = {{ k }}, $\Delta x$ = {{ dx }}, $m$ = {{ m }}, $g$ = {{ g }}:
    $h$ = {{ answers.h }}.
-2. **Stored energy.** $V_{\text{spring}} = \tfrac{1}{2} k\,\Delta x^2$ = {{ answers.V_spring }}.
+2. **Stored energy.** $V_{\text{spring} } = \tfrac{1}{2} k\,\Delta x^2$ = {{ answers.V_spring }}.
 3. **Speed at the natural length.** The particle has then risen by $\Delta x$ and the spring
    is relaxed: $\tfrac{1}{2} k\,\Delta x^2 = \tfrac{1}{2} m v^2 + mg\,\Delta x$, so
    $v = \sqrt{k\Delta x^2/m - 2g\,\Delta x}$ = {{ answers.v_release }}.
