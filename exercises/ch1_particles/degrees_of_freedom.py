@@ -41,7 +41,7 @@ A particle in $d$ dimensions has $d$ degrees of freedom (eq. (1.2)); every kinem
 constraint removes one, so with $k$ constraints it has $d - k$ (eq. (1.21), Example 1.4).
 Here $d$ = {{ d }}.
 
-1. **Free particle.** No constraint: $d$ = **{{ answers.free }}**.
+1. **Free particle.** No constraint: all $d$ coordinates are free, **{{ answers.free }}**.
 2. **On flat ground.** The ground fixes the height, one constraint: $d - 1$ =
    **{{ answers.ground }}**.
 3. **Rigid link.** The link fixes the distance $|r - r_O|$, one constraint: $d - 1$ =
