@@ -146,7 +146,7 @@ def test_every_written_solution_shows_each_parts_key_answer_at_two_seeds(exercis
         text = render_solution(exercise, variant)
         for part in exercise.parts:
             assert part.shown_answer(variant.answers[part.name]) in text, (seed, part.name)
-        for error_sign in ("Undefined", "Traceback", "{{", "}}", "{%"):
+        for error_sign in ("Undefined", "Traceback", "{{", "{%"):
             assert error_sign not in text, (seed, error_sign)
         assert not re.search(r"\b(nan|inf)\b", text), seed
         assert solution_problems(exercise, variant) == [], seed
@@ -207,3 +207,44 @@ def test_show_solution_of_an_exercise_without_one_says_so():
     as_json = json.loads(runner.invoke(main, ["show", missing.id, "--solution",
                                               "--json"]).output)
     assert as_json["solution"] is None
+
+
+def test_a_practice_sheet_ends_with_the_solution_as_comments_and_still_grades(tmp_path):
+    from dynagrade.cli import grade_main
+
+    runner = CliRunner()
+    sheet = tmp_path / "exercise.py"
+    written = runner.invoke(main, ["sheet", "ballistic-pendulum", "--student", "s1",
+                                   "--solution", "-o", str(sheet)])
+    assert written.exit_code == 0, written.output
+    text = sheet.read_text(encoding="utf-8")
+    seed = int(re.search(r"^SEED = (\d+)$", text, re.M).group(1))
+    exercise = BANK.get("ballistic-pendulum")
+    variant = exercise.variant(seed)
+    solution = render_solution(exercise, variant)
+    tail = text[text.index("# -- Worked solution"):]
+    assert all(line.startswith("#") for line in tail.splitlines())
+    assert [line[2:] for line in tail.splitlines()[2:]] == \
+        [line.rstrip() for line in solution.splitlines()]
+    # the comments are not answers: with V filled in, V is graded and the rest is unanswered
+    V = exercise.part("V").answer_text(variant.answers["V"])
+    sheet.write_text(text.replace("V = None", f"V = {V}"), encoding="utf-8")
+    graded = json.loads(runner.invoke(grade_main, [str(sheet), "--json"]).output)
+    statuses = {p["name"]: p["status"] for p in graded["parts"]}
+    assert statuses == {"V": "correct", "h": "not answered", "fraction_lost": "not answered",
+                        "V_formula": "not answered"}
+
+
+def test_grade_solution_prints_the_solution_after_the_verdicts(tmp_path):
+    from dynagrade.cli import grade_main
+
+    runner = CliRunner()
+    sheet = tmp_path / "exercise.py"
+    runner.invoke(main, ["sheet", "damped-free-vibration", "--student", "s2", "-o", str(sheet)])
+    shown = runner.invoke(grade_main, [str(sheet), "--solution"])
+    assert shown.exit_code == 0, shown.output
+    assert shown.output.index("total") < shown.output.index("Solution")
+    as_json = json.loads(runner.invoke(grade_main, [str(sheet), "--solution", "--json"]).output)
+    seed = as_json["seed"]
+    exercise = BANK.get("damped-free-vibration")
+    assert as_json["solution"] == render_solution(exercise, exercise.variant(seed))

@@ -78,12 +78,12 @@ Section 4.3.1, $m \ddot x + c \dot x + k x = 0$, or, divided by $m$,
 $\ddot x + 2 \zeta \omega_n \dot x + \omega_n^2 x = 0$ (Section 4.3.2).
 
 1. Comparing the two forms: $\omega_n = \sqrt{k/m}$ = {{ answers.omega_n }}. The critical
-   damping is $c_{cr} = 2\sqrt{k m}$ = {{ si.c_cr }} N·s/m, and the damping ratio
-   $\zeta = c/c_{cr} = c/(2\sqrt{k m})$ = {{ answers.zeta }}.
+   damping is $c_{\mathrm{cr}} = 2\sqrt{k m}$ = {{ si.c_cr }} N·s/m, and the damping ratio
+   $\zeta = c/c_{\mathrm{cr}} = c/(2\sqrt{k m})$ = {{ answers.zeta }}.
 2. For $\zeta < 1$ the solution is $x(t) = e^{-\zeta \omega_n t}(A \cos \omega_d t + B \sin \omega_d t)$
    with the damped angular frequency $\omega_d = \omega_n \sqrt{1 - \zeta^2}$ = {{ answers.omega_d }}
    and the period $T_d = 2\pi/\omega_d$ = {{ answers.T_d }}.
-3. $0 < \zeta < 1$: the motion is {{ answers.regime }} -- it oscillates with an
+3. $0 < \zeta < 1$: the motion is {{ answers.regime }}: it oscillates with an
    amplitude that decays like $e^{-\zeta \omega_n t}$.
 4. Successive peaks are one period $T_d$ apart, so their ratio is
    $e^{\zeta \omega_n T_d}$ and the logarithmic decrement is

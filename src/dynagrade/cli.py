@@ -137,16 +137,21 @@ def solve(context, exercise_id, seed, settings, as_json):
 @click.option("--student", required=True, help="The student's id.")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
               help="Where to write the file (default: print it).")
+@click.option("--solution", is_flag=True,
+              help="End the file with the worked solution, as comments (for practice).")
 @click.pass_obj
-def sheet(context, exercise_id, student, output):
+def sheet(context, exercise_id, student, output, solution):
     """Write a student's fill-in file for an exercise."""
     from .exercise.seeds import student_seed
     from .exercise.sheet import write_sheet
+    from .exercise.solution import as_comments
 
     exercise = context.exercise(exercise_id)
     variant = exercise.variant(student_seed(exercise.id, student))
     filename = Path(output).name if output else "exercise.py"
     text = write_sheet(exercise, variant, student, filename)
+    if solution:
+        text += as_comments(exercise, _solution(exercise, variant))
     if output:
         Path(output).write_text(text, encoding="utf-8")
         click.echo(f"wrote {output}: {exercise.title}, variant of {student}", err=True)
@@ -222,19 +227,24 @@ def grade_command(context, files, as_json, manifest, output, jobs):
 @click.option("--jobs", type=click.IntRange(1), default=None,
               help="Worker processes (default: up to 2).")
 @click.option("--no-pdf", is_flag=True, help="Skip the PDFs (faster drafts).")
+@click.option("--solutions", is_flag=True,
+              help="Write each student's worked solutions (students/<id>/solution.*) and "
+                   "solutions.pdf with all of them, for the staff.")
 @click.pass_obj
-def exam(context, exam_file, roster, output, jobs, no_pdf):
+def exam(context, exam_file, roster, output, jobs, no_pdf, solutions):
     """Generate an exam: every student's variants, sheets, keys, Moodle XML, manifest."""
     from .exam.generate import generate_exam
     from .exam.spec import ExamSpecError
     from .exam.variants import NoUsableVariant
+    from .exercise.solution import SolutionError
     from .render.terminal import progress_reporter
 
     try:
         with progress_reporter() as progress:
             report = generate_exam(exam_file, roster, output, bank=context.bank, jobs=jobs,
-                                   pdf=not no_pdf, progress=progress)
-    except (ExamSpecError, NoUsableVariant, loader.ExerciseFileError) as error:
+                                   pdf=not no_pdf, progress=progress, solutions=solutions)
+    except (ExamSpecError, NoUsableVariant, loader.ExerciseFileError,
+            SolutionError) as error:
         raise click.ClickException(str(error)) from None
     click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
                f"({report.redraws} draws replaced because they could not discriminate; see "
@@ -247,17 +257,18 @@ def exam(context, exam_file, roster, output, jobs, no_pdf):
 @click.command(context_settings={"help_option_names": ["-h", "--help"]})
 @click.argument("file", type=click.Path(exists=True, dir_okay=False))
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@click.option("--solution", is_flag=True, help="Print the worked solution after the verdicts.")
 @_exercises_option
-def grade_main(file, as_json, folders):
+def grade_main(file, as_json, solution, folders):
     """Grade one filled-in exercise file and print feedback per part.
 
     The file is read, never run: each answer must be a number, a quoted string, a list
     of numbers or None.
     """
-    _grade_files(_Context(folders), (file,), as_json)
+    _grade_files(_Context(folders), (file,), as_json, solution)
 
 
-def _grade_files(context, files, as_json):
+def _grade_files(context, files, as_json, solution=False):
     from .exercise.model import ConstraintError
     from .exercise.scoring import grade_variant
     from .exercise.seeds import student_seed
@@ -282,16 +293,21 @@ def _grade_files(context, files, as_json):
         except ConstraintError as error:
             raise click.ClickException(f"{file}: {error}") from None
         result = grade_variant(exercise, variant, sheet.answers, sheet.problems)
-        results.append((exercise, result))
+        results.append((exercise, variant, result))
     if as_json:
-        data = [r.to_json() for _, r in results]
+        data = [r.to_json() for _, _, r in results]
+        if solution:
+            for entry, (exercise, variant, _) in zip(data, results):
+                entry["solution"] = _solution(exercise, variant)
         click.echo(json.dumps(data[0] if len(data) == 1 else data, indent=2,
                               ensure_ascii=False))
         return
-    from .render.terminal import result_table
+    from .render.terminal import result_table, solution_panel
 
-    for exercise, result in results:
+    for exercise, variant, result in results:
         result_table(exercise, result)
+        if solution:
+            solution_panel(exercise, variant, _solution(exercise, variant))
 
 
 def _grade_class(context, manifest, files, output, jobs, as_json):

@@ -18,21 +18,24 @@ from ..render.sheets import (SheetExercise, SheetPart, StudentSheet, sheet_html,
 from .files import write_atomic
 from .manifest import StudentEntry, VariantEntry
 from .run import GenerationRun
+from .solutions import write_solution_sheet
 from .spec import ExamExercise, Student
 from .variants import exam_variant
 
 
 @dataclass(frozen=True)
 class StudentResult:
-    """What one student's job hands back: the manifest entry and the sheet's typst body."""
+    """What one student's job hands back: the manifest entry, the sheet's typst body and,
+    with ``--solutions``, the solution sheet's."""
 
     entry: StudentEntry
     body: str
+    solution_body: str | None = None
 
 
 def student_job(run: GenerationRun, student: Student) -> StudentResult:
     """Variants, fill-in files, figures, sheets and the PDF of ``student``."""
-    entries, sheet_exercises = [], []
+    entries, sheet_exercises, solved = [], [], []
     for number, item in enumerate(run.spec.exercises, 1):
         exercise = run.exercises[item.id]
         variant, redraws = exam_variant(exercise, run.spec.id, student.student_id, item.set,
@@ -40,11 +43,15 @@ def student_job(run: GenerationRun, student: Student) -> StudentResult:
         entries.append(VariantEntry(exercise.id, variant.seed, variant.params,
                                     dict(variant.answers), redraws))
         sheet_exercises.append(_exercise_files(run, student, number, item, exercise, variant))
+        solved.append((exercise, variant))
     sheet = StudentSheet(run.spec.to_json(), student.student_id, student.name,
                          tuple(sheet_exercises))
     body = _write_sheets(run, student, sheet)
+    solution_body = None
+    if run.solutions:
+        solution_body = write_solution_sheet(run, student, solved)
     entry = StudentEntry(student.student_id, student.name, student.email, tuple(entries))
-    return StudentResult(entry, body)
+    return StudentResult(entry, body, solution_body)
 
 
 def _exercise_files(run: GenerationRun, student: Student, number: int, item: ExamExercise,

@@ -189,3 +189,12 @@ def render_solution(exercise: Exercise, variant: Variant) -> str | None:
     except (jinja2.UndefinedError, TypeError, ValueError) as error:
         raise SolutionError(f"{where}: {error}") from None
 
+
+
+def as_comments(exercise: Exercise, solution: str | None) -> str:
+    """The worked solution as comment lines closing a fill-in file (a practice sheet):
+    a fill-in file is read as data, so comments never change what is graded."""
+    lines = (solution or f"{exercise.id} has no worked solution yet.").splitlines()
+    body = "\n".join(f"# {line}".rstrip() for line in lines)
+    return (f"\n# -- Worked solution (try the exercise first) {'-' * 40}\n#\n"
+            f"{body}\n")

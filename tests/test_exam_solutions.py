@@ -1,0 +1,102 @@
+"""``dynagrade exam --solutions``: each student's worked solutions with their own numbers,
+as Markdown, HTML and PDF, and one PDF of all of them for the staff."""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from dynagrade.cli import main
+from dynagrade.render.solutions import NO_SOLUTION
+
+EXAM = """\
+id = "solutions-test"
+title = "Dynamics: solutions test"
+date = 2025-04-14
+
+[[exercise]]
+id = "projectile-range"
+points = 5
+
+[[exercise]]
+id = "ballistic-pendulum"
+points = 5
+"""
+ROSTER = "student_id,name\nq-001,Emmy Noether\nq-002,Leonhard Euler\n"
+
+
+@pytest.fixture(scope="module")
+def generated(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("solutions")
+    (folder / "exam.toml").write_text(EXAM, encoding="utf-8")
+    (folder / "roster.csv").write_text(ROSTER, encoding="utf-8")
+    out = folder / "out"
+    result = CliRunner().invoke(main, ["exam", str(folder / "exam.toml"), "--roster",
+                                       str(folder / "roster.csv"), "-o", str(out),
+                                       "--jobs", "1", "--solutions"])
+    assert result.exit_code == 0, result.output
+    manifest = json.loads((out / "manifest.json").read_text(encoding="utf-8"))
+    return out, manifest
+
+
+def _shown_answers(bank, entry):
+    exercise = bank.get(entry["exercise"])
+    return [part.shown_answer(entry["answers"][part.name]) for part in exercise.parts]
+
+
+def test_every_student_gets_their_own_worked_solutions_as_markdown_and_html(generated, bank):
+    out, manifest = generated
+    for student in manifest["students"]:
+        folder = out / "students" / student["student_id"]
+        markdown = (folder / "solution.md").read_text(encoding="utf-8")
+        html = (folder / "solution.html").read_text(encoding="utf-8")
+        assert student["name"] in markdown and student["name"] in html
+        for entry in student["variants"]:
+            for shown in _shown_answers(bank, entry):
+                assert shown in markdown, (student["student_id"], shown)
+        assert "<math" in html and "$" not in html
+        assert NO_SOLUTION not in markdown
+
+
+def test_the_two_students_solutions_differ_in_their_numbers(generated):
+    out, manifest = generated
+    first, second = (
+        (out / "students" / s["student_id"] / "solution.md").read_text(encoding="utf-8")
+        for s in manifest["students"])
+    assert first != second
+
+
+@pytest.mark.skipif(shutil.which("pdftotext") is None,
+                    reason="pdftotext missing: install the apt package poppler-utils")
+def test_the_solution_pdfs_show_each_students_answers_and_the_staff_pdf_all(generated, bank):
+    out, manifest = generated
+
+    def text(path: Path) -> str:
+        return subprocess.run(["pdftotext", str(path), "-"], check=True,
+                              capture_output=True, text=True, timeout=60).stdout
+
+    combined = text(out / "solutions.pdf")
+    for student in manifest["students"]:
+        pdf = text(out / "students" / student["student_id"] / "solution.pdf")
+        assert student["name"] in pdf and student["name"] in combined
+        for entry in student["variants"]:
+            numeric = next(p for p in bank.get(entry["exercise"]).parts
+                           if p.kind == "numeric")
+            number = numeric.answer_text(entry["answers"][numeric.name], 6)
+            assert number in pdf, (student["student_id"], number)
+    assert combined.count("Exercise 2:") == len(manifest["students"])
+
+
+def test_without_the_option_no_solution_is_written(tmp_path):
+    (tmp_path / "exam.toml").write_text(EXAM, encoding="utf-8")
+    (tmp_path / "roster.csv").write_text(ROSTER, encoding="utf-8")
+    result = CliRunner().invoke(main, ["exam", str(tmp_path / "exam.toml"), "--roster",
+                                       str(tmp_path / "roster.csv"), "-o",
+                                       str(tmp_path / "out"), "--jobs", "1", "--no-pdf"])
+    assert result.exit_code == 0, result.output
+    assert not list((tmp_path / "out").rglob("solution*"))
