@@ -69,7 +69,7 @@ slides down (eq. (1.74)).
 1. **Acceleration.** Linear momentum balance in the inclined frame, eq. (1.72):
    $m\ddot x_1 = mg\sin\alpha - R$ and $0 = N - mg\cos\alpha$. With $R = \mu N$ the mass drops
    out, eq. (1.73):
-   $$\ddot x_1 = g(\sin\alpha - \mu\cos\alpha).$$
+   $\ddot x_1 = g(\sin\alpha - \mu\cos\alpha)$.
    With $g$ = {{ g }}, $\alpha$ = {{ alpha }} and $\mu$ = {{ mu }}: $\ddot x_1$ = {{ answers.a }}.
 2. **Normal force.** From the balance normal to the slope, $N = mg\cos\alpha$ — only the
    component of the weight across the slope presses on it. With $m$ = {{ m }}:

@@ -40,7 +40,7 @@ $T_2 - T_1 = W_{12}$, eq. (1.87), between the start ($T_1 = \tfrac{1}{2} m v_0^2
 
 1. **Stopping distance.** The work of friction over $\Delta x$ is $W_{12} = -\mu m g\,\Delta x$,
    so $0 - \tfrac{1}{2} m v_0^2 = -\mu m g\,\Delta x$ and, eq. (1.91),
-   $$\Delta x = \frac{v_0^2}{2\mu g}.$$
+   $\Delta x = \frac{v_0^2}{2\mu g}$.
    With $v_0$ = {{ v0 }}, $\mu$ = {{ mu }} and $g$ = {{ g }}: $\Delta x$ = {{ answers.dx }}.
    The mass drops out.
 2. **Sliding time.** Linear momentum balance along the floor gives the constant deceleration

@@ -73,7 +73,7 @@ slides up.
 1. **Distance.** Over the distance $\Delta x$ the block rises $h = \Delta x\sin\alpha$.
    Eqs. (1.126)–(1.127): $0 - \tfrac{1}{2} m v_0^2 = -\mu m g\cos\alpha\,\Delta x - mg\,\Delta x\sin\alpha$,
    so (eq. (1.128))
-   $$\Delta x = \frac{v_0^2}{2g(\sin\alpha + \mu\cos\alpha)}.$$
+   $\Delta x = \frac{v_0^2}{2g(\sin\alpha + \mu\cos\alpha)}$.
    With $v_0$ = {{ v0 }}, $\alpha$ = {{ alpha }}, $\mu$ = {{ mu }}, $g$ = {{ g }}:
    $\Delta x$ = {{ answers.delta_x }}. The mass drops out.
 2. **Deceleration.** Linear momentum balance along the slope: gravity and friction both

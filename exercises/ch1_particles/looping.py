@@ -95,7 +95,7 @@ $R(1 - \cos\varphi)$ above the entry (Example 1.13).
    $v^2(\varphi) = v_0^2 - 2gR(1 - \cos\varphi)$ (eq. (1.110)). Linear momentum balance
    towards the centre, $m v^2/R = N - mg\cos\varphi$ (the centripetal acceleration $v^2/R$),
    gives the normal force (eq. (1.116))
-   $$N(\varphi) = \frac{m v_0^2}{R} + mg(3\cos\varphi - 2).$$
+   $N(\varphi) = \frac{m v_0^2}{R} + mg(3\cos\varphi - 2)$.
    It is smallest at the top, $\varphi = \pi$: $N(\pi) = m v_0^2/R - 5mg \ge 0$ requires
    $v_0 \ge \sqrt{5gR}$ (eq. (1.118)); with $R$ = {{ R }} and $g$ = {{ g }}:
    $v_{0,\min}$ = {{ answers.v_min_entry }}. (Merely reaching the top, $v_0 > 2\sqrt{gR}$, is

@@ -39,7 +39,7 @@ For a path given as a graph $x_2 = f(x_1)$ the radius of curvature is
 $\rho = \sqrt{1 + f'^2}^{\,3}/|f''|$ (eq. (1.48)).
 
 1. **Radius of curvature.** For $f = c x_1^2$: $f' = 2cx_1$ and $f'' = 2c$, so (eq. (1.49))
-   $$\rho = \frac{(1 + 4c^2x_1^2)^{3/2} }{2c}.$$
+   $\rho = \frac{(1 + 4c^2x_1^2)^{3/2} }{2c}$.
    With $c$ = {{ c }} and $x_1$ = {{ x1 }}: $\rho$ = {{ answers.rho }}.
 2. **At the vertex.** $x_1 = 0$ leaves $\rho = 1/(2c)$ = {{ answers.rho_vertex }} — the
    tightest bend of the parabola; away from it the wire straightens out.

@@ -51,7 +51,7 @@ Only gravity acts during the flight and gravity is conservative, so $T + V$ is c
    $\alpha$ = {{ alpha }}).
 2. **Peak height.** Energy conservation between launch and top,
    $\tfrac{1}{2} m v_0^2 = \tfrac{1}{2} m v_{\text{top} }^2 + mgh$, gives
-   $$h = \frac{v_0^2 - v_{\text{top} }^2}{2g} = \frac{v_0^2\sin^2\alpha}{2g}$$
+   $h = \frac{v_0^2 - v_{\text{top} }^2}{2g} = \frac{v_0^2\sin^2\alpha}{2g}$
    (eq. (1.106)); with $g$ = {{ g }}: $h$ = {{ answers.h }}.
 3. **Kinetic energy at the top.** $T = \tfrac{1}{2} m v_{\text{top} }^2$ with $m$ = {{ m }}:
    $T$ = {{ answers.T_top }}, out of $\tfrac{1}{2} m v_0^2$ = {{ si.T0 }} J at launch; the rest

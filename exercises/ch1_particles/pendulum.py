@@ -55,7 +55,7 @@ B fixed). The particle moves on a circle of radius $R$, so $H_B = mR^2\dot\varph
 $\dot H_B = mR^2\ddot\varphi$ (eq. (1.140)). The string force passes through B and has no
 moment; gravity has the moment $-mgR\sin\varphi$ and the drag, of size $kR\dot\varphi$
 and opposite to the velocity, the moment $-kR^2\dot\varphi$. Hence (eqs. (1.145) and (1.149))
-$$\ddot\varphi = -\frac{k}{m}\dot\varphi - \frac{g}{R}\sin\varphi.$$
+$\ddot\varphi = -\frac{k}{m}\dot\varphi - \frac{g}{R}\sin\varphi$.
 
 1. **Small-angle period.** Without drag and with $\sin\varphi \approx \varphi$ (eq. (1.147))
    the equation is $\ddot\varphi + \frac{g}{R}\varphi = 0$: a harmonic oscillation with

@@ -60,7 +60,7 @@ $\\boldsymbol e_2$). Gravity $g$ = {{ g }} acts in $-\\boldsymbol e_2$; neglect 
 The only force is gravity, so linear momentum balance gives the constant acceleration
 $a = -g\,e_2$. Integrating twice in time with the initial values (Example 1.1, eqs. (1.11)
 and (1.12)):
-$$v(t) = v(0) - gt\,e_2, \qquad r(t) = r(0) + v(0)\,t - \tfrac{1}{2} g t^2\,e_2.$$
+$v(t) = v(0) - gt\,e_2, \qquad r(t) = r(0) + v(0)\,t - \tfrac{1}{2} g t^2\,e_2$.
 Here $r(0) = (0, h_0)$ with $h_0$ = {{ h0 }} and $v(0) = (v_1(0), v_2(0))$ with
 $v_1(0)$ = {{ v01 }}, $v_2(0)$ = {{ v02 }}; $t$ = {{ t }}, $g$ = {{ g }}.
 

@@ -49,7 +49,7 @@ Measure heights from the starting point.
 
 1. **Height.** At the start $T_1 = 0$ and the spring stores $\tfrac{1}{2} k\Delta x^2$; at the
    highest point $T_2 = 0$, the particle has left the relaxed spring and gravity stores $mgh$:
-   $$\tfrac{1}{2} k\,\Delta x^2 = mgh \quad\Rightarrow\quad h = \frac{k\,\Delta x^2}{2mg}.$$
+   $\tfrac{1}{2} k\,\Delta x^2 = mgh \quad\Rightarrow\quad h = \frac{k\,\Delta x^2}{2mg}$.
    With $k$ = {{ k }}, $\Delta x$ = {{ dx }}, $m$ = {{ m }}, $g$ = {{ g }}:
    $h$ = {{ answers.h }}.
 2. **Stored energy.** $V_{\text{spring} } = \tfrac{1}{2} k\,\Delta x^2$ = {{ answers.V_spring }}.

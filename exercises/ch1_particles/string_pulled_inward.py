@@ -53,7 +53,7 @@ $H_B = r_{BP} \times m v_P$ constant (eqs. (1.151), (1.152), Example 1.18). Only
 circumferential velocity $v_t = l\omega$ contributes: $H_B = m\,l\,v_t$ (eq. (1.153)).
 
 1. **Angular velocity.** $m\,l(0)^2\omega(0) = m\,l_1^2\omega_1$, so (eq. (1.155))
-   $$\omega_1 = \left(\frac{l(0)}{l_1}\right)^2 \omega(0).$$
+   $\omega_1 = \left(\frac{l(0)}{l_1}\right)^2 \omega(0)$.
    With $l(0)$ = {{ l0 }}, $l_1$ = {{ l1 }} and $\omega(0)$ = {{ omega0 }}:
    $\omega_1$ = {{ answers.omega1 }}.
 2. **Speed ratio.** $l\,v_t$ is constant (eq. (1.154)), so

@@ -46,7 +46,7 @@ point O in a plane. At the instant considered the string turns at $\\omega = \\d
 The string is inextensible, so in polar coordinates about O the radius is fixed, $r = l$,
 $\dot r = \ddot r = 0$. The polar components of velocity and acceleration (eqs. (1.31) and
 (1.33)) reduce to (eq. (1.36), Example 1.5)
-$$v = l\dot\varphi\,e_\varphi, \qquad a = -l\dot\varphi^2\,e_r + l\ddot\varphi\,e_\varphi.$$
+$v = l\dot\varphi\,e_\varphi, \qquad a = -l\dot\varphi^2\,e_r + l\ddot\varphi\,e_\varphi$.
 Here $l$ = {{ l }}, $\dot\varphi = \omega$ = {{ omega }} and $\ddot\varphi = \dot\omega$ = {{ alpha }}.
 
 1. **Speed.** $|v| = l\omega$ = {{ answers.v }}.

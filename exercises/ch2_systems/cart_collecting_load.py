@@ -45,7 +45,7 @@ conserved (Section 2.3.2). After loading for $t$ the mass is
 $m(t) = m_0 + qt$ = {{ si.mass }} kg (with $m_0$ = {{ m0 }}, $q$ = {{ q }}, $t$ = {{ t }}).
 
 1. **Speed.** $m_0 v_0 = (m_0 + qt)\,v$, so
-   $$v(t) = \frac{m_0 v_0}{m_0 + qt};$$
+   $v(t) = \frac{m_0 v_0}{m_0 + qt}$;
    with $v_0$ = {{ v0 }}: $v$ = {{ answers.v_t }}. Every kilogram of gravel has to be brought
    up to the cart's speed, and the cart pays for it with its own momentum.
 2. **Force to keep $v_0$.** Linear momentum balance of the system, $\dot P = F$. At constant

@@ -50,7 +50,7 @@ arriving on the pan (Section 2.3.2), stopping a mass flow $\lambda v$ of speed $
 force $\lambda v \cdot v = \lambda v^2$ (the momentum flux).
 
 1. **Reading at $x$.** With $x$ = {{ x }} fallen, $v = \sqrt{2gx}$ = {{ si.v_arrive }} m/s and
-   $$F = \lambda g x + \lambda v^2 = \lambda g x + 2\lambda g x = 3\lambda g x = \frac{3mgx}{L},$$
+   $F = \lambda g x + \lambda v^2 = \lambda g x + 2\lambda g x = 3\lambda g x = \frac{3mgx}{L}$,
    with $g$ = {{ g }}: $F$ = {{ answers.F_x }} — three times the weight of the chain on the pan.
 2. **Just before the last link lands.** $x \to L$: $F = 3mg$ = {{ answers.F_max }}.
 3. **Whole chain on the pan.** Nothing arrives any more; the scale carries only the weight,

@@ -75,7 +75,7 @@ $M = m_1 + m_2$ = {{ si.M }} kg (with $m_1$ = {{ m1 }} and $m_2$ = {{ m2 }}).
 1. **About the centre of mass.** C divides the rod so that $m_1 r_1 = m_2 r_2$:
    $r_1 = m_2 L/M$ and $r_2 = m_1 L/M$. Relative to C each ball moves on a circle with
    speed $r_i\omega$, perpendicular to the rod, so
-   $$H_C = (m_1 r_1^2 + m_2 r_2^2)\,\omega = \frac{m_1 m_2}{m_1 + m_2} L^2\,\omega,$$
+   $H_C = (m_1 r_1^2 + m_2 r_2^2)\,\omega = \frac{m_1 m_2}{m_1 + m_2} L^2\,\omega$,
    counter-clockwise, i.e. along $+e_3$. The angle $\varphi$ = {{ phi }} does not matter. With
    $L$ = {{ L }} and $\omega$ = {{ omega }}: $H_C$ = {{ answers.H_C }}.
 2. **About O.** C is at $r_{OC} = d\,e_2$ and moves with $v_C = v\,e_1$, so

@@ -67,7 +67,7 @@ $v_0\cos\alpha$ = {{ si.v_apex }} m/s, reached at $t_{\text{top} } = v_0\sin\alp
 
 1. **Speed of fragment 2.** Momentum just before equals momentum just after, and fragment 1
    is at rest: $M v_0\cos\alpha = (M - m_1)\,v_2$, so
-   $$v_2 = \frac{M}{M - m_1}\,v_0\cos\alpha$$
+   $v_2 = \frac{M}{M - m_1}\,v_0\cos\alpha$
    with $M$ = {{ M }}, $m_1$ = {{ m1 }}: $v_2$ = {{ answers.v2 }}.
 2. **Landing point of fragment 2.** It starts horizontally from the top, so it falls the
    same height the shell rose and needs the same time $t_{\text{top} }$:

@@ -70,7 +70,7 @@ $n$ and its component perpendicular to it:
 Before the impact ball 1 has $v_n = v\cos\beta$ = {{ si.v_n }} m/s along $n$ (with $v$ = {{ v }},
 $\beta$ = {{ beta }}) and ball 2 is at rest. The two conditions
 $m_1 v_{1,n}' + m_2 v_{2,n}' = m_1 v_n$ and $v_{2,n}' - v_{1,n}' = e\,v_n$ give
-$$v_{1,n}' = \frac{m_1 - e\,m_2}{m_1 + m_2}\,v_n, \qquad v_{2,n}' = \frac{(1 + e)\,m_1}{m_1 + m_2}\,v_n;$$
+$v_{1,n}' = \frac{m_1 - e\,m_2}{m_1 + m_2}\,v_n, \qquad v_{2,n}' = \frac{(1 + e)\,m_1}{m_1 + m_2}\,v_n$;
 with $m_1$ = {{ m1 }}, $m_2$ = {{ m2 }}, $e$ = {{ e }}: $v_{1,n}'$ = {{ si.v1n }} m/s and
 $v_{2,n}'$ = {{ si.v2n }} m/s.
 

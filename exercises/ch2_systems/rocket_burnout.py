@@ -57,19 +57,19 @@ Linear momentum balance for a body of variable mass (Section 2.3.2): the fuel le
 $u$ relative to the rocket, at the constant rate $q = m_f/t_b$ = {{ si.q }} kg/s (with
 $m_f$ = {{ mf }}, $t_b$ = {{ tb }}). Over $\mathrm dt$ the rocket gains the momentum that
 the exhaust carries backwards, so
-$$m(t)\,\dot v = q u - m(t)\,g, \qquad m(t) = m_0 - qt.$$
+$m(t)\,\dot v = q u - m(t)\,g, \qquad m(t) = m_0 - qt$.
 
 1. **Thrust.** The term $qu$ acts like a force: $F = qu$; with $u$ = {{ u }}:
    $F$ = {{ answers.F }}.
 2. **Without gravity.** $m\,\dot v = qu$ with $\mathrm dm = -q\,\mathrm dt$ gives
    $\mathrm dv = -u\,\mathrm dm/m$, and integrating from $m_0$ to the burn-out mass
    $m_0 - m_f$ = {{ si.m_b }} kg (with $m_0$ = {{ m0 }}) gives the rocket equation
-   $$\Delta v = u\ln\frac{m_0}{m_0 - m_f}$$
+   $\Delta v = u\ln\frac{m_0}{m_0 - m_f}$
    = {{ answers.dv_free }}. The burn time does not matter.
 3. **Burn-out speed with gravity.** Gravity adds $-g$ to the acceleration throughout
    the burn, so it costs $g\,t_b$: $v_b = u\ln\frac{m_0}{m_0 - m_f} - g\,t_b$; with $g$ = {{ g }}: $v_b$ = {{ answers.v_b }}.
 4. **Burn-out height.** Integrate $v(t) = u\ln\frac{m_0}{m(t)} - gt$ over the burn:
-   $$h_b = u\left[t_b - \frac{m_0 - m_f}{q}\ln\frac{m_0}{m_0 - m_f}\right] - \tfrac{1}{2} g t_b^2$$
+   $h_b = u\left[t_b - \frac{m_0 - m_f}{q}\ln\frac{m_0}{m_0 - m_f}\right] - \tfrac{1}{2} g t_b^2$
    = {{ answers.h_b }}.
 5. **Formula.** $v_b$ = `{{ answers.v_b_formula }}`.
 """,

@@ -58,7 +58,7 @@ $k$ = {{ k }}, $\delta$ = {{ delta }}; work–energy balance, Section 2.2.2).
 
 1. **Cart 1.** Momentum: $m_1 v_1 = m_2 v_2$. Energy:
    $\tfrac{1}{2} m_1 v_1^2 + \tfrac{1}{2} m_2 v_2^2 = \tfrac{1}{2} k\delta^2$. Eliminating $v_2$:
-   $$v_1 = \delta\sqrt{\frac{k\,m_2}{m_1(m_1 + m_2)} };$$
+   $v_1 = \delta\sqrt{\frac{k\,m_2}{m_1(m_1 + m_2)} }$;
    with $m_1$ = {{ m1 }} and $m_2$ = {{ m2 }}: $v_1$ = {{ answers.v1 }}.
 2. **Cart 2.** $v_2 = \frac{m_1}{m_2}v_1$ = {{ answers.v2 }}, in the opposite direction; the
    lighter cart gets the larger speed and the larger share of the energy.
