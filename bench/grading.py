@@ -1,5 +1,6 @@
 """Benchmark of the grader: throughput, symbolic verdict latency, a naive CAS baseline,
-and the cold-process time of grading one filled-in exercise file.
+the cold-process time of grading one filled-in exercise file, and that of
+`dynagrade list` (which must not run the bank's exercise files).
 
     PYTHONPATH=src python bench/grading.py            # 2000 answers, CI-sized
     PYTHONPATH=src python bench/grading.py --size 10000 --naive 60
@@ -182,6 +183,20 @@ def run_cold() -> None:
         print(f"cold `grade FILE` (answered sheet, {status}): best of 3 {min(times):.2f} s")
 
 
+def run_cold_list(runs: int = 5) -> None:
+    """The wall time of `dynagrade list` in fresh processes: the median of ``runs``."""
+    env = dict(os.environ, PYTHONPATH=str(ROOT / "src"))
+    command = [sys.executable, "-m", "dynagrade.cli", "list"]
+    times = []
+    for _ in range(runs):
+        t0 = time.perf_counter()
+        done = subprocess.run(command, capture_output=True, text=True, env=env)
+        times.append(time.perf_counter() - t0)
+    status = "ok" if done.returncode == 0 else f"exit {done.returncode}"
+    print(f"cold `dynagrade list` ({status}): median of {runs} {statistics.median(times):.2f} s "
+          f"(min {min(times):.2f} s)")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--size", type=int, default=2000, help="answers in the synthetic class")
@@ -193,6 +208,7 @@ def main() -> None:
     run_naive(args.naive, ours)
     if not args.no_cold:
         run_cold()
+        run_cold_list()
 
 
 if __name__ == "__main__":

@@ -1,4 +1,6 @@
-"""Shared test settings: a hypothesis profile that keeps the suite fast on two cores."""
+"""Shared test settings: a hypothesis profile that keeps the suite fast on two cores, and
+the ``slow`` mark on the tests that take a second or more (``pytest -m "not slow"`` runs
+the rest; tests/README.md says which and why)."""
 
 import os
 
@@ -9,6 +11,49 @@ settings.register_profile("ci", max_examples=50, deadline=None,
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 
 import pytest
+
+#: Tests that take a second or more on a quiet machine: they integrate equations of
+#: motion numerically, derive with sympy, lay out math in a browser or generate and
+#: grade a whole exam. Listed here (file, test function) so that their files stay as
+#: they are; a name that no longer exists marks nothing.
+SLOW = {
+    ("test_mechanics_ch4_lagrange.py", "test_double_pendulum_equations_agree_with_newton_euler"),
+    ("test_mechanics_ch4_lagrange.py",
+     "test_small_oscillations_about_the_stable_equilibrium_have_the_linearized_period"),
+    ("test_mechanics_ch4_lagrange.py",
+     "test_mass_matrix_of_the_double_pendulum_is_the_hessian_of_T_written_out_by_hand"),
+    ("test_mechanics_ch4_multi_dof.py",
+     "test_forced_steady_state_amplitudes_match_numerical_integration"),
+    ("test_mechanics_ch4_multi_dof.py", "test_modal_superposition_equals_direct_integration"),
+    ("test_mechanics_ch4_vibrations.py",
+     "test_forced_steady_state_matches_numerical_integration_after_transients"),
+    ("test_mechanics_ch3_rotation.py",
+     "test_rotation_about_intermediate_axis_is_unstable_and_about_extreme_axes_stable"),
+    ("test_mechanics_ch3_rotation.py", "test_motion_solved_in_rotating_frame_agrees_with_inertial_frame"),
+    ("test_mechanics_ch3_rotation.py",
+     "test_torque_free_euler_equations_conserve_energy_and_angular_momentum_magnitude"),
+    ("test_mechanics_ch3_rotation.py", "test_off_steady_precession_rate_makes_the_top_nod"),
+    ("test_mechanics_ch3_rotation.py", "test_steady_precession_keeps_the_tilt_constant_in_simulation"),
+    ("test_mechanics_ch1_kinematics.py",
+     "test_polar_components_equal_projections_of_the_differentiated_cartesian_position"),
+    ("test_mechanics_ch2_systems.py", "test_centre_of_mass_moves_as_particle_under_total_external_force"),
+    ("test_mechanics_ch1_angular_momentum.py", "test_small_angle_pendulum_period_matches_integration"),
+    ("test_exam_grading.py", "test_the_class_gets_exactly_the_expected_gradebook"),
+    ("test_exam_generate.py", "test_a_second_run_writes_byte_identical_files"),
+    ("test_render_math.py", "test_a_generated_html_sheet_lays_out_its_math_and_figures_in_chromium"),
+    ("test_render_math.py", "test_the_whole_subset_is_laid_out_as_math_in_chromium"),
+    ("test_grading_parser.py", "test_random_trees_round_trip_through_print_and_parse"),
+}
+
+
+def pytest_configure(config):
+    config.addinivalue_line("markers", "slow: takes a second or more (see tests/README.md)")
+
+
+def pytest_collection_modifyitems(config, items):
+    for item in items:
+        if (item.path.name, item.originalname) in SLOW:
+            item.add_marker(pytest.mark.slow)
 
 
 @pytest.fixture(scope="session")

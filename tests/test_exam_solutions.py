@@ -100,3 +100,78 @@ def test_without_the_option_no_solution_is_written(tmp_path):
                                        str(tmp_path / "out"), "--jobs", "1", "--no-pdf"])
     assert result.exit_code == 0, result.output
     assert not list((tmp_path / "out").rglob("solution*"))
+
+
+# -- class grading's feedback ------------------------------------------------------------
+
+
+def _graded_feedback(folder: Path, setting: str | None, bank) -> tuple[dict, Path]:
+    from dynagrade.exam.classgrade import grade_class
+    from dynagrade.exam.generate import generate_exam
+
+    line = f'solutions = "{setting}"\n' if setting else ""
+    (folder / "exam.toml").write_text(EXAM.replace('date = 2025-04-14\n',
+                                                   f"date = 2025-04-14\n{line}"),
+                                      encoding="utf-8")
+    (folder / "roster.csv").write_text(ROSTER, encoding="utf-8")
+    out = folder / "out"
+    generate_exam(folder / "exam.toml", folder / "roster.csv", out, bank=bank, jobs=1,
+                  pdf=False)
+    submitted = folder / "submitted" / "q-001"
+    submitted.mkdir(parents=True)
+    for exercise_id in ("projectile-range", "ballistic-pendulum"):
+        source = out / "students" / "q-001" / f"{exercise_id}.py"
+        (submitted / source.name).write_text(source.read_text(encoding="utf-8"), "utf-8")
+    grade_class(out / "manifest.json", [folder / "submitted"], out / "grading", bank=bank,
+                jobs=1)
+    manifest = json.loads((out / "manifest.json").read_text(encoding="utf-8"))
+    return manifest, out / "grading" / "feedback"
+
+
+def test_feedback_ends_with_each_students_worked_solutions_when_the_exam_says_so(
+        tmp_path, bank):
+    manifest, feedback = _graded_feedback(tmp_path, "with-feedback", bank)
+    assert manifest["exam"]["policy"] == {"solutions": "with-feedback"}
+    for student in manifest["students"]:
+        markdown = (feedback / f"{student['student_id']}.md").read_text(encoding="utf-8")
+        html = (feedback / f"{student['student_id']}.html").read_text(encoding="utf-8")
+        solutions = markdown[markdown.index("## Worked solutions"):]
+        for entry in student["variants"]:
+            for shown in _shown_answers(bank, entry):
+                assert shown in solutions, (student["student_id"], shown)
+        # at the end: after the last exercise's verdicts (or its "Not submitted")
+        assert markdown.index("## Worked solutions") > \
+            markdown.index("## Ballistic pendulum (`ballistic-pendulum`)")
+        assert html.index("<h2>Worked solutions</h2>") > html.index("<h2>Ballistic pendulum")
+        assert "<math" in html[html.index("Worked solutions"):]
+
+
+def test_an_exam_shows_no_solution_in_the_feedback_unless_it_says_so(tmp_path, bank):
+    _, feedback = _graded_feedback(tmp_path, None, bank)
+    for path in feedback.iterdir():
+        assert "Worked solutions" not in path.read_text(encoding="utf-8"), path.name
+
+
+@pytest.mark.parametrize("policy, expected", [
+    (None, "never"),
+    ({"mode": "exam"}, "never"),
+    ({"mode": "homework"}, "with-feedback"),
+    ({"mode": "practice"}, "with-feedback"),
+    ({"mode": "homework", "solutions": "never"}, "never"),
+    ({"mode": "exam", "solutions": "after-close"}, "after-close"),
+])
+def test_when_solutions_are_shown_defaults_to_the_exams_mode(policy, expected):
+    from dynagrade.exam.solution_policy import solutions_setting
+
+    assert solutions_setting(policy) == expected
+
+
+def test_an_unknown_solutions_setting_is_refused_with_its_line(tmp_path):
+    from dynagrade.exam.spec import ExamSpecError, read_exam_spec
+
+    path = tmp_path / "exam.toml"
+    path.write_text(EXAM.replace('date = 2025-04-14\n',
+                                 'date = 2025-04-14\nsolutions = "always"\n'), "utf-8")
+    with pytest.raises(ExamSpecError, match=r"line 4, field 'solutions': 'always'; choose "
+                                            r"one of with-feedback, after-close"):
+        read_exam_spec(path)

@@ -5,6 +5,7 @@ import textwrap
 import pytest
 
 from dynagrade.exercise import ExerciseFileError, load_file, open_bank
+from dynagrade.errors import UnknownExercise
 from dynagrade.exercise.loader import ENVIRONMENT_VARIABLE
 
 GOOD = textwrap.dedent('''
@@ -67,10 +68,79 @@ def test_a_malformed_exercise_file_names_the_file_line_and_fault(tmp_path, text,
 
 
 def test_an_unknown_id_suggests_close_ones(bank):
-    with pytest.raises(KeyError, match="projectile-range"):
+    with pytest.raises(UnknownExercise, match="projectile-range"):
         bank.get("projectile-rnge")
 
 
 def test_a_missing_folder_is_an_error(tmp_path):
     with pytest.raises(ExerciseFileError, match="does not exist"):
         open_bank([tmp_path / "nope"])
+
+
+def test_an_edited_file_is_loaded_anew_in_the_same_process(tmp_path):
+    # An exercise's identity is its file's content: a corrected exercise must not keep
+    # the definition (and so the verdicts) of the text it replaced. "Old" and "New" have
+    # the same length, so the file's size does not change with the edit either.
+    path = _write(tmp_path, "e.py", GOOD.format(id="edited", title="Old"))
+    first = load_file(path)
+    assert first.title == "Old"
+    assert load_file(path) is first  # unchanged text: the cached module
+    path.write_text(GOOD.format(id="edited", title="New"))
+    second = load_file(path)
+    assert second.title == "New"
+    assert open_bank([tmp_path]).get("edited").title == "New"
+
+
+def test_the_fingerprint_is_the_sha256_of_the_file(tmp_path):
+    import hashlib
+
+    path = _write(tmp_path, "e.py", GOOD.format(id="printed", title="Print"))
+    assert load_file(path).fingerprint == hashlib.sha256(path.read_bytes()).hexdigest()
+    (tmp_path / "copy").mkdir()
+    twin = _write(tmp_path / "copy", "e.py", GOOD.format(id="printed", title="Print"))
+    assert load_file(twin).fingerprint == load_file(path).fingerprint
+    assert load_file(twin).path == str(twin.resolve())
+
+
+def _exercise_modules():
+    import sys
+
+    return {name for name in sys.modules if name.startswith("dynagrade_exercise_")}
+
+
+def test_finding_one_exercise_loads_only_its_file(tmp_path):
+    for name in ("a", "b", "c"):
+        _write(tmp_path, f"{name}.py", GOOD.format(id=f"only-{name}", title=name))
+    before = _exercise_modules()
+    assert open_bank([tmp_path]).get("only-b").title == "b"
+    loaded = _exercise_modules() - before
+    assert len(loaded) == 1
+    load_file(tmp_path / "b.py")
+    assert _exercise_modules() - before == loaded  # the one module loaded was b.py's
+
+
+def test_the_listing_reads_the_files_without_running_them(tmp_path):
+    # A file whose module level would fail if run is still listed: listing never runs it.
+    text = GOOD.format(id="listed", title="Listed") + "\nraise SystemExit('ran')\n"
+    _write(tmp_path, "listed.py", text)
+    before = _exercise_modules()
+    (entry,) = [e for e in open_bank([tmp_path]).listing() if e.id == "listed"]
+    assert _exercise_modules() == before
+    assert entry.summary() == {
+        "id": "listed", "title": "Listed", "source": "Example 1.1", "chapter": 1,
+        "topics": [],
+        "parts": [{"name": "y", "kind": "numeric", "unit": None, "points": 1.0, "label": ""}],
+        "params": [{"name": "x", "unit": None, "symbol": "x"}]}
+
+
+def test_the_static_listing_equals_the_loaded_exercises_summaries(bank):
+    listed = [e.summary() for e in bank.listing()]
+    assert listed == [e.summary() for e in bank.all()]
+
+
+def test_a_file_that_computes_its_listing_fields_is_loaded_to_list_it(tmp_path):
+    text = GOOD.format(id="computed", title="Computed").replace(
+        'title="Computed"', 'title="Com" + "puted"')
+    _write(tmp_path, "computed.py", text)
+    (entry,) = [e for e in open_bank([tmp_path]).listing() if e.id == "computed"]
+    assert entry.title == "Computed"

@@ -143,3 +143,84 @@ def test_conversions_match_hand_values_and_refuse_other_dimensions():
         convert(1, "m", "s")
     with pytest.raises(ValueError):
         convert(1, "1/s", "rad/s")
+
+
+# -- symbols of symbolic parts default to the parameters' domains -------------------------
+
+from dynagrade.errors import DefinitionError  # noqa: E402
+from dynagrade.exercise import Symbolic, Variable  # noqa: E402
+from dynagrade.exercise.params import symbol_domain  # noqa: E402
+
+
+@pytest.mark.parametrize("parameter, domain", [
+    # a quarter of the span added on each side ...
+    (Uniform("x", 10, 50, step=1, unit="m"), (5, 60)),  # 10 - 10 reaches zero: held at 10/2
+    (Uniform("v2", -3, 1, step=0.5, unit="m/s"), (-4, 2)),
+    # ... a constant widened by half its value, and no bound pushed across zero
+    (Constant("g", 9.81, unit="m/s^2"), (4.905, 14.715)),
+    (Uniform("a", 0, 0.3, step=0.01, unit="m"), (0, 0.375)),
+    (Uniform("y", -5, -1, step=1), (-6, -0.5)),
+    (Choice("m", (0.2, 0.5, 1.0), unit="kg"), (0.1, 1.2)),
+])
+def test_a_parameter_symbol_is_tested_beyond_the_drawn_values(parameter, domain):
+    variable = symbol_domain(parameter)
+    assert (variable.min, variable.max) == pytest.approx(domain)
+    assert variable.unit == parameter.unit
+
+
+def test_symbols_named_without_a_domain_take_their_parameters_domains():
+    exercise = _exercise(parts=(
+        Numeric("twice", unit="m/s"),
+        Symbolic("formula", expected="2*v", variables=("v",), equals="twice"),
+        Symbolic("mixed", expected="v*sin(theta)",
+                 variables={"theta": Variable(-1, 1, "rad"), "v": None})))
+    formula, mixed = exercise.parts[1], exercise.parts[2]
+    assert formula.variables == {"v": Variable(0.5, 3.5, "km/h")}  # 1..3 km/h, margin 0.5
+    assert mixed.variables == {"theta": Variable(-1, 1, "rad"), "v": Variable(0.5, 3.5, "km/h")}
+    assert list(mixed.variables) == ["theta", "v"]  # the author's order, as sheets show it
+
+
+def test_a_symbol_without_a_domain_must_be_a_parameter():
+    with pytest.raises(DefinitionError, match=r"\['theta'\] are no parameters.*Variable\(min"):
+        _exercise(parts=(Numeric("twice", unit="m/s"),
+                         Symbolic("s", expected="v*theta", variables=("v", "theta"))))
+
+
+# -- the solver runs once per draw -------------------------------------------------------
+
+from dynagrade.exercise import per_draw  # noqa: E402
+
+
+def _counted_solver():
+    """A per-draw solver and the list of the speeds (SI) it was called for."""
+    calls = []
+
+    @per_draw
+    def solve(p):
+        calls.append(p.v)
+        return {"twice": 2 * p.v}
+
+    return solve, calls
+
+
+def test_constraints_and_answers_share_one_solution_per_draw():
+    solve, calls = _counted_solver()
+    exercise = _exercise(solve=solve, constraints=(
+        Constraint("positive", lambda p: solve(p)["twice"] > 0),
+        Constraint("below 2 m/s", lambda p: solve(p)["twice"] < 2)))  # v <= 3 km/h: always
+    variant = exercise.variant(seed=3)
+    assert len(calls) == 1  # two constraints and the answers, one solution
+    assert variant.answers["twice"] == pytest.approx(2 * variant.params["v"] / 3.6)
+
+
+def test_each_draw_gets_its_own_solution():
+    solve, calls = _counted_solver()
+    draws = []
+    # v > 2 km/h only: draws at 1, 1.5 and 2 km/h are redrawn; none is solved twice
+    exercise = _exercise(solve=solve, constraints=(
+        Constraint("counted", lambda p: draws.append(p.v) is None),
+        Constraint("fast", lambda p: solve(p)["twice"] > 2 * 2 / 3.6 + 1e-9)))
+    variant = exercise.variant(seed=1)
+    assert variant.params["v"] > 2 and len(draws) > 1  # seed 1 draws 2 km/h first
+    assert len(calls) <= len(draws)
+    assert calls[-1] == pytest.approx(variant.params["v"] / 3.6)  # the answers' solution

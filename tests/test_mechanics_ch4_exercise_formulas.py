@@ -34,7 +34,7 @@ def part(exercise, name):
 ])
 def test_expected_equation_of_motion_is_the_lagrange_derivation(module, part_name, index, rename):
     mod = load(module)
-    derived = mod.ACCELERATION if index is None else mod.ACCELERATIONS[index]
+    derived = mod.acceleration() if index is None else mod.accelerations()[index]
     symbols = sorted(derived.free_symbols, key=str)
     names = [rename.get(str(s), str(s)) for s in symbols]
     f = sp.lambdify(symbols, derived)

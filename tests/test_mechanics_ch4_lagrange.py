@@ -4,6 +4,8 @@ Equations of motion derived by the core from T and V are held against Newton-Eul
 equations written out by hand here (linear momentum balance of each particle, with
 the rod forces as unknowns where there are constraints).
 """
+import functools
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -21,11 +23,21 @@ angle = st.floats(-3.0, 3.0)
 rate = st.floats(-4.0, 4.0)
 
 
+def lazily(build):
+    """A function that calls the function ``build()`` returns, built on the first call:
+    derivations run in the tests that use them, not when the module is collected."""
+    built = functools.cache(build)
+    return lambda *args: built()(*args)
+
+
 def lambdified_accelerations(T, V, q, params, Q=None):
-    acc = lagrange.accelerations(T, V, q, t, Q)
-    pos, vel, _ = lagrange.state_symbols(q)
-    exprs = [lagrange.in_state_symbols(a, q, t) for a in acc]
-    return sp.lambdify([*pos, *vel, *params], exprs, "numpy")
+    def derived():
+        acc = lagrange.accelerations(T, V, q, t, Q)
+        pos, vel, _ = lagrange.state_symbols(q)
+        exprs = [lagrange.in_state_symbols(a, q, t) for a in acc]
+        return sp.lambdify([*pos, *vel, *params], exprs, "numpy")
+
+    return lazily(derived)
 
 
 # --- the plane pendulum ------------------------------------------------------------------
@@ -133,9 +145,9 @@ def test_generalized_forces_are_minus_the_gradient_of_V():
 R, Om = sp.symbols("R Omega", positive=True)
 T_hoop = m * R**2 * (th.diff(t) ** 2 + Om**2 * sp.sin(th) ** 2) / 2
 V_hoop = -m * g * R * sp.cos(th)
-V_eff = lagrange.effective_potential(T_hoop, V_hoop, [th], t)
-dV_eff = sp.lambdify([th, m, R, Om, g], sp.diff(V_eff, th))
-d2V_eff = sp.lambdify([th, m, R, Om, g], sp.diff(V_eff, th, 2))
+effective_potential = functools.cache(lambda: lagrange.effective_potential(T_hoop, V_hoop, [th], t))
+dV_eff = lazily(lambda: sp.lambdify([th, m, R, Om, g], sp.diff(effective_potential(), th)))
+d2V_eff = lazily(lambda: sp.lambdify([th, m, R, Om, g], sp.diff(effective_potential(), th, 2)))
 
 
 @settings(max_examples=20, deadline=None)
@@ -165,7 +177,7 @@ def test_below_the_critical_spin_only_the_lowest_point_is_stable():
 
 
 def test_symbolic_equilibria_of_the_hoop_include_both_poles_and_the_off_axis_angle():
-    sols = equilibrium.equilibrium_positions(V_eff, [th])
+    sols = equilibrium.equilibrium_positions(effective_potential(), [th])
     values = {sp.simplify(s[th]) for s in sols}
     assert 0 in values and sp.pi in values
     assert any(sp.simplify(sp.cos(v) - g / (R * Om**2)) == 0 for v in values)
@@ -190,7 +202,7 @@ def test_small_oscillations_about_the_stable_equilibrium_have_the_linearized_per
 
 def test_linearized_frequency_of_the_hoop_from_the_symbolic_route_matches_the_closed_form():
     theta_star = sp.acos(g / (R * Om**2))
-    w2 = equilibrium.linearized_frequency_squared(T_hoop, V_eff, [th], t, {th: theta_star})
+    w2 = equilibrium.linearized_frequency_squared(T_hoop, effective_potential(), [th], t, {th: theta_star})
     assert sp.simplify(w2 - (Om**2 - g**2 / (R**2 * Om**2))) == 0
 
 

@@ -4,7 +4,7 @@ force, and whether it comes to rest (Example 1.8, eqs. 1.72-1.74)."""
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Options,
-                                Symbolic, Uniform, Variable)
+                                Symbolic, Uniform)
 from dynagrade.exercise.figure import block, inclined_plane
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics.examples import incline
@@ -109,8 +109,7 @@ slides down (eq. (1.74)).
         Options("stops", "comes to rest", options=("yes", "no"), points=1),
         Symbolic("a_formula", "acceleration as a formula", points=1,
                  expected="g*(sin(alpha) - mu*cos(alpha))",
-                 variables={"g": Variable(1, 20, "m/s^2"), "alpha": Variable(0.05, 1.5, "rad"),
-                            "mu": Variable(0.0, 1.5)},
+                 variables=("g", "alpha", "mu"),
                  equals="a",
                  misconceptions=(
                      Misconception("sin and cos swapped", "g*(cos(alpha) - mu*sin(alpha))",

@@ -2,7 +2,7 @@
 coefficient of restitution from measured heights (Section 1.2.4)."""
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform, Variable)
+                                Uniform)
 from dynagrade.mechanics import energy, impact
 
 
@@ -80,7 +80,7 @@ floor reverses the normal velocity and scales it by the coefficient of restituti
                 )),
         Symbolic("h1_formula", "height after the first bounce as a formula", points=1,
                  expected="e^2*h0",
-                 variables={"e": Variable(0.05, 1.0), "h0": Variable(0.1, 10, "m")},
+                 variables=("e", "h0"),
                  equals="h1",
                  misconceptions=(
                      Misconception("e applied to the height", "e*h0",

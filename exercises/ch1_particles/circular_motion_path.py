@@ -3,10 +3,11 @@
 
 import numpy as np
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform)
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.mechanics import kinematics
 
 
+@per_draw
 def solve(p):
     v = kinematics.speed_at_constant_acceleration(p.t, p.v0, p.at)      # s'' = a_t constant
     s = kinematics.distance_at_constant_acceleration(p.t, p.v0, p.at)

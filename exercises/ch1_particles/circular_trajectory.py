@@ -3,7 +3,8 @@ acceleration vectors (Example 1.3)."""
 
 import numpy as np
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector)
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector,
+                                per_draw)
 from dynagrade.mechanics import kinematics
 
 
@@ -11,6 +12,7 @@ def _angles(p):
     return p.c * p.t**2, 2 * p.c * p.t, 2 * p.c
 
 
+@per_draw
 def solve(p):
     phi, phidot, phiddot = _angles(p)
     a = kinematics.circular_acceleration(p.r, phi, phidot, phiddot)

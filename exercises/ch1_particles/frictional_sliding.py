@@ -1,8 +1,7 @@
 """A particle sliding to rest on a rough floor: stopping distance by the work-energy
 balance (Example 1.11, eq. 1.91)."""
 
-from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symbolic, Uniform,
-                                Variable)
+from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symbolic, Uniform)
 from dynagrade.mechanics import energy, particle
 
 
@@ -69,8 +68,7 @@ $T_2 - T_1 = W_{12}$, eq. (1.87), between the start ($T_1 = \tfrac{1}{2} m v_0^2
                 )),
         Symbolic("dx_formula", "stopping distance as a formula", points=1,
                  expected="v0^2/(2*mu*g)",
-                 variables={"v0": Variable(0.5, 20, "m/s"), "mu": Variable(0.05, 1.0),
-                            "g": Variable(1, 20, "m/s^2")},
+                 variables=("v0", "mu", "g"),
                  equals="dx",
                  misconceptions=(
                      Misconception("factor 1/2 forgotten", "v0^2/(mu*g)",

@@ -4,7 +4,7 @@ motion along the floor (Example 1.7, component-wise balance 1.69)."""
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform, Variable)
+                                Uniform)
 from dynagrade.mechanics import kinematics, particle
 
 
@@ -88,8 +88,7 @@ $\sum F_i = m a$, eq. (1.63), component by component (Example 1.7):
         Numeric("N_free", "normal force without the rope", unit="N", points=1),
         Symbolic("N_formula", "normal force as a formula", points=1,
                  expected="m*g - F*sin(theta)",
-                 variables={"m": Variable(0.5, 50, "kg"), "g": Variable(1, 20, "m/s^2"),
-                            "F": Variable(0, 100, "N"), "theta": Variable(0, 1.5, "rad")},
+                 variables=("m", "g", "F", "theta"),
                  equals="N",
                  misconceptions=(
                      Misconception("cos for sin", "m*g - F*cos(theta)",

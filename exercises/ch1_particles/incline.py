@@ -3,7 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform, Variable)
+                                Symbolic, Uniform)
 from dynagrade.exercise.figure import arrow, block, inclined_plane
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics.examples import incline
@@ -110,8 +110,7 @@ slides up.
         Numeric("t_stop", "time to stop", unit="s", points=1),
         Symbolic("delta_x_formula", "distance as a formula", points=1,
                  expected="v0^2/(2*g*(sin(alpha) + mu*cos(alpha)))",
-                 variables={"v0": Variable(1, 20, "m/s"), "alpha": Variable(0.05, 1.5, "rad"),
-                            "mu": Variable(0.05, 1.0), "g": Variable(1, 20, "m/s^2")},
+                 variables=("v0", "alpha", "mu", "g"),
                  equals="delta_x",
                  misconceptions=(
                      Misconception("friction ignored", "v0^2/(2*g*sin(alpha))",

@@ -3,7 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform, Variable)
+                                Uniform)
 from dynagrade.mechanics import kinematics
 
 
@@ -83,8 +83,7 @@ integrate (Example 1.2).
                 )),
         Numeric("x_total", "total distance", unit="m", points=1),
         Symbolic("v_formula", "v(t) as a formula", points=1, expected="v0*exp(-k*t)",
-                 variables={"v0": Variable(0.5, 30, "m/s"), "k": Variable(0.05, 3, "1/s"),
-                            "t": Variable(0, 5, "s")},
+                 variables=("v0", "k", "t"),
                  equals="v_t",
                  misconceptions=(
                      Misconception("constant deceleration", "v0*(1 - k*t)",

@@ -3,7 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform, Variable)
+                                Symbolic, Uniform)
 from dynagrade.exercise.figure import angle_arc, arrow, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics.examples import looping
@@ -146,7 +146,7 @@ $R(1 - \cos\varphi)$ above the entry (Example 1.13).
                 )),
         Symbolic("v_min_formula", "smallest entry speed as a formula", points=1,
                  expected="sqrt(5*g*R)",
-                 variables={"g": Variable(1, 20, "m/s^2"), "R": Variable(0.5, 20, "m")},
+                 variables=("g", "R"),
                  equals="v_min_entry",
                  misconceptions=(
                      Misconception("only reaching the top", "2*sqrt(g*R)",

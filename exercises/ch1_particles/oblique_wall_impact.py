@@ -3,8 +3,7 @@
 
 import numpy as np
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
-                                Variable)
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
 from dynagrade.exercise.figure import angle_arc, arrow, new_drawing, wall
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import impact
@@ -129,7 +128,7 @@ $v_n' = e\,v_n$ = {{ si.v_n_out }} m/s (with $e$ = {{ e }}) and $v_t' = v_t$.
                 )),
         Symbolic("theta_formula", "rebound angle as a formula", points=1,
                  expected="atan(tan(theta)/e)",
-                 variables={"theta": Variable(0.05, 1.5, "rad"), "e": Variable(0.1, 1.0)},
+                 variables=("theta", "e"),
                  equals="theta_out",
                  misconceptions=(
                      Misconception("tangent multiplied by e", "atan(e*tan(theta))",

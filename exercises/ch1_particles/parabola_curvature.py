@@ -1,8 +1,7 @@
 """Radius of curvature of a parabolic path and the normal acceleration of a particle on
 it (Section 1.1.4, eqs. 1.48, 1.49 and 1.51)."""
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
-                                Variable)
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
 from dynagrade.mechanics import kinematics
 
 
@@ -67,7 +66,7 @@ $\rho = \sqrt{1 + f'^2}^{\,3}/|f''|$ (eq. (1.48)).
                 )),
         Symbolic("rho_formula", "radius of curvature as a formula", points=1,
                  expected="(1 + 4*c^2*x1^2)^(3/2)/(2*c)",
-                 variables={"c": Variable(0.05, 2, "1/m"), "x1": Variable(-3, 3, "m")},
+                 variables=("c", "x1"),
                  equals="rho",
                  misconceptions=(
                      Misconception("power 1/2", "(1 + 4*c^2*x1^2)^(1/2)/(2*c)",

@@ -111,7 +111,7 @@ $\omega = 2\pi n$ = {{ si.omega }} rad/s (with $n$ in revolutions per second).
                                   "The force grows with ω²: twice the rate, four times the force."),
                 )),
         Symbolic("S_formula", "string force as a formula", points=1, expected="m*l*omega^2",
-                 variables={"m": Variable(0.1, 5, "kg"), "l": Variable(0.1, 5, "m"),
+                 variables={"m": None, "l": None,
                             "omega": Variable(0.5, 30, "rad/s")},
                  misconceptions=(
                      Misconception("divided by l", "m*omega^2/l",

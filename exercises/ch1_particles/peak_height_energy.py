@@ -3,7 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform, Variable)
+                                Uniform)
 from dynagrade.mechanics import energy
 from dynagrade.mechanics.examples import projectile
 
@@ -75,8 +75,7 @@ Only gravity acts during the flight and gravity is conservative, so $T + V$ is c
         Numeric("T_top", "kinetic energy at the top", unit="J", points=1),
         Symbolic("h_formula", "peak height as a formula", points=1,
                  expected="v0^2*sin(alpha)^2/(2*g)",
-                 variables={"v0": Variable(1, 40, "m/s"), "alpha": Variable(0.1, 1.5, "rad"),
-                            "g": Variable(1, 20, "m/s^2")},
+                 variables=("v0", "alpha", "g"),
                  equals="h",
                  misconceptions=(
                      Misconception("all kinetic energy into height", "v0^2/(2*g)",

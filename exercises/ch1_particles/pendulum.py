@@ -4,10 +4,11 @@ small-angle period (Example 1.17, eqs. 1.145-1.149)."""
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform, Variable)
+                                Uniform, per_draw)
 from dynagrade.mechanics import angular_momentum as am
 
 
+@per_draw
 def solve(p):
     return {
         "T": am.pendulum_small_angle_period(p.g, p.R),
@@ -97,9 +98,7 @@ $\ddot\varphi = -\frac{k}{m}\dot\varphi - \frac{g}{R}\sin\varphi$.
                 )),
         Symbolic("eom", "angular acceleration as a formula", points=1,
                  expected="-(k/m)*phidot - (g/R)*sin(phi)",
-                 variables={"k": Variable(0.01, 1, "kg/s"), "m": Variable(0.1, 5, "kg"),
-                            "phidot": Variable(-3, 3, "rad/s"), "g": Variable(1, 20, "m/s^2"),
-                            "R": Variable(0.2, 5, "m"), "phi": Variable(-1.5, 1.5, "rad")},
+                 variables=("k", "m", "phidot", "g", "R", "phi"),
                  equals="phi_ddot",
                  misconceptions=(
                      Misconception("linearized", "-(k/m)*phidot - (g/R)*phi",

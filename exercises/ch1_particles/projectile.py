@@ -3,7 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform, Variable)
+                                Symbolic, Uniform)
 from dynagrade.exercise.figure import angle_arc, arrow, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics.examples import projectile
@@ -42,8 +42,7 @@ def figure(p):
     return drawing
 
 
-_LAUNCH = {"v0": Variable(1, 50, "m/s"), "alpha": Variable(0.1, 1.4, "rad"),
-           "g": Variable(1, 20, "m/s^2")}
+_LAUNCH = ("v0", "alpha", "g")
 
 EXERCISE = Exercise(
     id="projectile-range",

@@ -3,8 +3,8 @@ later time (Example 1.1)."""
 
 import numpy as np
 
-from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform, Variable, Vector)
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, Vector, per_draw)
 from dynagrade.mechanics import kinematics
 
 
@@ -15,11 +15,13 @@ def _state(p):
     return r, v
 
 
+@per_draw
 def solve(p):
     r, v = _state(p)
     return {"r_t": tuple(r), "v_t": tuple(v), "x2_t": float(r[1])}
 
 
+@per_draw
 def _no_half(p):
     return p.h0 + p.v02 * p.t - p.g * p.t**2
 
@@ -96,8 +98,7 @@ $v_1(0)$ = {{ v01 }}, $v_2(0)$ = {{ v02 }}; $t$ = {{ t }}, $g$ = {{ g }}.
                 )),
         Symbolic("x2_formula", "height as a formula", points=1,
                  expected="h0 + v02*t - g*t^2/2",
-                 variables={"h0": Variable(0, 50, "m"), "v02": Variable(-20, 20, "m/s"),
-                            "g": Variable(1, 20, "m/s^2"), "t": Variable(0, 5, "s")},
+                 variables=("h0", "v02", "g", "t"),
                  equals="x2_t",
                  misconceptions=(
                      Misconception("no factor 1/2", "h0 + v02*t - g*t^2",

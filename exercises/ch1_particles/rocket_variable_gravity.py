@@ -1,11 +1,12 @@
 """A body shot straight up against height-dependent gravity g R^2/(R+x)^2 (Example 1.2,
 acceleration known as a function of position, eq. 1.17)."""
 
-from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
-                                Variable)
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, per_draw)
 from dynagrade.mechanics import energy, kinematics
 
 
+@per_draw
 def solve(p):
     return {
         "v_x": float(kinematics.rocket_speed_at_height(p.x, p.v0, p.g, p.R)),
@@ -81,8 +82,7 @@ $\tfrac{1}{2} v^2 - \tfrac{1}{2} v_0^2 = -\int_0^x \frac{gR^2}{(R + \xi)^2}\,\ma
                 )),
         Symbolic("h_formula", "greatest height as a formula", points=1,
                  expected="R*v0^2/(2*g*R - v0^2)",
-                 variables={"v0": Variable(1e3, 9e3, "m/s"), "g": Variable(5, 15, "m/s^2"),
-                            "R": Variable(6e6, 7e6, "m")},
+                 variables=("v0", "g", "R"),
                  equals="h_max",
                  misconceptions=(
                      Misconception("constant gravity", "v0^2/(2*g)",

@@ -1,8 +1,7 @@
 """A person on a freely rotating chair pulls a heavy mass towards the axis: conservation of
 angular momentum (Example 1.19; eqs. 1.135 and 1.139)."""
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
-                                Variable)
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
 from dynagrade.mechanics import angular_momentum as am
 from dynagrade.mechanics import rigid_kinetics
 
@@ -90,9 +89,7 @@ $r_0$ = {{ r0 }}, $r_1$ = {{ r1 }}).
         Numeric("W", "work done by the person", unit="J", points=1),
         Symbolic("omega_formula", "final angular velocity as a formula", points=1,
                  expected="(I + m*r0^2)*omega0/(I + m*r1^2)",
-                 variables={"I": Variable(0.5, 5, "kg*m^2"), "m": Variable(0.5, 20, "kg"),
-                            "r0": Variable(0.1, 1, "m"), "r1": Variable(0.05, 1, "m"),
-                            "omega0": Variable(0.1, 5, "rad/s")},
+                 variables=("I", "m", "r0", "r1", "omega0"),
                  equals="omega1",
                  misconceptions=(
                      Misconception("chair's inertia forgotten", "(r0/r1)^2*omega0",

@@ -3,8 +3,7 @@ linear drag (Example 1.16, eqs. 1.142-1.144)."""
 
 import numpy as np
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
-                                Variable)
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
 from dynagrade.mechanics import angular_momentum as am
 from dynagrade.mechanics import kinematics
 
@@ -87,8 +86,7 @@ does. Use the angular momentum balance about the axis (Example 1.16).
         Numeric("phi_total", "total angle", unit="rad", points=1),
         Symbolic("omega_formula", "angular velocity as a formula", points=1,
                  expected="omega0*exp(-k*t/m)",
-                 variables={"omega0": Variable(0.5, 30, "rad/s"), "k": Variable(0.005, 0.5, "kg/s"),
-                            "m": Variable(0.05, 3, "kg"), "t": Variable(0, 30, "s")},
+                 variables=("omega0", "k", "m", "t"),
                  equals="omega_t",
                  misconceptions=(
                      Misconception("decay rate m/k", "omega0*exp(-m*t/k)",

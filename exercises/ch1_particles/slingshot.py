@@ -3,8 +3,7 @@ eqs. 1.124-1.125)."""
 
 import numpy as np
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
-                                Variable)
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
 from dynagrade.exercise.figure import dimension, ground, new_drawing, spring
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import energy
@@ -114,8 +113,7 @@ only force doing work, and it is conservative: the energy $T + V$ is conserved
                 )),
         Symbolic("v_formula", "speed as a formula", points=1,
                  expected="sqrt(k/m)*(sqrt(dx^2 + l0^2) - l0)",
-                 variables={"k": Variable(10, 1000, "N/m"), "m": Variable(0.005, 1, "kg"),
-                            "dx": Variable(0.01, 0.5, "m"), "l0": Variable(0.01, 0.5, "m")},
+                 variables=("k", "m", "dx", "l0"),
                  equals="v",
                  misconceptions=(
                      Misconception("sideways pull taken as the stretch", "sqrt(k/m)*dx",

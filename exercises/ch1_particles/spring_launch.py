@@ -2,10 +2,11 @@
 eq. 1.108)."""
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform, Variable)
+                                Uniform, per_draw)
 from dynagrade.mechanics import energy
 
 
+@per_draw
 def solve(p):
     h = energy.spring_launch_height(p.k, p.dx, p.m, p.g)
     return {"h": h, "V_spring": float(energy.spring_potential_of_stretch(p.k, p.dx)),
@@ -78,8 +79,7 @@ Measure heights from the starting point.
                                   "subtract m g Δx."),
                 )),
         Symbolic("h_formula", "height as a formula", points=1, expected="k*dx^2/(2*m*g)",
-                 variables={"k": Variable(10, 5000, "N/m"), "dx": Variable(0.01, 0.3, "m"),
-                            "m": Variable(0.01, 2, "kg"), "g": Variable(1, 20, "m/s^2")},
+                 variables=("k", "dx", "m", "g"),
                  equals="h",
                  misconceptions=(
                      Misconception("factor 1/2 forgotten", "k*dx^2/(m*g)",

@@ -3,8 +3,7 @@ hole: conservation of angular momentum (Example 1.18, eqs. 1.151-1.155)."""
 
 import numpy as np
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
-                                Variable)
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
 from dynagrade.mechanics import angular_momentum as am, energy, kinematics
 
 
@@ -89,8 +88,7 @@ circumferential velocity $v_t = l\omega$ contributes: $H_B = m\,l\,v_t$ (eq. (1.
                 )),
         Symbolic("omega_formula", "final angular velocity as a formula", points=1,
                  expected="(l0/l1)^2*omega0",
-                 variables={"l0": Variable(0.2, 3, "m"), "l1": Variable(0.1, 3, "m"),
-                            "omega0": Variable(0.1, 10, "rad/s")},
+                 variables=("l0", "l1", "omega0"),
                  equals="omega1",
                  misconceptions=(
                      Misconception("speed kept constant", "(l0/l1)*omega0",

@@ -4,10 +4,11 @@ angular acceleration: speed and acceleration in polar components (Example 1.5)."
 import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
-                                Variable)
+                                per_draw)
 from dynagrade.mechanics import kinematics
 
 
+@per_draw
 def solve(p):
     v_r, v_phi = kinematics.polar_velocity(p.l, 0.0, p.omega)
     a_r, a_phi = kinematics.polar_acceleration(p.l, 0.0, 0.0, p.omega, p.alpha)
@@ -80,7 +81,7 @@ Here $l$ = {{ l }}, $\dot\varphi = \omega$ = {{ omega }} and $\ddot\varphi = \do
                                   "Combine both components: |a| = l √(φ̇⁴ + φ̈²)."),
                 )),
         Symbolic("a_r_formula", "a_r as a formula", points=1, expected="-l*omega^2",
-                 variables={"l": Variable(0.1, 5, "m"), "omega": Variable(0.1, 10, "rad/s")},
+                 variables=("l", "omega"),
                  equals="a_r",
                  misconceptions=(
                      Misconception("sign: outward", "l*omega^2",

@@ -3,7 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform, Variable)
+                                Uniform)
 from dynagrade.exercise.figure import arrow, block, ceiling, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import collisions, energy
@@ -121,8 +121,7 @@ are perpendicular to the motion), so mechanical energy is conserved.
                                   "heavy block."),
                 )),
         Symbolic("V_formula", "V as a formula", points=1, expected="m*v/(m+M)",
-                 variables={"m": Variable(0.001, 0.1, "kg"), "M": Variable(0.1, 10, "kg"),
-                            "v": Variable(10, 1000, "m/s")},
+                 variables=("m", "M", "v"),
                  equals="V",
                  misconceptions=(
                      Misconception("kinetic energy conserved", "v*sqrt(m/(m+M))",

@@ -1,7 +1,7 @@
 """A coasting cart collecting load that falls in vertically (Section 2.3.2)."""
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform, Variable)
+                                Uniform)
 from dynagrade.mechanics import variable_mass
 
 
@@ -73,8 +73,7 @@ $m(t) = m_0 + qt$ = {{ si.mass }} kg (with $m_0$ = {{ m0 }}, $q$ = {{ q }}, $t$ 
                                   "the gravel."),
                 )),
         Symbolic("v_t_formula", "speed as a formula", points=1, expected="m0*v0/(m0+q*t)",
-                 variables={"m0": Variable(10, 5000, "kg"), "v0": Variable(0.1, 10, "m/s"),
-                            "q": Variable(1, 200, "kg/s"), "t": Variable(1, 100, "s")},
+                 variables=("m0", "v0", "q", "t"),
                  equals="v_t",
                  misconceptions=(
                      Misconception("kinetic energy conserved", "v0*sqrt(m0/(m0+q*t))",

@@ -1,7 +1,7 @@
 """A chain falling onto a scale: weight plus momentum flux (Section 2.3.2)."""
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform, Variable)
+                                Symbolic, Uniform)
 from dynagrade.mechanics import impact, particle, variable_mass
 
 
@@ -77,8 +77,7 @@ force $\lambda v \cdot v = \lambda v^2$ (the momentum flux).
                 )),
         Numeric("F_end", "reading at rest", unit="N", points=1),
         Symbolic("F_x_formula", "reading as a formula", points=1, expected="3*m*g*x/L",
-                 variables={"m": Variable(0.1, 10, "kg"), "L": Variable(0.5, 5, "m"),
-                            "x": Variable(0.01, 0.5, "m"), "g": Variable(1, 20, "m/s^2")},
+                 variables=("m", "L", "x", "g"),
                  equals="F_x",
                  misconceptions=(
                      Misconception("weight of the piled chain only", "m*g*x/L",

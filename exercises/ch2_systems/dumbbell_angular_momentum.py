@@ -3,7 +3,7 @@ fixed point (Section 2.2.3)."""
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.mechanics import systems
 
 
@@ -20,6 +20,7 @@ def _state(p):
     return masses, r, v
 
 
+@per_draw
 def solve(p):
     masses, r, v = _state(p)
     return {

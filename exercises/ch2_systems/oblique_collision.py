@@ -2,7 +2,8 @@
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, Vector
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector,
+                                per_draw)
 from dynagrade.mechanics import collisions
 
 
@@ -10,6 +11,7 @@ def _line_of_impact(p):
     return np.array([np.cos(p.beta), np.sin(p.beta)])
 
 
+@per_draw
 def _after(p):
     return collisions.velocities_after_oblique_impact(
         p.m1, p.m2, np.array([p.v, 0.0]), np.zeros(2), _line_of_impact(p), p.e)

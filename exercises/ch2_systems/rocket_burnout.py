@@ -2,7 +2,7 @@
 (Section 2.3.2)."""
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform, Variable)
+                                Symbolic, Uniform)
 from dynagrade.mechanics import variable_mass
 
 
@@ -97,9 +97,7 @@ $m(t)\,\dot v = q u - m(t)\,g, \qquad m(t) = m_0 - qt$.
                 )),
         Symbolic("v_b_formula", "burn-out speed as a formula", points=1,
                  expected="u*ln(m0/(m0-mf)) - g*tb",
-                 variables={"m0": Variable(100, 10000, "kg"), "mf": Variable(10, 90, "kg"),
-                            "u": Variable(500, 5000, "m/s"), "tb": Variable(1, 200, "s"),
-                            "g": Variable(1, 20, "m/s^2")},
+                 variables=("m0", "mf", "u", "tb", "g"),
                  equals="v_b",
                  misconceptions=(
                      Misconception("gravity ignored", "u*ln(m0/(m0-mf))",

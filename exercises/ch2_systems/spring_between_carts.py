@@ -3,7 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform, Variable)
+                                Uniform)
 from dynagrade.mechanics import energy, systems
 
 
@@ -86,8 +86,7 @@ $k$ = {{ k }}, $\delta$ = {{ delta }}; work–energy balance, Section 2.2.2).
         Numeric("v_rel", "relative speed", unit="m/s", points=1),
         Symbolic("v1_formula", "speed of cart 1 as a formula", points=1,
                  expected="delta*sqrt(k*m2/(m1*(m1+m2)))",
-                 variables={"m1": Variable(0.1, 10, "kg"), "m2": Variable(0.1, 10, "kg"),
-                            "k": Variable(10, 5000, "N/m"), "delta": Variable(0.01, 0.2, "m")},
+                 variables=("m1", "m2", "k", "delta"),
                  equals="v1",
                  misconceptions=(
                      Misconception("all the energy to cart 1", "delta*sqrt(k/m1)",

@@ -1,7 +1,7 @@
 """Two carts colliding head-on with a coefficient of restitution (Section 2.3.1)."""
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform, Variable)
+                                Symbolic, Uniform)
 from dynagrade.exercise.figure import arrow, block, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import collisions
@@ -144,9 +144,7 @@ $m_2$ = {{ m2 }}).
                 )),
         Symbolic("dT_formula", "energy lost as a formula", points=1,
                  expected="m1*m2*(1-e^2)*(v1-v2)^2/(2*(m1+m2))",
-                 variables={"m1": Variable(0.1, 10, "kg"), "m2": Variable(0.1, 10, "kg"),
-                            "v1": Variable(1, 6, "m/s"), "v2": Variable(-3, 1, "m/s"),
-                            "e": Variable(0, 1)},
+                 variables=("m1", "m2", "v1", "v2", "e"),
                  equals="dT",
                  misconceptions=(
                      Misconception("total mass instead of reduced mass",

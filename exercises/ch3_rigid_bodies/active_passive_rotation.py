@@ -2,7 +2,8 @@
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, Vector
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector,
+                                per_draw)
 from dynagrade.mechanics import rotations
 
 E1, E3 = np.array([1.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0])
@@ -15,10 +16,12 @@ def _rotation(p, first_about_e1=False):
     return r3 @ r1 if first_about_e1 else r1 @ r3
 
 
+@per_draw
 def _vector(p):
     return np.array([p.a1, p.a2, p.a3])
 
 
+@per_draw
 def solve(p):
     rot = _rotation(p)
     return {

@@ -3,7 +3,8 @@ pivot, angular acceleration at release and speed at the bottom (Section 3.2.2)."
 
 import numpy as np
 
-from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Uniform,
+                                per_draw)
 from dynagrade.mechanics import inertia, rigid_kinetics
 
 
@@ -21,6 +22,7 @@ def _centre_distance(p):
     return (p.m_r * p.L / 2 + p.m_d * p.L) / (p.m_r + p.m_d)
 
 
+@per_draw
 def solve(p):
     i_o = _moment_about_pivot(p)
     mass = p.m_r + p.m_d

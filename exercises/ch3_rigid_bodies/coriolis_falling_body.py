@@ -4,7 +4,7 @@ rotation (Section 3.4.3)."""
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform, Variable)
+                                Symbolic, Uniform)
 from dynagrade.mechanics import frames
 
 
@@ -53,9 +53,7 @@ $\lambda$ = {{ lat }}. The Earth turns with $\Omega_E$ = {{ Omega_E }}; $g$ = {{
                 )),
         Symbolic("d_formula", "deflection as a formula", points=1,
                  expected="Omega_E*g*cos(lat)*(2*h/g)^(3/2)/3",
-                 variables={"Omega_E": Variable(1e-5, 1e-4, "rad/s"),
-                            "g": Variable(1, 20, "m/s^2"), "h": Variable(1, 1000, "m"),
-                            "lat": Variable(0, 1.5, "rad")},
+                 variables=("Omega_E", "g", "h", "lat"),
                  equals="d",
                  misconceptions=(
                      Misconception("sin of the latitude", "Omega_E*g*sin(lat)*(2*h/g)^(3/2)/3",

@@ -3,12 +3,13 @@
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.exercise.figure import angle_arc, block, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import rigid_kinematics as rk
 
 
+@per_draw
 def _crank_rate(p):
     """Angular velocity of the crank from its speed in revolutions per time."""
     return 2 * np.pi * p.n
@@ -74,6 +75,7 @@ def figure(p):
     return drawing
 
 
+@per_draw
 def solve(p):
     w = _crank_rate(p)
     return {
@@ -82,6 +84,7 @@ def solve(p):
     }
 
 
+@per_draw
 def _pin_only(p):
     """The wrong route: the slider moves with the horizontal velocity of the crank pin."""
     return -p.r * _crank_rate(p) * np.sin(p.theta)

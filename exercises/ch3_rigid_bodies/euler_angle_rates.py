@@ -2,7 +2,8 @@
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, Vector
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector,
+                                per_draw)
 from dynagrade.mechanics import gyro
 
 
@@ -11,11 +12,13 @@ def _omega(p):
                                                        p.theta_dot, p.phi_dot)
 
 
+@per_draw
 def solve(p):
     w = _omega(p)
     return {"omega_body": w, "omega_abs": float(np.linalg.norm(w))}
 
 
+@per_draw
 def _rates_added(p):
     """The wrong route: precession and spin added as if about one axis."""
     return np.array([p.theta_dot, 0.0, p.psi_dot + p.phi_dot])

@@ -3,15 +3,18 @@
 
 import numpy as np
 
-from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Uniform,
+                                per_draw)
 from dynagrade.mechanics import gyro, inertia, rigid_kinetics, vibrations
 
 
+@per_draw
 def _spin(p):
     """Spin rate in rad/s from revolutions per time."""
     return 2 * np.pi * p.n
 
 
+@per_draw
 def solve(p):
     disk = inertia.inertia_tensor_disk(p.m, p.R)
     rate = gyro.fast_top_precession_rate(p.m, p.g, p.l, disk[2, 2], _spin(p))

@@ -4,7 +4,7 @@
 import numpy as np
 
 from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Options, Symbolic,
-                                Uniform, Variable)
+                                Uniform)
 from dynagrade.mechanics import inertia, kinematics, rigid_kinetics
 
 
@@ -96,7 +96,7 @@ of angle $\alpha$ = {{ alpha }} and roll down without slipping ($g$ = {{ g }}).
         Options("first", "first to arrive", options=("cylinder", "sphere", "hoop"), points=1),
         Symbolic("a_cyl_formula", "acceleration of the cylinder as a formula", points=1,
                  expected="2/3*g*sin(alpha)",
-                 variables={"g": Variable(1, 20, "m/s^2"), "alpha": Variable(0.05, 1.5, "rad")},
+                 variables=("g", "alpha"),
                  equals="a_cyl",
                  misconceptions=(
                      Misconception("sliding without friction", "g*sin(alpha)",

@@ -1,6 +1,6 @@
 """A hanging rod struck by a particle: eccentric impact on a pinned body (Section 3.3)."""
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 import numpy as np
 
 from dynagrade.exercise.figure import arrow, block, dimension, new_drawing, pivot
@@ -48,6 +48,7 @@ def figure(p):
     return drawing
 
 
+@per_draw
 def solve(p):
     i_o = _moment_pivot(p)
     impulse = _impulse(p, i_o)
@@ -59,6 +60,7 @@ def solve(p):
     }
 
 
+@per_draw
 def _free_particle_rebound(p):
     """The wrong route: the rod hit as if it were a free particle of mass M."""
     return p.v - rigid_impact.eccentric_impact_impulse(1 / p.m, 1 / p.M, p.v, p.e) / p.m

@@ -4,7 +4,7 @@ of rotation (Section 3.1.1)."""
 import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform, Variable, Vector)
+                                Uniform, Vector)
 from dynagrade.exercise.figure import angle_arc, arrow, dimension, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import rigid_kinematics as rk
@@ -116,7 +116,7 @@ $\varphi$ = {{ phi }} from the contact point, measured about the hub counter-clo
                 )),
         Symbolic("speed_formula", "speed of P as a formula", points=1,
                  expected="2*v*abs(sin(phi/2))",
-                 variables={"v": Variable(0.5, 30, "m/s"), "phi": Variable(0.1, 6.2, "rad")},
+                 variables=("v", "phi"),
                  equals="speed",
                  misconceptions=(
                      Misconception("rotation about the hub only", "v",

@@ -3,7 +3,8 @@
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, Vector
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector,
+                                per_draw)
 from dynagrade.mechanics import rigid_kinematics as rk
 
 
@@ -16,6 +17,7 @@ def _r(p):
     return np.array([p.d, p.R * np.sin(p.gamma), p.R * np.cos(p.gamma)])
 
 
+@per_draw
 def solve(p):
     v = rk.velocity_of_point(np.zeros(3), _omega(p), _r(p))
     return {"omega_vec": _omega(p), "v_P": v, "speed": float(np.linalg.norm(v))}

@@ -3,7 +3,8 @@
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Options, Uniform
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Options, Uniform,
+                                per_draw)
 from dynagrade.mechanics import euler_equations, inertia
 
 AXES = ("e1", "e2", "e3")
@@ -17,6 +18,7 @@ def _largest(p):
     return int(np.argmax(_moments(p)))
 
 
+@per_draw
 def solve(p):
     moments = _moments(p)
     stable = tuple(AXES[k] for k in range(3)

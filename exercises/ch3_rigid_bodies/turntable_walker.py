@@ -3,10 +3,12 @@ frame (Section 3.4.2)."""
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, Vector
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector,
+                                per_draw)
 from dynagrade.mechanics import frames, particle
 
 
+@per_draw
 def _acceleration(p):
     """Absolute acceleration, components along e_r, e_phi, e_3 of the rotating frame."""
     return frames.absolute_acceleration(np.zeros(3), [0, 0, p.Omega], [0, 0, p.Omega_dot],

@@ -3,7 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform, Variable)
+                                Uniform)
 from dynagrade.mechanics import inertia, rigid_kinetics
 from dynagrade.mechanics import rigid_kinematics as rk
 
@@ -69,8 +69,7 @@ is held fixed. The yo-yo is released from rest with the string vertical ($g$ = {
                 )),
         Symbolic("v_formula", "speed as a formula", points=1,
                  expected="sqrt(2*g*h/(1 + R^2/(2*r^2)))",
-                 variables={"g": Variable(1, 20, "m/s^2"), "h": Variable(0.1, 3, "m"),
-                            "R": Variable(0.02, 0.08, "m"), "r": Variable(0.003, 0.02, "m")},
+                 variables=("g", "h", "R", "r"),
                  equals="v",
                  misconceptions=(
                      Misconception("rotational kinetic energy forgotten", "sqrt(2*g*h)",

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.mechanics import vibrations
 
 
@@ -10,6 +10,7 @@ def _omega_n(p):
     return vibrations.natural_frequency(p.k, p.m)
 
 
+@per_draw
 def _eta(p):
     return vibrations.frequency_ratio(vibrations.road_forcing_frequency(p.v, p.lam), _omega_n(p))
 

@@ -1,26 +1,39 @@
 """A pendulum hanging from a cart on a spring: mass and stiffness matrices from the
 Lagrange equations and the coupled natural frequencies (Section 4.4.1)."""
 
+from functools import cache
+
 import numpy as np
-import sympy as sp
 
-from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
-from dynagrade.mechanics import equilibrium, multi_dof
-
-_t = sp.Symbol("t")
-_x, _phi = sp.Function("x")(_t), sp.Function("phi")(_t)
-_M, _m, _L, _k, _g = sp.symbols("M m L k g", positive=True)
-_xb, _yb = _x + _L * sp.sin(_phi), -_L * sp.cos(_phi)          # the bob
-_T = _M * _x.diff(_t) ** 2 / 2 + _m * (_xb.diff(_t) ** 2 + _yb.diff(_t) ** 2) / 2
-_V = _k * _x**2 / 2 + _m * _g * _yb
-_REST = {_x: 0, _phi: 0}
-_MASS = sp.lambdify([_M, _m, _L, _k, _g], equilibrium.linearized_mass_matrix(_T, [_x, _phi], _t, _REST))
-_STIFF = sp.lambdify([_M, _m, _L, _k, _g], equilibrium.stiffness_matrix(_V, [_x, _phi], _REST))
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Uniform,
+                                per_draw)
+from dynagrade.mechanics import multi_dof
 
 
+@cache
+def _linearized():
+    """(K, M) as functions of (M, m, L, k, g): the core linearizes T and V about the rest
+    position. Derived on first use, not when the exercise is loaded."""
+    import sympy as sp
+
+    from dynagrade.mechanics import equilibrium
+
+    t = sp.Symbol("t")
+    x, phi = sp.Function("x")(t), sp.Function("phi")(t)
+    M, m, L, k, g = sp.symbols("M m L k g", positive=True)
+    xb, yb = x + L * sp.sin(phi), -L * sp.cos(phi)          # the bob
+    T = M * x.diff(t) ** 2 / 2 + m * (xb.diff(t) ** 2 + yb.diff(t) ** 2) / 2
+    V = k * x**2 / 2 + m * g * yb
+    rest = {x: 0, phi: 0}
+    return (sp.lambdify([M, m, L, k, g], equilibrium.stiffness_matrix(V, [x, phi], rest)),
+            sp.lambdify([M, m, L, k, g], equilibrium.linearized_mass_matrix(T, [x, phi], t, rest)))
+
+
+@per_draw
 def matrices(p):
+    stiffness, mass = _linearized()
     args = (p.M, p.m, p.L, p.k, p.g)
-    return np.array(_STIFF(*args), dtype=float), np.array(_MASS(*args), dtype=float)
+    return np.array(stiffness(*args), dtype=float), np.array(mass(*args), dtype=float)
 
 
 def solve(p):

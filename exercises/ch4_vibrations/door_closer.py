@@ -3,10 +3,11 @@ overdamped (Section 4.3.2)."""
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.mechanics import vibrations
 
 
+@per_draw
 def omega_n(p):
     return vibrations.natural_frequency(p.kt, p.J)
 

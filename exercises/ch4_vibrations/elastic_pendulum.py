@@ -1,33 +1,55 @@
 """The elastic (spring) pendulum: Lagrange equations in polar coordinates, the static
 equilibrium and the two linearized natural frequencies (Sections 4.1 and 4.2)."""
 
+from functools import cache
+from types import SimpleNamespace
+
 import numpy as np
-import sympy as sp
 
-from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform, Variable)
-from dynagrade.mechanics import equilibrium, lagrange, multi_dof
-
-_t = sp.Symbol("t")
-_r, _phi = sp.Function("r")(_t), sp.Function("phi")(_t)
-_m, _k, _L0, _g = sp.symbols("m k L0 g", positive=True)
-_T = _m * (_r.diff(_t) ** 2 + _r**2 * _phi.diff(_t) ** 2) / 2
-_V = _k * (_r - _L0) ** 2 / 2 - _m * _g * _r * sp.cos(_phi)
-# the radial equation of motion as the core derives it (tests hold the statement's formula against it)
-ACCELERATIONS = [lagrange.in_state_symbols(a, [_r, _phi], _t)
-                 for a in lagrange.accelerations(_T, _V, [_r, _phi], _t)]
-# the hanging equilibrium: phi = 0 and the r that makes dV/dr vanish
-_EQ = [e for e in equilibrium.equilibrium_positions(_V.subs(_phi, 0), [_r])][0][_r]
-_R_STATIC = sp.lambdify([_m, _k, _L0, _g], _EQ)
-_Q_EQ = {_r: _EQ, _phi: 0}
-_K = sp.lambdify([_m, _k, _L0, _g], equilibrium.stiffness_matrix(_V, [_r, _phi], _Q_EQ))
-_M = sp.lambdify([_m, _k, _L0, _g], equilibrium.linearized_mass_matrix(_T, [_r, _phi], _t, _Q_EQ))
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, Variable, per_draw)
+from dynagrade.mechanics import multi_dof
 
 
+@cache
+def _model():
+    """T and V in polar coordinates, derived by the core on first use (not at load):
+    ``r_static``, ``K`` and ``M`` are functions of (m, k, L0, g)."""
+    import sympy as sp
+
+    from dynagrade.mechanics import equilibrium
+
+    t = sp.Symbol("t")
+    r, phi = sp.Function("r")(t), sp.Function("phi")(t)
+    m, k, L0, g = sp.symbols("m k L0 g", positive=True)
+    T = m * (r.diff(t) ** 2 + r**2 * phi.diff(t) ** 2) / 2
+    V = k * (r - L0) ** 2 / 2 - m * g * r * sp.cos(phi)
+    # the hanging equilibrium: phi = 0 and the r that makes dV/dr vanish
+    r_static = [e for e in equilibrium.equilibrium_positions(V.subs(phi, 0), [r])][0][r]
+    at_rest = {r: r_static, phi: 0}
+    return SimpleNamespace(
+        t=t, q=[r, phi], T=T, V=V,
+        r_static=sp.lambdify([m, k, L0, g], r_static),
+        K=sp.lambdify([m, k, L0, g], equilibrium.stiffness_matrix(V, [r, phi], at_rest)),
+        M=sp.lambdify([m, k, L0, g], equilibrium.linearized_mass_matrix(T, [r, phi], t, at_rest)))
+
+
+def accelerations():
+    """(r'', phi'') in state symbols, as the core derives them with the Lagrange equations
+    (tests hold the statement's formula against the radial one)."""
+    from dynagrade.mechanics import lagrange
+
+    model = _model()
+    return [lagrange.in_state_symbols(a, model.q, model.t)
+            for a in lagrange.accelerations(model.T, model.V, model.q, model.t)]
+
+
+@per_draw
 def frequencies(p):
     """(omega of the stretching mode, omega of the swinging mode) from the linearization."""
-    K = np.array(_K(p.m, p.k, p.L0, p.g), dtype=float)
-    M = np.array(_M(p.m, p.k, p.L0, p.g), dtype=float)
+    model = _model()
+    K = np.array(model.K(p.m, p.k, p.L0, p.g), dtype=float)
+    M = np.array(model.M(p.m, p.k, p.L0, p.g), dtype=float)
     # the matrices are diagonal: identify the modes by their coordinate
     w = multi_dof.natural_frequencies(K, M)
     shapes = multi_dof.mode_shapes(K, M)
@@ -37,12 +59,11 @@ def frequencies(p):
 
 def solve(p):
     w_r, w_phi = frequencies(p)
-    return {"r_static": _R_STATIC(p.m, p.k, p.L0, p.g), "omega_r": w_r, "omega_phi": w_phi}
+    return {"r_static": _model().r_static(p.m, p.k, p.L0, p.g), "omega_r": w_r, "omega_phi": w_phi}
 
 
 _VARS = {"r": Variable(0.2, 3, "m"), "phi": Variable(-3, 3, "rad"), "rdot": Variable(-3, 3, "m/s"),
-         "phidot": Variable(-3, 3, "rad/s"), "m": Variable(0.1, 10, "kg"), "k": Variable(1, 1000, "N/m"),
-         "L0": Variable(0.1, 2, "m"), "g": Variable(1, 20, "m/s^2")}
+         "phidot": Variable(-3, 3, "rad/s"), "m": None, "k": None, "L0": None, "g": None}
 
 EXERCISE = Exercise(
     id="elastic-pendulum-lagrange",

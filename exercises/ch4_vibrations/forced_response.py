@@ -2,10 +2,11 @@
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.mechanics import vibrations
 
 
+@per_draw
 def _eta_zeta(p):
     w = vibrations.natural_frequency(p.k, p.m)
     return vibrations.frequency_ratio(p.Omega, w), vibrations.damping_ratio(p.c, p.k, p.m)

@@ -3,7 +3,8 @@ stiffness and damping coefficient (Section 4.3.2)."""
 
 import numpy as np
 
-from dynagrade.exercise import Choice, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import (Choice, Constraint, Exercise, Misconception, Numeric, Uniform,
+                                per_draw)
 from dynagrade.mechanics import vibrations
 
 
@@ -21,6 +22,7 @@ def solve(p):
             "c": vibrations.damping_coefficient(zeta, k, p.m)}
 
 
+@per_draw
 def _zeta(p):
     return _identified(p)[1]
 

@@ -3,7 +3,7 @@
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.mechanics import multi_dof
 
 
@@ -27,6 +27,7 @@ def solve(p):
     return {"omega1": w[0], "omega2": w[1], "A1": shapes[0, 0] * eta0[0], "x1": x1, "x2": x2}
 
 
+@per_draw
 def _first_mode_only(p):
     w = multi_dof.natural_frequencies(*_system(p))
     return p.a * np.cos(w[0] * p.t1)

@@ -1,28 +1,50 @@
 """A pendulum with a torsional spring at its pivot: equation of motion by Lagrange and the
 linearized natural frequency (Section 4.1)."""
 
+from functools import cache
+
 import numpy as np
-import sympy as sp
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform, Variable)
-from dynagrade.mechanics import equilibrium, lagrange, vibrations
+from dynagrade.mechanics import vibrations
 
-# The system as the statement gives it: T and V in the angle theta; the core derives the
-# equation of motion and its linearization once, at import.
-_t = sp.Symbol("t")
-_theta = sp.Function("theta")(_t)
-_m, _L, _g, _kt = sp.symbols("m L g kt", positive=True)
-_T = _m * _L**2 * _theta.diff(_t) ** 2 / 2
-_V = -_m * _g * _L * sp.cos(_theta) + _kt * _theta**2 / 2
-# the equation of motion, q'' = ACCELERATION (tests hold the statement's formula against it)
-ACCELERATION = lagrange.in_state_symbols(lagrange.accelerations(_T, _V, [_theta], _t)[0], [_theta], _t)
-_OMEGA_SQUARED = sp.lambdify(
-    [_m, _L, _g, _kt], equilibrium.linearized_frequency_squared(_T, _V, [_theta], _t, {_theta: 0}))
+
+@cache
+def _system():
+    """(t, theta, T, V): the system as the statement gives it, in the angle theta."""
+    import sympy as sp
+
+    t = sp.Symbol("t")
+    theta = sp.Function("theta")(t)
+    m, L, g, kt = sp.symbols("m L g kt", positive=True)
+    return t, theta, m * L**2 * theta.diff(t) ** 2 / 2, -m * g * L * sp.cos(theta) + kt * theta**2 / 2
+
+
+def acceleration():
+    """theta'' as the core derives it with the Lagrange equations (tests hold the
+    statement's formula against it)."""
+    from dynagrade.mechanics import lagrange
+
+    t, theta, T, V = _system()
+    return lagrange.in_state_symbols(lagrange.accelerations(T, V, [theta], t)[0], [theta], t)
+
+
+@cache
+def _omega_squared():
+    """omega^2 of (m, L, g, kt), linearized by the core about theta = 0 on first use."""
+    import sympy as sp
+
+    from dynagrade.mechanics import equilibrium
+
+    t, theta, T, V = _system()
+    m, L, g, kt = sp.symbols("m L g kt", positive=True)
+    return sp.lambdify([m, L, g, kt],
+                       equilibrium.linearized_frequency_squared(T, V, [theta], t, {theta: 0}))
 
 
 def omega(p):
-    return float(np.sqrt(_OMEGA_SQUARED(p.m, p.L, p.g, p.kt)))
+    return float(np.sqrt(_omega_squared()(p.m, p.L, p.g, p.kt)))
 
 
 def solve(p):
@@ -30,8 +52,8 @@ def solve(p):
     return {"omega": w, "f": vibrations.frequency_in_hertz(w), "T_period": vibrations.period(w)}
 
 
-_VARS = {"theta": Variable(-3, 3, "rad"), "m": Variable(0.1, 10, "kg"), "L": Variable(0.1, 3, "m"),
-         "g": Variable(1, 20, "m/s^2"), "kt": Variable(0.1, 100, "N*m")}
+# theta is no parameter; the parameters take their own units and (widened) ranges
+_VARS = {"theta": Variable(-3, 3, "rad"), "m": None, "L": None, "g": None, "kt": None}
 
 EXERCISE = Exercise(
     id="pendulum-torsion-spring-lagrange",

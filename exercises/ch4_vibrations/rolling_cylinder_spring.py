@@ -3,16 +3,19 @@ system and its natural frequency (Section 4.3.1)."""
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform, Variable
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
+                                per_draw)
 from dynagrade.mechanics import inertia, vibrations
 
 
+@per_draw
 def m_eq(p):
     # x' for the translation, phi' = x'/r for the rotation (J = m r^2 / 2)
     return vibrations.equivalent_mass([p.m, inertia.inertia_tensor_disk(p.m, p.r)[2, 2]],
                                       [1.0, 1.0 / p.r])
 
 
+@per_draw
 def k_eq(p):
     # a spring attached at height a above the centre stretches by (r + a)/r per unit x
     return vibrations.equivalent_stiffness([p.k], [(p.r + p.a) / p.r])
@@ -81,8 +84,7 @@ centre; consider small motions.
                                               "f = omega/(2 pi)."),)),
         Symbolic("omega_formula", "omega as a formula", points=1,
                  expected="(r + a)/r*sqrt(2*k/(3*m))",
-                 variables={"k": Variable(10, 1e4, "N/m"), "m": Variable(0.5, 50, "kg"),
-                            "r": Variable(0.01, 1, "m"), "a": Variable(0, 1, "m")},
+                 variables=("k", "m", "r", "a"),
                  equals="omega"),
     ),
 )

@@ -3,12 +3,13 @@ operating speed and the force passed to the floor (Section 4.3.3)."""
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.exercise.figure import block, damper, dimension, ground, new_drawing, spring
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import vibrations
 
 
+@per_draw
 def _state(p):
     w = vibrations.natural_frequency(p.k, p.M)
     return w, vibrations.frequency_ratio(p.n, w)

@@ -2,10 +2,11 @@
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.mechanics import multi_dof, vibrations
 
 
+@per_draw
 def _Omega(p):
     return 2 * np.pi * p.f
 

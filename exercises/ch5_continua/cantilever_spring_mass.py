@@ -2,10 +2,11 @@
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.mechanics import stiffness, vibrations
 
 
+@per_draw
 def k_beam(p):
     return stiffness.cantilever_tip_stiffness(p.E, stiffness.rectangle_second_moment(p.b, p.h), p.L)
 

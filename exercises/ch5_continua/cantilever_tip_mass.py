@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.mechanics import continua, stiffness, vibrations
 
 
@@ -10,6 +10,7 @@ def _k(p):
     return stiffness.cantilever_tip_stiffness(p.E, stiffness.circle_second_moment(p.d), p.L)
 
 
+@per_draw
 def _m_b(p):
     return p.rho * stiffness.circle_area(p.d) * p.L
 

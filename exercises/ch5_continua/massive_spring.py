@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform, Variable
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform
 from dynagrade.mechanics import continua, rods, vibrations
 
 
@@ -56,11 +56,11 @@ linearly from the fixed end to the mass.
                     Misconception("omega for f", omega, "f = omega/(2 pi)."),
                 )),
         Numeric("error", "relative error of the estimate", points=1, rtol=0.02),
-        Symbolic("omega_formula", "omega as a formula", points=1, expected="sqrt(k/(m + m_s/3))",
-                 variables={"k": Variable(10, 1e4, "N/m"), "m": Variable(0.1, 10, "kg"), "m_s": Variable(0.01, 5, "kg")},
-                 equals="omega",
-                 misconceptions=(Misconception("spring mass forgotten", "sqrt(k/m)", "Add m_s/3."),)),
         Numeric("omega", "natural angular frequency", unit="rad/s", points=1,
                 misconceptions=(Misconception("f for omega", lambda p: omega(p) / (2 * np.pi), "omega = 2 pi f."),)),
+        Symbolic("omega_formula", "omega as a formula", points=1, expected="sqrt(k/(m + m_s/3))",
+                 variables=("k", "m", "m_s"),
+                 equals="omega",
+                 misconceptions=(Misconception("spring mass forgotten", "sqrt(k/m)", "Add m_s/3."),)),
     ),
 )

@@ -1,6 +1,6 @@
 """A disk on a wire or shaft: torsional stiffness and the torsional pendulum (Section 5.1)."""
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.mechanics import inertia, stiffness, vibrations
 
 
@@ -13,6 +13,7 @@ def _J(p):
     return inertia.inertia_tensor_disk(p.m, p.R)[2, 2]
 
 
+@per_draw
 def _period(p):
     return vibrations.period(vibrations.natural_frequency(k_t(p), _J(p)))
 

@@ -19,7 +19,28 @@ from pathlib import Path
 
 import click
 
+from .errors import DynagradeError
 from .exercise import loader
+
+
+class _ReportsErrors:
+    """The one place where dynagrade's errors become command-line errors: the message
+    of any :class:`DynagradeError` raised by a command is printed as ``Error: ...`` and
+    the command exits with status 1, without a traceback."""
+
+    def invoke(self, ctx):
+        try:
+            return super().invoke(ctx)
+        except DynagradeError as error:
+            raise click.ClickException(str(error)) from None
+
+
+class _Group(_ReportsErrors, click.Group):
+    """A command group whose subcommands report dynagrade's errors as messages."""
+
+
+class _Command(_ReportsErrors, click.Command):
+    """A command that reports dynagrade's errors as messages."""
 
 
 class _Context:
@@ -32,19 +53,11 @@ class _Context:
     @property
     def bank(self):
         if self._bank is None:
-            try:
-                self._bank = loader.open_bank(self.folders)
-            except loader.ExerciseFileError as error:
-                raise click.ClickException(str(error)) from None
+            self._bank = loader.open_bank(self.folders)
         return self._bank
 
     def exercise(self, exercise_id: str):
-        try:
-            return self.bank.get(exercise_id)
-        except KeyError as error:
-            raise click.ClickException(error.args[0]) from None
-        except loader.ExerciseFileError as error:
-            raise click.ClickException(str(error)) from None
+        return self.bank.get(exercise_id)
 
 
 _exercises_option = click.option(
@@ -53,7 +66,7 @@ _exercises_option = click.option(
          f"also ${loader.ENVIRONMENT_VARIABLE}).")
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.group(cls=_Group, context_settings={"help_option_names": ["-h", "--help"]})
 @_exercises_option
 @click.version_option(package_name="dynagrade")
 @click.pass_context
@@ -69,8 +82,8 @@ def main(ctx, folders):
 @click.option("--json", "as_json", is_flag=True, help="Print a JSON array.")
 @click.pass_obj
 def list_command(context, as_json):
-    """List the exercises in the bank."""
-    exercises = _load_all(context)
+    """List the exercises in the bank (read from their files, which are not run)."""
+    exercises = context.bank.listing()
     if as_json:
         click.echo(json.dumps([e.summary() for e in exercises], indent=2, ensure_ascii=False))
         return
@@ -174,7 +187,7 @@ def verify(context, exercise_ids, variants, require_solutions):
     from .render.terminal import verify_progress
 
     exercises = ([context.exercise(i) for i in exercise_ids] if exercise_ids
-                 else _load_all(context))
+                 else context.bank.all())
     reports = verify_progress(exercises, lambda e: verify_exercise(
         e, range(variants), require_solution=require_solutions, math_check=math_problems))
     if any(not r.ok for r in reports):
@@ -234,18 +247,11 @@ def grade_command(context, files, as_json, manifest, output, jobs):
 def exam(context, exam_file, roster, output, jobs, no_pdf, solutions):
     """Generate an exam: every student's variants, sheets, keys, Moodle XML, manifest."""
     from .exam.generate import generate_exam
-    from .exam.spec import ExamSpecError
-    from .exam.variants import NoUsableVariant
-    from .exercise.solution import SolutionError
     from .render.terminal import progress_reporter
 
-    try:
-        with progress_reporter() as progress:
-            report = generate_exam(exam_file, roster, output, bank=context.bank, jobs=jobs,
-                                   pdf=not no_pdf, progress=progress, solutions=solutions)
-    except (ExamSpecError, NoUsableVariant, loader.ExerciseFileError,
-            SolutionError) as error:
-        raise click.ClickException(str(error)) from None
+    with progress_reporter() as progress:
+        report = generate_exam(exam_file, roster, output, bank=context.bank, jobs=jobs,
+                               pdf=not no_pdf, progress=progress, solutions=solutions)
     click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
                f"({report.redraws} draws replaced because they could not discriminate; see "
                f"manifest.json) in {report.timings['total']:.1f} s", err=True)
@@ -254,7 +260,7 @@ def exam(context, exam_file, roster, output, jobs, no_pdf, solutions):
 # -- grade exercise.py -------------------------------------------------------------------
 
 
-@click.command(context_settings={"help_option_names": ["-h", "--help"]})
+@click.command(cls=_Command, context_settings={"help_option_names": ["-h", "--help"]})
 @click.argument("file", type=click.Path(exists=True, dir_okay=False))
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 @click.option("--solution", is_flag=True, help="Print the worked solution after the verdicts.")
@@ -269,17 +275,13 @@ def grade_main(file, as_json, solution, folders):
 
 
 def _grade_files(context, files, as_json, solution=False):
-    from .exercise.model import ConstraintError
     from .exercise.scoring import grade_variant
     from .exercise.seeds import student_seed
-    from .exercise.sheet import SheetError, read_sheet
+    from .exercise.sheet import read_sheet
 
     results = []
     for file in files:
-        try:
-            sheet = read_sheet(file)
-        except SheetError as error:
-            raise click.ClickException(str(error)) from None
+        sheet = read_sheet(file)
         exercise = context.exercise(sheet.exercise_id)
         notes = [f"{file}: no part named {name!r} in {exercise.id}; it was ignored"
                  for name in sheet.answers if name not in {p.name for p in exercise.parts}]
@@ -288,10 +290,7 @@ def _grade_files(context, files, as_json, solution=False):
                          f"{sheet.student!r}; graded the variant of SEED {sheet.seed}")
         for note in notes:
             click.echo(f"warning: {note}", err=True)
-        try:
-            variant = exercise.variant(sheet.seed)
-        except ConstraintError as error:
-            raise click.ClickException(f"{file}: {error}") from None
+        variant = exercise.variant(sheet.seed)
         result = grade_variant(exercise, variant, sheet.answers, sheet.problems)
         results.append((exercise, variant, result))
     if as_json:
@@ -311,15 +310,12 @@ def _grade_files(context, files, as_json, solution=False):
 
 
 def _grade_class(context, manifest, files, output, jobs, as_json):
-    from .exam.classgrade import ManifestError, grade_class
+    from .exam.classgrade import grade_class
     from .render.terminal import progress_reporter
 
-    try:
-        with progress_reporter() as progress:
-            outcome = grade_class(manifest, files, output, bank=context.bank, jobs=jobs,
-                                  progress=progress)
-    except (ManifestError, loader.ExerciseFileError) as error:
-        raise click.ClickException(str(error)) from None
+    with progress_reporter() as progress:
+        outcome = grade_class(manifest, files, output, bank=context.bank, jobs=jobs,
+                              progress=progress)
     for problem in outcome.problems:
         click.echo(f"{problem.level}: {problem.source}: {problem.message}", err=True)
     if as_json:
@@ -335,15 +331,7 @@ def _grade_class(context, manifest, files, output, jobs, as_json):
 # -- helpers -----------------------------------------------------------------------------
 
 
-def _load_all(context):
-    try:
-        return context.bank.all()
-    except loader.ExerciseFileError as error:
-        raise click.ClickException(str(error)) from None
-
-
 def _variant(exercise, seed, student, settings):
-    from .exercise.model import ConstraintError
     from .exercise.seeds import student_seed
 
     if seed is not None and student is not None:
@@ -351,10 +339,7 @@ def _variant(exercise, seed, student, settings):
     if student is not None:
         seed = student_seed(exercise.id, student)
     overrides = _parse_settings(exercise, settings)
-    try:
-        variant = exercise.variant(seed or 0, overrides, strict=not overrides)
-    except ConstraintError as error:
-        raise click.ClickException(str(error)) from None
+    variant = exercise.variant(seed or 0, overrides, strict=not overrides)
     for warning in variant.warnings:
         click.echo(f"warning: the values set break the constraint '{warning}'", err=True)
     return variant
@@ -362,12 +347,9 @@ def _variant(exercise, seed, student, settings):
 
 def _solution(exercise, variant) -> str | None:
     """The variant's worked solution (Markdown), ``None`` when the exercise has none."""
-    from .exercise.solution import SolutionError, render_solution
+    from .exercise.solution import render_solution
 
-    try:
-        return render_solution(exercise, variant)
-    except SolutionError as error:
-        raise click.ClickException(str(error)) from None
+    return render_solution(exercise, variant)
 
 
 def _parse_settings(exercise, settings) -> dict[str, float]:
@@ -379,10 +361,7 @@ def _parse_settings(exercise, settings) -> dict[str, float]:
         name, sep, text = setting.partition("=")
         if not sep:
             raise click.BadParameter(f"{setting!r} is not NAME=VALUE", param_hint="--set")
-        try:
-            parameter = exercise.parameter(name.strip())
-        except KeyError as error:
-            raise click.BadParameter(error.args[0], param_hint="--set") from None
+        parameter = exercise.parameter(name.strip())
         number, _, unit = text.strip().partition(" ")
         try:
             value = float(number)

@@ -27,12 +27,15 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..errors import UnknownExercise
 from ..exercise.loader import Bank, open_bank
 from ..exercise.model import Exercise, Variant
 from ..exercise.numbers import GRADEBOOK_DECIMALS, points_text
 from ..exercise.scoring import grade_variant
 from .files import write_atomic
 from .run import GradingRun, file_sha256
+from .solution_policy import with_feedback
+from .solutions import feedback_solutions
 from .manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
 from .stats import part_statistics
 from .submissions import Problem, Submission, collect
@@ -64,8 +67,8 @@ def _exercises(manifest: Manifest, bank: Bank, problems: list[Problem],
     for described in manifest.exercises:
         try:
             exercise = bank.get(described.id)
-        except KeyError as error:
-            raise ManifestError(f"{where}: {error.args[0]} (needed to grade this exam; "
+        except UnknownExercise as error:
+            raise ManifestError(f"{where}: {error} (needed to grade this exam; "
                                 "point --exercises at the folder it came from)") from None
         names = {p.name for p in exercise.parts}
         missing = [p.name for p in described.parts if p.name not in names]
@@ -143,6 +146,8 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
     graded = _run(work, manifest_parts, exercises, jobs, progress)
     timings["grading"] = time.perf_counter() - stage
     outcome = _outcome(manifest, graded, problems, timings)
+    if out_dir is not None and with_feedback(manifest.exam.policy):
+        _add_solutions(outcome, manifest, exercises)
     if out_dir is not None:
         stage = time.perf_counter()
         write_outputs(outcome, manifest, Path(out_dir), progress)
@@ -168,6 +173,19 @@ def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
     ordered_parts = [(e.id, p) for e in manifest.exercises for p in e.parts]
     return ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
                         part_statistics(ordered_parts, analysed), feedback, timings)
+
+
+def _add_solutions(outcome: ClassOutcome, manifest: Manifest,
+                   exercises: dict[str, Exercise]) -> None:
+    """Each student's worked solutions, to end their feedback (:mod:`.solutions`)."""
+    for student in manifest.students:
+        def warn(exercise_id: str, message: str, student_id=student.student_id) -> None:
+            outcome.problems.append(Problem("warning", "solution", message, student_id,
+                                            exercise_id))
+
+        solved = [(exercises[e.exercise], stored_variant(exercises[e.exercise], e))
+                  for e in student.variants]
+        outcome.feedback[student.student_id]["solutions"] = feedback_solutions(solved, warn)
 
 
 def gradebook_row(student_id: str, results: dict, exercise_ids: list[str],

@@ -30,7 +30,7 @@ from pathlib import Path
 from typing import Callable
 
 from .. import __name__ as _package
-from ..exercise.loader import Bank, ExerciseFileError, open_bank
+from ..exercise.loader import Bank, open_bank
 from ..exercise.model import ConstraintError, Exercise
 from ..render.pdf import embedded_pages_source
 from ..render.sheets import typst_preamble
@@ -94,14 +94,7 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
 def load_exam(exam_path, roster_path, bank: Bank | None = None):
     """The exam spec, the roster and the exercises by id; errors as :class:`ExamSpecError`."""
     bank = bank or open_bank()
-
-    def known(exercise_id):
-        try:
-            return bank.get(exercise_id)
-        except ExerciseFileError as error:
-            raise KeyError(str(error)) from None
-
-    spec = read_exam_spec(exam_path, known)
+    spec = read_exam_spec(exam_path, bank.get)
     roster = read_roster(roster_path)
     exercises = {item.id: bank.get(item.id) for item in spec.exercises}
     _check_set_values(spec, exercises)
@@ -213,7 +206,9 @@ def build_manifest(spec: ExamSpec, exercises: dict[str, Exercise],
                       "/".join(Path(exercises[item.id].path).parts[-2:]),
                       file_sha256(exercises[item.id].path), parts[item.id])
         for item in spec.exercises)
-    exam = ExamEntry(spec.id, spec.title, spec.date, spec.instructions, spec.total_points)
+    policy = {"solutions": spec.solutions} if spec.solutions else None
+    exam = ExamEntry(spec.id, spec.title, spec.date, spec.instructions, spec.total_points,
+                     policy)
     return Manifest(Generator(_version(), numpy.__version__), exam, described,
                     tuple(students))
 

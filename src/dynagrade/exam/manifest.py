@@ -48,6 +48,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Callable, Mapping
 
+from ..errors import DynagradeError
 from ..exercise.parts import PART_KINDS
 
 FORMAT = "dynagrade-exam-manifest"
@@ -58,7 +59,7 @@ __all__ = ["FORMAT", "VERSION", "ManifestError", "Manifest", "Generator", "ExamE
            "dump", "from_dict", "to_dict", "text"]
 
 
-class ManifestError(ValueError):
+class ManifestError(DynagradeError, ValueError):
     """The manifest cannot be used; the message names the file and the field at fault."""
 
 

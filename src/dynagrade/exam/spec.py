@@ -6,6 +6,7 @@
     title = "Dynamics, midterm"
     date = 2025-04-14                # a TOML date or "YYYY-MM-DD"
     instructions = "Answer every part. Give numbers to three significant figures."
+    solutions = "with-feedback"      # optional: when students see worked solutions
 
     [[exercise]]
     id = "projectile-range"
@@ -36,14 +37,17 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
+from ..errors import DynagradeError
+from .solution_policy import read_solutions_setting
+
 _EXAM_ID = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
 _STUDENT_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]*$")
-_TOP_KEYS = {"id", "title", "date", "instructions", "exercise"}
+_TOP_KEYS = {"id", "title", "date", "instructions", "exercise", "solutions"}
 _EXERCISE_KEYS = {"id", "points", "set"}
 ROSTER_HEADERS = (("student_id", "name"), ("student_id", "name", "email"))
 
 
-class ExamSpecError(ValueError):
+class ExamSpecError(DynagradeError, ValueError):
     """A malformed exam specification or roster; the message says where and why."""
 
 
@@ -67,6 +71,7 @@ class ExamSpec:
     instructions: str
     exercises: tuple[ExamExercise, ...]
     path: str = ""
+    solutions: str | None = None  # when students see worked solutions (exam/solutions.py)
 
     @property
     def total_points(self) -> float:
@@ -96,7 +101,7 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
     """The exam in ``path``.
 
     ``known(exercise_id)`` returns the exercise (an object with ``parameter(name)``) or
-    raises ``KeyError``; with it, exercise ids and the names in ``[exercise.set]`` are
+    raises a :class:`~dynagrade.errors.DynagradeError` saying why; with it, exercise ids and the names in ``[exercise.set]`` are
     checked too.
     """
     path = Path(path)
@@ -142,7 +147,14 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
         line = lines[index] if index < len(lines) else 0
         at = f"{where}, line {line}, [[exercise]] #{index + 1}"
         exercises.append(_exercise(table, at, line, seen, known))
-    return ExamSpec(exam_id, title, date, instructions, tuple(exercises), str(path))
+    solutions = read_solutions_setting(data, lambda message: _fail_key(
+        where, text, "solutions", message))
+    return ExamSpec(exam_id, title, date, instructions, tuple(exercises), str(path),
+                    solutions)
+
+
+def _fail_key(where: str, text: str, key: str, message: str):
+    raise ExamSpecError(f"{where}, line {_key_line(text, key)}, field {key!r}: {message}")
 
 
 def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExercise:
@@ -163,8 +175,8 @@ def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExe
     if known is not None:
         try:
             exercise = known(exercise_id)
-        except KeyError as error:
-            raise ExamSpecError(f"{at}, field 'id': {error.args[0]}") from None
+        except DynagradeError as error:
+            raise ExamSpecError(f"{at}, field 'id': {error}") from None
     points = table.get("points")
     if isinstance(points, bool) or not isinstance(points, (int, float)) \
             or not math.isfinite(points) or points <= 0:
@@ -184,9 +196,9 @@ def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExe
         if exercise is not None:
             try:
                 exercise.parameter(name)
-            except KeyError as error:
+            except DynagradeError as error:
                 raise ExamSpecError(f"{at} ({exercise_id}), field 'set.{name}': "
-                                    f"{error.args[0]}") from None
+                                    f"{error}") from None
         values[name] = float(value)
     return ExamExercise(exercise_id, float(points), values, line)
 

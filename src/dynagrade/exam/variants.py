@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from typing import Callable, Mapping
 
+from ..errors import DynagradeError
 from ..exercise.model import ConstraintError, Exercise, Variant
 from ..exercise.seeds import exam_seed, stable_seed
 from ..exercise.verify import variant_problems
@@ -19,7 +20,7 @@ from .manifest import Redraw
 MAX_ATTEMPTS = 25
 
 
-class NoUsableVariant(RuntimeError):
+class NoUsableVariant(DynagradeError, RuntimeError):
     """Every seed tried gave a variant that cannot discriminate."""
 
 

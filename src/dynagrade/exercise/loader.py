@@ -12,6 +12,7 @@ Exercise files are the authors' code and are imported; students' files never are
 from __future__ import annotations
 
 import hashlib
+import importlib.abc
 import importlib.util
 import os
 import re
@@ -21,13 +22,15 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable, Iterator
 
+from ..errors import DynagradeError, UnknownExercise
+from .listing import ExerciseListing, read_listing
 from .model import Exercise
 
 ENVIRONMENT_VARIABLE = "DYNAGRADE_EXERCISES"
 _DECLARED_ID = re.compile(r"""\bid\s*=\s*["']([a-z0-9-]+)["']""")
 
 
-class ExerciseFileError(Exception):
+class ExerciseFileError(DynagradeError):
     """An exercise file that cannot be loaded; the message names the file and line."""
 
 
@@ -59,17 +62,29 @@ def exercise_files(folder: Path) -> Iterator[Path]:
 
 
 def load_file(path: str | os.PathLike) -> Exercise:
-    """The ``EXERCISE`` defined by the file at ``path``."""
+    """The ``EXERCISE`` defined by the file at ``path``, as the file reads now.
+
+    An exercise's identity is its file's content: the module is cached under a name made
+    of the path and the SHA-256 of the bytes, so loading an unchanged file again costs a
+    read and a hash, and loading it after an edit runs the new text (the module of the
+    old text is dropped). The hash is the loaded exercise's ``fingerprint``.
+    """
     path = Path(path).resolve()
-    module_name = "dynagrade_exercise_" + hashlib.sha1(str(path).encode()).hexdigest()[:12]
-    if module_name in sys.modules:
-        return sys.modules[module_name].EXERCISE
-    spec = importlib.util.spec_from_file_location(module_name, path)
-    if spec is None or spec.loader is None:
-        raise ExerciseFileError(f"{path}: not a Python file")
+    try:
+        source = path.read_bytes()
+    except OSError as error:
+        raise ExerciseFileError(f"{path}: cannot read the file ({error.strerror})") from None
+    fingerprint = hashlib.sha256(source).hexdigest()
+    place = hashlib.sha1(str(path).encode()).hexdigest()[:12]
+    module_name = f"dynagrade_exercise_{place}_{fingerprint[:16]}"
+    cached = sys.modules.get(module_name)
+    if cached is not None:
+        return cached.EXERCISE
+    loader = _SourceLoader(path, source)
+    spec = importlib.util.spec_from_loader(module_name, loader, origin=str(path))
     module = importlib.util.module_from_spec(spec)
     try:
-        spec.loader.exec_module(module)
+        loader.exec_module(module)
     except SyntaxError as error:
         raise ExerciseFileError(f"{path}, line {error.lineno}: {error.msg}") from None
     except Exception as error:
@@ -79,8 +94,25 @@ def load_file(path: str | os.PathLike) -> Exercise:
     if not isinstance(exercise, Exercise):
         raise ExerciseFileError(f"{path}: defines no EXERCISE = Exercise(...)")
     object.__setattr__(exercise, "path", str(path))
+    object.__setattr__(exercise, "fingerprint", fingerprint)
+    for stale in [name for name in sys.modules if name.startswith(f"dynagrade_exercise_{place}_")]:
+        del sys.modules[stale]
     sys.modules[module_name] = module
     return exercise
+
+
+class _SourceLoader(importlib.abc.SourceLoader):
+    """Runs the bytes that were hashed, never a cached ``.pyc`` of the path: an edit
+    within the same second and of the same size would otherwise load the old code."""
+
+    def __init__(self, path: Path, source: bytes):
+        self.path, self.source = path, source
+
+    def get_filename(self, fullname: str) -> str:
+        return str(self.path)
+
+    def get_data(self, path: str) -> bytes:
+        return self.source
 
 
 @dataclass
@@ -122,15 +154,29 @@ class Bank:
 
         close = difflib.get_close_matches(exercise_id, sorted(self._index()), n=3)
         hint = f"; did you mean {', '.join(close)}?" if close else ""
-        raise KeyError(f"no exercise with id {exercise_id!r}{hint}")
+        raise UnknownExercise(f"no exercise with id {exercise_id!r}{hint}")
 
     def all(self) -> list[Exercise]:
-        """Every exercise, sorted by chapter, source and id."""
+        """Every exercise, sorted by chapter, source and id (every file is loaded)."""
         exercises = {}
         for path in sorted(set(self._index().values())):
             exercise = load_file(path)
             exercises.setdefault(exercise.id, exercise)
-        return sorted(exercises.values(), key=lambda e: (e.chapter, _source_key(e.source), e.id))
+        return sorted(exercises.values(), key=_listing_order)
+
+    def ids(self) -> list[str]:
+        """The ids the exercise files declare, sorted; no file is loaded."""
+        return sorted(self._index())
+
+    def listing(self) -> list[ExerciseListing]:
+        """What ``dynagrade list`` shows of every exercise, in the order of :meth:`all`,
+        read from the files without running them where they allow it (see
+        :mod:`dynagrade.exercise.listing`)."""
+        listings = {}
+        for path in sorted(set(self._index().values())):
+            listing = read_listing(path) or ExerciseListing.of(load_file(path))
+            listings.setdefault(listing.id, listing)
+        return sorted(listings.values(), key=_listing_order)
 
 
 def open_bank(extra_folders: Iterable[str | os.PathLike] = ()) -> Bank:
@@ -138,9 +184,10 @@ def open_bank(extra_folders: Iterable[str | os.PathLike] = ()) -> Bank:
     return Bank(search_path(extra_folders))
 
 
-def _source_key(source: str) -> tuple:
-    numbers = re.findall(r"\d+", source)
-    return tuple(int(n) for n in numbers)
+def _listing_order(exercise) -> tuple:
+    """Chapter, then the numbers of the source ("Example 1.13" after "Example 1.9"), then id."""
+    numbers = tuple(int(n) for n in re.findall(r"\d+", exercise.source))
+    return exercise.chapter, numbers, exercise.id
 
 
 def _line_in(path: Path, error: BaseException) -> str:

@@ -12,12 +12,12 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Mapping
 
-import numpy as np
-
-from .params import Constraint, Parameter, ParamValues, to_si_values
+from ..errors import DefinitionError, DynagradeError, UnknownParameter, UnknownPart
+from .listing import summary
+from .params import Constraint, Parameter, ParamValues, symbol_domain, to_si_values
 from .parts import Part
 from .solution import check_solution
 from .statement import compile_statement, render_statement
@@ -27,7 +27,7 @@ _SOURCE_CHAPTER = re.compile(r"(\d+)(?:\.\d+)*")
 _MAX_DRAWS = 1000
 
 
-class ConstraintError(ValueError):
+class ConstraintError(DynagradeError, ValueError):
     """No draw of the parameters met the exercise's constraints."""
 
 
@@ -62,6 +62,9 @@ class Exercise:
     it may return extra keys beside the parts' names (intermediate quantities for the
     worked ``solution``, never graded). ``solution`` is a jinja2 template of Markdown
     (:mod:`.solution`).
+
+    The loader sets ``path`` (the file it came from) and ``fingerprint`` (the SHA-256 of
+    that file's bytes): the exercise's identity, the key for anything cached about it.
     """
 
     id: str
@@ -77,21 +80,25 @@ class Exercise:
     figure: Callable[[ParamValues], Any] | None = None
     solution: str | None = None
     path: str | None = field(default=None, compare=False)
+    fingerprint: str | None = field(default=None, compare=False)
+    _draw: list = field(default_factory=list, init=False, repr=False, compare=False)
 
     def __post_init__(self):
         if not _ID.match(self.id):
-            raise ValueError(f"exercise id {self.id!r} is not kebab-case (a-z, 0-9, '-')")
+            raise DefinitionError(f"exercise id {self.id!r} is not kebab-case (a-z, 0-9, '-')")
         _require_unique("parameter", [p.name for p in self.params], self.id)
         _require_unique("part", [p.name for p in self.parts], self.id)
         clash = {p.name for p in self.params} & {p.name for p in self.parts}
         if clash:
-            raise ValueError(f"exercise {self.id!r}: {sorted(clash)} name both a parameter "
-                             "and a part")
+            raise DefinitionError(f"exercise {self.id!r}: {sorted(clash)} name both a "
+                                  "parameter and a part")
         if not self.parts:
-            raise ValueError(f"exercise {self.id!r} has no answer parts")
+            raise DefinitionError(f"exercise {self.id!r} has no answer parts")
+        _require_earlier_references(self.id, self.parts)
+        object.__setattr__(self, "parts", tuple(
+            _with_parameter_domains(self.id, part, self.params) for part in self.parts))
         if self.chapter is None:
-            match = _SOURCE_CHAPTER.search(self.source)
-            object.__setattr__(self, "chapter", int(match.group(1)) if match else 0)
+            object.__setattr__(self, "chapter", chapter_of(self.source))
         object.__setattr__(self, "topics", tuple(self.topics))
         compile_statement(self.statement)
         check_solution(self)
@@ -102,14 +109,15 @@ class Exercise:
         for p in self.params:
             if p.name == name:
                 return p
-        raise KeyError(f"exercise {self.id!r} has no parameter {name!r}; "
-                       f"it has {[p.name for p in self.params]}")
+        raise UnknownParameter(f"exercise {self.id!r} has no parameter {name!r}; "
+                               f"it has {[p.name for p in self.params]}")
 
     def part(self, name: str) -> Part:
         for p in self.parts:
             if p.name == name:
                 return p
-        raise KeyError(f"exercise {self.id!r} has no part {name!r}")
+        raise UnknownPart(f"exercise {self.id!r} has no part {name!r}; "
+                          f"it has {[p.name for p in self.parts]}")
 
     def draw(self, seed: int, overrides: Mapping[str, float] | None = None,
              strict: bool = True) -> tuple[dict[str, float], tuple[str, ...]]:
@@ -119,6 +127,8 @@ class Exercise:
         hold. With ``strict=False`` a draw whose overridden values break a constraint is
         returned with the broken constraints' descriptions instead of raising.
         """
+        import numpy as np  # here, not at import: listing the bank builds no draw
+
         overrides = dict(overrides or {})
         for name in overrides:
             self.parameter(name)
@@ -144,14 +154,24 @@ class Exercise:
 
     def broken_constraints(self, values: Mapping[str, float]) -> list[str]:
         """Descriptions of the constraints that ``values`` (declared units) break."""
-        si = to_si_values(self.params, values)
+        si = self.si(values)
         return [c.description for c in self.constraints if not c.check(si)]
 
     # -- variants ---------------------------------------------------------------------
 
     def si(self, values: Mapping[str, float]) -> ParamValues:
-        """Parameter values in SI, as the solver and the misconceptions receive them."""
-        return to_si_values(self.params, values)
+        """Parameter values in SI, as the solver and the misconceptions receive them.
+
+        The values of the latest draw give the same :class:`ParamValues` again, so what
+        the constraints computed with :func:`~dynagrade.exercise.params.per_draw` the
+        solver reuses when the draw becomes a variant.
+        """
+        key = tuple(sorted((name, float(values[name])) for name in values))
+        if self._draw and self._draw[0] == key:
+            return self._draw[1]
+        si = to_si_values(self.params, values)
+        self._draw[:] = [key, si]
+        return si
 
     def solve_in_part_units(self, values: Mapping[str, float]) -> dict[str, Any]:
         """Every part's reference answer for ``values``, in the part's unit."""
@@ -184,27 +204,76 @@ class Exercise:
 
     def summary(self) -> dict:
         """The exercise's identity and parts, as ``dynagrade list --json`` prints them."""
-        return {
-            "id": self.id, "title": self.title, "source": self.source,
-            "chapter": self.chapter, "topics": list(self.topics),
-            "parts": [{"name": p.name, "kind": p.kind, "unit": p.unit, "points": p.points,
-                       "label": p.label} for p in self.parts],
-            "params": [{"name": p.name, "unit": p.unit, "symbol": p.symbol or p.name}
-                       for p in self.params],
-        }
+        return summary(self)
+
+
+def chapter_of(source: str) -> int:
+    """The chapter of the notes a source names ("Example 4.3" -> 4), 0 when none."""
+    match = _SOURCE_CHAPTER.search(source)
+    return int(match.group(1)) if match else 0
 
 
 def _require_unique(what: str, names: list[str], exercise_id: str) -> None:
     seen = set()
     for name in names:
         if name in seen:
-            raise ValueError(f"exercise {exercise_id!r} declares the {what} {name!r} twice")
+            raise DefinitionError(f"exercise {exercise_id!r} declares the {what} {name!r} "
+                                  "twice")
         seen.add(name)
+
+
+def _with_parameter_domains(exercise_id: str, part: Part,
+                            params: tuple[Parameter, ...]) -> Part:
+    """The part with a domain for each of its symbols that names a parameter without one.
+
+    A symbolic part's ``variables`` may be a sequence of names, or map a name to ``None``:
+    such a symbol must be a parameter, and takes the parameter's unit and widened bounds
+    (:func:`~dynagrade.exercise.params.symbol_domain`). ``Variable(min, max, unit)`` is
+    written only where the domain differs, or for a symbol that is no parameter.
+    """
+    variables = getattr(part, "variables", None)
+    if variables is None:
+        return part
+    named = dict(variables) if isinstance(variables, Mapping) else dict.fromkeys(variables)
+    if isinstance(variables, dict) and None not in named.values():
+        return part
+    by_name = {p.name: p for p in params}
+    missing = [name for name, v in named.items() if v is None and name not in by_name]
+    if missing:
+        raise DefinitionError(
+            f"exercise {exercise_id!r}, part {part.name!r}: the symbols {missing} are no "
+            f"parameters, so they need a domain: Variable(min, max, unit); the parameters "
+            f"are {list(by_name)}")
+    return replace(part, variables={
+        name: symbol_domain(by_name[name]) if variable is None else variable
+        for name, variable in named.items()})
+
+
+def _require_earlier_references(exercise_id: str, parts: tuple[Part, ...]) -> None:
+    """Every part that another part's ``equals`` or ``uses`` names is declared before it.
+
+    A Symbolic part's ``equals`` is checked against an earlier numeric answer, and a
+    Numeric part's ``uses`` are the earlier answers its follow-through recomputes from:
+    both are read when a variant is verified or a student graded, so a typo must fail
+    here, when the exercise is built, and not there.
+    """
+    for index, part in enumerate(parts):
+        earlier = [p.name for p in parts[:index]]
+        equals = getattr(part, "equals", None)
+        named = [("equals", equals)] if equals is not None else []
+        named += [("uses", name) for name in getattr(part, "uses", ())]
+        for field_name, name in named:
+            if name not in earlier:
+                where = ("comes after it" if name in {p.name for p in parts}
+                         else "does not exist")
+                raise DefinitionError(
+                    f"exercise {exercise_id!r}, part {part.name!r}: {field_name}={name!r} "
+                    f"names a part that {where}; the parts before it are {earlier}")
 
 
 def _require_finite(answer: Any, exercise_id: str, part: str) -> None:
     values = answer if isinstance(answer, tuple) else (answer,)
     for value in values:
         if isinstance(value, float) and not math.isfinite(value):
-            raise ValueError(f"exercise {exercise_id!r}: the reference answer of part "
-                             f"{part!r} is {value}")
+            raise DefinitionError(f"exercise {exercise_id!r}: the reference answer of part "
+                                  f"{part!r} is {value}")

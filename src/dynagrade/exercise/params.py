@@ -7,13 +7,17 @@ variant is fully determined by its seed.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
-from typing import Callable, Mapping
+from typing import TYPE_CHECKING, Callable, Mapping
 
-import numpy as np
-
+from ..errors import DefinitionError
+from ..grading.spec import Variable
 from .units import si_factor
+
+if TYPE_CHECKING:
+    import numpy as np
 
 
 @dataclass(frozen=True)
@@ -26,7 +30,7 @@ class Parameter:
 
     def __post_init__(self):
         if not self.name.isidentifier():
-            raise ValueError(f"parameter name {self.name!r} is not an identifier")
+            raise DefinitionError(f"parameter name {self.name!r} is not an identifier")
 
     def draw(self, rng: np.random.Generator) -> float:
         """One value in the parameter's unit."""
@@ -36,6 +40,10 @@ class Parameter:
     def varies(self) -> bool:
         """Whether different seeds can give different values."""
         return True
+
+    def bounds(self) -> tuple[float, float]:
+        """The least and the greatest value a draw can give, in the parameter's unit."""
+        raise TypeError(f"{type(self).__name__} has no bounds")
 
 
 @dataclass(frozen=True)
@@ -55,9 +63,12 @@ class Uniform(Parameter):
         object.__setattr__(self, "step", None if step is None else float(step))
         super().__init__(name, unit, symbol)
         if not self.low <= self.high:
-            raise ValueError(f"parameter {name!r}: low {low} is above high {high}")
+            raise DefinitionError(f"parameter {name!r}: low {low} is above high {high}")
         if self.step is not None and self.step <= 0:
-            raise ValueError(f"parameter {name!r}: step must be positive, got {step}")
+            raise DefinitionError(f"parameter {name!r}: step must be positive, got {step}")
+
+    def bounds(self):
+        return self.low, self.high
 
     def draw(self, rng):
         if self.step is None:
@@ -77,10 +88,13 @@ class Choice(Parameter):
         object.__setattr__(self, "values", tuple(float(v) for v in values))
         super().__init__(name, unit, symbol)
         if not self.values:
-            raise ValueError(f"parameter {name!r}: a Choice needs at least one value")
+            raise DefinitionError(f"parameter {name!r}: a Choice needs at least one value")
 
     def draw(self, rng):
         return self.values[int(rng.integers(len(self.values)))]
+
+    def bounds(self):
+        return min(self.values), max(self.values)
 
     @property
     def varies(self):
@@ -100,6 +114,9 @@ class Constant(Parameter):
     def draw(self, rng):
         return self.value
 
+    def bounds(self):
+        return self.value, self.value
+
     @property
     def varies(self):
         return False
@@ -118,10 +135,22 @@ class Constraint:
 
 
 class ParamValues(Mapping[str, float]):
-    """Parameter values by name, readable as attributes (``p.v0``) and as a mapping."""
+    """Parameter values by name, readable as attributes (``p.v0``) and as a mapping.
+
+    One instance stands for one draw: functions decorated with :func:`per_draw` keep
+    their result on it, so the constraints, the solver and the misconceptions of a draw
+    share one solution.
+    """
 
     def __init__(self, values: Mapping[str, float]):
         self._values = dict(values)
+        self._results: dict[Callable, object] = {}
+
+    def once(self, function: Callable[["ParamValues"], object]):
+        """``function(self)``, computed on the first call for this draw only."""
+        if function not in self._results:
+            self._results[function] = function(self)
+        return self._results[function]
 
     def __getattr__(self, name):
         try:
@@ -140,6 +169,42 @@ class ParamValues(Mapping[str, float]):
 
     def __repr__(self):
         return f"ParamValues({self._values!r})"
+
+
+def symbol_domain(parameter: Parameter) -> Variable:
+    """The domain over which a symbolic answer is tested in this parameter's symbol: the
+    parameter's unit, and its bounds widened by a quarter of their span on each side (by
+    half the value for a constant), without crossing zero: a formula must hold beyond the
+    values the variants happen to draw, and a quantity that is never negative stays so
+    (so that ``sqrt(h)`` stays defined).
+    """
+    low, high = parameter.bounds()
+    margin = (high - low) / 4 if high > low else abs(low) / 2 or 1.0
+    wide_low, wide_high = low - margin, high + margin
+    if low >= 0:
+        wide_low = max(wide_low, low / 2)
+    if high <= 0:
+        wide_high = min(wide_high, high / 2)
+    return Variable(wide_low, wide_high, parameter.unit)
+
+
+def per_draw(function: Callable[[ParamValues], object]) -> Callable[[ParamValues], object]:
+    """Compute ``function(p)`` once per draw, however many constraints, misconceptions and
+    the solver ask for it. Usage in an exercise file::
+
+        @per_draw
+        def solve(p):
+            ...
+
+        Constraint("the string stays taut", lambda p: solve(p)["S"] > 0)
+
+    The result is shared, so callers must not change it.
+    """
+    @functools.wraps(function)
+    def once_per_draw(p):
+        return p.once(function) if isinstance(p, ParamValues) else function(p)
+
+    return once_per_draw
 
 
 def to_si_values(params: tuple[Parameter, ...], values: Mapping[str, float]) -> ParamValues:

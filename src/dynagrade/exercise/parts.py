@@ -32,6 +32,7 @@ from ..grading.spec import (
     Variable,
     VectorSpec,
 )
+from ..errors import DefinitionError
 from ..grading.tolerance import DEFAULT_RTOL
 from .numbers import answer_text, format_number, points_phrase
 from .params import ParamValues
@@ -83,7 +84,8 @@ class Part:
         try:
             return self.in_part_unit(solved[self.name])
         except KeyError:
-            raise KeyError(f"the solver returned no answer for part {self.name!r}") from None
+            raise DefinitionError(f"the solver returned no answer for part {self.name!r}; "
+                                  f"it returned {sorted(solved)}") from None
 
     def spec(self, params: ParamValues):
         """The grader's specification for this part in the variant with ``params``."""

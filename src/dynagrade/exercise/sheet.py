@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Mapping
 
+from ..errors import DynagradeError
 from .model import Exercise, Variant
 
 MAX_SHEET_BYTES = 1_000_000
@@ -32,7 +33,7 @@ How to answer: replace None by your answer, then run `grade {filename}`.
 """
 
 
-class SheetError(ValueError):
+class SheetError(DynagradeError, ValueError):
     """The file is not a dynagrade sheet; the message says why and where."""
 
 

@@ -27,6 +27,7 @@ from typing import TYPE_CHECKING, Any, Iterator, Mapping
 import jinja2
 from jinja2 import meta, nodes
 
+from ..errors import DefinitionError
 from .numbers import answer_text
 from .statement import ShownValue
 
@@ -37,7 +38,7 @@ if TYPE_CHECKING:
 CONTEXT_NAMES = ("answers", "si")
 
 
-class SolutionError(ValueError):
+class SolutionError(DefinitionError):
     """A solution template that does not compile, names what it cannot have, or fails to
     render for a variant; the message names the exercise and what is wrong."""
 

@@ -11,8 +11,8 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from ..errors import UnitError
 from ..grading import units as _dimensions
-from ..grading.quantity import unit_info
 
 
 def si_factor(unit: str | None) -> float:
@@ -21,7 +21,7 @@ def si_factor(unit: str | None) -> float:
     Units are read by the grader's unit table, so parameters, answers and students'
     units share one definition; ``ValueError`` for a unit it does not know.
     """
-    return unit_info(unit)[0]
+    return _unit_info(unit)[0]
 
 
 def to_si(value: float, unit: str | None) -> float:
@@ -32,6 +32,14 @@ def to_si(value: float, unit: str | None) -> float:
 def from_si(value: float, unit: str | None) -> float:
     """``value`` given in SI, expressed in ``unit``."""
     return value / si_factor(unit)
+
+
+def _unit_info(unit: str | None):
+    """(factor to SI, dimension) from the grader's unit table, imported on first use: it
+    evaluates with numpy, which reading the bank's listing does not need."""
+    from ..grading.quantity import unit_info
+
+    return unit_info(unit)
 
 
 _SUPERSCRIPTS = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
@@ -58,10 +66,10 @@ def with_unit(number: str, unit: str | None) -> str:
 
 
 def convert(value: float, from_unit: str | None, to_unit: str | None) -> float:
-    """``value`` in ``from_unit`` expressed in ``to_unit``; ``ValueError`` when the
-    dimensions differ (the angle counts as a dimension of its own)."""
-    (source, source_dim), (target, target_dim) = unit_info(from_unit), unit_info(to_unit)
+    """``value`` in ``from_unit`` expressed in ``to_unit``; ``UnitError`` (a ``ValueError``)
+    when the dimensions differ (the angle counts as a dimension of its own)."""
+    (source, source_dim), (target, target_dim) = _unit_info(from_unit), _unit_info(to_unit)
     if not _dimensions.same(source_dim, target_dim):
-        raise ValueError(f"cannot convert {from_unit or 'a bare number'} "
+        raise UnitError(f"cannot convert {from_unit or 'a bare number'} "
                          f"to {to_unit or 'a bare number'}")
     return value * source / target

@@ -23,13 +23,14 @@ import math
 from dataclasses import dataclass
 from typing import Iterable, Iterator
 
+from ..errors import DynagradeError
 from .dispatch import grade
 from .errors import AnswerError, SpecError
 from .spec import ChoiceSpec, KnownWrong, NumericSpec, SymbolicSpec, Variable, VectorSpec
 
 
 
-class RecordError(ValueError):
+class RecordError(DynagradeError, ValueError):
     """A record that does not follow the contract."""
 
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from typing import Mapping
 
+from ..errors import DynagradeError
 from . import units
 from .errors import AnswerError
 from .evaluate import evaluate_constant
@@ -21,7 +22,7 @@ _PURE = {"sinh", "cosh", "tanh", "exp", "ln", "log10", "log2"}
 _ANGLE = (0.0,) * 7 + (1.0,)
 
 
-class DimensionIssue(Exception):
+class DimensionIssue(DynagradeError):
     """An expression that mixes units illegally; ``message`` is written for the student."""
 
     def __init__(self, message: str):

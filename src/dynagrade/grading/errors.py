@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+from ..errors import DynagradeError
 
-class AnswerError(ValueError):
+
+class AnswerError(DynagradeError, ValueError):
     """An answer that cannot be read: the message says why, and where when known.
 
     ``position`` is a 0-based index into ``text`` (the answer as typed). ``str()`` of the
@@ -36,7 +38,7 @@ class AnswerError(ValueError):
         return f"{self.message}\n  {prefix}{snippet}{suffix}\n  {caret}"
 
 
-class SpecError(ValueError):
+class SpecError(DynagradeError, ValueError):
     """A part's specification or reference answer is unusable (an authoring error).
 
     Raised by :func:`dynagrade.grading.grade` independently of the student's answer,

@@ -11,6 +11,7 @@ from typing import Mapping
 
 import numpy as np
 
+from ..errors import DynagradeError
 from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit
 from .names import CONSTANTS
 
@@ -37,7 +38,7 @@ _UNARY = {
 _BINARY = {"atan2": np.arctan2}
 
 
-class EvaluationError(Exception):
+class EvaluationError(DynagradeError):
     """A name without a value (an internal inconsistency, not an answer problem)."""
 
 

@@ -10,11 +10,12 @@ from __future__ import annotations
 import math
 from typing import Mapping
 
+from ..errors import DynagradeError
 from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit
 from .timing import OutOfTime, can_interrupt, time_limit
 
 
-class NotConvertible(Exception):
+class NotConvertible(DynagradeError):
     """The tree holds something the exact check should not touch (huge exponents, units)."""
 
 
