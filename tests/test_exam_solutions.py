@@ -175,3 +175,22 @@ def test_an_unknown_solutions_setting_is_refused_with_its_line(tmp_path):
     with pytest.raises(ExamSpecError, match=r"line 4, field 'solutions': 'always'; choose "
                                             r"one of with-feedback, after-close"):
         read_exam_spec(path)
+
+
+@pytest.mark.parametrize("setting, closed, verdicts, spent, shown", [
+    ("never", True, True, True, False),
+    ("after-close", False, True, True, False),
+    ("after-close", True, True, False, True),
+    ("after-last-attempt", False, True, False, False),
+    ("after-last-attempt", False, False, True, True),
+    ("after-last-attempt", True, False, False, True),
+    ("with-feedback", False, True, False, False),
+    ("with-feedback", False, False, True, False),
+    ("with-feedback", False, True, True, True),
+    ("with-feedback", True, True, False, True),
+])
+def test_the_server_shows_a_solution_only_once_the_student_can_no_longer_answer(
+        setting, closed, verdicts, spent, shown):
+    from dynagrade.exam.solution_policy import solution_visible
+
+    assert solution_visible(setting, closed, verdicts, spent) is shown

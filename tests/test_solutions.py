@@ -248,3 +248,33 @@ def test_grade_solution_prints_the_solution_after_the_verdicts(tmp_path):
     seed = as_json["seed"]
     exercise = BANK.get("damped-free-vibration")
     assert as_json["solution"] == render_solution(exercise, exercise.variant(seed))
+
+
+def test_a_bank_is_complete_when_every_exercise_file_declares_a_solution(tmp_path):
+    from dynagrade.exercise.solution_check import bank_is_complete
+
+    source = Path(BANK.get("ballistic-pendulum").path).read_text(encoding="utf-8")
+    (tmp_path / "with_solution.py").write_text(source, encoding="utf-8")
+    assert bank_is_complete(tmp_path)
+    start = source.index('    solution=r"""')
+    end = source.index('""",', start) + len('""",\n')
+    without = source[:start] + source[end:]
+    (tmp_path / "without.py").write_text(
+        without.replace('id="ballistic-pendulum"', 'id="ballistic-pendulum-bare"'), "utf-8")
+    assert not bank_is_complete(tmp_path)
+
+
+def test_verify_fails_a_missing_solution_on_request_and_notes_it_when_allowed(tmp_path):
+    source = Path(BANK.get("ballistic-pendulum").path).read_text(encoding="utf-8")
+    start = source.index('    solution=r"""')
+    end = source.index('""",', start) + len('""",\n')
+    (tmp_path / "bare.py").write_text(
+        (source[:start] + source[end:]).replace('id="ballistic-pendulum"', 'id="bare"'),
+        "utf-8")
+    runner = CliRunner()
+    required = runner.invoke(main, ["--exercises", str(tmp_path), "verify", "bare",
+                                    "--variants", "2", "--require-solutions"])
+    assert required.exit_code == 1 and "no worked solution" in required.output
+    allowed = runner.invoke(main, ["--exercises", str(tmp_path), "verify", "bare",
+                                   "--variants", "2", "--allow-missing-solutions"])
+    assert allowed.exit_code == 0 and "no worked solution" in allowed.output

@@ -176,18 +176,22 @@ def sheet(context, exercise_id, student, output, solution):
 @click.argument("exercise_ids", nargs=-1)
 @click.option("--variants", type=click.IntRange(1), default=50, show_default=True,
               help="Seeds to check per exercise (0 .. N-1).")
-@click.option("--require-solutions", is_flag=True,
-              help="An exercise without a worked solution fails (otherwise it is noted).")
+@click.option("--require-solutions/--allow-missing-solutions", default=None,
+              help="Whether an exercise without a worked solution fails or is only noted "
+                   "(default: it fails once every exercise of the shipped bank has one).")
 @click.pass_obj
 def verify(context, exercise_ids, variants, require_solutions):
     """Check exercises for variants that cannot tell right from wrong, and their worked
     solutions."""
+    from .exercise.solution_check import bank_is_complete
     from .exercise.verify import verify_exercise
     from .render.solutions import math_problems
     from .render.terminal import verify_progress
 
     exercises = ([context.exercise(i) for i in exercise_ids] if exercise_ids
                  else context.bank.all())
+    if require_solutions is None:
+        require_solutions = bank_is_complete()
     reports = verify_progress(exercises, lambda e: verify_exercise(
         e, range(variants), require_solution=require_solutions, math_check=math_problems))
     if any(not r.ok for r in reports):

@@ -45,3 +45,15 @@ def with_feedback(policy: Mapping[str, Any] | None) -> bool:
     """Whether class grading's feedback ends with the worked solutions: graded after the
     exam, so under every setting but "never"."""
     return solutions_setting(policy) != "never"
+
+
+def solution_visible(setting: str, closed: bool, verdicts_shown: bool,
+                     out_of_attempts: bool) -> bool:
+    """Whether the server shows a student the worked solution of an exercise: after the
+    close (``closed``) or once every part of it has used its attempts
+    (``out_of_attempts``), as ``setting`` says. ``"with-feedback"`` waits for the same
+    moment as ``"after-last-attempt"`` and for the verdicts to be shown, so a solution
+    never arrives while the student can still change an answer."""
+    finished = closed or out_of_attempts
+    return {"never": False, "after-close": closed, "after-last-attempt": finished,
+            "with-feedback": finished and verdicts_shown}[setting]

@@ -14,8 +14,10 @@ from __future__ import annotations
 
 import math
 import re
+from pathlib import Path
 from typing import Any, Iterable, Iterator
 
+from .loader import builtin_bank, exercise_files, load_file
 from .model import Exercise, Variant
 from .solution import SolutionError, render_solution, solver_values
 
@@ -60,6 +62,13 @@ def missing_solution(exercise: Exercise) -> str | None:
     if exercise.solution is None:
         return "no worked solution (solution=...) yet"
     return None
+
+
+def bank_is_complete(folder: Path | None = None) -> bool:
+    """Whether every exercise file in ``folder`` (the shipped bank by default) declares a
+    worked solution: from then on, ``verify`` fails an exercise without one."""
+    folder = folder or builtin_bank()
+    return all(load_file(path).solution is not None for path in exercise_files(folder))
 
 
 def stray_numbers(text: str, allowed: Iterable[float]) -> list[str]:

@@ -7,8 +7,9 @@ reproduces the numeric part it ``equals`` at the variant's parameters (a cross-c
 formula against mechanics core). What each kind tries is its own
 (:mod:`dynagrade.exercise.parts`). The worked solution of every variant is checked too
 (:mod:`.solution_check`), its math once per exercise by ``math_check`` (the render
-layer's, handed in by the command); an exercise without a solution is a finding only
-when ``require_solution`` is set, otherwise a note.
+layer's, handed in by the command); an exercise without a solution is a finding when
+``require_solution`` is set (the command sets it once the shipped bank is complete, or
+on request), otherwise a note.
 """
 
 from __future__ import annotations
