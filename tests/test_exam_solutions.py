@@ -131,7 +131,7 @@ def _graded_feedback(folder: Path, setting: str | None, bank) -> tuple[dict, Pat
 def test_feedback_ends_with_each_students_worked_solutions_when_the_exam_says_so(
         tmp_path, bank):
     manifest, feedback = _graded_feedback(tmp_path, "with-feedback", bank)
-    assert manifest["exam"]["policy"] == {"solutions": "with-feedback"}
+    assert manifest["exam"]["policy"]["solutions"] == "with-feedback"
     for student in manifest["students"]:
         markdown = (feedback / f"{student['student_id']}.md").read_text(encoding="utf-8")
         html = (feedback / f"{student['student_id']}.html").read_text(encoding="utf-8")
@@ -152,18 +152,34 @@ def test_an_exam_shows_no_solution_in_the_feedback_unless_it_says_so(tmp_path, b
         assert "Worked solutions" not in path.read_text(encoding="utf-8"), path.name
 
 
-@pytest.mark.parametrize("policy, expected", [
-    (None, "never"),
-    ({"mode": "exam"}, "never"),
-    ({"mode": "homework"}, "with-feedback"),
-    ({"mode": "practice"}, "with-feedback"),
-    ({"mode": "homework", "solutions": "never"}, "never"),
-    ({"mode": "exam", "solutions": "after-close"}, "after-close"),
+@pytest.mark.parametrize("keys, expected", [
+    ("", "never"),
+    ('mode = "exam"\n', "never"),
+    ('mode = "homework"\n', "with-feedback"),
+    ('mode = "practice"\n', "with-feedback"),
+    ('mode = "homework"\nsolutions = "never"\n', "never"),
+    ('solutions = "after-close"\n', "after-close"),
 ])
-def test_when_solutions_are_shown_defaults_to_the_exams_mode(policy, expected):
-    from dynagrade.exam.solution_policy import solutions_setting
+def test_when_solutions_are_shown_defaults_to_the_exams_mode(tmp_path, keys, expected):
+    from dynagrade.exam.policy import Policy
+    from dynagrade.exam.spec import read_exam_spec
 
-    assert solutions_setting(policy) == expected
+    path = tmp_path / "exam.toml"
+    path.write_text(EXAM.replace('date = 2025-04-14\n', f"date = 2025-04-14\n{keys}"),
+                    "utf-8")
+    policy = read_exam_spec(path).policy
+    assert policy.solutions == expected
+    assert Policy.from_json(policy.to_json()).solutions == expected
+
+
+def test_a_manifest_policy_written_before_the_setting_existed_reads_the_modes_default():
+    from dynagrade.exam.policy import Policy
+
+    stored = {"mode": "homework", "opens": None, "closes": None, "attempts": 3,
+              "penalty": 0.0, "feedback": "immediate", "counts": "best"}
+    assert Policy.from_json(stored).solutions == "with-feedback"
+    assert Policy.from_json({**stored, "mode": "exam", "feedback": "after-close"}
+                            ).solutions == "never"
 
 
 def test_an_unknown_solutions_setting_is_refused_with_its_line(tmp_path):

@@ -34,6 +34,7 @@ from ..exercise.numbers import GRADEBOOK_DECIMALS, points_text
 from ..exercise.scoring import grade_variant
 from .files import write_atomic
 from .run import GradingRun, file_sha256
+from .policy import Policy
 from .solution_policy import with_feedback
 from .solutions import feedback_solutions
 from .manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
@@ -146,7 +147,8 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
     graded = _run(work, manifest_parts, exercises, jobs, progress)
     timings["grading"] = time.perf_counter() - stage
     outcome = _outcome(manifest, graded, problems, timings)
-    if out_dir is not None and with_feedback(manifest.exam.policy):
+    solutions = Policy.from_json(manifest.exam.policy).solutions
+    if out_dir is not None and with_feedback(solutions):
         _add_solutions(outcome, manifest, exercises)
     if out_dir is not None:
         stage = time.perf_counter()

@@ -206,9 +206,8 @@ def build_manifest(spec: ExamSpec, exercises: dict[str, Exercise],
                       "/".join(Path(exercises[item.id].path).parts[-2:]),
                       file_sha256(exercises[item.id].path), parts[item.id])
         for item in spec.exercises)
-    policy = {"solutions": spec.solutions} if spec.solutions else None
     exam = ExamEntry(spec.id, spec.title, spec.date, spec.instructions, spec.total_points,
-                     policy)
+                     spec.policy.to_json() if spec.policy != type(spec.policy)() else None)
     return Manifest(Generator(_version(), numpy.__version__), exam, described,
                     tuple(students))
 

@@ -1,50 +1,32 @@
-"""When students see their worked solutions, as ``exam.toml`` says::
+"""When students see their worked solutions, as ``exam.toml``'s ``solutions`` says (a key
+of the delivery policy, :mod:`.policy`)::
 
-    solutions = "with-feedback"       # with class grading's feedback and the server's
-                                      # verdicts (the default for homework and practice)
+    solutions = "with-feedback"       # with class grading's feedback and, on the server,
+                                      # with the verdicts once the student can no longer
+                                      # answer (the default for homework and practice)
     solutions = "after-close"         # once the exam closes
     solutions = "after-last-attempt"  # once the student has no attempt left, or it closes
     solutions = "never"               # the default for exams
 
-The exam's mode comes from its delivery policy, which the manifest stores.
+This module is a leaf: the policy imports it, not the other way round.
 """
 
 from __future__ import annotations
-
-from typing import Any, Callable, Mapping
 
 #: the values of ``solutions`` in ``exam.toml``
 SOLUTIONS = ("with-feedback", "after-close", "after-last-attempt", "never")
 
 
-def read_solutions_setting(data: Mapping[str, Any], fail: Callable[[str], None]) -> str | None:
-    """The ``solutions`` key of an exam spec's top-level table ``data`` (``None`` when
-    absent: the mode's default); ``fail(message)`` reports a bad value."""
-    setting = data.get("solutions")
-    if setting is not None and setting not in SOLUTIONS:
-        fail(f"{setting!r}; choose one of {', '.join(SOLUTIONS)}")
-    return setting
+def default_solutions(mode: str) -> str:
+    """The ``solutions`` setting of an exam that does not set it: never in an exam, with
+    the feedback in homework and practice."""
+    return "never" if mode == "exam" else "with-feedback"
 
 
-def exam_mode(policy: Mapping[str, Any] | None) -> str:
-    """The exam's mode ("exam", "homework" or "practice") from the delivery policy the
-    manifest stores; an exam unless the policy says otherwise."""
-    return (policy or {}).get("mode") or "exam"
-
-
-def solutions_setting(policy: Mapping[str, Any] | None) -> str:
-    """When students see their worked solutions: the policy's ``solutions``, or by
-    default never in an exam and with the feedback in homework and practice."""
-    setting = (policy or {}).get("solutions")
-    if setting:
-        return setting
-    return "never" if exam_mode(policy) == "exam" else "with-feedback"
-
-
-def with_feedback(policy: Mapping[str, Any] | None) -> bool:
-    """Whether class grading's feedback ends with the worked solutions: graded after the
-    exam, so under every setting but "never"."""
-    return solutions_setting(policy) != "never"
+def with_feedback(setting: str) -> bool:
+    """Whether class grading's feedback ends with the worked solutions: it is written
+    after the exam, so under every setting but "never"."""
+    return setting != "never"
 
 
 def solution_visible(setting: str, closed: bool, verdicts_shown: bool,

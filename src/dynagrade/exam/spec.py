@@ -6,7 +6,6 @@
     title = "Dynamics, midterm"
     date = 2025-04-14                # a TOML date or "YYYY-MM-DD"
     instructions = "Answer every part. Give numbers to three significant figures."
-    solutions = "with-feedback"      # optional: when students see worked solutions
 
     [[exercise]]
     id = "projectile-range"
@@ -38,11 +37,11 @@ from pathlib import Path
 from typing import Callable
 
 from ..errors import DynagradeError
-from .solution_policy import read_solutions_setting
+from .policy import POLICY_KEYS, Policy, PolicyError, read_policy
 
 _EXAM_ID = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
 _STUDENT_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]*$")
-_TOP_KEYS = {"id", "title", "date", "instructions", "exercise", "solutions"}
+_TOP_KEYS = {"id", "title", "date", "instructions", "exercise"} | POLICY_KEYS
 _EXERCISE_KEYS = {"id", "points", "set"}
 ROSTER_HEADERS = (("student_id", "name"), ("student_id", "name", "email"))
 
@@ -71,7 +70,7 @@ class ExamSpec:
     instructions: str
     exercises: tuple[ExamExercise, ...]
     path: str = ""
-    solutions: str | None = None  # when students see worked solutions (exam/solutions.py)
+    policy: Policy = Policy()  # delivery by `dynagrade serve` (exam/policy.py)
 
     @property
     def total_points(self) -> float:
@@ -147,14 +146,11 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
         line = lines[index] if index < len(lines) else 0
         at = f"{where}, line {line}, [[exercise]] #{index + 1}"
         exercises.append(_exercise(table, at, line, seen, known))
-    solutions = read_solutions_setting(data, lambda message: _fail_key(
-        where, text, "solutions", message))
-    return ExamSpec(exam_id, title, date, instructions, tuple(exercises), str(path),
-                    solutions)
-
-
-def _fail_key(where: str, text: str, key: str, message: str):
-    raise ExamSpecError(f"{where}, line {_key_line(text, key)}, field {key!r}: {message}")
+    try:
+        policy = read_policy(data, where, lambda key: _key_line(text, key))
+    except PolicyError as error:
+        raise ExamSpecError(str(error)) from None
+    return ExamSpec(exam_id, title, date, instructions, tuple(exercises), str(path), policy)
 
 
 def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExercise:
