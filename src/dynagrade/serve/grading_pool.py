@@ -15,12 +15,13 @@ import multiprocessing
 from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 
+from ..errors import DynagradeError
 from ..grading.timing import ANSWER_BUDGET
 
 _EXAM = {}
 
 
-class Busy(Exception):
+class Busy(DynagradeError):
     """Too many grading jobs are waiting; the client should retry shortly."""
 
 

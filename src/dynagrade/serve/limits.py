@@ -15,6 +15,8 @@ import hmac
 import threading
 import time
 
+from ..errors import DynagradeError
+
 MAX_BODY_BYTES = 64 * 1024
 RATE = 5.0    # requests per second, sustained, per token
 BURST = 60    # requests at once, per token
@@ -139,7 +141,7 @@ class BodySizeLimit:
             await _too_large(send)
 
 
-class _TooLarge(Exception):
+class _TooLarge(DynagradeError):
     pass
 
 

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 
 from starlette.concurrency import run_in_threadpool
 
+from ..errors import DynagradeError
 from . import db
 from .exam_data import MAX_ANSWER_CHARS, ExamData
 
@@ -33,7 +34,7 @@ _KEY = re.compile(r"^[A-Za-z0-9._:-]{8,100}$")
 
 
 @dataclass
-class Refused(Exception):
+class Refused(DynagradeError):
     """A submit the rules refuse: the HTTP status and a message for the student."""
 
     status: int
