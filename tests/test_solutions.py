@@ -197,15 +197,26 @@ def test_show_solution_prints_it_in_the_terminal_and_as_json_text():
     assert "answers" not in data
 
 
-def test_show_solution_of_an_exercise_without_one_says_so():
-    missing = next((e for e in BANK.all() if e.solution is None), None)
-    if missing is None:
-        pytest.skip("every exercise of the bank has a worked solution")
+def _bare_exercise(folder: Path) -> str:
+    """ballistic-pendulum without its solution, saved in ``folder`` as the exercise
+    ``bare``; returns the id."""
+    source = Path(BANK.get("ballistic-pendulum").path).read_text(encoding="utf-8")
+    start = source.index('    solution=r"""')
+    end = source.index('""",', start) + len('""",\n')
+    (folder / "bare.py").write_text(
+        (source[:start] + source[end:]).replace('id="ballistic-pendulum"', 'id="bare"'),
+        "utf-8")
+    return "bare"
+
+
+def test_show_solution_of_an_exercise_without_one_says_so(tmp_path):
+    exercise_id = _bare_exercise(tmp_path)
     runner = CliRunner()
-    shown = runner.invoke(main, ["show", missing.id, "--solution"])
-    assert "has no worked solution yet" in shown.output
-    as_json = json.loads(runner.invoke(main, ["show", missing.id, "--solution",
-                                              "--json"]).output)
+    shown = runner.invoke(main, ["--exercises", str(tmp_path), "show", exercise_id,
+                                 "--solution"])
+    assert shown.exit_code == 0 and "has no worked solution yet" in shown.output
+    as_json = json.loads(runner.invoke(main, ["--exercises", str(tmp_path), "show",
+                                              exercise_id, "--solution", "--json"]).output)
     assert as_json["solution"] is None
 
 
@@ -256,25 +267,16 @@ def test_a_bank_is_complete_when_every_exercise_file_declares_a_solution(tmp_pat
     source = Path(BANK.get("ballistic-pendulum").path).read_text(encoding="utf-8")
     (tmp_path / "with_solution.py").write_text(source, encoding="utf-8")
     assert bank_is_complete(tmp_path)
-    start = source.index('    solution=r"""')
-    end = source.index('""",', start) + len('""",\n')
-    without = source[:start] + source[end:]
-    (tmp_path / "without.py").write_text(
-        without.replace('id="ballistic-pendulum"', 'id="ballistic-pendulum-bare"'), "utf-8")
+    _bare_exercise(tmp_path)
     assert not bank_is_complete(tmp_path)
 
 
 def test_verify_fails_a_missing_solution_on_request_and_notes_it_when_allowed(tmp_path):
-    source = Path(BANK.get("ballistic-pendulum").path).read_text(encoding="utf-8")
-    start = source.index('    solution=r"""')
-    end = source.index('""",', start) + len('""",\n')
-    (tmp_path / "bare.py").write_text(
-        (source[:start] + source[end:]).replace('id="ballistic-pendulum"', 'id="bare"'),
-        "utf-8")
+    exercise_id = _bare_exercise(tmp_path)
     runner = CliRunner()
-    required = runner.invoke(main, ["--exercises", str(tmp_path), "verify", "bare",
+    required = runner.invoke(main, ["--exercises", str(tmp_path), "verify", exercise_id,
                                     "--variants", "2", "--require-solutions"])
     assert required.exit_code == 1 and "no worked solution" in required.output
-    allowed = runner.invoke(main, ["--exercises", str(tmp_path), "verify", "bare",
+    allowed = runner.invoke(main, ["--exercises", str(tmp_path), "verify", exercise_id,
                                    "--variants", "2", "--allow-missing-solutions"])
     assert allowed.exit_code == 0 and "no worked solution" in allowed.output

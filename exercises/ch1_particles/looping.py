@@ -4,7 +4,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform)
-from dynagrade.exercise.figure import angle_arc, arrow, ground, new_drawing
+from dynagrade.exercise.figure import angle_arc, arrow, describe, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics.examples import looping
 
@@ -36,6 +36,10 @@ def figure(p):
           f"v₀ = {format_number(p.v0)} m/s", offset=(0.0, 0.2 * R), color="C3")
     axes.set_xlim(-1.95 * R, 1.25 * R)
     axes.set_ylim(-0.3 * R, 2.1 * R)
+    describe(axes, "A circular looping stands on the ground, clamped at its lowest point A. "
+             "The car comes in from the left along the ground and travels round the "
+             "looping counter-clockwise; φ is the angle at the centre from the line down "
+             "to A to the line out to the car")
     return drawing
 
 

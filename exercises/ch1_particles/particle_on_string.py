@@ -5,7 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
                                 Variable)
-from dynagrade.exercise.figure import dimension, new_drawing
+from dynagrade.exercise.figure import describe, dimension, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import kinematics, particle
 
@@ -39,6 +39,9 @@ def figure(p):
               ha="right", va="bottom", fontsize=10)
     axes.set_xlim(-1.2 * l, 1.2 * l)
     axes.set_ylim(-1.1 * l, 1.2 * l)
+    describe(axes, "Seen from above: the particle moves counter-clockwise on a circle "
+             "about the fixed point O, held by the string; a curved arrow beside the circle shows "
+             "this sense of rotation")
     return drawing
 
 

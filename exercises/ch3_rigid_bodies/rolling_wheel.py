@@ -5,7 +5,8 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform, Vector)
-from dynagrade.exercise.figure import angle_arc, arrow, dimension, ground, new_drawing
+from dynagrade.exercise.figure import (angle_arc, arrow, describe, dimension,
+                                       ground, new_drawing)
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import rigid_kinematics as rk
 
@@ -46,6 +47,9 @@ def figure(p):
               tick=0.05 * R)
     axes.set_xlim(-1.65 * R, 1.75 * R)
     axes.set_ylim(-0.15 * R, 2.1 * R)
+    describe(axes, "A wheel rolls to the right on the ground without slipping; the hub "
+             "moves to the right with speed v; the rim point P lies at the angle φ from "
+             "the contact point, counter-clockwise about the hub")
     return drawing
 
 

@@ -4,7 +4,8 @@ operating speed and the force passed to the floor (Section 4.3.3)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
-from dynagrade.exercise.figure import block, damper, dimension, ground, new_drawing, spring
+from dynagrade.exercise.figure import (block, damper, describe, dimension,
+                                       ground, new_drawing, spring)
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import vibrations
 
@@ -63,6 +64,9 @@ def figure(p):
               ha="left", va="center", fontsize=10)
     axes.set_xlim(-0.25 * width, 1.25 * width)
     axes.set_ylim(-0.8 * e, mount + height + 2.5 * e)
+    describe(axes, "The machine frame stands on a spring and a damper side by side on the "
+             "ground; inside it the rotor carries the unbalanced mass at the eccentricity "
+             "e from its axis and turns counter-clockwise, as a curved arrow shows")
     return drawing
 
 

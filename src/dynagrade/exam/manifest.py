@@ -15,7 +15,7 @@ Usage::
 Shape (``docs/exams.md`` shows a whole file)::
 
     Manifest        format, version, generator, exam, exercises[], students[]
-    ExamEntry       id, title, date, instructions, [policy], points
+    ExamEntry       id, title, date, instructions, [policy], [language], points
     ExerciseEntry   id, title, source, points, set, file, sha256, parts[]
     PartEntry       name, label, kind, unit, points, and the settings its kind
                     stores (``Part.manifest_fields``: rtol/atol, size, options/multiple)
@@ -150,6 +150,7 @@ class ExamEntry:
     instructions: str
     points: float
     policy: Mapping[str, Any] | None = None
+    language: str = "en"  # written only when not "en"
 
 
 @dataclass(frozen=True)
@@ -205,6 +206,8 @@ def _exam_dict(exam: ExamEntry) -> dict:
              "instructions": exam.instructions}
     if exam.policy is not None:
         entry["policy"] = dict(exam.policy)
+    if exam.language != "en":
+        entry["language"] = exam.language
     entry["points"] = exam.points
     return entry
 
@@ -280,7 +283,8 @@ def from_dict(data: Any) -> Manifest:
         generator=Generator(generator.string("dynagrade"), generator.string("numpy")),
         exam=ExamEntry(exam.string("id"), exam.string("title"), exam.string("date"),
                        exam.string("instructions"), exam.number("points"),
-                       exam.mapping("policy", optional=True)),
+                       exam.mapping("policy", optional=True),
+                       exam.string("language") if "language" in exam.data else "en"),
         exercises=tuple(_exercise(item) for item in root.objects("exercises")),
         students=tuple(_student(item) for item in root.objects("students")),
         version=version)

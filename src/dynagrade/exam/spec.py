@@ -6,6 +6,7 @@
     title = "Dynamics, midterm"
     date = 2025-04-14                # a TOML date or "YYYY-MM-DD"
     instructions = "Answer every part. Give numbers to three significant figures."
+    language = "de"                  # optional, default "en": the sheets' declared language
 
     [[exercise]]
     id = "projectile-range"
@@ -41,7 +42,8 @@ from .policy import POLICY_KEYS, Policy, PolicyError, read_policy
 
 _EXAM_ID = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
 _STUDENT_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]*$")
-_TOP_KEYS = {"id", "title", "date", "instructions", "exercise"} | POLICY_KEYS
+_TOP_KEYS = {"id", "title", "date", "instructions", "language", "exercise"} | POLICY_KEYS
+_LANGUAGE = re.compile(r"^[a-z]{2,3}(-[A-Za-z0-9]{2,8})*$")
 _EXERCISE_KEYS = {"id", "points", "set"}
 ROSTER_HEADERS = (("student_id", "name"), ("student_id", "name", "email"))
 
@@ -71,6 +73,7 @@ class ExamSpec:
     exercises: tuple[ExamExercise, ...]
     path: str = ""
     policy: Policy = Policy()  # delivery by `dynagrade serve` (exam/policy.py)
+    language: str = "en"  # a BCP 47 tag: HTML lang and the PDFs' language
 
     @property
     def total_points(self) -> float:
@@ -78,7 +81,7 @@ class ExamSpec:
 
     def to_json(self) -> dict:
         return {"id": self.id, "title": self.title, "date": self.date,
-                "instructions": self.instructions}
+                "instructions": self.instructions, "language": self.language}
 
 
 @dataclass(frozen=True)
@@ -136,6 +139,10 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
     title = _string(data, "title", where, text, required=True)
     instructions = _string(data, "instructions", where, text, required=False)
     date = _date(data.get("date"), where, _key_line(text, "date"))
+    language = data.get("language", "en")
+    if not isinstance(language, str) or not _LANGUAGE.match(language):
+        raise ExamSpecError(f"{where}, line {_key_line(text, 'language')}, field 'language': "
+                            f"{language!r} is not a language tag; give e.g. \"en\" or \"de\"")
 
     tables = data.get("exercise")
     if not isinstance(tables, list) or not tables:
@@ -150,7 +157,8 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
         policy = read_policy(data, where, lambda key: _key_line(text, key))
     except PolicyError as error:
         raise ExamSpecError(str(error)) from None
-    return ExamSpec(exam_id, title, date, instructions, tuple(exercises), str(path), policy)
+    return ExamSpec(exam_id, title, date, instructions, tuple(exercises), str(path), policy,
+                    language)
 
 
 def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExercise:

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from ..exercise.model import Exercise, Variant
 from ..exercise.sheet import write_sheet
 from ..exercise.units import pretty_unit
+from ..render.pdf import ACCESSIBLE
 from ..render.sheets import (SheetExercise, SheetPart, StudentSheet, sheet_html,
                              sheet_markdown, sheet_typst_body, typst_preamble)
 from .files import write_atomic
@@ -82,5 +83,6 @@ def _write_sheets(run: GenerationRun, student: Student, sheet: StudentSheet) -> 
     body = sheet_typst_body(sheet)
     if run.pdf:
         preamble = typst_preamble(run.spec.to_json())
-        write_atomic(folder / "sheet.pdf", run.compiler.compile(preamble + body))
+        write_atomic(folder / "sheet.pdf", run.compiler.compile(preamble + body,
+                                                                standards=ACCESSIBLE))
     return body

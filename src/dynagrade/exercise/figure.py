@@ -5,6 +5,11 @@ and returns a :class:`matplotlib.figure.Figure`; these helpers draw the usual pa
 mechanics sketch (arrows, angle arcs, ground, blocks, springs, dampers, dimensions).
 Rendering the figure to SVG is :func:`dynagrade.render.figures.figure_svg`.
 
+Every helper also notes, in words, what it drew (an arrow "pointing up and to the
+right", an angle "turning counter-clockwise from the downward direction"); the renderer
+puts these notes, every text label of the figure and the author's own sentences
+(:func:`describe`) into the figure's text alternative for screen readers.
+
 Usage::
 
     from dynagrade.exercise.figure import arrow, ground, new_drawing
@@ -13,10 +18,52 @@ Usage::
         figure, axes = new_drawing()
         ground(axes, 0.0, 2.0)
         arrow(axes, (0, 0), (1, 0.5), "$v_0$")
+        describe(axes, "The ball leaves the ground at the left end.")
         return figure
 """
 
 from __future__ import annotations
+
+
+# -- the figure's description in words ------------------------------------------------------
+
+NOTES_ATTRIBUTE = "dynagrade_notes"
+_DIRECTIONS = ("to the right", "up and to the right", "up", "up and to the left",
+               "to the left", "down and to the left", "down", "down and to the right")
+
+
+def describe(axes, sentence: str) -> None:
+    """Add ``sentence`` (what the figure shows that its labels do not say: a sense of
+    travel, where an angle starts, which body moves) to the figure's text alternative."""
+    _notes(axes)["author"].append(sentence.strip())
+
+
+def figure_notes(figure) -> dict[str, list[str]]:
+    """What the helpers drew (``"drawn"``) and the author's sentences (``"author"``)."""
+    return getattr(figure, NOTES_ATTRIBUTE, {"author": [], "drawn": []})
+
+
+def direction_words(dx: float, dy: float) -> str:
+    """The direction of the vector (dx, dy) in words, to the nearest 45°."""
+    import math
+
+    sector = round(math.degrees(math.atan2(dy, dx)) / 45.0) % 8
+    return _DIRECTIONS[sector]
+
+
+def _notes(axes) -> dict[str, list[str]]:
+    figure = axes.get_figure()
+    if not hasattr(figure, NOTES_ATTRIBUTE):
+        setattr(figure, NOTES_ATTRIBUTE, {"author": [], "drawn": []})
+    return getattr(figure, NOTES_ATTRIBUTE)
+
+
+def _drawn(axes, words: str) -> None:
+    _notes(axes)["drawn"].append(words)
+
+
+def _named(kind: str, label: str) -> str:
+    return f"{kind} {label}" if label else kind
 
 
 # -- drawing helpers for exercise figures ---------------------------------------------------
@@ -40,6 +87,8 @@ def arrow(axes, start, end, label: str = "", offset=(0.0, 0.0), color="C0") -> N
     axes.annotate("", xy=end, xytext=start,
                   arrowprops={"arrowstyle": "-|>", "color": color, "lw": 1.5,
                               "shrinkA": 0, "shrinkB": 0})
+    _drawn(axes, _named("an arrow", label) + " pointing "
+           + direction_words(end[0] - start[0], end[1] - start[1]))
     if label:
         middle = ((start[0] + end[0]) / 2 + offset[0], (start[1] + end[1]) / 2 + offset[1])
         axes.text(*middle, label, color=color, ha="center", va="center", fontsize=10)
@@ -53,6 +102,10 @@ def angle_arc(axes, center, radius: float, start: float, end: float, label: str 
     angles = np.linspace(start, end, 40)
     axes.plot(center[0] + radius * np.cos(angles), center[1] + radius * np.sin(angles),
               color="0.2", lw=0.8)
+    sense = "counter-clockwise" if end > start else "clockwise"
+    _drawn(axes, _named("an angle", label) + " measured from the direction pointing "
+           f"{direction_words(np.cos(start), np.sin(start)).removeprefix('to the ')}, "
+           f"turning {sense}")
     if label:
         middle = (start + end) / 2
         r = label_radius if label_radius is not None else radius * 1.45
@@ -70,6 +123,7 @@ def ground(axes, x_start: float, x_end: float, y: float = 0.0, hatch: float = 0.
     xs = np.column_stack([starts + size, starts, np.full_like(starts, np.nan)]).ravel()
     ys = np.tile([y, y - size, np.nan], len(starts))
     axes.plot(xs, ys, color="0.4", lw=0.6)
+    _drawn(axes, "the ground")
 
 
 def dimension(axes, start, end, label: str = "", offset: float = 0.0, tick: float = 0.0,
@@ -85,6 +139,10 @@ def dimension(axes, start, end, label: str = "", offset: float = 0.0, tick: floa
     length = float(np.hypot(*(b - a)))
     normal = np.array([-(b - a)[1], (b - a)[0]]) / length
     shift = offset * normal
+    slope = abs(float(np.degrees(np.arctan2(*(b - a)[::-1])))) % 180
+    way = "horizontal" if min(slope, 180 - slope) < 5 else \
+        "vertical" if abs(slope - 90) < 5 else "slanted"
+    _drawn(axes, _named(f"a {way} dimension line", label))
     if offset:
         for point in (a, b):
             axes.plot(*zip(point, point + shift + 0.04 * length * np.sign(offset) * normal),
@@ -117,6 +175,7 @@ def spring(axes, start, end, coils: int = 6, width: float | None = None,
     s, side = np.concatenate([[0.0], s, [length]]), np.concatenate([[0.0], side, [0.0]])
     points = a + np.outer(s, along) + np.outer(side, normal)
     axes.plot(points[:, 0], points[:, 1], color=color, lw=1.0)
+    _drawn(axes, "a spring running " + direction_words(*(b - a)))
 
 
 def damper(axes, start, end, width: float | None = None, color="0.1") -> None:
@@ -139,6 +198,7 @@ def damper(axes, start, end, width: float | None = None, color="0.1") -> None:
     axes.plot(*zip(at(0.55 * length, 0.75 * half), at(0.55 * length, -0.75 * half)),
               color=color, lw=1.6)
     axes.plot(*zip(at(0.55 * length, 0.0), b), color=color, lw=1.0)
+    _drawn(axes, "a damper running " + direction_words(*(b - a)))
 
 
 def wall(axes, x: float, y_start: float, y_end: float, side: float = -1.0,
@@ -153,6 +213,7 @@ def wall(axes, x: float, y_start: float, y_end: float, side: float = -1.0,
     xs = np.tile([x, x + side * size, np.nan], len(starts))
     ys = np.column_stack([starts + size, starts, np.full_like(starts, np.nan)]).ravel()
     axes.plot(xs, ys, color="0.4", lw=0.6)
+    _drawn(axes, "a wall")
 
 
 def block(axes, center, width: float, height: float, label: str = "", angle: float = 0.0,
@@ -167,9 +228,24 @@ def block(axes, center, width: float, height: float, label: str = "", angle: flo
     points = [(center[0] + c * u * width - s * v * height,
                center[1] + s * u * width + c * v * height) for u, v in corners]
     axes.add_patch(Polygon(points, closed=True, facecolor=color, edgecolor="0.1", lw=1.0))
+    _drawn(axes, _named("a block", label))
     if label:
-        axes.text(center[0], center[1], label, color="white", ha="center", va="center",
-                  fontsize=9, rotation=np.degrees(angle), rotation_mode="anchor")
+        axes.text(center[0], center[1], label, color=_label_colour(color), ha="center",
+                  va="center", fontsize=9, rotation=np.degrees(angle),
+                  rotation_mode="anchor")
+
+
+def _label_colour(face) -> str:
+    """White or black, whichever contrasts more with the colour ``face`` (WCAG 2.1
+    relative luminance), for a label written on it."""
+    from matplotlib.colors import to_rgb
+
+    def linear(c):
+        return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
+
+    red, green, blue = (linear(c) for c in to_rgb(face))
+    luminance = 0.2126 * red + 0.7152 * green + 0.0722 * blue
+    return "white" if 1.05 / (luminance + 0.05) >= (luminance + 0.05) / 0.05 else "black"
 
 
 def pivot(axes, point, size: float) -> None:
@@ -189,6 +265,7 @@ def pivot(axes, point, size: float) -> None:
     axes.plot(xs, ys, color="0.4", lw=0.6)
     axes.add_patch(Circle((x, y), 0.18 * size, facecolor="white", edgecolor="0.1", lw=1.0,
                           zorder=3))
+    _drawn(axes, "a fixed pin support")
 
 
 def ceiling(axes, x_start: float, x_end: float, y: float, hatch: float = 0.0) -> None:
@@ -202,6 +279,7 @@ def ceiling(axes, x_start: float, x_end: float, y: float, hatch: float = 0.0) ->
     xs = np.column_stack([starts, starts + size, np.full_like(starts, np.nan)]).ravel()
     ys = np.tile([y, y + size, np.nan], len(starts))
     axes.plot(xs, ys, color="0.4", lw=0.6)
+    _drawn(axes, "a ceiling")
 
 
 def inclined_plane(alpha: float, length: float = 1.0):
@@ -221,6 +299,7 @@ def inclined_plane(alpha: float, length: float = 1.0):
     top = length * along
     axes.add_patch(Polygon([(0, 0), (top[0], 0), tuple(top)], closed=True,
                            facecolor="0.9", edgecolor="0.1", lw=1.2))
+    _drawn(axes, "a wedge rising to the right")
     ground(axes, -0.1, top[0] + 0.1, hatch=0.02)
     angle_arc(axes, (0.0, 0.0), 0.14, 0.0, alpha,
               f"α = {format_number(np.degrees(alpha))}°", label_radius=0.3)

@@ -65,7 +65,7 @@ def grade_vector(spec: VectorSpec, expected, answer: str) -> Verdict:
     if found is not None:
         name, feedback, score = found
         return Verdict(False, score, feedback + reveal, misconception=name)
-    marks = ", ".join(f"{i + 1}: {'✓' if ok else '✗'}" for i, ok in enumerate(right))
+    marks = ", ".join(f"{i + 1}: {'✓ right' if ok else '✗ wrong'}" for i, ok in enumerate(right))
     score = float(right.sum()) / spec.size
     return Verdict(False, score, f"Not correct: {int(right.sum())} of {spec.size} components are right ({marks})."
                    + reveal)

@@ -3,12 +3,14 @@
 The exercise's ``figure(p)`` (drawn with :mod:`dynagrade.exercise.figure`) is rendered
 with matplotlib's SVG writer (the Agg backend selected, no display needed), a fixed hash
 salt (so element ids do not change from run to run), glyphs as paths (so every viewer,
-typst included, shows the same letters) and no date in the metadata.
+typst included, shows the same letters) and no date in the metadata. The SVG is an image
+with a title (the exercise's title) and a description in words
+(:mod:`dynagrade.render.accessible_svg`).
 
 Usage::
 
     svg = figure_svg(exercise, variant)    # str, or None when the exercise has no figure
-    html = inline_svg(svg)                 # without the XML header, to embed in a page
+    html = inline_svg(svg, "figure-2-")    # without the XML header, ids prefixed, to embed
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ import io
 import re
 
 from ..exercise.model import Exercise, Variant
+from .accessible_svg import accessible_svg, figure_description, prefixed_ids
 
 SVG_SETTINGS = {"svg.hashsalt": "dynagrade", "svg.fonttype": "path", "svg.image_inline": True,
                 "path.simplify": False}
@@ -39,13 +42,20 @@ def figure_svg(exercise: Exercise, variant: Variant) -> str | None:
         # "tight" keeps labels that reach past the axes in the picture
         figure.savefig(buffer, format="svg", bbox_inches="tight", pad_inches=0.04,
                        metadata={"Date": None, "Creator": "dynagrade"})
+    description = figure_description(figure)
     _close(figure)
-    return buffer.getvalue()
+    return accessible_svg(buffer.getvalue(), figure_title(exercise), description)
 
 
-def inline_svg(svg: str) -> str:
-    """An SVG document without its XML declaration and DOCTYPE, to embed in HTML."""
-    return _HEADER.sub("", svg, count=1)
+def figure_title(exercise: Exercise) -> str:
+    """The name of an exercise's figure, as a screen reader announces it."""
+    return f"{exercise.title}: figure drawn to scale"
+
+
+def inline_svg(svg: str, id_prefix: str = "") -> str:
+    """An SVG document without its XML declaration and DOCTYPE, to embed in HTML, its ids
+    starting with ``id_prefix`` (give each figure of a page its own)."""
+    return prefixed_ids(_HEADER.sub("", svg, count=1), id_prefix)
 
 
 def _close(figure) -> None:

@@ -17,7 +17,7 @@ import html
 import re
 from dataclasses import dataclass
 
-from .mathtex import to_mathml, to_typst, typst_string, unknown_commands
+from .mathtex import to_mathml, to_speech, to_typst, typst_string, unknown_commands
 
 __all__ = ["markdown_to_html", "markdown_to_typst", "math_warnings", "Block", "parse_blocks"]
 
@@ -159,10 +159,14 @@ def typst_text(text: str) -> str:
 
 
 def inline_typst(text: str) -> str:
+    """Inline Markdown as typst markup; math is an equation whose alternative text is its
+    spoken form (what a tagged PDF gives a screen reader; PDF/UA requires one)."""
     out = []
     for kind, content in _pieces(text):
         if kind == "math":
-            out.append(f"${to_typst(content)}$")
+            # the ";" ends the call, so a "[" after the math stays text
+            out.append(f'#math.equation(alt: "{typst_string(to_speech(content))}", '
+                       f"block: false, ${to_typst(content)}$);")
         elif kind == "bold":
             out.append(f"#strong[{inline_typst(content)}]")
         elif kind == "em":

@@ -4,12 +4,15 @@ Statements write math between dollar signs in the TeX subset that physics statem
 need: letters and numbers, Greek letters, sub- and superscripts, ``\\frac``, ``\\sqrt``,
 ``\\mathrm``/``\\text``/``\\mathbf``, accents (``\\dot``, ``\\vec``, ...), common
 operators and function names, and spacing. One parser turns it into a small tree that
-two writers print: MathML Core (which browsers lay out natively) and typst math.
+three writers print: MathML Core (which browsers lay out natively), typst math, and a
+spoken form (the alternative text of an equation in a tagged PDF).
 
 Usage::
 
     to_mathml(r"x_{1,\\max} = \\frac{v_0^2}{g}")   # '<math ...>...</math>'
     to_typst(r"\\alpha = 30")                     # 'α = 30'
+    to_speech(r"\\mathbf{r} = \\frac{a}{2}")       # 'bold r equals fraction a over 2 end
+                                                 #  fraction'
 
 A command outside the subset is shown as its own text, and listed by :func:`unknown_commands`
 so that an author can be told.
@@ -22,7 +25,7 @@ import re
 from dataclasses import dataclass, field
 from functools import lru_cache
 
-__all__ = ["parse", "to_mathml", "to_typst", "unknown_commands", "MathNode"]
+__all__ = ["parse", "to_mathml", "to_typst", "to_speech", "unknown_commands", "MathNode"]
 
 _GREEK = {
     "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ϵ",
@@ -268,11 +271,39 @@ def unknown_commands(tex: str) -> tuple[str, ...]:
 
 
 def to_mathml(tex: str, display: bool = False) -> str:
-    """``tex`` as a MathML Core ``<math>`` element (no scripts, no network)."""
+    """``tex`` as a MathML Core ``<math>`` element (no scripts, no network).
+
+    There is no ``alttext``: a screen reader speaks the MathML itself, and the TeX source
+    would be read out as "backslash frac"."""
     body = _mathml(parse(tex))
     mode = "block" if display else "inline"
-    return (f'<math display="{mode}" alttext="{html.escape(tex.strip(), quote=True)}">'
-            f"{body}</math>")
+    return f'<math display="{mode}">{body}</math>'
+
+
+def _bold_character(char: str) -> str:
+    """``char`` as its Mathematical Bold character (U+1D400 and following), so that bold
+    survives without CSS and a screen reader says "bold r"; other characters unchanged."""
+    code = ord(char)
+    if "A" <= char <= "Z":
+        return chr(0x1D400 + code - ord("A"))
+    if "a" <= char <= "z":
+        return chr(0x1D41A + code - ord("a"))
+    if "0" <= char <= "9":
+        return chr(0x1D7CE + code - ord("0"))
+    if 0x391 <= code <= 0x3A9:
+        return chr(0x1D6B9) if code == 0x3A2 else chr(0x1D6A8 + code - 0x391)
+    if 0x3B1 <= code <= 0x3C9:
+        return chr(0x1D6C2 + code - 0x3B1)
+    return _BOLD_SYMBOLS.get(char, char)
+
+
+_BOLD_SYMBOLS = {"∇": "\U0001D6C1", "∂": "\U0001D6DB", "ϵ": "\U0001D6DC", "ϑ": "\U0001D6DD",
+                 "ϰ": "\U0001D6DE", "ϕ": "\U0001D6DF", "ϱ": "\U0001D6E0", "ϖ": "\U0001D6E1"}
+
+
+def bold_text(text: str) -> str:
+    """``text`` in Mathematical Bold characters (see :func:`_bold_character`)."""
+    return "".join(_bold_character(char) for char in text)
 
 
 def _mathml(node: MathNode) -> str:
@@ -282,7 +313,7 @@ def _mathml(node: MathNode) -> str:
     if kind == "ident":
         text = html.escape(node.text, quote=False)
         if node.style == "bold":
-            return f'<mi style="font-weight:bold">{text}</mi>'
+            return f'<mi mathvariant="bold">{bold_text(text)}</mi>'
         if node.style in ("upright", "function") and len(node.text) == 1:
             return f'<mi mathvariant="normal">{text}</mi>'
         return f"<mi>{text}</mi>"
@@ -322,6 +353,63 @@ def _wrapped(node: MathNode) -> str:
     """A node as exactly one MathML element (an argument of mfrac, mroot, mover)."""
     text = _mathml(node)
     return text if node.kind != "row" or text.startswith("<mrow>") else f"<mrow>{text}</mrow>"
+
+
+# -- spoken form --------------------------------------------------------------------------
+
+_SPOKEN_OPERATORS = {
+    "=": "equals", "+": "plus", "−": "minus", "±": "plus or minus", "⋅": "times",
+    "×": "cross", "/": "over", "<": "is less than", ">": "is greater than",
+    "≤": "is less than or equal to", "≥": "is greater than or equal to",
+    "≠": "is not equal to", "≈": "is approximately", "→": "to", "∝": "is proportional to",
+    "′": "prime", "°": "degrees", "∑": "sum", "∫": "integral", "∥": "parallel to",
+    "⊥": "perpendicular to", "≪": "is much less than", "≫": "is much greater than",
+}
+_SPOKEN_ACCENTS = {"˙": "{} dot", "¨": "{} double dot", "→": "vector {}", "^": "{} hat",
+                   "¯": "{} bar", "~": "{} tilde", "ˇ": "{} check", "˘": "{} breve"}
+_SPOKEN_POWERS = {"2": "squared", "3": "cubed"}
+
+
+def to_speech(tex: str) -> str:
+    """``tex`` read out in English words, as a screen reader would say it ("v sub 0
+    squared over 2 g"); symbols it has no word for are kept."""
+    return " ".join(_speech(parse(tex)).split())
+
+
+def _speech(node: MathNode) -> str:
+    kind = node.kind
+    if kind == "row":
+        return " ".join(_speech(c) for c in node.children)
+    if kind == "ident":
+        return f"bold {node.text}" if node.style == "bold" else node.text
+    if kind in ("number", "text"):
+        return node.text
+    if kind == "op":
+        return _SPOKEN_OPERATORS.get(node.text, node.text)
+    if kind == "space":
+        return ""
+    if kind == "script":
+        base, sub, sup = node.children
+        words = _speech(base)
+        if sub is not None:
+            words += f" sub {_speech(sub)}"
+        if sup is not None:
+            power = _speech(sup)
+            words += " " + (_SPOKEN_POWERS.get(power) or
+                            (power if power == "prime" else f"to the power {power} end power"))
+        return words
+    if kind == "frac":
+        numerator, denominator = (_speech(c) for c in node.children)
+        return f"fraction {numerator} over {denominator} end fraction"
+    if kind == "sqrt":
+        if len(node.children) == 2:
+            return (f"root of index {_speech(node.children[1])} of "
+                    f"{_speech(node.children[0])} end root")
+        return f"square root of {_speech(node.children[0])} end root"
+    if kind == "accent":
+        return _SPOKEN_ACCENTS.get(node.text, "{} " + node.text).format(
+            _speech(node.children[0]))
+    raise ValueError(f"unknown math node {kind!r}")
 
 
 # -- typst --------------------------------------------------------------------------------

@@ -1,14 +1,19 @@
 """Feedback for each student and the class report, from a graded class.
 
 Plots are drawn with matplotlib into inline SVG (fixed hash salt, no date), so the
-report is one self-contained HTML file that shows the same on every run.
+report is one self-contained HTML file that shows the same on every run. Each plot is an
+image with a title and a description that states its data (the histogram's bin counts
+also stand in a table), drawn in colours of at least 3:1 contrast against white.
 """
 
 from __future__ import annotations
 
 import io
+import statistics
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from .accessible_svg import accessible_svg, sentence_list
 from .figures import SVG_SETTINGS, inline_svg
 from ..exercise.numbers import answer_text, format_number
 from ..exercise.units import with_unit
@@ -16,6 +21,13 @@ from .sheets import render_template
 
 if TYPE_CHECKING:
     from ..exam.manifest import ExamEntry, ExerciseEntry
+
+
+NO_ANSWER = "— (no answer)"
+NOT_DEFINED = "— (not defined)"
+#: bar colours, both at least 3:1 against white (WCAG 1.4.11): blue 4.8:1, dark orange 5.0:1
+BAR_COLOURS = ("#1f77b4", "#b45309")
+BINS = tuple(range(0, 101, 10))
 
 
 def _shown(value, unit) -> str:
@@ -33,7 +45,7 @@ def _feedback_context(exam, exercises, data) -> dict:
             for part in result["parts"]:
                 parts.append({**part, "expected_shown": _shown(part["expected"], part["unit"]),
                               "answer_shown": part["answer"] if part["answer"] is not None
-                              else "—"})
+                              else NO_ANSWER})
         sections.append({"id": exercise_id, "title": described.title,
                          "points": described.points, "result": result, "parts": parts,
                          "solution": data.get("solutions", {}).get(exercise_id)})
@@ -51,27 +63,51 @@ def feedback_html(exam: ExamEntry, exercises: dict[str, ExerciseEntry], data: di
     return render_template("feedback.html", **_feedback_context(exam, exercises, data))
 
 
-def _svg(figure) -> str:
+def _svg(figure, title: str, description: str, id_prefix: str) -> str:
     import matplotlib
 
     buffer = io.StringIO()
     with matplotlib.rc_context(SVG_SETTINGS):
         figure.savefig(buffer, format="svg", metadata={"Date": None, "Creator": "dynagrade"})
-    return inline_svg(buffer.getvalue())
+    return inline_svg(accessible_svg(buffer.getvalue(), title, description), id_prefix)
 
 
-def histogram_svg(percents: list[float]) -> str:
-    """Histogram of the students' percentages in bins of 10 %."""
+@dataclass(frozen=True)
+class Histogram:
+    """The score histogram: its SVG and its data, ``(band, students)`` per 10 % band."""
+
+    svg: str
+    bins: tuple[tuple[str, int], ...]
+
+
+def score_bins(percents: list[float]) -> tuple[tuple[str, int], ...]:
+    """Students per band of 10 %: ``[0, 10)``, ..., ``[80, 90)`` and ``[90, 100]``."""
+    counts = [0] * (len(BINS) - 1)
+    last = len(counts) - 1
+    for percent in percents:
+        counts[min(max(int(percent // 10), 0), last)] += 1
+    return tuple((f"{low}–{high} %" + (" (100 % included)" if band == last else ""), count)
+                 for band, (low, high, count) in enumerate(zip(BINS, BINS[1:], counts)))
+
+
+def histogram(percents: list[float]) -> Histogram:
+    """Histogram of the students' percentages in bins of 10 %, with its data."""
     from matplotlib.figure import Figure
 
+    bins = score_bins(percents)
     figure = Figure(figsize=(6.0, 2.8))
     axes = figure.add_axes((0.1, 0.18, 0.86, 0.74))
-    axes.hist(percents, bins=[10 * i for i in range(11)], color="C0", edgecolor="white")
+    axes.bar([low + 5 for low in BINS[:-1]], [count for _, count in bins], width=10,
+             color=BAR_COLOURS[0], edgecolor="white")
     axes.set_xlabel("score (%)")
     axes.set_ylabel("students")
     axes.set_xlim(0, 100)
     axes.yaxis.get_major_locator().set_params(integer=True)
-    return _svg(figure)
+    counted = [f"{band}: {count}" for band, count in bins]
+    description = (f"Bar chart of the scores of {len(percents)} students in bands of 10 %, "
+                   f"students per band: {sentence_list(counted)}.")
+    return Histogram(_svg(figure, "Histogram of the students' scores", description,
+                          "histogram-"), bins)
 
 
 def items_svg(stats) -> str:
@@ -84,28 +120,42 @@ def items_svg(stats) -> str:
     axes = figure.add_axes((0.34, 0.6 / height, 0.62, 1 - 1.0 / height))
     positions = list(range(len(stats)))[::-1]
     axes.barh([p + 0.2 for p in positions], [s.difficulty or 0.0 for s in stats], height=0.4,
-              color="C0", label="difficulty (mean fraction)")
+              color=BAR_COLOURS[0], label="difficulty (mean fraction)")
     axes.barh([p - 0.2 for p in positions], [s.point_biserial or 0.0 for s in stats],
-              height=0.4, color="C1", label="discrimination (point-biserial)")
+              height=0.4, color=BAR_COLOURS[1], label="discrimination (point-biserial)")
     axes.set_yticks(positions, labels, fontsize=7)
     axes.set_xlim(-0.5, 1.0)
     axes.axvline(0, color="0.3", lw=0.6)
-    axes.legend(fontsize=7, loc="lower right")
-    return _svg(figure)
+    axes.legend(fontsize=7, loc="lower right", edgecolor="0.4")
+    values = [f"{s.exercise_id} {s.part}: difficulty {_stat(s.difficulty)}, "
+              f"point-biserial {_stat(s.point_biserial)}" for s in stats]
+    description = ("Horizontal bar chart, two bars per part (difficulty, blue; point-"
+                   "biserial discrimination, orange) on a scale from −0.5 to 1: "
+                   + "; ".join(values) + ".")
+    return _svg(figure, "Difficulty and discrimination of every part", description, "items-")
+
+
+def _stat(value) -> str:
+    return NOT_DEFINED if value is None else format_number(value, 3)
+
+
+def class_summary(rows) -> dict:
+    """Roster size, present and absent students, and the mean and median percentage of
+    those present (the median of an even count is the mean of the two middle values)."""
+    present = [r for r in rows if r["status"] != "absent"]
+    percents = [r["percent"] for r in present]
+    none = "— (no submissions)"
+    return {
+        "students": len(rows), "present": len(present), "absent": len(rows) - len(present),
+        "mean": format_number(statistics.fmean(percents), 4) if percents else none,
+        "median": format_number(statistics.median(percents), 4) if percents else none,
+    }
 
 
 def report_html(exam: ExamEntry, outcome) -> str:
     """The class report: summary, histogram, item statistics and common wrong answers."""
-    present = [r for r in outcome.rows if r["status"] != "absent"]
-    percents = [r["percent"] for r in present]
-    summary = {
-        "students": len(outcome.rows), "present": len(present),
-        "absent": len(outcome.rows) - len(present),
-        "mean": format_number(sum(percents) / len(percents), 4) if percents else "—",
-        "median": format_number(sorted(percents)[len(percents) // 2], 4) if percents else "—",
-    }
+    percents = [r["percent"] for r in outcome.rows if r["status"] != "absent"]
     return render_template(
-        "report.html", exam=exam, outcome=outcome, summary=summary,
-        histogram=histogram_svg(percents) if percents else "",
-        items=items_svg(outcome.stats) if present else "",
-        fmt=lambda v: "—" if v is None else format_number(v, 3))
+        "report.html", exam=exam, outcome=outcome, summary=class_summary(outcome.rows),
+        histogram=histogram(percents) if percents else None,
+        items=items_svg(outcome.stats) if percents else "", fmt=_stat)

@@ -20,6 +20,7 @@ from pathlib import Path
 import jinja2
 from markupsafe import Markup
 
+from .accessible_svg import svg_text_alternative
 from .figures import inline_svg
 from ..exercise.numbers import format_number, points_phrase, points_text
 from .markup import inline_html, inline_typst, markdown_to_html, markdown_to_typst, typst_text
@@ -69,6 +70,17 @@ class StudentSheet:
     def total_points(self) -> float:
         return sum(e.points for e in self.exercises)
 
+    def figure_number(self, exercise: SheetExercise) -> int:
+        """The figure's number on the sheet: figures count 1, 2, 3, ... and an exercise
+        without a figure skips no number."""
+        with_figures = [e.id for e in self.exercises if e.svg]
+        return with_figures.index(exercise.id) + 1
+
+    @property
+    def language(self) -> str:
+        """The sheet's language tag (the exam's ``language``, English by default)."""
+        return self.exam.get("language") or "en"
+
 
 @lru_cache(maxsize=4)
 def _environment(kind: str) -> jinja2.Environment:
@@ -87,9 +99,17 @@ def _environment(kind: str) -> jinja2.Environment:
         "md_html": lambda text, offset=0: Markup(markdown_to_html(text, offset)),
         "inline_html": lambda text: Markup(inline_html(text)),
         "md_typst": markdown_to_typst, "inline_typst": inline_typst, "typst_text": typst_text,
-        "typst_string": typst_string, "svg_inline": lambda svg: Markup(inline_svg(svg)),
+        "typst_string": typst_string,
+        "svg_inline": lambda svg, prefix="": Markup(inline_svg(svg, prefix)),
+        "figure_text": figure_text,
     })
     return environment
+
+
+def figure_text(svg: str) -> str:
+    """The title and description of a figure's SVG in one sentence, the PDF's alt text."""
+    title, description = svg_text_alternative(svg)
+    return f"{title}. {description}" if description else title
 
 
 def render_template(name: str, **context) -> str:
@@ -111,10 +131,22 @@ def typst_date(iso: str) -> str:
     return f"datetime(year: {year}, month: {month}, day: {day})"
 
 
+def typst_language(tag: str) -> str:
+    """typst's text settings for a language tag: ``lang`` and, for "de-CH", ``region``."""
+    language, _, rest = (tag or "en").partition("-")
+    region = rest.split("-")[0] if rest else ""
+    settings = f'lang: "{typst_string(language.lower())}"'
+    if len(region) == 2 and region.isalpha():
+        settings += f', region: "{typst_string(region.upper())}"'
+    return settings
+
+
 def typst_preamble(exam: dict, title: str | None = None) -> str:
-    """Page, font and document settings (title and a fixed date, so PDFs reproduce)."""
+    """Page, font and document settings: title, language and a fixed date (so PDFs
+    reproduce)."""
     return render_template("preamble.typ", exam=exam, title=title or exam["title"],
-                           date=typst_date(exam["date"]))
+                           date=typst_date(exam["date"]),
+                           language=typst_language(exam.get("language") or "en"))
 
 
 def sheet_typst_body(sheet: StudentSheet) -> str:
