@@ -1,9 +1,11 @@
 """Benchmark of the grader: throughput, symbolic verdict latency, a naive CAS baseline,
 the slowest verdict of a fuzzing corpus, the cold-process time of grading one filled-in
-exercise file, and that of `dynagrade list` (which must not run the bank's exercise files).
+exercise file, that of `dynagrade list` (which must not run the bank's exercise files)
+and that of collecting the test suite.
 
     PYTHONPATH=src python bench/grading.py            # 2000 answers, CI-sized
     PYTHONPATH=src python bench/grading.py --size 10000 --naive 60
+    PYTHONPATH=src python bench/grading.py --collect     # only `pytest --collect-only`
 
 The naive baseline is `sympy.simplify(parse_expr(a) - parse_expr(b)) == 0` on the
 bench's own generated strings (never a student's), timed on a subsample.
@@ -229,18 +231,40 @@ def run_cold() -> None:
         print(f"cold `grade FILE` (answered sheet, {status}): best of 3 {min(times):.2f} s")
 
 
+def fresh_process_times(command: list[str], env: dict, runs: int) -> tuple[list[float], list[float], int]:
+    """Wall and CPU (user + system) seconds of ``runs`` runs of ``command`` in fresh
+    processes, and the last exit status. On a loaded machine CPU time is the steadier."""
+    walls, cpus = [], []
+    for _ in range(runs):
+        t0 = time.perf_counter()
+        process = subprocess.Popen(command, cwd=ROOT, env=env, stdout=subprocess.DEVNULL,
+                                   stderr=subprocess.DEVNULL)
+        _, status, usage = os.wait4(process.pid, 0)
+        walls.append(time.perf_counter() - t0)
+        cpus.append(usage.ru_utime + usage.ru_stime)
+    return walls, cpus, os.waitstatus_to_exitcode(status)
+
+
 def run_cold_list(runs: int = 5) -> None:
     """The wall time of `dynagrade list` in fresh processes: the median of ``runs``."""
     env = dict(os.environ, PYTHONPATH=str(ROOT / "src"))
-    command = [sys.executable, "-m", "dynagrade.cli", "list"]
-    times = []
-    for _ in range(runs):
-        t0 = time.perf_counter()
-        done = subprocess.run(command, capture_output=True, text=True, env=env)
-        times.append(time.perf_counter() - t0)
-    status = "ok" if done.returncode == 0 else f"exit {done.returncode}"
+    times, _, code = fresh_process_times([sys.executable, "-m", "dynagrade.cli", "list"], env, runs)
+    status = "ok" if code == 0 else f"exit {code}"
     print(f"cold `dynagrade list` ({status}): median of {runs} {statistics.median(times):.2f} s "
           f"(min {min(times):.2f} s)")
+
+
+def run_collect(runs: int = 3) -> None:
+    """Collecting the test suite (`pytest --collect-only`, target 1.5 s), median of ``runs``.
+    With PYTHONDONTWRITEBYTECODE set pytest rewrites every test module's asserts anew on
+    each run (its cache is bytecode); the line says which case was measured."""
+    env = dict(os.environ, PYTHONPATH=str(ROOT / "src"))
+    command = [sys.executable, "-m", "pytest", "--collect-only", "-q", "-p", "no:cacheprovider"]
+    walls, cpus, code = fresh_process_times(command, env, runs)
+    status = "ok" if code == 0 else f"exit {code}"
+    rewriting = "asserts rewritten each run" if os.environ.get("PYTHONDONTWRITEBYTECODE") else "rewritten asserts cached"
+    print(f"pytest --collect-only ({status}, {rewriting}): {statistics.median(walls):.2f} s wall, "
+          f"{statistics.median(cpus):.2f} s CPU (median of {runs})")
 
 
 def main() -> None:
@@ -248,7 +272,11 @@ def main() -> None:
     parser.add_argument("--size", type=int, default=2000, help="answers in the synthetic class")
     parser.add_argument("--naive", type=int, default=30, help="symbolic cases for the naive baseline")
     parser.add_argument("--no-cold", action="store_true", help="skip the cold-process timings")
+    parser.add_argument("--collect", action="store_true", help="only time collecting the test suite")
     args = parser.parse_args()
+    if args.collect:
+        run_collect()
+        return
     run_fixtures()
     ours = run_class(args.size)
     run_naive(args.naive, ours)
@@ -256,6 +284,7 @@ def main() -> None:
     if not args.no_cold:
         run_cold()
         run_cold_list()
+        run_collect()
 
 
 if __name__ == "__main__":

@@ -11,18 +11,24 @@ It fills in the students' own fill-in files from ``out/students/`` and writes th
 - the next 5 answer every other part correctly (the first, third, ...) and the rest wrong;
 - the next 2 hand in their sheets unanswered;
 - one hands in a corrupt file for the first exercise (and correct answers for the rest);
-- one hands in the first exercise twice: a wrong file, then (later in path order) a
+- one hands in the first exercise twice: a wrong file, then (modified a minute later) a
   correct one; the later counts;
 - two answer in a CSV of responses (student_id,exercise_id,part,answer), correctly;
-- a sheet from a student who is not on the roster, and one whose SEED was changed (a
-  sheet of another exam);
+- a sheet from a student who is not on the roster (in a folder of no roster student);
+  in the first student's folder, a sheet whose VARIANT token was changed (a sheet of
+  another exam); in the second student's folder, the first student's sheet answered correctly
+  (impersonating: credited to nobody);
 - everyone else is absent.
+
+Each student's files go in a folder named by their id: that, not the file's STUDENT
+line, says whose a file is.
 """
 
 from __future__ import annotations
 
 import csv
 import json
+import os
 import re
 import sys
 from pathlib import Path
@@ -125,6 +131,8 @@ def main(out_dir: str) -> None:
                     fill(sheet, answers_for(described, variant, "wrong")), encoding="utf-8")
                 (folder / f"2-{variant['exercise']}.py").write_text(
                     fill(sheet, answers_for(described, variant, "correct")), encoding="utf-8")
+                _modified_after(folder / f"2-{variant['exercise']}.py",
+                                folder / f"1-{variant['exercise']}.py")
                 continue
             folder.mkdir(parents=True, exist_ok=True)
             kind_here = kind if kind in ("half", "empty") else "correct"
@@ -142,9 +150,34 @@ def main(out_dir: str) -> None:
     (strangers / "not-on-roster.py").write_text(
         sheet.replace(f"STUDENT = {first['student_id']!r}", "STUDENT = 'x00-000'"),
         encoding="utf-8")
-    (strangers / "other-exam.py").write_text(
-        re.sub(r"^SEED = \d+$", "SEED = 12345", sheet, flags=re.M), encoding="utf-8")
+    elsewhere = target / first["student_id"] / "old"
+    elsewhere.mkdir(parents=True, exist_ok=True)
+    forged = 'VARIANT = "' + "0" * 24 + '"'
+    (elsewhere / "other-exam.py").write_text(
+        re.sub(r"^VARIANT = ['\"][0-9a-z]+['\"]$", forged, sheet, flags=re.M),
+        encoding="utf-8")
+    if len(students) > 1:
+        _impersonate(out, target, first, students[1], exercises)
     print(f"wrote sample submissions to {target}")
+
+
+def _modified_after(later: Path, earlier: Path) -> None:
+    """Give ``later`` a modification time a minute after ``earlier``'s."""
+    stamp = earlier.stat().st_mtime + 60
+    os.utime(later, (stamp, stamp))
+
+
+def _impersonate(out: Path, target: Path, victim: dict, student: dict,
+                 exercises: dict) -> None:
+    """Put ``victim``'s first sheet, answered correctly, in ``student``'s folder."""
+    variant = victim["variants"][0]
+    sheet = (out / "students" / victim["student_id"]
+             / f"{variant['exercise']}.py").read_text(encoding="utf-8")
+    folder = target / student["student_id"] / "for-a-friend"
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / f"{variant['exercise']}.py").write_text(
+        fill(sheet, answers_for(exercises[variant["exercise"]], variant, "correct")),
+        encoding="utf-8")
 
 
 if __name__ == "__main__":

@@ -160,3 +160,24 @@ EXERCISE = Exercise(
     result = run(main, "--exercises", tmp_path, "verify", "weak", "--variants", 5)
     assert result.exit_code == 1
     assert "cos for sin" in result.output
+
+
+# -- values that cannot give a sound variant (issue 11, item 9) ---------------------------
+
+
+def test_solve_refuses_a_value_outside_the_physical_domain_unless_forced(run):
+    refused = run(main, "solve", "projectile-range", "--set", "g=-9.81", "--json")
+    assert refused.exit_code == 2 and "g > 0" in refused.output
+    assert "Traceback" not in refused.output
+    forced = run(main, "solve", "projectile-range", "--set", "g=-9.81", "--set", "v0=10",
+                 "--set", "alpha=30", "--json", "--force")
+    assert forced.exit_code == 0, forced.output
+    answers = json.loads(forced.output[forced.output.index("{"):])["answers"]
+    # t = 2 v0 sin(alpha) / g = 2 * 10 * 0.5 / (-9.81): the negative flight time of the issue
+    assert answers["t_flight"] == pytest.approx(-10 / 9.81)
+
+
+def test_solve_json_reports_each_answers_unit(run):
+    result = run(main, "solve", "projectile-range", "--json")
+    units = json.loads(result.output[result.output.index("{"):])["units"]
+    assert units == {"x_max": "m", "h_max": "m", "t_flight": "s", "x_max_formula": None}

@@ -19,9 +19,10 @@ import pytest
 from dynagrade.exam.generate import generate_exam
 from dynagrade.exercise.loader import open_bank
 from dynagrade.exercise.numbers import format_number
-from dynagrade.exercise.seeds import exam_seed
+from dynagrade.exercise.seeds import exam_seed, variant_token
 
 ROOT = Path(__file__).resolve().parent.parent
+SECRET = "0123456789abcdef" * 4  # fixed, so that two runs can be compared
 ROSTER = "student_id,name\nq-001,Emmy Noether\nq-002,Leonhard Euler\nq-003,Sophie Germain\n"
 
 
@@ -33,9 +34,12 @@ def exam(tmp_path_factory, bank, exam_toml):
     exam = folder / "exam.toml"
     exam.write_text(exam_toml, encoding="utf-8")
     out = folder / "out"
-    generate_exam(exam, roster, out, bank=bank, jobs=1)
+    secret_file = folder / "exam.secret"
+    secret_file.write_text(SECRET + "\n", encoding="ascii")
+    generate_exam(exam, roster, out, bank=bank, jobs=1, secret=SECRET)
     manifest = json.loads((out / "manifest.json").read_text(encoding="utf-8"))
-    return {"folder": folder, "roster": roster, "exam": exam, "out": out, "manifest": manifest}
+    return {"folder": folder, "roster": roster, "exam": exam, "out": out, "manifest": manifest,
+            "secret_file": secret_file}
 
 
 def _files(folder: Path) -> dict[str, bytes]:
@@ -44,11 +48,13 @@ def _files(folder: Path) -> dict[str, bytes]:
 
 
 def test_a_second_run_writes_byte_identical_files(exam):
-    """Run again in a fresh process with two workers: every file, PDFs included, matches."""
+    """Run again in a fresh process with two workers and the same secret: every file, PDFs
+    included, matches."""
     second = exam["folder"] / "again"
     environment = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
     subprocess.run([sys.executable, "-m", "dynagrade.cli", "exam", str(exam["exam"]), "--roster",
-                    str(exam["roster"]), "-o", str(second), "--jobs", "2"],
+                    str(exam["roster"]), "-o", str(second), "--jobs", "2",
+                    "--secret-file", str(exam["secret_file"])],
                    check=True, capture_output=True, env=environment, timeout=120)
     first, again = _files(exam["out"]), _files(second)
     assert sorted(first) == sorted(again)
@@ -69,7 +75,7 @@ def test_the_manifest_stores_each_students_seed_parameters_and_answers(exam, ban
         for entry in student["variants"]:
             exercise = bank.get(entry["exercise"])
             if not entry["redraws"]:
-                assert entry["seed"] == exam_seed(manifest["exam"]["id"],
+                assert entry["seed"] == exam_seed(SECRET, manifest["exam"]["id"],
                                                   student["student_id"], exercise.id)
             rebuilt = exercise.variant_from_params(entry["seed"], entry["params"])
             for name, value in rebuilt.answers.items():
@@ -93,7 +99,11 @@ def test_every_student_gets_sheets_fill_in_files_and_figures(exam, bank):
         html = (folder / "sheet.html").read_text(encoding="utf-8")
         for entry in student["variants"]:
             fill_in = (folder / f"{entry['exercise']}.py").read_text(encoding="utf-8")
-            assert f"SEED = {entry['seed']}" in fill_in
+            # an exam's fill-in file carries the variant's token, never its seed or secret
+            token = variant_token(SECRET, exam["manifest"]["exam"]["id"],
+                                  student["student_id"], entry["exercise"], entry["seed"])
+            assert f"VARIANT = {token!r}" in fill_in and "SEED" not in fill_in
+            assert str(entry["seed"]) not in fill_in and SECRET not in fill_in
             assert f"STUDENT = {student['student_id']!r}" in fill_in
             assert f"figures/{entry['exercise']}.svg" in markdown
             svg = (folder / "figures" / f"{entry['exercise']}.svg").read_text(encoding="utf-8")

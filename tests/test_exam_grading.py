@@ -95,11 +95,14 @@ def test_the_class_gets_exactly_the_expected_gradebook(graded, bank):
 def test_bad_submissions_are_reported_and_skipped(graded):
     problems = graded["outcome"].problems
     by_kind = [(p.level, p.student_id, p.message.split(":")[0]) for p in problems]
-    assert ("error", "", "corrupt, skipped") in by_kind
+    # the corrupt file is named by the folder it was found in (c-3, the corrupt kind)
+    assert ("error", "c-3", "corrupt, skipped") in by_kind
     assert ("warning", "c-4", "duplicate") in by_kind
     assert ("error", "x00-000", "skipped") in by_kind
-    assert any(p.level == "error" and p.message.startswith("foreign, skipped: SEED 12345")
-               for p in problems)
+    assert any(p.level == "error" and p.student_id == "c-0"
+               and p.message.startswith("foreign, skipped") for p in problems)
+    # c-1's folder holds c-0's sheet: impersonating, and nobody is credited with it
+    assert ("error", "c-1", "impersonating, skipped") in by_kind
     duplicate = next(p for p in problems if p.message.startswith("duplicate"))
     assert duplicate.source.endswith("2-projectile-range.py")
     assert "1-projectile-range.py" in duplicate.message
@@ -149,7 +152,26 @@ def test_the_command_line_grades_a_class_and_single_files_as_before(graded):
         (out / "cli-grading" / "grades.csv").read_text(encoding="utf-8"))))
     assert [r["status"] for r in rows] == ["graded"] + ["absent"] * 7
     sheet = out / "submissions" / "c-0" / "projectile-range.py"
+    # an exam's file: the self-check reads every answer and gives no verdict
     single = runner.invoke(grade_main, [str(sheet), "--json"])
+    assert single.exit_code == 0, single.output
+    checked = json.loads(single.output[single.output.index("{"):])
+    assert checked["exercise"] == "projectile-range" and checked["mode"] == "exam"
+    assert all(part["readable"] for part in checked["parts"])
+    assert not {"correct", "score", "expected", "reference"} & {
+        key for part in checked["parts"] for key in part} and "score" not in checked
+    assert "when the staff grade" in checked["message"]
+    # a practice sheet of the same exercise, answered right: full verdicts
+    practice = out / "practice.py"
+    assert runner.invoke(main, ["sheet", "projectile-range", "--student", "c-0", "-o",
+                                str(practice)]).exit_code == 0
+    solved = json.loads(runner.invoke(main, ["show", "projectile-range", "--student", "c-0",
+                                             "--answers", "--json"]).output)["answers"]
+    text = practice.read_text(encoding="utf-8")
+    for name, value in solved.items():
+        text = text.replace(f"\n{name} = None\n", f"\n{name} = {json.dumps(str(value))}\n")
+    practice.write_text(text, encoding="utf-8")
+    single = runner.invoke(grade_main, [str(practice), "--json"])
     assert single.exit_code == 0, single.output
     verdict = json.loads(single.output[single.output.index("{"):])
     assert verdict["exercise"] == "projectile-range"

@@ -126,8 +126,18 @@ def test_seeds_are_the_first_four_bytes_of_sha256_of_the_keys():
 
     digest = hashlib.sha256(b"student\0projectile-range\0s1").digest()
     assert student_seed("projectile-range", "s1") == int.from_bytes(digest[:4], "big")
-    assert exam_seed("e", "s", "x") == stable_seed("exam", "e", "s", "x")
     assert student_seed("a", "s1") != student_seed("a", "s2")
+
+
+def test_exam_seeds_are_keyed_by_the_exams_secret_not_public_data():
+    """Reproducer: an exam seed was sha256 of public data, so anyone could forge it."""
+    import hashlib
+    import hmac
+
+    digest = hmac.new(b"k" * 32, b"exam\0e\0s\0x", hashlib.sha256).digest()
+    assert exam_seed("k" * 32, "e", "s", "x") == int.from_bytes(digest[:4], "big")
+    assert exam_seed("k" * 32, "e", "s", "x") != stable_seed("exam", "e", "s", "x")
+    assert exam_seed("j" * 32, "e", "s", "x") != exam_seed("k" * 32, "e", "s", "x")
 
 
 @given(st.floats(-1e6, 1e6, allow_nan=False))

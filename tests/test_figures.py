@@ -9,18 +9,25 @@ import math
 import re
 import xml.etree.ElementTree as ET
 
-import matplotlib
 import pytest
 
 from dynagrade.exercise import open_bank
 from dynagrade.render.figures import SVG_SETTINGS, figure_svg
 from dynagrade.exercise.numbers import format_number
+from deferred import deferred
 
-matplotlib.use("Agg")
+matplotlib = deferred("matplotlib")
 
 SEEDS = (0, 1, 2)
 _NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e-?\d+)?")
 _FIGURED = sorted(e.id for e in open_bank().listing() if e.figured)  # no file is run
+
+
+@pytest.fixture(autouse=True, scope="module")
+def agg_backend():
+    """Figures are drawn without a display (the backend chosen when the tests run, so
+    that collecting this module does not import matplotlib)."""
+    matplotlib.use("Agg")
 
 
 def _label_texts(exercise, variant) -> list[str]:

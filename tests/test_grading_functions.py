@@ -7,13 +7,15 @@ the wrong function in any of the three would fail here.
 
 import math
 
-import mpmath
 import numpy as np
 import pytest
-import sympy
 
 from dynagrade.grading.functions import FUNCTIONS, mp_call
 from dynagrade.grading.names import FUNCTION_ALIASES, canonical_function
+from deferred import deferred
+
+mpmath = deferred("mpmath")
+sympy = deferred("sympy")
 
 POINTS = 7
 

@@ -3,10 +3,12 @@ angular momentum balance evaluated along them."""
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
-from scipy.integrate import solve_ivp
 
 from dynagrade.mechanics import angular_momentum as am
 from dynagrade.mechanics import particle
+from deferred import deferred
+
+solve_ivp = deferred("scipy.integrate", "solve_ivp")
 
 
 @settings(max_examples=20, deadline=None)

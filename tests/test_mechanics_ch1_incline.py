@@ -3,9 +3,11 @@ linear momentum balance with Coulomb friction R = -mu |N| v/|v| (eq. 1.74)."""
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
-from scipy.integrate import solve_ivp
 
 from dynagrade.mechanics.examples import incline
+from deferred import deferred
+
+solve_ivp = deferred("scipy.integrate", "solve_ivp")
 
 
 def _slide_until_rest(v0, acceleration):

@@ -2,11 +2,13 @@
 problems, sympy differentiation for polar and circular motion, hand-worked values."""
 import numpy as np
 import pytest
-import sympy as sp
 from hypothesis import given, settings, strategies as st
-from scipy.integrate import solve_ivp
 
 from dynagrade.mechanics import kinematics as kin
+from deferred import deferred
+
+sp = deferred("sympy")
+solve_ivp = deferred("scipy.integrate", "solve_ivp")
 
 
 def test_trajectory_from_time_dependent_acceleration_by_quadrature_matches_hand_integration():
@@ -122,12 +124,15 @@ def test_degrees_of_freedom_of_example_1_4():
         kin.degrees_of_freedom(2, 3)
 
 
-t_sym = sp.symbols("t")
+@pytest.fixture(scope="module")
+def t_sym():
+    """The time symbol of the sympy differentiations below."""
+    return sp.symbols("t")
 
 
 @settings(max_examples=20, deadline=None)
 @given(c=st.lists(st.floats(-2, 2), min_size=6, max_size=6), t=st.floats(0.0, 2.0))
-def test_polar_components_equal_projections_of_the_differentiated_cartesian_position(c, t):
+def test_polar_components_equal_projections_of_the_differentiated_cartesian_position(c, t, t_sym):
     # r(t), phi(t) quadratic polynomials; differentiate x = r cos phi, y = r sin phi with sympy
     r_expr = 2.5 + c[0] * t_sym + 0.5 * c[1] * t_sym**2
     phi_expr = c[2] + c[3] * t_sym + c[4] * t_sym**2
@@ -146,7 +151,7 @@ def test_polar_components_equal_projections_of_the_differentiated_cartesian_posi
     assert np.allclose(kin.polar_to_cartesian(*kin.polar_velocity(r, rd, phd), phi), v_c, atol=1e-10)
 
 
-def test_circular_motion_of_example_1_3_matches_sympy():
+def test_circular_motion_of_example_1_3_matches_sympy(t_sym):
     R = 1.3
     phi_expr = 0.4 * t_sym**2 + 0.2 * t_sym
     pos = sp.Matrix([R * sp.cos(phi_expr), R * sp.sin(phi_expr)])

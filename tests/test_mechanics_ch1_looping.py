@@ -4,9 +4,11 @@ radial momentum balance along that numerical solution."""
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
-from scipy.integrate import solve_ivp
 
 from dynagrade.mechanics.examples import looping
+from deferred import deferred
+
+solve_ivp = deferred("scipy.integrate", "solve_ivp")
 
 
 def _ride(v0, R, g, phi_end=2 * np.pi):

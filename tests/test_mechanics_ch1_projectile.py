@@ -3,9 +3,11 @@ linear momentum balance m x1'' = 0, m x2'' = -m g with landing and apex events."
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
-from scipy.integrate import solve_ivp
 
 from dynagrade.mechanics.examples import projectile
+from deferred import deferred
+
+solve_ivp = deferred("scipy.integrate", "solve_ivp")
 
 RTOL, ATOL = 1e-10, 1e-12
 

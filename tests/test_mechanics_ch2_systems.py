@@ -3,9 +3,12 @@ particles with internal forces."""
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
-from scipy.integrate import solve_ivp, trapezoid
 
 from dynagrade.mechanics import systems
+from deferred import deferred
+
+solve_ivp = deferred("scipy.integrate", "solve_ivp")
+trapezoid = deferred("scipy.integrate", "trapezoid")
 
 masses_st = st.lists(st.floats(0.1, 10.0), min_size=2, max_size=5)
 

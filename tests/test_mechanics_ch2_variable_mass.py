@@ -2,9 +2,11 @@
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
-from scipy.integrate import solve_ivp
 
 from dynagrade.mechanics import variable_mass
+from deferred import deferred
+
+solve_ivp = deferred("scipy.integrate", "solve_ivp")
 
 
 @settings(max_examples=15, deadline=None)

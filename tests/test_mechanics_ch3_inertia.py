@@ -2,11 +2,13 @@
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
-from scipy.linalg import eigh
-from scipy.spatial.transform import Rotation
 
 from dynagrade.mechanics import inertia
 from dynagrade.mechanics.rotations import rotation_matrix
+from deferred import deferred
+
+eigh = deferred("scipy.linalg", "eigh")
+Rotation = deferred("scipy.spatial.transform", "Rotation")
 
 N_GAUSS = 4   # Gauss-Legendre points: exact for the quadratic integrands here
 N_ANGLE = 8   # uniform points in an angle: exact for trigonometric degree < 8

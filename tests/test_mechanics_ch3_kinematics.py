@@ -2,10 +2,12 @@
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
-from scipy.spatial.transform import Rotation
 
 from dynagrade.mechanics import rigid_kinematics as rk
 from dynagrade.mechanics import rotations
+from deferred import deferred
+
+Rotation = deferred("scipy.spatial.transform", "Rotation")
 
 vec3 = st.lists(st.floats(-5.0, 5.0), min_size=3, max_size=3).map(np.array)
 angle = st.floats(-np.pi, np.pi)

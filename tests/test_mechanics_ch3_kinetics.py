@@ -2,9 +2,11 @@
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
-from scipy.integrate import solve_ivp
 
 from dynagrade.mechanics import inertia, rigid_impact, rigid_kinetics
+from deferred import deferred
+
+solve_ivp = deferred("scipy.integrate", "solve_ivp")
 
 # I_C / (m R^2) of the round bodies: hoop, solid cylinder, solid sphere, spherical shell
 ROUND = {"hoop": 1.0, "cylinder": 0.5, "sphere": 0.4, "shell": 2.0 / 3.0}

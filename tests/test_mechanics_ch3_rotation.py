@@ -3,13 +3,15 @@
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
-from scipy.integrate import solve_ivp
-from scipy.spatial.transform import Rotation
 
 from dynagrade.mechanics import euler_equations as ee
 from dynagrade.mechanics import frames, gyro
 from dynagrade.mechanics.rotations import (angular_velocity_from_rotation_rate,
                                            euler_angle_rotation, rotation_matrix)
+from deferred import deferred
+
+solve_ivp = deferred("scipy.integrate", "solve_ivp")
+Rotation = deferred("scipy.spatial.transform", "Rotation")
 
 E3 = np.array([0.0, 0.0, 1.0])
 

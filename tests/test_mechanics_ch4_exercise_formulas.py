@@ -6,9 +6,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import sympy as sp
 
 from dynagrade.grading import evaluate_expression
+from deferred import deferred
+
+sp = deferred("sympy")
 
 BANK = Path(__file__).resolve().parents[1] / "exercises" / "ch4_vibrations"
 

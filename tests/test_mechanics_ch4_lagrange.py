@@ -8,15 +8,15 @@ import functools
 
 import numpy as np
 import pytest
-import sympy as sp
 from hypothesis import given, settings, strategies as st
-from scipy.integrate import solve_ivp
 
-from dynagrade.mechanics import equilibrium, lagrange
 from dynagrade.mechanics.examples import hoop
+from deferred import deferred
 
-t = sp.Symbol("t")
-m, m1, m2, g, L, L0, L1, L2, k, c = sp.symbols("m m1 m2 g L L0 L1 L2 k c", positive=True)
+sp = deferred("sympy")
+equilibrium = deferred("dynagrade.mechanics.equilibrium")
+lagrange = deferred("dynagrade.mechanics.lagrange")
+solve_ivp = deferred("scipy.integrate", "solve_ivp")
 
 SETTINGS = settings(max_examples=30, deadline=None)
 angle = st.floats(-3.0, 3.0)
@@ -30,9 +30,11 @@ def lazily(build):
     return lambda *args: built()(*args)
 
 
-def lambdified_accelerations(T, V, q, params, Q=None):
+def lambdified_accelerations(system):
+    """The accelerations of ``system() = (T, V, q, params)`` as a numpy function."""
     def derived():
-        acc = lagrange.accelerations(T, V, q, t, Q)
+        T, V, q, params = system()
+        acc = lagrange.accelerations(T, V, q, t)
         pos, vel, _ = lagrange.state_symbols(q)
         exprs = [lagrange.in_state_symbols(a, q, t) for a in acc]
         return sp.lambdify([*pos, *vel, *params], exprs, "numpy")
@@ -40,9 +42,34 @@ def lambdified_accelerations(T, V, q, params, Q=None):
     return lazily(derived)
 
 
+@pytest.fixture(scope="module", autouse=True)
+def symbolic_models():
+    """The symbols and the kinetic and potential energies T, V of the systems below (the
+    plane, spring and double pendulum, the bead on the rotating hoop), bound as this
+    module's globals when its tests first run, not when it is collected."""
+    global t, m, m1, m2, g, L, L0, L1, L2, k, c, th, r, phi, T_sp, V_sp
+    global a1, a2, T_dp, V_dp, R, Om, T_hoop, V_hoop
+    t = sp.Symbol("t")
+    m, m1, m2, g, L, L0, L1, L2, k, c = sp.symbols("m m1 m2 g L L0 L1 L2 k c", positive=True)
+    th = sp.Function("theta")(t)
+    r = sp.Function("r")(t)
+    phi = sp.Function("phi")(t)
+    T_sp = m * (r.diff(t) ** 2 + r**2 * phi.diff(t) ** 2) / 2
+    V_sp = k * (r - L0) ** 2 / 2 - m * g * r * sp.cos(phi)
+    a1 = sp.Function("theta1")(t)
+    a2 = sp.Function("theta2")(t)
+    x1, y1 = L1 * sp.sin(a1), -L1 * sp.cos(a1)
+    x2, y2 = x1 + L2 * sp.sin(a2), y1 - L2 * sp.cos(a2)
+    T_dp = (m1 * (x1.diff(t) ** 2 + y1.diff(t) ** 2) + m2 * (x2.diff(t) ** 2 + y2.diff(t) ** 2)) / 2
+    V_dp = m1 * g * y1 + m2 * g * y2
+    R, Om = sp.symbols("R Omega", positive=True)
+    T_hoop = m * R**2 * (th.diff(t) ** 2 + Om**2 * sp.sin(th) ** 2) / 2
+    V_hoop = -m * g * R * sp.cos(th)
+
+
 # --- the plane pendulum ------------------------------------------------------------------
-th = sp.Function("theta")(t)
-PENDULUM = lambdified_accelerations(m * L**2 * th.diff(t) ** 2 / 2, -m * g * L * sp.cos(th), [th], [m, g, L])
+PENDULUM = lambdified_accelerations(lambda: (m * L**2 * th.diff(t) ** 2 / 2, -m * g * L * sp.cos(th),
+                                             [th], [m, g, L]))
 
 
 @SETTINGS
@@ -55,11 +82,7 @@ def test_pendulum_equation_of_motion_agrees_with_newton_euler(theta, omega, mass
 
 
 # --- the spring pendulum (elastic pendulum in polar coordinates) ------------------------
-r = sp.Function("r")(t)
-phi = sp.Function("phi")(t)
-T_sp = m * (r.diff(t) ** 2 + r**2 * phi.diff(t) ** 2) / 2
-V_sp = k * (r - L0) ** 2 / 2 - m * g * r * sp.cos(phi)
-SPRING_PENDULUM = lambdified_accelerations(T_sp, V_sp, [r, phi], [m, g, k, L0])
+SPRING_PENDULUM = lambdified_accelerations(lambda: (T_sp, V_sp, [r, phi], [m, g, k, L0]))
 
 
 @SETTINGS
@@ -78,13 +101,7 @@ def test_spring_pendulum_equations_agree_with_newton_euler_in_polar_coordinates(
 
 
 # --- the double pendulum --------------------------------------------------------------------
-a1 = sp.Function("theta1")(t)
-a2 = sp.Function("theta2")(t)
-x1, y1 = L1 * sp.sin(a1), -L1 * sp.cos(a1)
-x2, y2 = x1 + L2 * sp.sin(a2), y1 - L2 * sp.cos(a2)
-T_dp = (m1 * (x1.diff(t) ** 2 + y1.diff(t) ** 2) + m2 * (x2.diff(t) ** 2 + y2.diff(t) ** 2)) / 2
-V_dp = m1 * g * y1 + m2 * g * y2
-DOUBLE = lambdified_accelerations(T_dp, V_dp, [a1, a2], [m1, m2, g, L1, L2])
+DOUBLE = lambdified_accelerations(lambda: (T_dp, V_dp, [a1, a2], [m1, m2, g, L1, L2]))
 
 
 def double_pendulum_newton_euler(q1, q2, w1, w2, mm1, mm2, gg, l1, l2):
@@ -142,9 +159,6 @@ def test_generalized_forces_are_minus_the_gradient_of_V():
 
 
 # --- Section 4.2: equilibrium and stability: the bead on a rotating hoop --------------------
-R, Om = sp.symbols("R Omega", positive=True)
-T_hoop = m * R**2 * (th.diff(t) ** 2 + Om**2 * sp.sin(th) ** 2) / 2
-V_hoop = -m * g * R * sp.cos(th)
 effective_potential = functools.cache(lambda: lagrange.effective_potential(T_hoop, V_hoop, [th], t))
 dV_eff = lazily(lambda: sp.lambdify([th, m, R, Om, g], sp.diff(effective_potential(), th)))
 d2V_eff = lazily(lambda: sp.lambdify([th, m, R, Om, g], sp.diff(effective_potential(), th, 2)))

@@ -2,11 +2,15 @@
 against numerical integration, the characteristic determinant and hand calculations."""
 import numpy as np
 import pytest
-import sympy as sp
 from hypothesis import given, settings, strategies as st
-from scipy.integrate import solve_ivp
 
-from dynagrade.mechanics import equilibrium, lagrange, multi_dof, vibrations
+from dynagrade.mechanics import multi_dof, vibrations
+from deferred import deferred
+
+sp = deferred("sympy")
+equilibrium = deferred("dynagrade.mechanics.equilibrium")
+lagrange = deferred("dynagrade.mechanics.lagrange")
+solve_ivp = deferred("scipy.integrate", "solve_ivp")
 
 SETTINGS = settings(max_examples=30, deadline=None)
 

@@ -2,12 +2,15 @@
 numerical integration of m x'' + c x' + k x = F(t), energy balance and hand calculations."""
 import numpy as np
 import pytest
-import sympy as sp
 from hypothesis import given, settings, strategies as st
-from scipy.integrate import solve_ivp
-from scipy.optimize import minimize_scalar
 
-from dynagrade.mechanics import lagrange, vibrations
+from dynagrade.mechanics import vibrations
+from deferred import deferred
+
+sp = deferred("sympy")
+lagrange = deferred("dynagrade.mechanics.lagrange")
+solve_ivp = deferred("scipy.integrate", "solve_ivp")
+minimize_scalar = deferred("scipy.optimize", "minimize_scalar")
 
 SETTINGS = settings(max_examples=25, deadline=None)
 

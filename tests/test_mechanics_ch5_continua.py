@@ -6,12 +6,14 @@ Run this file as a script to print the observed order of convergence of the lump
 """
 import numpy as np
 import pytest
-import sympy as sp
 from hypothesis import given, settings, strategies as st
-from scipy.integrate import quad
-from scipy.optimize import brentq
 
 from dynagrade.mechanics import beams, continua, multi_dof, rods, stiffness, vibrations
+from deferred import deferred
+
+sp = deferred("sympy")
+quad = deferred("scipy.integrate", "quad")
+brentq = deferred("scipy.optimize", "brentq")
 
 SETTINGS = settings(max_examples=25, deadline=None)
 

@@ -2,10 +2,11 @@
 
 from __future__ import annotations
 
-from alembic.autogenerate import compare_metadata
-from alembic.migration import MigrationContext
+from deferred import deferred
 
-from dynagrade.serve import db
+db = deferred("dynagrade.serve.db")
+compare_metadata = deferred("alembic.autogenerate", "compare_metadata")
+MigrationContext = deferred("alembic.migration", "MigrationContext")
 
 
 def test_the_migrations_build_the_schema_that_db_py_declares(tmp_path):

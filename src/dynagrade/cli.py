@@ -108,7 +108,7 @@ def show(context, exercise_id, seed, student, settings, answers, solution, as_js
     """Show an exercise's variant: its statement, and on request its answers and worked
     solution."""
     exercise = context.exercise(exercise_id)
-    variant = _variant(exercise, seed, student, settings)
+    variant = _variant(exercise, seed, student, settings, force=None)
     worked = _solution(exercise, variant) if solution else None
     if as_json:
         data = variant.to_json()
@@ -131,14 +131,24 @@ def show(context, exercise_id, seed, student, settings, answers, solution, as_js
               help="Seed for the parameters not set.")
 @click.option("--set", "settings", multiple=True, metavar="NAME=VALUE",
               help="Fix a parameter, in its unit or with one.")
-@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@click.option("--json", "as_json", is_flag=True, help="Print JSON (each answer with its unit).")
+@click.option("--force", is_flag=True,
+              help="Compute even with values outside a parameter's physical domain "
+                   "(g > 0, 0 <= e <= 1, masses > 0, ...) or non-finite answers.")
 @click.pass_obj
-def solve(context, exercise_id, seed, settings, as_json):
+def solve(context, exercise_id, seed, settings, as_json, force):
     """Solve an exercise for given parameters; the others are drawn from --seed."""
+    from .exam.generate import non_finite_answers
+
     exercise = context.exercise(exercise_id)
-    variant = _variant(exercise, seed, None, settings)
+    variant = _variant(exercise, seed, None, settings, force)
+    broken = non_finite_answers(variant.answers)
+    if broken and not force:
+        raise click.ClickException(f"{exercise.id}: the values set make the answer of "
+                                   f"{', '.join(broken)} non-finite (--force shows them)")
     data = variant.to_json()
-    result = {"params": data["params"], "answers": data["answers"]}
+    result = {"params": data["params"], "answers": data["answers"],
+              "units": {part.name: part.unit for part in exercise.parts}}
     if as_json:
         click.echo(json.dumps(result, indent=2, ensure_ascii=False))
         return
@@ -222,42 +232,61 @@ def compare(context, source):
               help="With --manifest: the folder for grades.csv, feedback and report.html.")
 @click.option("--jobs", type=click.IntRange(1), default=None,
               help="With --manifest: worker processes (default: up to 2).")
+@click.option("--strict", is_flag=True,
+              help="With --manifest: exit 1 when any submission was skipped (corrupt, "
+                   "foreign, impersonating) or any part could not be graded; the "
+                   "gradebook is written all the same.")
 @click.pass_obj
-def grade_command(context, files, as_json, manifest, output, jobs):
-    """Grade filled-in exercise files (never executing them); with --manifest, a class."""
+def grade_command(context, files, as_json, manifest, output, jobs, strict):
+    """Grade filled-in exercise files (never executing them); with --manifest, a class.
+
+    A class is always graded whole: a bad file or a part that cannot be graded is
+    reported and costs only itself. The exit status is non-zero only when nothing could
+    be graded (a bad manifest, a missing exercise, an unwritable folder) or, with
+    --strict, when something was reported as an error."""
     if manifest is None:
-        if output is not None or jobs is not None:
-            raise click.UsageError("-o/--output and --jobs need --manifest")
+        if output is not None or jobs is not None or strict:
+            raise click.UsageError("-o/--output, --jobs and --strict need --manifest")
         for file in files:
             if Path(file).is_dir():
                 raise click.BadParameter(f"File {file!r} is a directory.",
                                          param_hint="'FILES...'")
         _grade_files(context, files, as_json)
         return
-    _grade_class(context, manifest, files, output, jobs, as_json)
+    _grade_class(context, manifest, files, output, jobs, as_json, strict)
 
 
 @main.command()
 @click.argument("exam_file", type=click.Path(exists=True, dir_okay=False))
 @click.option("--roster", required=True, type=click.Path(exists=True, dir_okay=False),
-              help="CSV with the header student_id,name[,email].")
+              help="CSV with the header student_id,name[,email], or as Excel, Moodle "
+                   "or Canvas save it (see docs/exams.md).")
 @click.option("-o", "--output", required=True, type=click.Path(file_okay=False),
               help="The folder to write the exam into.")
 @click.option("--jobs", type=click.IntRange(1), default=None,
               help="Worker processes (default: up to 2).")
 @click.option("--no-pdf", is_flag=True, help="Skip the PDFs (faster drafts).")
+@click.option("--secret-file", type=click.Path(dir_okay=False),
+              help="Read the exam's secret from this file (created with a new random "
+                   "secret when missing): the same secret gives the same variants and "
+                   "byte-identical files. Default: a new random secret every run.")
 @click.option("--solutions", is_flag=True,
               help="Write each student's worked solutions (students/<id>/solution.*) and "
                    "solutions.pdf with all of them, for the staff.")
 @click.pass_obj
-def exam(context, exam_file, roster, output, jobs, no_pdf, solutions):
+def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file, solutions):
     """Generate an exam: every student's variants, sheets, keys, Moodle XML, manifest."""
     from .exam.generate import generate_exam
+    from .exam.secret import load_secret
     from .render.terminal import progress_reporter
 
+    secret = load_secret(secret_file) if secret_file else None
     with progress_reporter() as progress:
         report = generate_exam(exam_file, roster, output, bank=context.bank, jobs=jobs,
-                               pdf=not no_pdf, progress=progress, solutions=solutions)
+                               pdf=not no_pdf, progress=progress, secret=secret,
+                               solutions=solutions)
+    for warning in report.warnings:
+        click.echo(f"notice: {warning}", err=True)
     click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
                f"({report.redraws} draws replaced because they could not discriminate; see "
                f"manifest.json) in {report.timings['total']:.1f} s", err=True)
@@ -281,8 +310,8 @@ def grade_main(file, as_json, solution, folders):
 
 
 def _grade_files(context, files, as_json, solution=False):
-    from .exercise.scoring import grade_variant
-    from .exercise.seeds import student_seed
+    """Grade practice and homework files; an exam's file (it carries a variant token)
+    gets the key-free self-check only (and no solution: its variant is the staff's)."""
     from .exercise.sheet import read_sheet
 
     results = []
@@ -291,31 +320,60 @@ def _grade_files(context, files, as_json, solution=False):
         exercise = context.exercise(sheet.exercise_id)
         notes = [f"{file}: no part named {name!r} in {exercise.id}; it was ignored"
                  for name in sheet.answers if name not in {p.name for p in exercise.parts}]
-        if sheet.student and sheet.seed != student_seed(exercise.id, sheet.student):
-            notes.append(f"{file}: SEED {sheet.seed} is not the variant of student "
-                         f"{sheet.student!r}; graded the variant of SEED {sheet.seed}")
+        notes += [f"{file}: {note}" for note in sheet.notes]
         for note in notes:
             click.echo(f"warning: {note}", err=True)
-        variant = exercise.variant(sheet.seed)
-        result = grade_variant(exercise, variant, sheet.answers, sheet.problems)
-        results.append((exercise, variant, result))
+        if sheet.is_exam:
+            results.append((exercise, None, _self_check(exercise, sheet)))
+        else:
+            results.append((exercise, *_full_verdicts(file, exercise, sheet)))
     if as_json:
-        data = [r.to_json() for _, _, r in results]
+        data = [r if isinstance(r, dict) else r.to_json() for _, _, r in results]
         if solution:
             for entry, (exercise, variant, _) in zip(data, results):
-                entry["solution"] = _solution(exercise, variant)
+                if variant is not None:
+                    entry["solution"] = _solution(exercise, variant)
         click.echo(json.dumps(data[0] if len(data) == 1 else data, indent=2,
                               ensure_ascii=False))
         return
     from .render.terminal import result_table, solution_panel
 
     for exercise, variant, result in results:
+        if isinstance(result, dict):
+            _print_self_check(result)
+            continue
         result_table(exercise, result)
         if solution:
             solution_panel(exercise, variant, _solution(exercise, variant))
 
 
-def _grade_class(context, manifest, files, output, jobs, as_json):
+def _full_verdicts(file, exercise, sheet):
+    """The variant of a practice or homework file (it is public) and the verdicts."""
+    from .exercise.scoring import grade_variant
+    from .exercise.seeds import student_seed
+
+    if sheet.student and not sheet.exam_id and \
+            sheet.seed != student_seed(exercise.id, sheet.student):
+        click.echo(f"warning: {file}: this is not the practice variant of student "
+                   f"{sheet.student!r}; graded the variant the file names", err=True)
+    variant = exercise.variant(sheet.seed)
+    return variant, grade_variant(exercise, variant, sheet.answers, sheet.problems)
+
+
+def _self_check(exercise, sheet) -> dict:
+    from .exercise.selfcheck import self_check_json
+
+    return self_check_json(exercise, sheet)
+
+
+def _print_self_check(checked: dict) -> None:
+    click.echo(f"{checked['exercise']}: {checked['message']}")
+    for part in checked["parts"]:
+        mark = "readable" if part["readable"] else "NOT READABLE"
+        click.echo(f"  {part['name']}: {mark}: {part['message']}")
+
+
+def _grade_class(context, manifest, files, output, jobs, as_json, strict):
     from .exam.classgrade import grade_class
     from .render.terminal import progress_reporter
 
@@ -326,18 +384,24 @@ def _grade_class(context, manifest, files, output, jobs, as_json):
         click.echo(f"{problem.level}: {problem.source}: {problem.message}", err=True)
     if as_json:
         click.echo(json.dumps(outcome.summary(), indent=2, ensure_ascii=False))
-        return
-    from .render.terminal import gradebook_table
+    else:
+        from .render.terminal import gradebook_table
 
-    gradebook_table(outcome)
+        gradebook_table(outcome)
     if output:
-        click.echo(f"wrote {output}: grades.csv, feedback/, report.html", err=True)
+        click.echo(f"wrote {output}: grades.csv, problems.csv, feedback/, report.html",
+                   err=True)
+    errors = sum(p.level == "error" for p in outcome.problems)
+    if strict and errors:
+        click.echo(f"--strict: {errors} problem(s) reported as errors", err=True)
+        sys.exit(1)
 
 
 # -- helpers -----------------------------------------------------------------------------
 
 
-def _variant(exercise, seed, student, settings):
+def _variant(exercise, seed, student, settings, force=False):
+    from .exam.spec import domain_problem
     from .exercise.seeds import student_seed
 
     if seed is not None and student is not None:
@@ -345,7 +409,19 @@ def _variant(exercise, seed, student, settings):
     if student is not None:
         seed = student_seed(exercise.id, student)
     overrides = _parse_settings(exercise, settings)
-    variant = exercise.variant(seed or 0, overrides, strict=not overrides)
+    for name, value in overrides.items():
+        outside = domain_problem(exercise.parameter(name), value)
+        if outside and not force:
+            raise click.BadParameter(f"{name}: {outside}"
+                                     + (" (--force computes anyway)" if force is not None
+                                        else ""), param_hint="--set")
+    try:
+        variant = exercise.variant(seed or 0, overrides, strict=not overrides)
+    except (ArithmeticError, ValueError) as error:
+        if isinstance(error, DynagradeError):
+            raise
+        raise click.ClickException(f"{exercise.id}: cannot be solved with these values "
+                                   f"({type(error).__name__}: {error})") from None
     for warning in variant.warnings:
         click.echo(f"warning: the values set break the constraint '{warning}'", err=True)
     return variant

@@ -1,17 +1,22 @@
 """Grading a class against an exam manifest.
 
 Every roster student gets a row in the gradebook; a student with no submission is
-``absent`` with 0 points. Each submitted exercise is graded against the reference answers
+``absent`` with 0 points, one whose files could none be graded (corrupt, foreign,
+impersonating) is ``rejected``. Faults stay where they happen: a part whose grading
+fails is that part's ``error`` (0 points, the message in the feedback and problems.csv)
+and the run goes on. Each submitted exercise is graded against the reference answers
 *stored in the manifest* (never recomputed, so a later numpy or an edited exercise cannot
 change a student's numbers); the exercise file supplies only the parts' grading rules
 (tolerances, units, misconceptions). Part points are those of the manifest, scaled so
 that an exercise's parts sum to its points in the exam.
 
-Outputs (each written atomically, the gradebook last)::
+Outputs (built in a staging folder and swapped in whole, :mod:`.outputs`)::
 
     grades.csv        student_id, <one column per exercise id: points earned>, total,
-                      max_total, percent, status (graded / incomplete / absent)
-    problems.csv      every submission that was skipped or replaced, and why
+                      max_total, percent, status (graded / incomplete / rejected /
+                      absent)
+    problems.csv      every submission that was skipped or replaced, every part whose
+                      grading failed, and why
     feedback/<student_id>.md, feedback/<student_id>.html
     report.html       score histogram, difficulty and discrimination per part, common
                       wrong answers and the misconceptions they matched
@@ -31,8 +36,10 @@ from ..errors import UnknownExercise
 from ..exercise.loader import Bank, open_bank
 from ..exercise.model import Exercise, Variant
 from ..exercise.numbers import GRADEBOOK_DECIMALS, points_text
-from ..exercise.scoring import grade_variant
+from ..exercise.scoring import grade_variant, graded_error
+from ..grading import prepare
 from .files import write_atomic
+from .outputs import staging_folder, swap_in
 from .run import GradingRun, file_sha256
 from .policy import Policy
 from .solution_policy import with_feedback
@@ -42,7 +49,7 @@ from .stats import part_statistics
 from .submissions import Problem, Submission, collect
 from .workers import Pool, default_jobs
 
-GRADE_STATUSES = ("graded", "incomplete", "absent")
+GRADE_STATUSES = ("graded", "incomplete", "rejected", "absent")
 
 
 @dataclass
@@ -104,9 +111,7 @@ def grade_student(student: StudentEntry, manifest_parts: dict[str, tuple[PartEnt
             results[exercise_id] = None
             continue
         exercise = exercises[exercise_id]
-        result = grade_variant(exercise, stored_variant(exercise, entry),
-                               submission.answers, submission.problems)
-        by_name = {p.name: p for p in result.parts}
+        by_name = _verdicts(exercise, entry, submission)
         graded_parts = []
         for part in parts:
             verdict = by_name[part.name]
@@ -121,6 +126,18 @@ def grade_student(student: StudentEntry, manifest_parts: dict[str, tuple[PartEnt
         results[exercise_id] = {"source": submission.source, "parts": graded_parts,
                                 "score": round(sum(p["score"] for p in graded_parts), 6)}
     return results
+
+
+def _verdicts(exercise: Exercise, entry: VariantEntry, submission: Submission) -> dict:
+    """Each part's verdict by name; when the exercise cannot be graded at all (its
+    grading rules fail on the stored variant), every part is that error."""
+    try:
+        result = grade_variant(exercise, stored_variant(exercise, entry),
+                               submission.answers, submission.problems)
+    except Exception as error:  # noqa: BLE001 - one exercise's failure stays its own
+        return {part.name: graded_error(part, submission.answers.get(part.name), error)
+                for part in exercise.parts}
+    return {p.name: p for p in result.parts}
 
 
 def _grade_one(run: GradingRun, work: tuple[StudentEntry, dict[str, Submission]]) -> dict:
@@ -152,7 +169,9 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
         _add_solutions(outcome, manifest, exercises)
     if out_dir is not None:
         stage = time.perf_counter()
-        write_outputs(outcome, manifest, Path(out_dir), progress)
+        staging = staging_folder(out_dir)
+        write_outputs(outcome, manifest, staging, progress)
+        swap_in(staging, out_dir)
         timings["outputs"] = time.perf_counter() - stage
     timings["total"] = time.perf_counter() - started
     return outcome
@@ -164,10 +183,15 @@ def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
     exercise_ids = manifest.exercise_ids
     max_total = sum(float(e.points) for e in manifest.exercises)
     rows, analysed, feedback = [], [], {}
+    rejected = rejected_files(problems)
+    problems += part_errors(manifest, graded)
     for student, results in zip(manifest.students, graded):
-        row = gradebook_row(student.student_id, results, exercise_ids, max_total)
+        handed_in = rejected.get(student.student_id, {})
+        row = gradebook_row(student.student_id, results, exercise_ids, max_total,
+                            bool(handed_in))
         rows.append(row)
-        feedback[student.student_id] = {"student": student, "results": results, "row": row}
+        feedback[student.student_id] = {"student": student, "results": results, "row": row,
+                                        "rejected": handed_in}
         submitted = [e for e in exercise_ids if results[e] is not None]
         if submitted:
             analysed.append({"total": row["total"], "parts": {
@@ -175,6 +199,32 @@ def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
     ordered_parts = [(e.id, p) for e in manifest.exercises for p in e.parts]
     return ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
                         part_statistics(ordered_parts, analysed), feedback, timings)
+
+
+def part_errors(manifest: Manifest, graded: list[dict]) -> list[Problem]:
+    """A problem for every part whose grading failed, with the failure's message."""
+    found = []
+    for student, results in zip(manifest.students, graded):
+        for exercise_id, result in results.items():
+            for part in (result or {}).get("parts", ()):
+                if part["status"] == "error":
+                    found.append(Problem("error", result["source"],
+                                         f"part {part['name']}: {part['feedback']}",
+                                         student.student_id, exercise_id))
+    return found
+
+
+def rejected_files(problems: list[Problem]) -> dict[str, dict[str, list[str]]]:
+    """Per student and exercise, why the files they handed in were not graded (the
+    feedback says so instead of "Not submitted")."""
+    rejected: dict[str, dict[str, list[str]]] = {}
+    for problem in problems:
+        if problem.level == "error" and problem.handed_in_by and problem.student_id \
+                and problem.exercise_id:
+            name = Path(problem.source.split(", row ")[0]).name
+            rejected.setdefault(problem.student_id, {}).setdefault(
+                problem.exercise_id, []).append(f"{name}: {problem.message}")
+    return rejected
 
 
 def _add_solutions(outcome: ClassOutcome, manifest: Manifest,
@@ -191,15 +241,17 @@ def _add_solutions(outcome: ClassOutcome, manifest: Manifest,
 
 
 def gradebook_row(student_id: str, results: dict, exercise_ids: list[str],
-                  max_total: float) -> dict:
+                  max_total: float, handed_in: bool = False) -> dict:
     """A student's row: points per exercise (0 when not submitted), total, percent and
-    status (absent: nothing submitted; incomplete: some exercises missing)."""
+    status (absent: nothing submitted; rejected: files handed in but none could be
+    graded; incomplete: some exercises missing)."""
     row = {"student_id": student_id}
     for exercise_id in exercise_ids:
         row[exercise_id] = results[exercise_id]["score"] if results[exercise_id] else 0.0
     submitted = [e for e in exercise_ids if results[e] is not None]
     total = round(sum(row[e] for e in exercise_ids), 6)
-    status = ("absent" if not submitted else
+    status = ("rejected" if not submitted and handed_in else
+              "absent" if not submitted else
               "graded" if len(submitted) == len(exercise_ids) else "incomplete")
     row.update(total=total, max_total=max_total,
                percent=round(100.0 * total / max_total, 2) if max_total else 0.0,
@@ -212,6 +264,7 @@ def _run(work, manifest_parts, exercises, jobs, progress) -> list[dict]:
     a larger one in worker processes (in chunks, so that progress moves)."""
     jobs = default_jobs(jobs) if len(work) >= 40 else 1
     size = max(1, len(work) // (jobs * 8))
+    prepare()  # before any verdict's time budget starts (forked workers inherit it)
     results = []
     with Pool(GradingRun(exercises, manifest_parts), jobs) as pool:
         for done, result in enumerate(pool.map(_grade_one, work, chunksize=size), 1):

@@ -18,25 +18,29 @@ Output folder::
 This module is the driver: it loads the exam into a run (:mod:`.run`), has each
 student's work done in a pool of processes (:mod:`.student`, :mod:`.workers`), then
 writes the keys, the Moodle export, the printing PDF and the manifest. Results are put
-together in roster order, so the files do not depend on the pool. Every file is written
-atomically and the manifest last: a folder with a manifest holds a whole exam.
+together in roster order, so the files do not depend on the pool. Everything is built in
+a staging folder beside the output folder and swapped in when complete
+(:mod:`.outputs`): the output folder holds exactly one whole exam, the one before it is
+kept as ``OUT.previous``.
 """
 
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Callable
 
 from .. import __name__ as _package
 from ..exercise.loader import Bank, open_bank
 from ..exercise.model import ConstraintError, Exercise
+from ..exercise.seeds import new_secret
 from ..render.pdf import embedded_pages_source
 from ..render.sheets import typst_preamble
 from .files import write_atomic
 from .manifest import (ExamEntry, ExerciseEntry, Generator, Manifest, PartEntry,
                        StudentEntry, dump)
+from .outputs import staging_folder, swap_in
 from .run import GenerationRun, file_sha256
 from .solutions import solutions_title
 from .spec import ExamSpec, ExamSpecError, Student, read_exam_spec, read_roster
@@ -63,13 +67,19 @@ class GenerationReport:
 def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
                   jobs: int | None = None, pdf: bool = True,
                   progress: Progress | None = None,
+                  secret: str | None = None,
                   solutions: bool = False) -> GenerationReport:
-    """Write the whole exam into ``out_dir`` (see the module docstring)."""
+    """Write the whole exam into ``out_dir`` (see the module docstring); ``secret`` keys
+    the students' variants (a fresh random one when None, :mod:`.secret`)."""
     started = time.perf_counter()
     progress = progress or (lambda stage, done, total: None)
-    run, roster = open_run(exam_path, roster_path, Path(out_dir), bank, pdf)
+    target = Path(out_dir)
+    notices: list[str] = []
+    run, roster = open_run(exam_path, roster_path, target, bank, pdf, notices,
+                           secret or new_secret())
     run.solutions = solutions
-    report = GenerationReport(run.out_dir, len(roster), len(roster) * len(run.spec.exercises), 0)
+    report = GenerationReport(target, len(roster), len(roster) * len(run.spec.exercises), 0,
+                              warnings=notices)
     report.timings["load"] = time.perf_counter() - started
     with Pool(run, default_jobs(jobs)) as pool:
         stage = time.perf_counter()
@@ -84,6 +94,7 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
             _write_printing_pdfs(run, pool, manifest, roster, results, progress)
         report.timings["keys, moodle, combined PDFs"] = time.perf_counter() - stage
     dump(manifest, run.out_dir / "manifest.json")
+    report.out_dir = swap_in(run.out_dir, target)
     report.timings["total"] = time.perf_counter() - started
     return report
 
@@ -91,35 +102,62 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
 # -- the steps ----------------------------------------------------------------------------
 
 
-def load_exam(exam_path, roster_path, bank: Bank | None = None):
-    """The exam spec, the roster and the exercises by id; errors as :class:`ExamSpecError`."""
+def load_exam(exam_path, roster_path, bank: Bank | None = None,
+              notices: list[str] | None = None):
+    """The exam spec, the roster and the exercises by id; errors as :class:`ExamSpecError`;
+    notices (a roster's ignored columns) are appended to ``notices``."""
     bank = bank or open_bank()
     spec = read_exam_spec(exam_path, bank.get)
-    roster = read_roster(roster_path)
+    roster = read_roster(roster_path, notices)
     exercises = {item.id: bank.get(item.id) for item in spec.exercises}
     _check_set_values(spec, exercises)
     return spec, roster, exercises
 
 
 def _check_set_values(spec: ExamSpec, exercises: dict[str, Exercise]) -> None:
-    """The values an exam sets (``[exercise.set]``) must leave the constraints satisfiable."""
+    """The values an exam sets (``[exercise.set]``) must leave the constraints satisfiable
+    and give finite reference answers."""
     for item in spec.exercises:
         if item.set:
+            at = f"{spec.path}, line {item.line}, [[exercise]] {item.id}, field 'set'"
             try:
                 exercises[item.id].draw(0, item.set)
+                variant = exercises[item.id].variant(0, item.set)
             except ConstraintError as error:
-                raise ExamSpecError(f"{spec.path}, line {item.line}, [[exercise]] {item.id}, "
-                                    f"field 'set': the values set break a constraint: "
+                raise ExamSpecError(f"{at}: the values set break a constraint: "
                                     f"{error}") from None
+            except (ArithmeticError, ValueError) as error:
+                raise ExamSpecError(f"{at}: the exercise cannot be solved with the values "
+                                    f"set ({type(error).__name__}: {error})") from None
+            broken = non_finite_answers(variant.answers)
+            if broken:
+                raise ExamSpecError(f"{at}: the values set make the reference answer of "
+                                    f"{', '.join(broken)} non-finite")
 
 
-def open_run(exam_path, roster_path, out: Path, bank: Bank | None,
-             pdf: bool) -> tuple[GenerationRun, list[Student]]:
-    """The generation's run (spec, exercises, scaled parts, caches) and the roster."""
-    spec, roster, exercises = load_exam(exam_path, roster_path, bank)
+def non_finite_answers(answers) -> list[str]:
+    """The parts whose numeric reference answer (or a component of it) is not finite."""
+    import math
+
+    def finite(value) -> bool:
+        if isinstance(value, (tuple, list)):
+            return all(finite(v) for v in value)
+        return not isinstance(value, float) or math.isfinite(value)
+
+    return [name for name, value in answers.items() if not finite(value)]
+
+
+def open_run(exam_path, roster_path, target: Path, bank: Bank | None, pdf: bool,
+             notices: list[str] | None = None,
+             secret: str = "") -> tuple[GenerationRun, list[Student]]:
+    """The generation's run (spec with its secret, exercises, scaled parts, caches) and
+    the roster; once the exam reads well, the run writes into a fresh staging folder for
+    ``target``."""
+    spec, roster, exercises = load_exam(exam_path, roster_path, bank, notices)
+    spec = replace(spec, secret=secret)
     parts = {item.id: exercise_parts(exercises[item.id], item.points)
              for item in spec.exercises}
-    return GenerationRun(spec, exercises, parts, out, pdf), roster
+    return GenerationRun(spec, exercises, parts, staging_folder(target), pdf), roster
 
 
 def exercise_parts(exercise: Exercise, points: float) -> tuple[PartEntry, ...]:
@@ -208,7 +246,7 @@ def build_manifest(spec: ExamSpec, exercises: dict[str, Exercise],
         for item in spec.exercises)
     exam = ExamEntry(spec.id, spec.title, spec.date, spec.instructions, spec.total_points,
                      spec.policy.to_json() if spec.policy != type(spec.policy)() else None,
-                     language=spec.language)
+                     language=spec.language, secret=spec.secret or None)
     return Manifest(Generator(_version(), numpy.__version__), exam, described,
                     tuple(students))
 

@@ -15,7 +15,8 @@ Usage::
 Shape (``docs/exams.md`` shows a whole file)::
 
     Manifest        format, version, generator, exam, exercises[], students[]
-    ExamEntry       id, title, date, instructions, [policy], [language], points
+    ExamEntry       id, title, date, instructions, [policy], [language], points,
+                    [secret]
     ExerciseEntry   id, title, source, points, set, file, sha256, parts[]
     PartEntry       name, label, kind, unit, points, and the settings its kind
                     stores (``Part.manifest_fields``: rtol/atol, size, options/multiple)
@@ -142,7 +143,9 @@ class ExamEntry:
     """The exam itself: id, title, ISO date, instructions and its total points.
 
     ``policy`` (optional, written only when set) holds how a server delivers the exam,
-    as ``exam.toml`` declared it; this module keeps it as the JSON object it is."""
+    as ``exam.toml`` declared it; this module keeps it as the JSON object it is.
+    ``secret`` (optional: manifests written before exams had secrets lack it) keys the
+    students' seeds and variant tokens (:mod:`dynagrade.exercise.seeds`)."""
 
     id: str
     title: str
@@ -151,6 +154,7 @@ class ExamEntry:
     points: float
     policy: Mapping[str, Any] | None = None
     language: str = "en"  # written only when not "en"
+    secret: str | None = None
 
 
 @dataclass(frozen=True)
@@ -209,6 +213,8 @@ def _exam_dict(exam: ExamEntry) -> dict:
     if exam.language != "en":
         entry["language"] = exam.language
     entry["points"] = exam.points
+    if exam.secret is not None:
+        entry["secret"] = exam.secret
     return entry
 
 
@@ -284,7 +290,8 @@ def from_dict(data: Any) -> Manifest:
         exam=ExamEntry(exam.string("id"), exam.string("title"), exam.string("date"),
                        exam.string("instructions"), exam.number("points"),
                        exam.mapping("policy", optional=True),
-                       exam.string("language") if "language" in exam.data else "en"),
+                       exam.string("language") if "language" in exam.data else "en",
+                       exam.string("secret") if "secret" in exam.data else None),
         exercises=tuple(_exercise(item) for item in root.objects("exercises")),
         students=tuple(_student(item) for item in root.objects("students")),
         version=version)

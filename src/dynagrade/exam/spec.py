@@ -18,8 +18,8 @@
     [exercise.set]                   # optional: fixed values, in the parameter's unit
     R = 5.0
 
-The roster: a UTF-8 CSV (no byte-order mark) with the header ``student_id,name`` or
-``student_id,name,email``, one student per row.
+The roster: a CSV with the header ``student_id,name`` or ``student_id,name,email``, one
+student per row, or as Excel, Moodle and Canvas save it (:mod:`.roster`).
 
 Every error names the file, and the line and field (or row and column) at fault.
 """
@@ -27,9 +27,7 @@ Every error names the file, and the line and field (or row and column) at fault.
 from __future__ import annotations
 
 import contextlib
-import csv
 import datetime as dt
-import io
 import math
 import re
 import tomllib
@@ -38,14 +36,15 @@ from pathlib import Path
 from typing import Callable
 
 from ..errors import DynagradeError
+from . import roster
 from .policy import POLICY_KEYS, Policy, PolicyError, read_policy
+from .roster import Student
 
-_EXAM_ID = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
-_STUDENT_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]*$")
+_EXAM_ID = re.compile(r"[a-z0-9]+(-[a-z0-9]+)*")  # fullmatch: `$` would take "x\n"
+MAX_POINTS = 1000.0  # more for one exercise is a typo, and sums must stay exact
 _TOP_KEYS = {"id", "title", "date", "instructions", "language", "exercise"} | POLICY_KEYS
-_LANGUAGE = re.compile(r"^[a-z]{2,3}(-[A-Za-z0-9]{2,8})*$")
+_LANGUAGE = re.compile(r"[a-z]{2,3}(-[A-Za-z0-9]{2,8})*")
 _EXERCISE_KEYS = {"id", "points", "set"}
-ROSTER_HEADERS = (("student_id", "name"), ("student_id", "name", "email"))
 
 
 class ExamSpecError(DynagradeError, ValueError):
@@ -74,6 +73,13 @@ class ExamSpec:
     path: str = ""
     policy: Policy = Policy()  # delivery by `dynagrade serve` (exam/policy.py)
     language: str = "en"  # a BCP 47 tag: HTML lang and the PDFs' language
+    secret: str = ""  # set by the generation; never on a sheet (not in to_json)
+
+    @property
+    def mode(self) -> str:
+        """"exam" (the default: fill-in files carry variant tokens, the self-check only
+        reads) or "homework"/"practice" (seeds, full verdicts)."""
+        return self.policy.mode
 
     @property
     def total_points(self) -> float:
@@ -81,19 +87,8 @@ class ExamSpec:
 
     def to_json(self) -> dict:
         return {"id": self.id, "title": self.title, "date": self.date,
-                "instructions": self.instructions, "language": self.language}
-
-
-@dataclass(frozen=True)
-class Student:
-    """A row of the roster."""
-
-    student_id: str
-    name: str
-    email: str = ""
-
-    def to_json(self) -> dict:
-        return {"student_id": self.student_id, "name": self.name, "email": self.email}
+                "instructions": self.instructions, "language": self.language,
+                "mode": self.mode}
 
 
 # -- exam.toml ----------------------------------------------------------------------------
@@ -133,14 +128,14 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
     if not isinstance(exam_id, str) or not exam_id:
         raise ExamSpecError(f"{where}: the top-level key 'id' (a kebab-case string) is "
                             "missing")
-    if not _EXAM_ID.match(exam_id):
+    if not _EXAM_ID.fullmatch(exam_id):
         raise ExamSpecError(f"{where}, line {_key_line(text, 'id')}, field 'id': {exam_id!r} "
                             "is not kebab-case (a-z, 0-9 and '-')")
     title = _string(data, "title", where, text, required=True)
     instructions = _string(data, "instructions", where, text, required=False)
     date = _date(data.get("date"), where, _key_line(text, "date"))
     language = data.get("language", "en")
-    if not isinstance(language, str) or not _LANGUAGE.match(language):
+    if not isinstance(language, str) or not _LANGUAGE.fullmatch(language):
         raise ExamSpecError(f"{where}, line {_key_line(text, 'language')}, field 'language': "
                             f"{language!r} is not a language tag; give e.g. \"en\" or \"de\"")
 
@@ -183,10 +178,10 @@ def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExe
             raise ExamSpecError(f"{at}, field 'id': {error}") from None
     points = table.get("points")
     if isinstance(points, bool) or not isinstance(points, (int, float)) \
-            or not math.isfinite(points) or points <= 0:
+            or not math.isfinite(points) or not 0 < points <= MAX_POINTS:
         raise ExamSpecError(f"{at} ({exercise_id}), field 'points': "
                             f"{'missing' if points is None else repr(points)}; "
-                            "give a positive number")
+                            f"give a positive number up to {MAX_POINTS:g}")
     overrides = table.get("set", {})
     if not isinstance(overrides, dict):
         raise ExamSpecError(f"{at} ({exercise_id}), field 'set': must be a table "
@@ -199,10 +194,13 @@ def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExe
                                 "a number (give it in the parameter's unit)")
         if exercise is not None:
             try:
-                exercise.parameter(name)
+                parameter = exercise.parameter(name)
             except DynagradeError as error:
                 raise ExamSpecError(f"{at} ({exercise_id}), field 'set.{name}': "
                                     f"{error}") from None
+            outside = domain_problem(parameter, float(value))
+            if outside:
+                raise ExamSpecError(f"{at} ({exercise_id}), field 'set.{name}': {outside}")
         values[name] = float(value)
     return ExamExercise(exercise_id, float(points), values, line)
 
@@ -246,63 +244,26 @@ def _key_line(text: str, key: str) -> str:
     return "?"
 
 
+def domain_problem(parameter, value: float) -> str:
+    """Why ``value`` (in the parameter's unit) cannot be set for ``parameter`` ("" when it
+    can): outside the parameter's physical domain (``g > 0``, ``0 ≤ e ≤ 1``, ...)."""
+    domain = getattr(parameter, "allowed", None)
+    if domain is None or value in domain:
+        return ""
+    return (f"{value:g} is outside the parameter's physical domain "
+            f"({domain.describe(parameter.name)})")
+
+
 # -- roster.csv ---------------------------------------------------------------------------
 
 
-def read_roster(path: str | Path) -> tuple[Student, ...]:
-    """The students of the roster at ``path``, in file order."""
-    path = Path(path)
-    try:
-        raw = path.read_bytes()
-    except OSError as error:
-        raise ExamSpecError(f"{path}: cannot read the roster ({error.strerror})") from None
-    return parse_roster(raw, str(path))
+def read_roster(path: str | Path, notices: list[str] | None = None) -> tuple[Student, ...]:
+    """The students of the roster at ``path`` (:mod:`.roster` says what is accepted);
+    notices about ignored columns are appended to ``notices``."""
+    return roster.read_roster(path, notices, ExamSpecError)
 
 
-def parse_roster(raw: bytes, where: str = "<roster>") -> tuple[Student, ...]:
+def parse_roster(raw: bytes, where: str = "<roster>",
+                 notices: list[str] | None = None) -> tuple[Student, ...]:
     """The students of a roster given as bytes; ``where`` names it in errors."""
-    if raw.startswith(b"\xef\xbb\xbf"):
-        raise ExamSpecError(f"{where}, row 1: the file starts with a byte-order mark (as "
-                            "Excel's 'CSV UTF-8' writes); save it as plain UTF-8 CSV")
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as error:
-        line = raw[:error.start].count(b"\n") + 1
-        raise ExamSpecError(f"{where}, row {line}: not UTF-8 text") from None
-    rows = list(csv.reader(io.StringIO(text, newline="")))
-    if not rows or not any(cell.strip() for cell in rows[0]):
-        raise ExamSpecError(f"{where}: the roster is empty; it needs the header "
-                            "student_id,name[,email] and one row per student")
-    header = tuple(cell.strip() for cell in rows[0])
-    if header not in ROSTER_HEADERS:
-        wrong = next((i for i, (got, want) in enumerate(zip(header, ROSTER_HEADERS[1]))
-                      if got != want), min(len(header), 3))
-        raise ExamSpecError(f"{where}, row 1, column {wrong + 1}: the header is "
-                            f"{','.join(header)!r}; it must be 'student_id,name' or "
-                            "'student_id,name,email'")
-    students: list[Student] = []
-    seen: dict[str, int] = {}
-    for number, row in enumerate(rows[1:], 2):
-        if not any(cell.strip() for cell in row):
-            continue
-        if len(row) != len(header):
-            raise ExamSpecError(f"{where}, row {number}: {len(row)} columns, the header has "
-                                f"{len(header)}")
-        cells = dict(zip(header, (cell.strip() for cell in row)))
-        student_id = cells["student_id"]
-        if not student_id:
-            raise ExamSpecError(f"{where}, row {number}, column 1 (student_id): missing")
-        if not _STUDENT_ID.match(student_id):
-            raise ExamSpecError(f"{where}, row {number}, column 1 (student_id): "
-                                f"{student_id!r} may hold only letters, digits, '.', '_' "
-                                "and '-' (it names the student's files)")
-        if student_id in seen:
-            raise ExamSpecError(f"{where}, row {number}, column 1 (student_id): "
-                                f"{student_id!r} is already on row {seen[student_id]}")
-        seen[student_id] = number
-        if not cells["name"]:
-            raise ExamSpecError(f"{where}, row {number}, column 2 (name): missing")
-        students.append(Student(student_id, cells["name"], cells.get("email", "")))
-    if not students:
-        raise ExamSpecError(f"{where}: the roster is empty (a header and no students)")
-    return tuple(students)
+    return roster.parse_roster(raw, where, notices, ExamSpecError)

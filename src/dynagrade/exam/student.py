@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..exercise.model import Exercise, Variant
+from ..exercise.seeds import variant_token
 from ..exercise.sheet import write_sheet
 from ..exercise.units import pretty_unit
 from ..render.pdf import ACCESSIBLE
@@ -39,7 +40,8 @@ def student_job(run: GenerationRun, student: Student) -> StudentResult:
     entries, sheet_exercises, solved = [], [], []
     for number, item in enumerate(run.spec.exercises, 1):
         exercise = run.exercises[item.id]
-        variant, redraws = exam_variant(exercise, run.spec.id, student.student_id, item.set,
+        variant, redraws = exam_variant(exercise, run.spec.secret, run.spec.id,
+                                        student.student_id, item.set,
                                         run.problems)
         entries.append(VariantEntry(exercise.id, variant.seed, variant.params,
                                     dict(variant.answers), redraws))
@@ -61,8 +63,11 @@ def _exercise_files(run: GenerationRun, student: Student, number: int, item: Exa
     folder = run.out_dir / "students" / student.student_id
     scaled = run.parts[exercise.id]
     fill_in = f"{exercise.id}.py"
+    token = (variant_token(run.spec.secret, run.spec.id, student.student_id, exercise.id,
+                           variant.seed) if run.spec.mode == "exam" else None)
     write_atomic(folder / fill_in, write_sheet(exercise, variant, student.student_id, fill_in,
-                                               {entry.name: entry.points for entry in scaled}))
+                                               {entry.name: entry.points for entry in scaled},
+                                               token=token, exam_id=run.spec.id))
     svg = run.figures(exercise, variant)
     figure_file = None
     if svg is not None:

@@ -1,24 +1,40 @@
 """Collecting a class's submissions for an exam, checking each against the manifest.
 
-A submission is a filled-in fill-in file (read with :mod:`ast`, never run), a folder of
-them (searched recursively for ``*.py`` and ``*.csv``) or a CSV file of responses with the header
-``student_id,exercise_id,part,answer``. Arguments are taken in command-line order and a
-folder's files in path order; when one student's exercise arrives twice, the later one
-wins and a warning says which file replaced which.
+A submission is a filled-in fill-in file (read with :mod:`ast`, never run) or a CSV file
+of responses with the header ``student_id,exercise_id,part,answer``, found in the folders
+and files given (folders are searched recursively for ``*.py`` and ``*.csv``).
+
+Whose it is comes from **where it was found**, never from what it says (see
+:mod:`.layouts`): a fill-in file belongs to the student whose folder holds it, and one
+whose ``STUDENT`` line names somebody else is rejected as impersonating and credited to
+nobody. A CSV in a student's folder may hold only that student's rows; a CSV outside any
+student's folder is the staff's own export and its ``student_id`` column is trusted.
+
+When one student's exercise arrives twice, the one modified last counts (path order
+breaks ties) and a warning names both files.
+
+Files are data: links are not followed out of the folder given, only regular files are
+read (size checked first), devices and FIFOs are reported, and a message never quotes a
+file's content beyond the fields dynagrade itself writes.
 
 Nothing here raises for a bad submission: corrupt files, sheets of another exam or
 another student's variant, exercises not in the exam and students not on the roster are
-reported as :class:`Problem` and skipped.
+reported as :class:`Problem` (naming the student and exercise wherever known) and skipped.
 """
 
 from __future__ import annotations
 
 import csv
 import io
+import os
+import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..exercise.sheet import MAX_SHEET_BYTES, SheetError, read_sheet
+from ..exercise.datafile import DataFileError, file_kind, read_data_file
+from ..exercise.seeds import token_matches, variant_token
+from ..exercise.sheet import MAX_SHEET_BYTES, Sheet, SheetError, read_sheet
+from .layouts import owner
 from .manifest import Manifest
 
 RESPONSE_HEADER = ("student_id", "exercise_id", "part", "answer")
@@ -34,6 +50,8 @@ class Problem:
     message: str
     student_id: str = ""
     exercise_id: str = ""
+    handed_in_by: bool = True  # False: student_id is only what the file claims
+
 
     def to_row(self) -> list[str]:
         return [self.level, self.source, self.student_id, self.exercise_id, self.message]
@@ -59,20 +77,83 @@ class _Exam:
                       for s in manifest.students for v in s.variants}
         self.parts = {e.id: [p.name for p in e.parts] for e in manifest.exercises}
         self.exam_id = manifest.exam.id
+        self.secret = manifest.exam.secret
+
+    def is_variant(self, sheet: Sheet, student_id: str) -> bool:
+        """Whether ``sheet`` is the variant the exam gave ``student_id``: its token
+        authenticates it (exam sheets), or its seed is the student's (others)."""
+        seed = self.seeds[(student_id, sheet.exercise_id)]
+        if sheet.token is not None:
+            return self.secret is not None and token_matches(sheet.token, variant_token(
+                self.secret, self.exam_id, student_id, sheet.exercise_id, seed))
+        return sheet.seed == seed
 
 
-def expand(paths) -> list[Path]:
-    """Files to read, in command-line order, each folder's ``*.py`` and ``*.csv`` files in
-    path order."""
-    files = []
-    for path in paths:
-        path = Path(path)
-        if path.is_dir():
-            files += sorted(p for p in path.rglob("*")
-                            if p.suffix.lower() in (".py", ".csv") and p.is_file()
-                            and "__pycache__" not in p.parts and not p.name.startswith("."))
+@dataclass(frozen=True)
+class Found:
+    """A file among the submissions: where, whose folder it was in, and its order."""
+
+    path: Path
+    owner: str | None
+    modified: int  # st_mtime_ns
+    order: int
+
+
+SUFFIXES = (".py", ".csv")
+
+
+def walk(paths, roster, problems: list[Problem]) -> list[Found]:
+    """Every submission file in ``paths`` with its owner (:mod:`.layouts`); what cannot be
+    a submission (a link out of the folder, a device, a FIFO) is reported."""
+    found: list[Found] = []
+    for argument in paths:
+        argument = Path(argument)
+        if argument.is_dir() and not argument.is_symlink():
+            for path in _folder_files(argument, problems):
+                parts = (argument.resolve().name, *path.relative_to(argument).parts)
+                found.append(_found(path, owner(parts, roster), len(found)))
         else:
-            files.append(path)
+            parts = (argument.absolute().parent.name, argument.name)
+            found.append(_found(argument, owner(parts, roster), len(found)))
+    return found
+
+
+def _found(path: Path, whose: str | None, order: int) -> Found:
+    try:
+        modified = os.stat(path).st_mtime_ns
+    except OSError:
+        modified = 0
+    return Found(path, whose, modified, order)
+
+
+def _folder_files(folder: Path, problems: list[Problem]) -> list[Path]:
+    """The regular ``*.py``/``*.csv`` files under ``folder`` in path order, and links that
+    stay inside it; every other kind of entry is reported."""
+    root = folder.resolve()
+    files = []
+    for directory, folders, names in os.walk(folder, followlinks=False):
+        folders[:] = sorted(f for f in folders if not f.startswith(".") and f != "__pycache__")
+        for name in folders:
+            if os.path.islink(os.path.join(directory, name)):
+                problems.append(Problem("error", os.path.join(directory, name),
+                                        "skipped: a link to a folder is not followed"))
+        for name in sorted(names):
+            path = Path(directory) / name
+            if name.startswith("."):
+                continue
+            mode = os.lstat(path).st_mode
+            if stat.S_ISLNK(mode):
+                target = path.resolve()
+                if not target.is_relative_to(root) or not target.is_file():
+                    problems.append(Problem("error", str(path), "skipped: a link to a file "
+                                            "outside the submissions folder is not followed"))
+                    continue
+            elif not stat.S_ISREG(mode):
+                problems.append(Problem("error", str(path), f"skipped: {file_kind(mode)} is "
+                                        "not a submission"))
+                continue
+            if path.suffix.lower() in SUFFIXES:
+                files.append(path)
     return files
 
 
@@ -80,91 +161,111 @@ def collect(paths, manifest: Manifest) -> tuple[dict[tuple[str, str], Submission
     """The submission that counts for each (student, exercise), and every problem found."""
     exam = _Exam(manifest)
     problems: list[Problem] = []
-    chosen: dict[tuple[str, str], Submission] = {}
-    for path in expand(paths):
-        if path.suffix.lower() == ".csv":
-            found = _read_responses(path, exam, problems)
+    accepted: dict[tuple[str, str], list[tuple[Found, Submission]]] = {}
+    for found in walk(paths, exam.students, problems):
+        if found.path.suffix.lower() == ".csv":
+            submissions = _read_responses(found, exam, problems)
         else:
-            found = _read_sheet(path, exam, problems)
-        for submission in found:
-            key = (submission.student_id, submission.exercise_id)
-            if key in chosen:
-                problems.append(Problem(
-                    "warning", submission.source,
-                    f"duplicate: replaces {chosen[key].source} for {submission.exercise_id} "
-                    "(the later submission counts)", *key))
-            chosen[key] = submission
+            submissions = _read_sheet(found, exam, problems)
+        for submission in submissions:
+            accepted.setdefault((submission.student_id, submission.exercise_id),
+                                []).append((found, submission))
+    chosen = {}
+    for key, candidates in accepted.items():
+        candidates.sort(key=lambda pair: (pair[0].modified, pair[0].order))
+        for (_, earlier), (_, later) in zip(candidates, candidates[1:]):
+            problems.append(Problem(
+                "warning", later.source,
+                f"duplicate: replaces {earlier.source} for {key[1]} (the one modified "
+                "last counts; path order breaks a tie)", *key))
+        chosen[key] = candidates[-1][1]
     return chosen, problems
 
 
-def _read_sheet(path: Path, exam: _Exam, problems: list[Problem]) -> list[Submission]:
+def _guess_exercise(path: Path, exam: _Exam) -> str:
+    """The exam exercise a file's name points to (``projectile-range.py``), or ""."""
+    return next((e for e in exam.parts if path.stem.endswith(e)), "")
+
+
+def _read_sheet(found: Found, exam: _Exam, problems: list[Problem]) -> list[Submission]:
+    path, whose = found.path, found.owner or ""
     source = str(path)
     try:
         sheet = read_sheet(path)
     except SheetError as error:
-        problems.append(Problem("error", source, f"corrupt, skipped: {error}"))
+        problems.append(Problem("error", source, "corrupt, skipped: "
+                                + _without_path(error, path), whose,
+                                _guess_exercise(path, exam)))
         return []
-    if not sheet.student:
-        problems.append(Problem("error", source, "skipped: the sheet names no STUDENT",
-                                exercise_id=sheet.exercise_id))
+    named = sheet.student or ""
+    exercise_id = sheet.exercise_id if sheet.exercise_id in exam.parts else ""
+    if not whose:
+        problems.append(Problem("error", source, "skipped: not in the folder of a student on "
+                                "the roster, so whose it is cannot be told (put each "
+                                "student's files in a folder named by their id)"
+                                + (f"; it names STUDENT {named!r}" if named else ""),
+                                named, exercise_id, handed_in_by=False))
         return []
-    if sheet.student not in exam.students:
-        problems.append(Problem("error", source, f"skipped: student {sheet.student!r} is not "
-                                "on the exam's roster", sheet.student, sheet.exercise_id))
+    if named and named != whose:
+        problems.append(Problem("error", source, f"impersonating, skipped: found in the "
+                                f"folder of {whose} but names STUDENT {named!r}; credited "
+                                "to nobody", whose, exercise_id))
         return []
-    if sheet.exercise_id not in exam.parts:
-        problems.append(Problem("error", source, f"foreign, skipped: exercise "
-                                f"{sheet.exercise_id!r} is not in exam {exam.exam_id!r}",
-                                sheet.student, sheet.exercise_id))
+    if not exercise_id:
+        problems.append(Problem("error", source, "foreign, skipped: its exercise is not in "
+                                f"exam {exam.exam_id!r}", whose))
         return []
-    expected_seed = exam.seeds[(sheet.student, sheet.exercise_id)]
-    if sheet.seed != expected_seed:
-        problems.append(Problem("error", source, f"foreign, skipped: SEED {sheet.seed} is not "
-                                f"the variant of {sheet.student} in exam {exam.exam_id!r} "
-                                f"(that is SEED {expected_seed}); a sheet of another exam "
-                                "or student?", sheet.student, sheet.exercise_id))
+    if not exam.is_variant(sheet, whose):
+        problems.append(Problem("error", source, f"foreign, skipped: not the variant of "
+                                f"{whose} in exam {exam.exam_id!r}; a sheet of another "
+                                "exam or student?", whose, exercise_id))
         return []
-    unknown = [n for n in sheet.answers if n not in exam.parts[sheet.exercise_id]]
+    for note in sheet.notes:
+        problems.append(Problem("warning", source, note, whose, exercise_id))
+    unknown = [n for n in sheet.answers if n not in exam.parts[exercise_id]]
     for name in unknown:
         problems.append(Problem("warning", source, f"no part named {name!r} in "
-                                f"{sheet.exercise_id}; ignored", sheet.student,
-                                sheet.exercise_id))
+                                f"{exercise_id}; ignored", whose, exercise_id))
     answers = {k: v for k, v in sheet.answers.items() if k not in unknown}
-    return [Submission(source, sheet.student, sheet.exercise_id, answers,
+    return [Submission(source, whose, exercise_id, answers,
                        {k: v for k, v in sheet.problems.items() if k not in unknown})]
 
 
-def _read_responses(path: Path, exam: _Exam, problems: list[Problem]) -> list[Submission]:
-    source = str(path)
+def _without_path(error: Exception, path: Path) -> str:
+    """An error's message without the path it starts with (the source column has it)."""
+    return str(error).removeprefix(f"{path}: ").removeprefix(f"{path}")
+
+
+def _read_responses(found: Found, exam: _Exam, problems: list[Problem]) -> list[Submission]:
+    source, whose = str(found.path), found.owner or ""
     try:
-        raw = path.read_bytes()
-    except OSError as error:
-        problems.append(Problem("error", source, f"cannot read, skipped: {error.strerror}"))
+        raw = read_data_file(found.path, MAX_CSV_BYTES)
+    except DataFileError as error:
+        problems.append(Problem("error", source, f"corrupt, skipped: {error}", whose))
         return []
-    if len(raw) > MAX_CSV_BYTES:
-        problems.append(Problem("error", source, "corrupt, skipped: too large"))
-        return []
-    if raw.startswith(b"\xef\xbb\xbf"):
-        raw = raw[3:]
-        problems.append(Problem("warning", source, "starts with a byte-order mark; read "
-                                "as UTF-8"))
     try:
-        text = raw.decode("utf-8")
+        text = raw.decode("utf-8-sig")
     except UnicodeDecodeError as error:
         row = raw[:error.start].count(b"\n") + 1
         problems.append(Problem("error", f"{source}, row {row}",
-                                "corrupt, skipped: not UTF-8 text"))
+                                "corrupt, skipped: not UTF-8 text", whose))
         return []
     try:
         rows = list(csv.reader(io.StringIO(text, newline="")))
-    except csv.Error as error:
-        problems.append(Problem("error", source, f"corrupt, skipped: {error}"))
+    except csv.Error:
+        problems.append(Problem("error", source, "corrupt, skipped: not a CSV file", whose))
         return []
     if not rows or tuple(c.strip() for c in rows[0]) != RESPONSE_HEADER:
-        got = ",".join(rows[0]) if rows else "nothing"
-        problems.append(Problem("error", f"{source}, row 1", f"corrupt, skipped: the header "
-                                f"is {got!r}, not {','.join(RESPONSE_HEADER)!r}"))
+        problems.append(Problem("error", f"{source}, row 1", "corrupt, skipped: not a "
+                                "responses file (its first row is not the header "
+                                f"{','.join(RESPONSE_HEADER)})", whose))
         return []
+    return _response_rows(source, rows, found.owner, exam, problems)
+
+
+def _response_rows(source: str, rows: list[list[str]], whose: str | None, exam: _Exam,
+                   problems: list[Problem]) -> list[Submission]:
+    """The submissions in a responses CSV's rows; in a student's folder, only theirs."""
     grouped: dict[tuple[str, str], Submission] = {}
     seen_rows: dict[tuple[str, str, str], int] = {}
     for number, row in enumerate(rows[1:], 2):
@@ -172,9 +273,15 @@ def _read_responses(path: Path, exam: _Exam, problems: list[Problem]) -> list[Su
         if not any(cell.strip() for cell in row):
             continue
         if len(row) != 4:
-            problems.append(Problem("error", where, f"skipped: {len(row)} columns, not 4"))
+            problems.append(Problem("error", where, f"skipped: {len(row)} columns, not 4",
+                                    whose or ""))
             continue
         student_id, exercise_id, part, answer = (cell.strip() for cell in row)
+        if whose and student_id != whose:
+            problems.append(Problem("error", where, f"impersonating, skipped: found in the "
+                                    f"folder of {whose} but names student {student_id!r}; "
+                                    "credited to nobody", whose, exercise_id))
+            continue
         if student_id not in exam.students:
             problems.append(Problem("error", where, f"skipped: student {student_id!r} is not "
                                     "on the exam's roster", student_id, exercise_id))

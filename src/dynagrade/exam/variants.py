@@ -1,10 +1,11 @@
-"""Choosing a student's variant of an exercise: seeded by (exam, student, exercise), and
-redrawn, deterministically, while the variant cannot tell right from wrong.
+"""Choosing a student's variant of an exercise: seeded by a keyed hash of (exam, student,
+exercise) with the exam's secret, and redrawn, deterministically, while the variant
+cannot tell right from wrong.
 
 A variant is handed out only when :func:`dynagrade.exercise.verify.variant_problems`
-finds nothing wrong with it. Otherwise the next seed is the stable hash of (exam,
-student, exercise, "redraw", attempt); the seeds tried and the reasons are kept for the
-manifest, so the choice can be checked and explained.
+finds nothing wrong with it. Otherwise the next seed is the keyed hash of (exam, student,
+exercise, "redraw", attempt); the seeds tried and the reasons are kept for the manifest,
+so the choice can be checked and explained (by whoever holds the secret).
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from typing import Callable, Mapping
 
 from ..errors import DynagradeError
 from ..exercise.model import ConstraintError, Exercise, Variant
-from ..exercise.seeds import exam_seed, stable_seed
+from ..exercise.seeds import exam_seed
 from ..exercise.verify import variant_problems
 from .manifest import Redraw
 
@@ -24,11 +25,6 @@ class NoUsableVariant(DynagradeError, RuntimeError):
     """Every seed tried gave a variant that cannot discriminate."""
 
 
-def attempt_seed(exam_id: str, student_id: str, exercise_id: str, attempt: int) -> int:
-    """The seed of the ``attempt``-th draw (0: the student's own exam seed)."""
-    if attempt == 0:
-        return exam_seed(exam_id, student_id, exercise_id)
-    return stable_seed("exam", exam_id, student_id, exercise_id, "redraw", str(attempt))
 
 
 def check_variant(exercise: Exercise, variant: Variant) -> tuple[str, ...]:
@@ -36,7 +32,7 @@ def check_variant(exercise: Exercise, variant: Variant) -> tuple[str, ...]:
     return tuple(variant_problems(exercise, variant))
 
 
-def exam_variant(exercise: Exercise, exam_id: str, student_id: str,
+def exam_variant(exercise: Exercise, secret: str, exam_id: str, student_id: str,
                  overrides: Mapping[str, float] | None = None,
                  problems: Callable[[Exercise, Variant], tuple[str, ...]] = check_variant,
                  ) -> tuple[Variant, tuple[Redraw, ...]]:
@@ -45,7 +41,7 @@ def exam_variant(exercise: Exercise, exam_id: str, student_id: str,
     (:attr:`dynagrade.exam.run.GenerationRun.problems`)."""
     redraws = []
     for attempt in range(MAX_ATTEMPTS):
-        seed = attempt_seed(exam_id, student_id, exercise.id, attempt)
+        seed = exam_seed(secret, exam_id, student_id, exercise.id, attempt)
         try:
             variant = exercise.variant(seed, overrides or None)
         except ConstraintError as error:

@@ -21,12 +21,66 @@ if TYPE_CHECKING:
 
 
 @dataclass(frozen=True)
+class Domain:
+    """The physically meaningful values of a parameter, e.g. ``g > 0`` or ``0 ≤ e ≤ 1``;
+    a value set by hand outside it is refused (it would give a variant with, say, a
+    negative flight time)."""
+
+    low: float = -math.inf
+    high: float = math.inf
+    low_open: bool = False
+    high_open: bool = False
+
+    def __contains__(self, value: float) -> bool:
+        above = value > self.low if self.low_open else value >= self.low
+        below = value < self.high if self.high_open else value <= self.high
+        return math.isfinite(value) and above and below
+
+    def describe(self, name: str) -> str:
+        """The domain as a condition on ``name``: "g > 0", "0 ≤ e ≤ 1"."""
+        low = f"{self.low:g} {'<' if self.low_open else '≤'} " if self.low > -math.inf else ""
+        high = f" {'<' if self.high_open else '≤'} {self.high:g}" if self.high < math.inf \
+            else ""
+        if not low and not high:
+            return f"{name} finite"
+        if low and not high:  # read "g > 0" rather than "0 < g"
+            return f"{name} {'>' if self.low_open else '≥'} {self.low:g}"
+        return f"{low}{name}{high}"
+
+
+POSITIVE = Domain(0.0, low_open=True)
+NON_NEGATIVE = Domain(0.0)
+UNIT_INTERVAL = Domain(0.0, 1.0)
+
+
+def conventional_domain(name: str, unit: str | None) -> Domain | None:
+    """The domain the course's conventions give a parameter that declares none: masses
+    (kg) and the gravitational acceleration ``g`` are positive, a coefficient of
+    restitution ``e`` (no unit) lies in [0, 1], friction coefficients ``mu...`` are not
+    negative."""
+    if unit == "kg" or (name == "g" and unit == "m/s^2"):
+        return POSITIVE
+    if name == "e" and unit is None:
+        return UNIT_INTERVAL
+    if name.startswith("mu") and unit is None:
+        return NON_NEGATIVE
+    return None
+
+
+@dataclass(frozen=True)
 class Parameter:
-    """What every parameter has: a name (an identifier), a unit and a printed symbol."""
+    """What every parameter has: a name (an identifier), a unit, a printed symbol and,
+    optionally, its physical domain (:class:`Domain`; else :func:`conventional_domain`)."""
 
     name: str
     unit: str | None = None
     symbol: str | None = None
+    domain: Domain | None = None
+
+    @property
+    def allowed(self) -> Domain | None:
+        """The domain a value set by hand must lie in (declared or conventional)."""
+        return self.domain or conventional_domain(self.name, self.unit)
 
     def __post_init__(self):
         if not self.name.isidentifier():
@@ -57,11 +111,11 @@ class Uniform(Parameter):
     high: float = 1.0
     step: float | None = None
 
-    def __init__(self, name, low, high, step=None, unit=None, symbol=None):
+    def __init__(self, name, low, high, step=None, unit=None, symbol=None, domain=None):
         object.__setattr__(self, "low", float(low))
         object.__setattr__(self, "high", float(high))
         object.__setattr__(self, "step", None if step is None else float(step))
-        super().__init__(name, unit, symbol)
+        super().__init__(name, unit, symbol, domain)
         if not self.low <= self.high:
             raise DefinitionError(f"parameter {name!r}: low {low} is above high {high}")
         if self.step is not None and self.step <= 0:
@@ -84,9 +138,9 @@ class Choice(Parameter):
 
     values: tuple = ()
 
-    def __init__(self, name, values, unit=None, symbol=None):
+    def __init__(self, name, values, unit=None, symbol=None, domain=None):
         object.__setattr__(self, "values", tuple(float(v) for v in values))
-        super().__init__(name, unit, symbol)
+        super().__init__(name, unit, symbol, domain)
         if not self.values:
             raise DefinitionError(f"parameter {name!r}: a Choice needs at least one value")
 
@@ -107,9 +161,9 @@ class Constant(Parameter):
 
     value: float = 0.0
 
-    def __init__(self, name, value, unit=None, symbol=None):
+    def __init__(self, name, value, unit=None, symbol=None, domain=None):
         object.__setattr__(self, "value", float(value))
-        super().__init__(name, unit, symbol)
+        super().__init__(name, unit, symbol, domain)
 
     def draw(self, rng):
         return self.value

@@ -24,7 +24,7 @@ class PartResult:
 
     name: str
     label: str
-    status: str  # "correct", "follow-through", "partial", "wrong", "not answered"
+    status: str  # "correct", "follow-through", "partial", "wrong", "not answered", "error"
     correct: bool
     score: float
     max_score: float
@@ -71,16 +71,33 @@ def grade_variant(exercise: Exercise, variant: Variant,
         elif text is None or not text.strip():
             results.append(_result(part, None, "not answered", 0.0, "not answered"))
         else:
-            verdict = grade(part.spec(params_si), variant.answers[part.name], text)
-            followed = None
-            if not verdict.correct and part.follows_through:
-                followed = _follow_through(exercise, part, variant, answers)
-            verdict = followed or verdict
-            status = ("correct" if verdict.correct else "follow-through" if followed
-                      else "partial" if verdict.score > 0 else "wrong")
-            results.append(_result(part, text, status, verdict.score, verdict.feedback,
-                                   verdict.misconception))
+            results.append(_graded_part(exercise, part, variant, answers, params_si, text))
     return Result(exercise.id, variant.seed, tuple(results))
+
+
+def _graded_part(exercise: Exercise, part: Part, variant: Variant,
+                 answers: Mapping[str, str | None], params_si, text: str) -> PartResult:
+    """The verdict on one answered part; a failure of grading itself is that part's
+    ``error`` (0 points, the message kept), never the end of the other parts' grading."""
+    try:
+        verdict = grade(part.spec(params_si), variant.answers[part.name], text)
+        followed = None
+        if not verdict.correct and part.follows_through:
+            followed = _follow_through(exercise, part, variant, answers)
+    except Exception as error:  # noqa: BLE001 - isolation is the point
+        return graded_error(part, text, error)
+    verdict = followed or verdict
+    status = ("correct" if verdict.correct else "follow-through" if followed
+              else "partial" if verdict.score > 0 else "wrong")
+    return _result(part, text, status, verdict.score, verdict.feedback, verdict.misconception)
+
+
+def graded_error(part: Part, text: str | None, error: BaseException) -> PartResult:
+    """The result of a part whose grading failed: status ``error`` with the message."""
+    message = str(error) or type(error).__name__
+    return _result(part, text, "error", 0.0,
+                   f"could not be graded ({type(error).__name__}: {message}); the course "
+                   "staff will look at it")
 
 
 def _follow_through(exercise: Exercise, part: Numeric, variant: Variant,

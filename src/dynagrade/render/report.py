@@ -48,6 +48,7 @@ def _feedback_context(exam, exercises, data) -> dict:
                               else NO_ANSWER})
         sections.append({"id": exercise_id, "title": described.title,
                          "points": described.points, "result": result, "parts": parts,
+                         "rejected": data.get("rejected", {}).get(exercise_id, []),
                          "solution": data.get("solutions", {}).get(exercise_id)})
     return {"exam": exam, "student": data["student"], "row": data["row"],
             "sections": sections}

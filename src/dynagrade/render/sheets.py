@@ -13,6 +13,8 @@ Usage::
 
 from __future__ import annotations
 
+import re
+
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -96,6 +98,7 @@ def _environment(kind: str) -> jinja2.Environment:
     environment = jinja2.Environment(**options)
     environment.filters.update({
         "points": points_phrase, "points_number": points_text, "number": format_number,
+        "md_text": markdown_text,
         "md_html": lambda text, offset=0: Markup(markdown_to_html(text, offset)),
         "inline_html": lambda text: Markup(inline_html(text)),
         "md_typst": markdown_to_typst, "inline_typst": inline_typst, "typst_text": typst_text,
@@ -104,6 +107,15 @@ def _environment(kind: str) -> jinja2.Environment:
         "figure_text": figure_text,
     })
     return environment
+
+
+_MARKDOWN_SPECIAL = re.compile(r"([\\`*_\[\]<>|~&#!])")
+
+
+def markdown_text(text: str) -> str:
+    """``text`` (a roster name, say) shown literally in Markdown: every character that
+    could start markup or HTML is backslash-escaped, line breaks become spaces."""
+    return _MARKDOWN_SPECIAL.sub(r"\\\1", " ".join(str(text).split()))
 
 
 def figure_text(svg: str) -> str:

@@ -31,10 +31,14 @@ def budget(parts: int) -> float:
 
 
 def _load(manifest_path: str, folders: tuple[str, ...]) -> None:
+    """Worker start: the exam, and what any answer may need (pint, the exact checks), so
+    that no student's verdict spends its time budget on imports."""
     from ..exercise.loader import open_bank
+    from ..grading import prepare
     from .exam_data import ExamData
 
     _EXAM["data"] = ExamData(manifest_path, open_bank(folders))
+    prepare()
 
 
 def _grade(student_id, exercise_id, answers, seed):
