@@ -61,6 +61,30 @@ The kinetic friction coefficient is $\\mu$ = {{ mu }}; $g$ = {{ g }}.
 3. Does the block eventually come to rest on the slope?
 4. Write the acceleration as a formula in $g$, $\\alpha$ and $\\mu$.
 """,
+    solution=r"""
+Take $x_1$ down the slope and $x_2$ normal to it. On the block act gravity $mg$, the normal
+force $N$ and kinetic friction $R = \mu N$, which points up the slope as long as the block
+slides down (eq. (1.74)).
+
+1. **Acceleration.** Linear momentum balance in the inclined frame, eq. (1.72):
+   $m\ddot x_1 = mg\sin\alpha - R$ and $0 = N - mg\cos\alpha$. With $R = \mu N$ the mass drops
+   out, eq. (1.73):
+   $\ddot x_1 = g(\sin\alpha - \mu\cos\alpha)$.
+   With $g$ = {{ g }}, $\alpha$ = {{ alpha }} and $\mu$ = {{ mu }}: $\ddot x_1$ = {{ answers.a }}.
+2. **Normal force.** From the balance normal to the slope, $N = mg\cos\alpha$ — only the
+   component of the weight across the slope presses on it. With $m$ = {{ m }}:
+   $N$ = {{ answers.N }}.
+3. **Does it stop?** The sign of $\sin\alpha - \mu\cos\alpha$ decides, i.e. whether
+   $\mu$ is larger than $\tan\alpha$.
+{%- if answers.stops == "yes" %}
+   Here $\mu$ = {{ mu }} is larger than $\tan\alpha$: the acceleration is negative, the block
+   slows down and comes to rest — **{{ answers.stops }}**.
+{%- else %}
+   Here $\mu$ = {{ mu }} is smaller than $\tan\alpha$: the acceleration is positive, the block
+   keeps speeding up and never comes to rest — **{{ answers.stops }}**.
+{%- endif %}
+4. **Formula.** $\ddot x_1$ = `{{ answers.a_formula }}`.
+""",
     solve=solve,
     figure=figure,
     parts=(

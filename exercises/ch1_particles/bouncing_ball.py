@@ -11,6 +11,7 @@ def solve(p):
     v_out = abs(impact.rebound_normal_velocity(v_in, p.e))
     return {
         "v_out": v_out,
+        "v_in": v_in,
         "h1": impact.rebound_height(p.h0, p.e),
         "dT": float(energy.particle_kinetic_energy(p.m, v_in) - energy.particle_kinetic_energy(p.m, v_out)),
         "h3": impact.rebound_height(p.h0, p.e, 3),
@@ -40,6 +41,23 @@ rigid floor. The coefficient of restitution is $e$ = {{ e }}; $g$ = {{ g }}, no 
 3. How much kinetic energy is lost in the first impact?
 4. How high does it rise after the third impact?
 5. Write the height after the first impact as a formula in $h_0$ and $e$.
+""",
+    solution=r"""
+Between impacts only gravity acts, so energy is conserved (eq. (1.102)); in an impact the
+floor reverses the normal velocity and scales it by the coefficient of restitution $e$.
+
+1. **Rebound speed.** Energy conservation on the way down, $\tfrac{1}{2} m v^2 = mgh_0$, gives the
+   impact speed $v = \sqrt{2gh_0}$ = {{ si.v_in }} m/s. The impact reverses it and multiplies
+   it by $e$ = {{ e }}: $v' = e\sqrt{2gh_0}$ = {{ answers.v_out }}.
+2. **First rebound height.** Energy conservation on the way up,
+   $h_1 = v'^2/(2g) = e^2 h_0$ = {{ answers.h1 }}: the height goes with the speed squared.
+3. **Energy lost.** The kinetic energy before the impact is $\tfrac{1}{2} m v^2 = mgh_0$ and
+   keeps the fraction $e^2$, so
+   $\Delta T = \tfrac{1}{2} m (v^2 - v'^2) = (1 - e^2)\, m g h_0$ = {{ answers.dT }}
+   (with $m$ = {{ m }}).
+4. **Third rebound.** Every impact multiplies the height by $e^2$, so after three impacts
+   $h_3 = e^6 h_0$ = {{ answers.h3 }}.
+5. **Formula.** $h_1$ = `{{ answers.h1_formula }}`.
 """,
     solve=solve,
     parts=(

@@ -17,6 +17,7 @@ def solve(p):
         "a_n": a_n,
         "a_abs": float(kinematics.acceleration_magnitude(p.at, a_n)),
         "phi": kinematics.angle_from_arc_length(s, p.R),
+        "s": s,
     }
 
 
@@ -46,6 +47,20 @@ At $t$ = {{ t }}:
 2. what is the normal (centripetal) component $v^2/\\rho$ of its acceleration?
 3. what is the magnitude of its acceleration?
 4. through what angle $\\varphi$ has it turned since $t = 0$ (in rad)?
+""",
+    solution=r"""
+Describe the motion along the path: arc length $s(t)$, tangent $e_t$ and normal $e_n$
+towards the centre. The acceleration is $a = \ddot s\, e_t + \frac{v^2}{\rho} e_n$
+(eq. (1.51)), and on a circle $\rho = R$ and $s = R\varphi$ (Example 1.6).
+
+1. **Speed.** $\ddot s$ is constant, so $v(t) = v_0 + \ddot s\, t$; with $v_0$ = {{ v0 }},
+   $\ddot s$ = {{ at }} and $t$ = {{ t }}: $v$ = {{ answers.v }}.
+2. **Normal acceleration.** $a_n = v^2/R$ with the speed *at time $t$* and $R$ = {{ R }}:
+   $a_n$ = {{ answers.a_n }}.
+3. **Magnitude.** $e_t$ and $e_n$ are perpendicular, so
+   $|a| = \sqrt{\ddot s^2 + (v^2/R)^2}$ = {{ answers.a_abs }}.
+4. **Angle turned.** The distance driven is $s = v_0 t + \tfrac{1}{2} \ddot s\, t^2$
+   = {{ si.s }} m, and $\varphi = s/R$ = {{ answers.phi }}.
 """,
     solve=solve,
     parts=(

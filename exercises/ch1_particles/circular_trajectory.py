@@ -21,6 +21,7 @@ def solve(p):
         "speed": kinematics.circular_speed(p.r, phidot),
         "a": tuple(a),
         "a_abs": float(np.linalg.norm(a)),
+        "phi": phi, "phidot": phidot, "phiddot": phiddot,
     }
 
 
@@ -59,6 +60,23 @@ At $t$ = {{ t }}:
 2. its speed;
 3. its acceleration $(a_1, a_2)$ in Cartesian components;
 4. the magnitude of its acceleration.
+""",
+    solution=r"""
+On a circle of fixed radius $r$ the position is $r(\cos\varphi, \sin\varphi)$ (eq. (1.18));
+differentiating once and twice in time gives velocity and acceleration (eqs. (1.19), (1.20)).
+First the angle and its rates at $t$ = {{ t }}, with $c$ = {{ c }}:
+$\varphi = c t^2$ = {{ si.phi }} rad, $\dot\varphi = 2ct$ = {{ si.phidot }} rad/s,
+$\ddot\varphi = 2c$ = {{ si.phiddot }} rad/s².
+
+1. **Velocity.** Eq. (1.19): $v = r\dot\varphi\,(-\sin\varphi, \cos\varphi)$; with
+   $r$ = {{ r }}: $v$ = {{ answers.v }}.
+2. **Speed.** $|v| = r\dot\varphi$ = {{ answers.speed }}.
+3. **Acceleration.** Eq. (1.20):
+   $a = -r\dot\varphi^2(\cos\varphi, \sin\varphi) + r\ddot\varphi\,(-\sin\varphi, \cos\varphi)$
+   — a centripetal part and, because $\ddot\varphi \neq 0$, a tangential part:
+   $a$ = {{ answers.a }}.
+4. **Magnitude.** The two parts are perpendicular, so
+   $|a| = r\sqrt{\dot\varphi^4 + \ddot\varphi^2}$ = {{ answers.a_abs }}.
 """,
     solve=solve,
     parts=(

@@ -36,6 +36,22 @@ counted). How many degrees of freedom does it have when it
 4. is attached to a fixed point O by an elastic spring?
 5. Which of these cases need a constraint (reaction) force to enforce the motion?
 """,
+    solution=r"""
+A particle in $d$ dimensions has $d$ degrees of freedom (eq. (1.2)); every kinematic
+constraint removes one, so with $k$ constraints it has $d - k$ (eq. (1.21), Example 1.4).
+Here $d$ = {{ d }}.
+
+1. **Free particle.** No constraint: all $d$ coordinates are free, **{{ answers.free }}**.
+2. **On flat ground.** The ground fixes the height, one constraint: $d - 1$ =
+   **{{ answers.ground }}**.
+3. **Rigid link.** The link fixes the distance $|r - r_O|$, one constraint: $d - 1$ =
+   **{{ answers.link }}** (the particle moves on a {% if answers.link == "1" %}circle{% else %}sphere{% endif %}).
+4. **Spring.** A spring stretches; it exerts a force but does not fix any coordinate, so
+   there is no constraint: **{{ answers.spring }}**.
+5. **Reaction forces.** Every kinematic constraint needs a constraint force to enforce it:
+   the normal force of the ground and the force in the rigid link. The spring force is a
+   given force, not a reaction. Cases: **{{ answers.reaction }}**.
+""",
     solve=solve,
     parts=(
         Options("free", "free particle", options=COUNTS, points=1),

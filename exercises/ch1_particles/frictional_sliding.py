@@ -31,6 +31,23 @@ The coefficient of kinetic friction is $\\mu$ = {{ mu }}; $g$ = {{ g }}.
 3. How much work does friction do on it over that distance?
 4. Write the stopping distance as a formula in $v_0$, $\\mu$ and $g$.
 """,
+    solution=r"""
+While the crate slides, gravity and the normal force do no work (they are perpendicular to
+the motion) and friction $R = \mu N = \mu m g$ opposes it. Use the work–energy balance
+$T_2 - T_1 = W_{12}$, eq. (1.87), between the start ($T_1 = \tfrac{1}{2} m v_0^2$) and the stop
+($T_2 = 0$), eq. (1.88) (Example 1.11).
+
+1. **Stopping distance.** The work of friction over $\Delta x$ is $W_{12} = -\mu m g\,\Delta x$,
+   so $0 - \tfrac{1}{2} m v_0^2 = -\mu m g\,\Delta x$ and, eq. (1.91),
+   $\Delta x = \frac{v_0^2}{2\mu g}$.
+   With $v_0$ = {{ v0 }}, $\mu$ = {{ mu }} and $g$ = {{ g }}: $\Delta x$ = {{ answers.dx }}.
+   The mass drops out.
+2. **Sliding time.** Linear momentum balance along the floor gives the constant deceleration
+   $\mu g$, so the speed $v_0 - \mu g t$ vanishes at $t = v_0/(\mu g)$ = {{ answers.t_stop }}.
+3. **Work of friction.** $W = -\mu m g\,\Delta x$ with $m$ = {{ m }}: $W$ = {{ answers.W }} —
+   negative, and in size exactly the kinetic energy $\tfrac{1}{2} m v_0^2$ the crate had.
+4. **Formula.** $\Delta x$ = `{{ answers.dx_formula }}`.
+""",
     solve=solve,
     parts=(
         Numeric("dx", "stopping distance", unit="m", points=2,

@@ -53,6 +53,22 @@ the constant force $F$ = {{ F }} at the angle $\\theta$ = {{ theta }} above the 
 4. What would the normal force be without the rope?
 5. Write the normal force with the rope as a formula in $m$, $g$, $F$ and $\\theta$ (`theta`).
 """,
+    solution=r"""
+Take $e_1$ along the floor and $e_2$ up. On the block act the weight $-mg\,e_2$, the normal
+force $N e_2$ and the pull $F(\cos\theta\, e_1 + \sin\theta\, e_2)$; there is no friction.
+The floor keeps the block at constant height, so $\ddot x_2 = 0$. Linear momentum balance
+$\sum F_i = m a$, eq. (1.63), component by component (Example 1.7):
+
+1. **Normal force.** $e_2$: $N + F\sin\theta - mg = 0$, so $N = mg - F\sin\theta$. With
+   $m$ = {{ m }}, $F$ = {{ F }}, $\theta$ = {{ theta }}: $N$ = {{ answers.N }}. The rope
+   carries part of the weight.
+2. **Acceleration.** $e_1$: $m\ddot x_1 = F\cos\theta$, so $\ddot x_1 = F\cos\theta/m$
+   = {{ answers.a }} — constant.
+3. **Speed.** Constant acceleration: $v(t) = v_0 + \ddot x_1 t$; with $v_0$ = {{ v0 }} and
+   $t$ = {{ t }}: $v$ = {{ answers.v_t }}.
+4. **Without the rope.** $N = mg$ (eq. (1.70)) = {{ answers.N_free }}.
+5. **Formula.** $N$ = `{{ answers.N_formula }}`.
+""",
     solve=solve,
     parts=(
         Numeric("N", "normal force", unit="N", points=2,

@@ -63,6 +63,26 @@ between block and slope is $\\mu$ = {{ mu }}; $g$ = {{ g }}.
 3. How long does it slide up?
 4. Write the distance as a formula in $v_0$, $\\alpha$, $\\mu$ and $g$.
 """,
+    solution=r"""
+Only the start (speed $v_0$) and the end (at rest) matter, so use the work–energy balance
+$T_2 - T_1 = W_{12}$ (Example 1.15). Gravity is conservative; friction is not and its work is
+integrated along the path. The normal force is $N = mg\cos\alpha$ (no motion across the
+slope), so friction is $R = \mu m g\cos\alpha$, pointing down the slope while the block
+slides up.
+
+1. **Distance.** Over the distance $\Delta x$ the block rises $h = \Delta x\sin\alpha$.
+   Eqs. (1.126)–(1.127): $0 - \tfrac{1}{2} m v_0^2 = -\mu m g\cos\alpha\,\Delta x - mg\,\Delta x\sin\alpha$,
+   so (eq. (1.128))
+   $\Delta x = \frac{v_0^2}{2g(\sin\alpha + \mu\cos\alpha)}$.
+   With $v_0$ = {{ v0 }}, $\alpha$ = {{ alpha }}, $\mu$ = {{ mu }}, $g$ = {{ g }}:
+   $\Delta x$ = {{ answers.delta_x }}. The mass drops out.
+2. **Deceleration.** Linear momentum balance along the slope: gravity and friction both
+   point down the slope, $m a = mg\sin\alpha + \mu mg\cos\alpha$, so
+   $a = g(\sin\alpha + \mu\cos\alpha)$ = {{ answers.a_up }}. (Check: $v_0^2 = 2a\,\Delta x$.)
+3. **Time.** The deceleration is constant, so the speed $v_0 - at$ vanishes at
+   $t = v_0/a$ = {{ answers.t_stop }}.
+4. **Formula.** $\Delta x$ = `{{ answers.delta_x_formula }}`.
+""",
     solve=solve,
     figure=figure,
     parts=(

@@ -43,6 +43,22 @@ $a = -k v$ with $k$ = {{ k }}. At $t = 0$ its speed is $v_0$ = {{ v0 }}; no othe
 4. How far does it travel in total before it (asymptotically) comes to rest?
 5. Write $v(t)$ as a formula in $v_0$, $k$ and $t$.
 """,
+    solution=r"""
+The acceleration depends on the velocity, $\dot v = -kv$: separate the variables and
+integrate (Example 1.2).
+
+1. **Speed.** $\int_{v_0}^{v} \mathrm dv/v = -\int_0^t k\,\mathrm dt$ gives
+   $\ln(v/v_0) = -kt$, i.e. $v(t) = v_0 e^{-kt}$ (eq. (1.14)). With $v_0$ = {{ v0 }},
+   $k$ = {{ k }} and $t$ = {{ t }}: $v$ = {{ answers.v_t }}.
+2. **Time to $v_1$.** Solve $v_1 = v_0 e^{-kt_1}$ for the time:
+   $t_1 = \ln(v_0/v_1)/k$ with $v_1/v_0$ = {{ fraction.value }}: $t_1$ = {{ answers.t_1 }}.
+3. **Distance to $v_1$.** Write the acceleration as a function of position,
+   $\dot v = v\,\mathrm dv/\mathrm dx = -kv$, so $\mathrm dv/\mathrm dx = -k$: the speed falls
+   linearly with distance, $x = (v_0 - v_1)/k$ = {{ answers.x_1 }}.
+4. **Total distance.** Let $v_1 \to 0$: $x_\infty = v_0/k$ = {{ answers.x_total }} — finite,
+   although the particle never quite stops.
+5. **Formula.** $v(t)$ = `{{ answers.v_formula }}`.
+""",
     solve=solve,
     parts=(
         Numeric("v_t", "speed at t", unit="m/s", points=1,

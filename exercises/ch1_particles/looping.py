@@ -90,6 +90,31 @@ lowest point A.
 5. What is the magnitude of the clamping moment at A at that instant?
 6. Write the smallest entry speed as a formula in $g$ and $R$.
 """,
+    solution=r"""
+Without friction only gravity does work on the car (the normal force is perpendicular to
+the track), so energy is conserved, eq. (1.102). At the angle $\varphi$ the car is
+$R(1 - \cos\varphi)$ above the entry (Example 1.13).
+
+1. **Smallest entry speed.** Energy conservation gives the speed,
+   $v^2(\varphi) = v_0^2 - 2gR(1 - \cos\varphi)$ (eq. (1.110)). Linear momentum balance
+   towards the centre, $m v^2/R = N - mg\cos\varphi$ (the centripetal acceleration $v^2/R$),
+   gives the normal force (eq. (1.116))
+   $N(\varphi) = \frac{m v_0^2}{R} + mg(3\cos\varphi - 2)$.
+   It is smallest at the top, $\varphi = \pi$: $N(\pi) = m v_0^2/R - 5mg \ge 0$ requires
+   $v_0 \ge \sqrt{5gR}$ (eq. (1.118)); with $R$ = {{ R }} and $g$ = {{ g }}:
+   $v_{0,\min}$ = {{ answers.v_min_entry }}. (Merely reaching the top, $v_0 > 2\sqrt{gR}$, is
+   not enough: the car would fall off the track first.)
+2. **Largest normal force.** $N$ is largest where $\cos\varphi = 1$, at the bottom:
+   $N_{\max} = m v_0^2/R + mg$; with $m$ = {{ m }} and $v_0$ = {{ v0 }}:
+   $N_{\max}$ = {{ answers.N_max }}.
+3. **Speed at $\varphi$** = {{ phi }}: $v = \sqrt{v_0^2 - 2gR(1 - \cos\varphi)}$
+   = {{ answers.v_phi }}.
+4. **Normal force there.** $N(\varphi)$ from above: {{ answers.N_phi }}.
+5. **Clamping moment.** The car pushes on the track with $N$ along the radius; that force
+   has the lever arm $R\sin\varphi$ about A (eq. (1.122)), so
+   $|M_A| = N R\sin\varphi$ = {{ answers.M_A }}.
+6. **Formula.** $v_{0,\min}$ = `{{ answers.v_min_formula }}`.
+""",
     solve=solve,
     figure=figure,
     parts=(

@@ -45,6 +45,9 @@ def solve(p):
         "v_out": float(impact.rebound_speed(p.v, p.theta, p.e)),
         "dT": float(impact.impact_energy_loss(p.m, p.v, p.theta, p.e)),
         "J": float(impact.wall_impulse(p.m, p.v * np.cos(p.theta), p.e)),
+        "v_n": float(p.v * np.cos(p.theta)),
+        "v_t": float(p.v * np.sin(p.theta)),
+        "v_n_out": float(abs(impact.rebound_normal_velocity(p.v * np.cos(p.theta), p.e))),
     }
 
 
@@ -73,6 +76,25 @@ with the wall's normal. The coefficient of restitution is $e$ = {{ e }}.
 3. How much kinetic energy is lost in the impact?
 4. What impulse does the wall give the puck (magnitude)?
 5. Write the rebound angle as a formula in $\\theta$ (`theta`) and $e$.
+""",
+    solution=r"""
+Split the velocity into the component along the wall's normal and the component along the
+wall. The wall is smooth, so it exerts only a normal impulse: the tangential component is
+unchanged, and the normal component is reversed and scaled by the coefficient of restitution.
+Before the impact $v_n = v\cos\theta$ = {{ si.v_n }} m/s and $v_t = v\sin\theta$
+= {{ si.v_t }} m/s (with $v$ = {{ v }}, $\theta$ = {{ theta }}); after it
+$v_n' = e\,v_n$ = {{ si.v_n_out }} m/s (with $e$ = {{ e }}) and $v_t' = v_t$.
+
+1. **Rebound angle.** $\tan\theta' = v_t'/v_n' = \tan\theta / e$, so
+   $\theta' = \arctan(\tan\theta/e)$ = {{ answers.theta_out }}: since $e < 1$ the puck
+   leaves at a larger angle from the normal, closer along the wall, than it came in.
+2. **Rebound speed.** $v' = \sqrt{v_t^2 + e^2 v_n^2}$ = {{ answers.v_out }}.
+3. **Energy lost.** Only the normal part loses energy:
+   $\Delta T = \tfrac{1}{2} m (v^2 - v'^2) = \tfrac{1}{2} m (1 - e^2) v_n^2$ = {{ answers.dT }}
+   (with $m$ = {{ m }}).
+4. **Impulse.** Linear momentum balance across the impact: the impulse equals the change of
+   momentum, which is purely normal, $J = m(v_n' + v_n) = (1 + e)\, m v_n$ = {{ answers.J }}.
+5. **Formula.** $\theta'$ = `{{ answers.theta_formula }}`.
 """,
     solve=solve,
     figure=figure,

@@ -33,6 +33,20 @@ A bead slides along a wire bent into the parabola $x_2 = c\\,x_1^2$ with $c$ = {
    component of its acceleration there?
 4. Write the radius of curvature as a formula in $c$ and $x_1$.
 """,
+    solution=r"""
+For a path given as a graph $x_2 = f(x_1)$ the radius of curvature is
+$\rho = \sqrt{1 + f'^2}^{\,3}/|f''|$ (eq. (1.48)).
+
+1. **Radius of curvature.** For $f = c x_1^2$: $f' = 2cx_1$ and $f'' = 2c$, so (eq. (1.49))
+   $\rho = \frac{(1 + 4c^2x_1^2)^{3/2} }{2c}$.
+   With $c$ = {{ c }} and $x_1$ = {{ x1 }}: $\rho$ = {{ answers.rho }}.
+2. **At the vertex.** $x_1 = 0$ leaves $\rho = 1/(2c)$ = {{ answers.rho_vertex }} — the
+   tightest bend of the parabola; away from it the wire straightens out.
+3. **Normal acceleration.** Along a path $a = \dot v\,e_t + \frac{v^2}{\rho}\,e_n$
+   (eq. (1.51)); the normal part is $v^2/\rho$ with $v$ = {{ v }}: $a_n$ = {{ answers.a_n }}.
+   It does not depend on how the speed changes.
+4. **Formula.** $\rho$ = `{{ answers.rho_formula }}`.
+""",
     solve=solve,
     parts=(
         Numeric("rho", "radius of curvature at x1", unit="m", points=2,

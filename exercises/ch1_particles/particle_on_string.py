@@ -49,7 +49,7 @@ def solve(p):
     omega = p.n          # the rate n arrives in SI, i.e. as an angular velocity in rad/s
     return {"S": particle.string_tension(p.m, p.l, omega),
             "v": kinematics.circular_speed(p.l, omega),
-            "S_double": particle.string_tension(p.m, p.l, 2 * omega)}
+            "S_double": particle.string_tension(p.m, p.l, 2 * omega), "omega": omega}
 
 
 EXERCISE = Exercise(
@@ -77,6 +77,20 @@ minute. Gravity acts perpendicular to the table.
 2. What is the particle's speed?
 3. What would the string force be at twice the rate of revolution?
 4. Write the string force as a formula in $m$, $l$ and the angular velocity $\\omega$.
+""",
+    solution=r"""
+The particle moves on a circle of radius $l$ at constant angular velocity, so its
+acceleration is purely centripetal, $a = -l\omega^2 e_r$ (eq. (1.83)). On the table,
+gravity and the normal force cancel; the string force $S$ is the only force in the plane.
+First the rate in SI: one revolution is $2\pi$, so $n$ = {{ n }} is
+$\omega = 2\pi n$ = {{ si.omega }} rad/s (with $n$ in revolutions per second).
+
+1. **String force.** Linear momentum balance along $e_r$, eq. (1.84): $-S = -m l \omega^2$,
+   so $S = m l\omega^2$. With $m$ = {{ m }} and $l$ = {{ l }}: $S$ = {{ answers.S }}.
+2. **Speed.** $v = l\omega$ = {{ answers.v }}.
+3. **Twice the rate.** $S$ grows with $\omega^2$: doubling the rate multiplies it by four,
+   $S$ = {{ answers.S_double }}.
+4. **Formula.** $S$ = `{{ answers.S_formula }}`.
 """,
     solve=solve,
     figure=figure,

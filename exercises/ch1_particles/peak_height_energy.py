@@ -13,7 +13,8 @@ def solve(p):
     v_top = float(projectile.velocity(projectile.peak_time(p.v0, p.alpha, p.g),
                                       p.v0, p.alpha, p.g)[0])
     return {"v_top": v_top, "h": energy.height_gain(p.v0, v_top, p.g),
-            "T_top": float(energy.particle_kinetic_energy(p.m, v_top))}
+            "T_top": float(energy.particle_kinetic_energy(p.m, v_top)),
+            "T0": float(energy.particle_kinetic_energy(p.m, p.v0))}
 
 
 EXERCISE = Exercise(
@@ -39,6 +40,23 @@ above the horizontal; $g$ = {{ g }}, no air drag. Use the conservation of energy
 2. How high above the launch point does it rise?
 3. What is its kinetic energy at the highest point?
 4. Write the height as a formula in $v_0$, $\\alpha$ and $g$.
+""",
+    solution=r"""
+Only gravity acts during the flight and gravity is conservative, so $T + V$ is constant
+(eq. (1.102)); no integration of the trajectory is needed (Example 1.12).
+
+1. **Speed at the top.** Gravity has no horizontal component, so the horizontal velocity
+   $v_0\cos\alpha$ never changes; at the highest point the vertical velocity is zero. Hence
+   $v_{\text{top} } = v_0\cos\alpha$ = {{ answers.v_top }} (with $v_0$ = {{ v0 }},
+   $\alpha$ = {{ alpha }}).
+2. **Peak height.** Energy conservation between launch and top,
+   $\tfrac{1}{2} m v_0^2 = \tfrac{1}{2} m v_{\text{top} }^2 + mgh$, gives
+   $h = \frac{v_0^2 - v_{\text{top} }^2}{2g} = \frac{v_0^2\sin^2\alpha}{2g}$
+   (eq. (1.106)); with $g$ = {{ g }}: $h$ = {{ answers.h }}.
+3. **Kinetic energy at the top.** $T = \tfrac{1}{2} m v_{\text{top} }^2$ with $m$ = {{ m }}:
+   $T$ = {{ answers.T_top }}, out of $\tfrac{1}{2} m v_0^2$ = {{ si.T0 }} J at launch; the rest
+   has become potential energy $mgh$.
+4. **Formula.** $h$ = `{{ answers.h_formula }}`.
 """,
     solve=solve,
     parts=(

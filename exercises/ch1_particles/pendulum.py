@@ -14,6 +14,7 @@ def solve(p):
         "T": am.pendulum_small_angle_period(p.g, p.R),
         "phi_ddot": float(am.particle_pendulum_angular_acceleration(p.phi, p.phidot, p.g, p.R, p.k, p.m)),
         "S": float(am.pendulum_string_force(p.m, p.R, p.g, p.phi, p.phidot)),
+        "omega_n": am.pendulum_natural_frequency(p.g, p.R),
     }
 
 
@@ -48,6 +49,29 @@ $k$ = {{ k }}. $\\varphi$ is the string's angle from the downward vertical.
    further out), what is the angular acceleration $\\ddot\\varphi$?
 3. What is the force in the string at that instant?
 4. Write $\\ddot\\varphi$ as a formula in $\\varphi$ (`phi`), $\\dot\\varphi$ (`phidot`), $k$, $m$, $g$ and $R$.
+""",
+    solution=r"""
+Use the angular momentum balance about the fixed point B, $M_B = \dot H_B$ (eq. (1.132) with
+B fixed). The particle moves on a circle of radius $R$, so $H_B = mR^2\dot\varphi$ and
+$\dot H_B = mR^2\ddot\varphi$ (eq. (1.140)). The string force passes through B and has no
+moment; gravity has the moment $-mgR\sin\varphi$ and the drag, of size $kR\dot\varphi$
+and opposite to the velocity, the moment $-kR^2\dot\varphi$. Hence (eqs. (1.145) and (1.149))
+$\ddot\varphi = -\frac{k}{m}\dot\varphi - \frac{g}{R}\sin\varphi$.
+
+1. **Small-angle period.** Without drag and with $\sin\varphi \approx \varphi$ (eq. (1.147))
+   the equation is $\ddot\varphi + \frac{g}{R}\varphi = 0$: a harmonic oscillation with
+   $\omega = \sqrt{g/R}$ = {{ si.omega_n }} rad/s (with $R$ = {{ R }}, $g$ = {{ g }}) and period
+   $T = 2\pi/\omega = 2\pi\sqrt{R/g}$ = {{ answers.T }}. It depends neither on the mass nor on
+   the amplitude.
+2. **Angular acceleration.** Insert $\varphi$ = {{ phi }}, $\dot\varphi$ = {{ phidot }},
+   $k$ = {{ k }}, $m$ = {{ m }} into the equation of motion: $\ddot\varphi$ = {{ answers.phi_ddot }}.
+   Both terms slow the outward swing.
+3. **String force.** The moment balance does not contain $S$; take the linear momentum balance
+   along the string instead. The radial acceleration on the circle is $-R\dot\varphi^2$
+   (towards B); the drag is perpendicular to the string. So
+   $S - mg\cos\varphi = mR\dot\varphi^2$, i.e. $S = mg\cos\varphi + mR\dot\varphi^2$
+   = {{ answers.S }}.
+4. **Formula.** $\ddot\varphi$ = `{{ answers.eom }}`.
 """,
     solve=solve,
     parts=(

@@ -58,6 +58,21 @@ $\\boldsymbol e_2$). Gravity $g$ = {{ g }} acts in $-\\boldsymbol e_2$; neglect 
 3. What is the height $x_2$ at that time?
 4. Write the height $x_2(t)$ as a formula in $h_0$, $v_{02}$ (the initial upward velocity), $g$ and $t$.
 """,
+    solution=r"""
+The only force is gravity, so linear momentum balance gives the constant acceleration
+$a = -g\,e_2$. Integrating twice in time with the initial values (Example 1.1, eqs. (1.11)
+and (1.12)):
+$v(t) = v(0) - gt\,e_2, \qquad r(t) = r(0) + v(0)\,t - \tfrac{1}{2} g t^2\,e_2$.
+Here $r(0) = (0, h_0)$ with $h_0$ = {{ h0 }} and $v(0) = (v_1(0), v_2(0))$ with
+$v_1(0)$ = {{ v01 }}, $v_2(0)$ = {{ v02 }}; $t$ = {{ t }}, $g$ = {{ g }}.
+
+1. **Position.** $x_1 = v_1(0)\,t$ and $x_2 = h_0 + v_2(0)\,t - \tfrac{1}{2} g t^2$:
+   $r$ = {{ answers.r_t }}.
+2. **Velocity.** The horizontal component does not change, the vertical one decreases
+   linearly: $v = (v_1(0),\ v_2(0) - gt)$ = {{ answers.v_t }}.
+3. **Height.** The second component of the position: $x_2$ = {{ answers.x2_t }}.
+4. **Formula.** $x_2(t)$ = `{{ answers.x2_formula }}`.
+""",
     solve=solve,
     parts=(
         Vector("r_t", "position at t", unit="m", size=2, points=2,

@@ -43,6 +43,23 @@ $g$ = {{ g }} and $R$ = {{ R }}.
 3. Above what launch speed would it never come back?
 4. Write the greatest height as a formula in $v_0$, $g$ and $R$.
 """,
+    solution=r"""
+The acceleration is known as a function of the position, $\ddot x = -gR^2/(R + x)^2$.
+Write $\ddot x = v\,\mathrm dv/\mathrm dx$ and integrate over $x$ (Example 1.2, eq. (1.17)):
+$\tfrac{1}{2} v^2 - \tfrac{1}{2} v_0^2 = -\int_0^x \frac{gR^2}{(R + \xi)^2}\,\mathrm d\xi
+  = -\frac{gRx}{R + x}$.
+(This is the energy conservation of the probe in the field of the Earth.)
+
+1. **Speed at $x$.** $v(x) = \sqrt{v_0^2 - 2gRx/(R + x)}$; with $v_0$ = {{ v0 }},
+   $g$ = {{ g }}, $R$ = {{ R }} and $x$ = {{ x }}: $v$ = {{ answers.v_x }}. (With
+   constant $g$ it would be slower: gravity weakens with height.)
+2. **Greatest height.** $v = 0$: $v_0^2 = 2gRh/(R + h)$, solved for $h$:
+   $h_{\max} = \frac{R v_0^2}{2gR - v_0^2}$
+   = {{ answers.h_max }}.
+3. **Escape speed.** $h_{\max}$ grows without bound as $v_0^2 \to 2gR$: above
+   $v_{\text{esc} } = \sqrt{2gR}$ = {{ answers.v_esc }} the probe never comes back.
+4. **Formula.** $h_{\max}$ = `{{ answers.h_formula }}`.
+""",
     solve=solve,
     parts=(
         Numeric("v_x", "speed at height x", unit="km/s", points=1,

@@ -14,7 +14,7 @@ def solve(p):
     I0, I1 = _inertia(p, p.r0), _inertia(p, p.r1)
     omega1 = am.conserved_angular_velocity(p.omega0, I0, I1)
     # rotation about the fixed vertical axis: 1x1 moment of inertia, one rate
-    return {"omega1": omega1,
+    return {"omega1": omega1, "I_before": I0, "I_after": I1,
             "H": float(rigid_kinetics.rigid_body_angular_momentum([[I0]], [p.omega0])[0]),
             "W": (rigid_kinetics.rotational_kinetic_energy([[I1]], [omega1])
                   - rigid_kinetics.rotational_kinetic_energy([[I0]], [p.omega0]))}
@@ -47,6 +47,27 @@ to $r_1$ = {{ r1 }}.
 2. What is the angular momentum of the whole system about the axis?
 3. How much work did the person do while pulling the mass in?
 4. Write the final angular velocity as a formula in $I_0$ (`I`), $m$, $r_0$, $r_1$ and $\\omega_0$.
+""",
+    solution=r"""
+No external moment acts about the vertical axis (the bearing is frictionless; gravity and
+the bearing forces have no moment about it). The angular momentum balance
+$\dot H = M = 0$ therefore keeps the system's angular momentum about the axis constant
+(eq. (1.135), Example 1.19). About a fixed axis $H = I\omega$, and the mass adds $mr^2$ to the
+moment of inertia (eq. (1.139)): before, $I_0 + m r_0^2$ = {{ si.I_before }} kg·m²; after,
+$I_0 + m r_1^2$ = {{ si.I_after }} kg·m² (with $I_0$ = {{ I }}, $m$ = {{ m }},
+$r_0$ = {{ r0 }}, $r_1$ = {{ r1 }}).
+
+1. **Angular velocity.** $(I_0 + m r_0^2)\,\omega_0 = (I_0 + m r_1^2)\,\omega_1$, so
+   $\omega_1 = \omega_0\,(I_0 + m r_0^2)/(I_0 + m r_1^2)$; with $\omega_0$ = {{ omega0 }}:
+   $\omega_1$ = {{ answers.omega1 }}.
+2. **Angular momentum.** $H = (I_0 + m r_0^2)\,\omega_0$ = {{ answers.H }}, the same before
+   and after.
+3. **Work.** The angular momentum is conserved but the kinetic energy is not: with
+   $T = \tfrac{1}{2} I\omega^2$, the person's work is the change
+   $W = \tfrac{1}{2}(I_0 + m r_1^2)\,\omega_1^2 - \tfrac{1}{2}(I_0 + m r_0^2)\,\omega_0^2$
+   = {{ answers.W }} — positive: pulling the mass in against its tendency to fly outward
+   costs work.
+4. **Formula.** $\omega_1$ = `{{ answers.omega_formula }}`.
 """,
     solve=solve,
     parts=(

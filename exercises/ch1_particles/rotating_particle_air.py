@@ -14,6 +14,7 @@ def solve(p):
         "omega_t": float(am.drag_angular_velocity(p.t, p.omega0, p.k, p.m)),
         "t_half": kinematics.half_life(am.rotation_decay_rate(p.k, p.m)),
         "phi_total": float(am.drag_rotation_angle(np.inf, p.omega0, p.k, p.m)),
+        "rate": am.rotation_decay_rate(p.k, p.m),
     }
 
 
@@ -45,6 +46,25 @@ with $k$ = {{ k }}. At $t = 0$ it turns at $\\dot\\varphi_0$ = {{ omega0 }}.
 3. After what time has the angular velocity halved?
 4. Through what total angle (in rad) does the particle turn before it stops?
 5. Write $\\dot\\varphi(t)$ as a formula in $\\dot\\varphi_0$ (write `omega0`), $k$, $m$ and $t$.
+""",
+    solution=r"""
+The particle moves on a circle of fixed radius $R$ about the axis, so $v = R\dot\varphi$
+along $e_\varphi$. Bearing force and gravity have no moment about the axis; only the drag
+does. Use the angular momentum balance about the axis (Example 1.16).
+
+1. **Drag torque.** $F_d = -kv$ is tangential with lever arm $R$:
+   $M = -kR\,v = -kR^2\dot\varphi$ (eqs. (1.142), (1.143)). At $t = 0$, with $k$ = {{ k }},
+   $R$ = {{ R }} and $\dot\varphi_0$ = {{ omega0 }}: $|M_0|$ = {{ answers.M0 }}.
+2. **Angular velocity.** With $\dot H = mR^2\ddot\varphi$ the balance reads
+   $mR^2\ddot\varphi = -kR^2\dot\varphi$, i.e. $\ddot\varphi + \frac{k}{m}\dot\varphi = 0$
+   (eq. (1.144)). The radius drops out; separating variables,
+   $\dot\varphi(t) = \dot\varphi_0\,e^{-kt/m}$ with the decay rate $k/m$ = {{ si.rate }} 1/s
+   ($m$ = {{ m }}). At $t$ = {{ t }}: $\dot\varphi$ = {{ answers.omega_t }}.
+3. **Half-life.** $e^{-kt/m} = \tfrac{1}{2}$ gives $t_{1/2} = (m/k)\ln 2$ = {{ answers.t_half }}.
+4. **Total angle.** Integrate once more: $\varphi(\infty) - \varphi(0)
+   = \int_0^\infty \dot\varphi_0 e^{-kt/m}\,\mathrm dt = m\dot\varphi_0/k$
+   = {{ answers.phi_total }} — finite, although the particle never quite stops.
+5. **Formula.** $\dot\varphi(t)$ = `{{ answers.omega_formula }}`.
 """,
     solve=solve,
     parts=(

@@ -74,6 +74,25 @@ sideways along the floor by $\\Delta x$ = {{ dx }} and released from rest.
 3. What is the particle's speed when it passes below the fixed point?
 4. Write that speed as a formula in $k$, $m$, $\\Delta x$ (write `dx`) and $l_0$.
 """,
+    solution=r"""
+The floor is smooth and gravity is perpendicular to the motion, so the spring force is the
+only force doing work, and it is conservative: the energy $T + V$ is conserved
+(eq. (1.102), Example 1.14).
+
+1. **Stretch.** Pulled aside by $\Delta x$, the spring reaches from the fixed point at height
+   $l_0$ to the particle, so its length is $\sqrt{\Delta x^2 + l_0^2}$ and its stretch
+   $\delta = \sqrt{\Delta x^2 + l_0^2} - l_0$.
+   With $\Delta x$ = {{ dx }} and $l_0$ = {{ l0 }}: $\delta$ = {{ answers.stretch }}.
+2. **Stored energy.** $V_1 = \tfrac{1}{2} k\delta^2$ (eq. (1.124)); with $k$ = {{ k }} and
+   $\delta$ = {{ si.stretch }} m: $V_1$ = {{ answers.V1 }}.
+3. **Speed below the fixed point.** There the spring has its natural length, $V_2 = 0$.
+   $T_1 + V_1 = T_2 + V_2$ with $T_1 = 0$ and $T_2 = \tfrac{1}{2} m v^2$ gives (eq. (1.125))
+   $v = \sqrt{\frac{k}{m} }\left(\sqrt{\Delta x^2 + l_0^2} - l_0\right)$;
+   with $m$ = {{ m }}: $v$ = {{ answers.v }}. Linear momentum balance would need the
+   integration of a force that changes direction and size along the way; the energy
+   balance skips it.
+4. **Formula.** $v$ = `{{ answers.v_formula }}`.
+""",
     solve=solve,
     figure=figure,
     parts=(

@@ -43,6 +43,22 @@ particle straight up; $g$ = {{ g }}, no air drag, the spring is massless.
 3. How fast is the particle when the spring reaches its natural length?
 4. Write the height as a formula in $k$, $\\Delta x$ (write `dx`), $m$ and $g$.
 """,
+    solution=r"""
+Spring force and gravity are conservative and there is no drag, so $T + V$ is conserved
+(eq. (1.102)); compare the start (at rest, spring compressed) with the state asked for.
+Measure heights from the starting point.
+
+1. **Height.** At the start $T_1 = 0$ and the spring stores $\tfrac{1}{2} k\Delta x^2$; at the
+   highest point $T_2 = 0$, the particle has left the relaxed spring and gravity stores $mgh$:
+   $\tfrac{1}{2} k\,\Delta x^2 = mgh \quad\Rightarrow\quad h = \frac{k\,\Delta x^2}{2mg}$.
+   With $k$ = {{ k }}, $\Delta x$ = {{ dx }}, $m$ = {{ m }}, $g$ = {{ g }}:
+   $h$ = {{ answers.h }}.
+2. **Stored energy.** $V_{\text{spring} } = \tfrac{1}{2} k\,\Delta x^2$ = {{ answers.V_spring }}.
+3. **Speed at the natural length.** The particle has then risen by $\Delta x$ and the spring
+   is relaxed: $\tfrac{1}{2} k\,\Delta x^2 = \tfrac{1}{2} m v^2 + mg\,\Delta x$, so
+   $v = \sqrt{k\Delta x^2/m - 2g\,\Delta x}$ = {{ answers.v_release }}.
+4. **Formula.** $h$ = `{{ answers.h_formula }}`.
+""",
     solve=solve,
     parts=(
         Numeric("h", "height above the start", unit="m", points=2,

@@ -14,6 +14,7 @@ def solve(p):
     return {
         "omega1": omega1,
         "v_ratio": v1 / v0,
+        "v0": v0, "v1": v1,
         "W": float(energy.particle_kinetic_energy(p.m, v1) - energy.particle_kinetic_energy(p.m, v0)),
     }
 
@@ -42,6 +43,26 @@ slowly pulled down until the radius is $l_1$ = {{ l1 }}, and held there.
 2. By what factor has the circumferential speed $v_t$ changed ($v_t(l_1)/v_t(0)$)?
 3. How much work did the pulling force do on the particle?
 4. Write the final angular velocity as a formula in $\\omega(0)$ (`omega0`), $l(0)$ (`l0`) and $l_1$ (`l1`).
+""",
+    solution=r"""
+The string force points at the hole B at all times, gravity and the table's normal force
+cancel, and the table is frictionless: no force has a moment about B. The angular momentum
+balance about the fixed point B, $\dot H_B = M_B = 0$, keeps
+$H_B = r_{BP} \times m v_P$ constant (eqs. (1.151), (1.152), Example 1.18). Only the
+circumferential velocity $v_t = l\omega$ contributes: $H_B = m\,l\,v_t$ (eq. (1.153)).
+
+1. **Angular velocity.** $m\,l(0)^2\omega(0) = m\,l_1^2\omega_1$, so (eq. (1.155))
+   $\omega_1 = \left(\frac{l(0)}{l_1}\right)^2 \omega(0)$.
+   With $l(0)$ = {{ l0 }}, $l_1$ = {{ l1 }} and $\omega(0)$ = {{ omega0 }}:
+   $\omega_1$ = {{ answers.omega1 }}.
+2. **Speed ratio.** $l\,v_t$ is constant (eq. (1.154)), so
+   $v_t(l_1)/v_t(0) = l(0)/l_1$ = {{ answers.v_ratio }}: from
+   $v_t(0) = l(0)\,\omega(0)$ = {{ si.v0 }} m/s to {{ si.v1 }} m/s.
+3. **Work of the pulling force.** Angular momentum is conserved, kinetic energy is not: the
+   string force has a component along the (inward) path and does work. By the work–energy
+   balance it equals the change of kinetic energy,
+   $W = \tfrac{1}{2} m\,(v_t(l_1)^2 - v_t(0)^2)$; with $m$ = {{ m }}: $W$ = {{ answers.W }}.
+4. **Formula.** $\omega_1$ = `{{ answers.omega_formula }}`.
 """,
     solve=solve,
     parts=(

@@ -43,6 +43,22 @@ point O in a plane. At the instant considered the string turns at $\\omega = \\d
 4. What is the magnitude of the acceleration?
 5. Write $a_r$ as a formula in $l$ and $\\omega$.
 """,
+    solution=r"""
+The string is inextensible, so in polar coordinates about O the radius is fixed, $r = l$,
+$\dot r = \ddot r = 0$. The polar components of velocity and acceleration (eqs. (1.31) and
+(1.33)) reduce to (eq. (1.36), Example 1.5)
+$v = l\dot\varphi\,e_\varphi, \qquad a = -l\dot\varphi^2\,e_r + l\ddot\varphi\,e_\varphi$.
+Here $l$ = {{ l }}, $\dot\varphi = \omega$ = {{ omega }} and $\ddot\varphi = \dot\omega$ = {{ alpha }}.
+
+1. **Speed.** $|v| = l\omega$ = {{ answers.v }}.
+2. **Radial acceleration.** $a_r = \ddot r - r\dot\varphi^2 = -l\omega^2$ = {{ answers.a_r }};
+   negative: the centripetal acceleration points towards O.
+3. **Circumferential acceleration.** $a_\varphi = 2\dot r\dot\varphi + r\ddot\varphi = l\dot\omega$
+   = {{ answers.a_phi }}.
+4. **Magnitude.** The components are perpendicular:
+   $|a| = \sqrt{a_r^2 + a_\varphi^2} = l\sqrt{\omega^4 + \dot\omega^2}$ = {{ answers.a_abs }}.
+5. **Formula.** $a_r$ = `{{ answers.a_r_formula }}`.
+""",
     solve=solve,
     parts=(
         Numeric("v", "speed", unit="m/s", points=1),

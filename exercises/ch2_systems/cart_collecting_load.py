@@ -10,6 +10,7 @@ def solve(p):
     return {
         "v_t": variable_mass.speed_after_accretion(p.m0, p.v0, mass),
         "F_keep": variable_mass.force_to_keep_speed_while_accreting(p.q, p.v0),
+        "mass": mass,
     }
 
 
@@ -35,6 +36,23 @@ drops gravel vertically into it at the rate $q$ = {{ q }}. Rolling resistance is
 1. What is the speed of the cart after it has been loading for $t$ = {{ t }}?
 2. Which horizontal force would keep the cart at the speed $v_0$ while it is being loaded?
 3. Give the speed of question 1 as a formula in $m_0$, $v_0$, $q$ and $t$.
+""",
+    solution=r"""
+Take the cart together with the gravel it has collected as the system. The gravel falls in
+vertically, so it brings no horizontal momentum, and no horizontal external force acts
+(rolling resistance is negligible): the horizontal linear momentum of the system is
+conserved (Section 2.3.2). After loading for $t$ the mass is
+$m(t) = m_0 + qt$ = {{ si.mass }} kg (with $m_0$ = {{ m0 }}, $q$ = {{ q }}, $t$ = {{ t }}).
+
+1. **Speed.** $m_0 v_0 = (m_0 + qt)\,v$, so
+   $v(t) = \frac{m_0 v_0}{m_0 + qt}$;
+   with $v_0$ = {{ v0 }}: $v$ = {{ answers.v_t }}. Every kilogram of gravel has to be brought
+   up to the cart's speed, and the cart pays for it with its own momentum.
+2. **Force to keep $v_0$.** Linear momentum balance of the system, $\dot P = F$. At constant
+   speed $P = m(t)\,v_0$ grows at the rate $\dot m\,v_0 = q v_0$, so the force must be
+   $F = q v_0$ = {{ answers.F_keep }}: the momentum flux needed to accelerate the arriving
+   gravel from rest to $v_0$.
+3. **Formula.** $v(t)$ = `{{ answers.v_t_formula }}`.
 """,
     solve=solve,
     parts=(

@@ -2,7 +2,7 @@
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform)
-from dynagrade.mechanics import particle, variable_mass
+from dynagrade.mechanics import impact, particle, variable_mass
 
 
 def solve(p):
@@ -11,6 +11,8 @@ def solve(p):
         "F_x": variable_mass.chain_on_scale_force(lam, p.x, p.g),
         "F_max": variable_mass.chain_on_scale_force(lam, p.L, p.g),
         "F_end": float(particle.weight(lam * p.L, p.g)),
+        "lam": lam,
+        "v_arrive": impact.impact_speed_after_fall(p.x, p.g),
     }
 
 
@@ -38,6 +40,22 @@ onto the pan, where the links come to rest at once ($g$ = {{ g }}).
 2. What does it read just before the last link lands?
 3. What does it read once the whole chain lies on the pan?
 4. Give the reading of question 1 as a formula in $m$, $L$, $x$ and $g$.
+""",
+    solution=r"""
+The chain has the mass per length $\lambda = m/L$ = {{ si.lam }} kg/m (with $m$ = {{ m }},
+$L$ = {{ L }}). The part still in the air falls freely: a link that has fallen the height $x$
+arrives with $v = \sqrt{2gx}$. On the pan the scale must carry the weight of the chain lying
+there and, in addition, stop the arriving links: by the linear momentum balance for the mass
+arriving on the pan (Section 2.3.2), stopping a mass flow $\lambda v$ of speed $v$ takes the
+force $\lambda v \cdot v = \lambda v^2$ (the momentum flux).
+
+1. **Reading at $x$.** With $x$ = {{ x }} fallen, $v = \sqrt{2gx}$ = {{ si.v_arrive }} m/s and
+   $F = \lambda g x + \lambda v^2 = \lambda g x + 2\lambda g x = 3\lambda g x = \frac{3mgx}{L}$,
+   with $g$ = {{ g }}: $F$ = {{ answers.F_x }} — three times the weight of the chain on the pan.
+2. **Just before the last link lands.** $x \to L$: $F = 3mg$ = {{ answers.F_max }}.
+3. **Whole chain on the pan.** Nothing arrives any more; the scale carries only the weight,
+   $F = mg$ = {{ answers.F_end }} — the reading drops to a third at once.
+4. **Formula.** $F$ = `{{ answers.F_x_formula }}`.
 """,
     solve=solve,
     parts=(

@@ -26,6 +26,9 @@ def solve(p):
     return {
         "H_C": systems.angular_momentum_about_centre_of_mass(masses, r, v)[2],
         "H_O": systems.system_angular_momentum_about_point(masses, r, v, [0.0, 0.0])[2],
+        "M": systems.total_mass(masses),
+        "H_orbit": systems.angular_momentum_transfer(
+            0.0, systems.total_mass(masses), [0.0, p.d], [p.v, 0.0])[2],
     }
 
 
@@ -64,6 +67,22 @@ with $e_1$.
 
 1. What is the angular momentum of the dumbbell about its centre of mass ($e_3$ component)?
 2. What is its angular momentum about the fixed point O ($e_3$ component)?
+""",
+    solution=r"""
+Split the motion into the translation of the centre of mass C and the rotation about it
+(Section 2.2.3): $H_O = H_C + r_{OC} \times M v_C$ with the total mass
+$M = m_1 + m_2$ = {{ si.M }} kg (with $m_1$ = {{ m1 }} and $m_2$ = {{ m2 }}).
+
+1. **About the centre of mass.** C divides the rod so that $m_1 r_1 = m_2 r_2$:
+   $r_1 = m_2 L/M$ and $r_2 = m_1 L/M$. Relative to C each ball moves on a circle with
+   speed $r_i\omega$, perpendicular to the rod, so
+   $H_C = (m_1 r_1^2 + m_2 r_2^2)\,\omega = \frac{m_1 m_2}{m_1 + m_2} L^2\,\omega$,
+   counter-clockwise, i.e. along $+e_3$. The angle $\varphi$ = {{ phi }} does not matter. With
+   $L$ = {{ L }} and $\omega$ = {{ omega }}: $H_C$ = {{ answers.H_C }}.
+2. **About O.** C is at $r_{OC} = d\,e_2$ and moves with $v_C = v\,e_1$, so
+   $r_{OC} \times M v_C = -M d v\,e_3$ = {{ si.H_orbit }} kg·m²/s along $e_3$ (with
+   $d$ = {{ d }}, $v$ = {{ v }}): the translation to the right, above O, turns clockwise about O.
+   Hence $H_O = H_C - M d v$ = {{ answers.H_O }}.
 """,
     solve=solve,
     parts=(

@@ -24,6 +24,9 @@ def solve(p):
         "v2": v2,
         "x2": x2,
         "x_c": systems.centre_of_mass([p.m1, p.M - p.m1], [[x1], [x2]])[0],
+        "v_apex": float(projectile.velocity(t_apex, p.v0, p.alpha, p.g)[0]),
+        "t_apex": t_apex,
+        "x_apex": float(x_apex),
     }
 
 
@@ -53,6 +56,27 @@ rest just after the explosion and falls vertically; fragment 2 flies on horizont
 2. How far from the gun does fragment 2 land?
 3. Where (distance from the gun) is the centre of mass of the two fragments when both
    have landed?
+""",
+    solution=r"""
+The explosion's forces are internal: they cannot change the total momentum of shell and
+fragments, and in the short explosion gravity's impulse is negligible (Section 2.2.1). Before
+the explosion the shell flies as a projectile: at the top its velocity is horizontal,
+$v_0\cos\alpha$ = {{ si.v_apex }} m/s, reached at $t_{\text{top} } = v_0\sin\alpha/g$
+= {{ si.t_apex }} s at the distance $x_{\text{top} } = v_0^2\sin\alpha\cos\alpha/g$
+= {{ si.x_apex }} m (with $v_0$ = {{ v0 }}, $\alpha$ = {{ alpha }}, $g$ = {{ g }}).
+
+1. **Speed of fragment 2.** Momentum just before equals momentum just after, and fragment 1
+   is at rest: $M v_0\cos\alpha = (M - m_1)\,v_2$, so
+   $v_2 = \frac{M}{M - m_1}\,v_0\cos\alpha$
+   with $M$ = {{ M }}, $m_1$ = {{ m1 }}: $v_2$ = {{ answers.v2 }}.
+2. **Landing point of fragment 2.** It starts horizontally from the top, so it falls the
+   same height the shell rose and needs the same time $t_{\text{top} }$:
+   $x_2 = x_{\text{top} } + v_2\,t_{\text{top} }$ = {{ answers.x2 }}.
+3. **Centre of mass.** Fragment 1 falls vertically and lands at $x_1 = x_{\text{top} }$, at
+   the same time as fragment 2. So
+   $x_C = (m_1 x_1 + (M - m_1)\,x_2)/M$ = {{ answers.x_c }} — exactly the range
+   $v_0^2\sin 2\alpha/g$ the shell would have had without exploding: only external forces
+   (gravity) move the centre of mass.
 """,
     solve=solve,
     parts=(

@@ -24,8 +24,12 @@ def _central(p):
 
 def solve(p):
     after = _after(p)
+    n = _line_of_impact(p)
     return {"v1_after": after.v1, "v2_after": after.v2,
-            "speed2": float(np.linalg.norm(after.v2))}
+            "speed2": float(np.linalg.norm(after.v2)),
+            # normal components along the line of impact, before and after
+            "v_n": float(np.dot([p.v, 0.0], n)),
+            "v1n": float(np.dot(after.v1, n)), "v2n": float(np.dot(after.v2, n))}
 
 
 EXERCISE = Exercise(
@@ -55,6 +59,28 @@ on the table.
 1. What is the velocity vector of ball 1 after the impact (components along $e_1$, $e_2$)?
 2. What is the velocity vector of ball 2 after the impact?
 3. What is the speed of ball 2?
+""",
+    solution=r"""
+The balls are smooth, so the contact force acts only along the line of impact
+$n = (\cos\beta, \sin\beta)$ (Section 2.3.1). Split each velocity into its component along
+$n$ and its component perpendicular to it:
+
+- perpendicular to $n$ no force acts, so each ball keeps that component (ball 2 has none);
+- along $n$ the impact is a central impact: the normal momentum $m_1 v_{1,n} + m_2 v_{2,n}$ is
+  conserved and the relative normal speed is reversed and scaled by $e$.
+
+Before the impact ball 1 has $v_n = v\cos\beta$ = {{ si.v_n }} m/s along $n$ (with $v$ = {{ v }},
+$\beta$ = {{ beta }}) and ball 2 is at rest. The two conditions
+$m_1 v_{1,n}' + m_2 v_{2,n}' = m_1 v_n$ and $v_{2,n}' - v_{1,n}' = e\,v_n$ give
+$v_{1,n}' = \frac{m_1 - e\,m_2}{m_1 + m_2}\,v_n, \qquad v_{2,n}' = \frac{(1 + e)\,m_1}{m_1 + m_2}\,v_n$;
+with $m_1$ = {{ m1 }}, $m_2$ = {{ m2 }}, $e$ = {{ e }}: $v_{1,n}'$ = {{ si.v1n }} m/s and
+$v_{2,n}'$ = {{ si.v2n }} m/s.
+
+1. **Ball 1.** Its part perpendicular to $n$, $v\,e_1 - v_n n$, stays, its normal part becomes
+   $v_{1,n}'$: $v_1' = v\,e_1 + (v_{1,n}' - v_n)\,n$ = {{ answers.v1_after }}.
+2. **Ball 2.** It only receives the normal impulse, so it moves along the line of impact:
+   $v_2' = v_{2,n}'\,n$ = {{ answers.v2_after }}.
+3. **Speed of ball 2.** $|v_2'| = v_{2,n}'$ = {{ answers.speed2 }}.
 """,
     solve=solve,
     parts=(

@@ -17,6 +17,8 @@ def solve(p):
         "dv_free": variable_mass.rocket_speed_gain(p.u, p.m0, p.m0 - p.mf),
         "v_b": variable_mass.vertical_rocket_speed(p.tb, 0.0, p.u, p.m0, q, p.g),
         "h_b": variable_mass.vertical_rocket_height(p.tb, 0.0, p.u, p.m0, q, p.g),
+        "q": q,
+        "m_b": variable_mass.mass_at_time(p.tb, p.m0, -q),
     }
 
 
@@ -49,6 +51,27 @@ neglect air drag.
 3. What is the rocket's speed at burn-out in the launch above?
 4. At which height does the burn end?
 5. Give the burn-out speed of question 3 as a formula in $m_0$, $m_f$, $u$, $t_b$ and $g$.
+""",
+    solution=r"""
+Linear momentum balance for a body of variable mass (Section 2.3.2): the fuel leaves at
+$u$ relative to the rocket, at the constant rate $q = m_f/t_b$ = {{ si.q }} kg/s (with
+$m_f$ = {{ mf }}, $t_b$ = {{ tb }}). Over $\mathrm dt$ the rocket gains the momentum that
+the exhaust carries backwards, so
+$m(t)\,\dot v = q u - m(t)\,g, \qquad m(t) = m_0 - qt$.
+
+1. **Thrust.** The term $qu$ acts like a force: $F = qu$; with $u$ = {{ u }}:
+   $F$ = {{ answers.F }}.
+2. **Without gravity.** $m\,\dot v = qu$ with $\mathrm dm = -q\,\mathrm dt$ gives
+   $\mathrm dv = -u\,\mathrm dm/m$, and integrating from $m_0$ to the burn-out mass
+   $m_0 - m_f$ = {{ si.m_b }} kg (with $m_0$ = {{ m0 }}) gives the rocket equation
+   $\Delta v = u\ln\frac{m_0}{m_0 - m_f}$
+   = {{ answers.dv_free }}. The burn time does not matter.
+3. **Burn-out speed with gravity.** Gravity adds $-g$ to the acceleration throughout
+   the burn, so it costs $g\,t_b$: $v_b = u\ln\frac{m_0}{m_0 - m_f} - g\,t_b$; with $g$ = {{ g }}: $v_b$ = {{ answers.v_b }}.
+4. **Burn-out height.** Integrate $v(t) = u\ln\frac{m_0}{m(t)} - gt$ over the burn:
+   $h_b = u\left[t_b - \frac{m_0 - m_f}{q}\ln\frac{m_0}{m_0 - m_f}\right] - \tfrac{1}{2} g t_b^2$
+   = {{ answers.h_b }}.
+5. **Formula.** $v_b$ = `{{ answers.v_b_formula }}`.
 """,
     solve=solve,
     parts=(

@@ -15,7 +15,8 @@ def _relative_speed(p):
 def solve(p):
     v_rel = _relative_speed(p)
     speeds = systems.speeds_relative_to_centre_of_mass(p.m1, p.m2, v_rel)  # C stays at rest
-    return {"v1": speeds.v1, "v2": speeds.v2, "v_rel": v_rel}
+    return {"v1": speeds.v1, "v2": speeds.v2, "v_rel": v_rel,
+            "V": float(energy.spring_potential_of_stretch(p.k, p.delta))}
 
 
 def _equal_share(p, m):
@@ -47,6 +48,24 @@ between them, held by a thread. The thread is cut.
 2. With which speed does cart 2 move?
 3. With which speed do the carts move apart?
 4. Give the speed of cart 1 as a formula in $m_1$, $m_2$, $k$ and $\delta$.
+""",
+    solution=r"""
+Take both carts and the spring as the system. No external horizontal force acts
+(frictionless track), so its total momentum stays zero and the centre of mass stays at rest
+(Section 2.2.1). The spring force is internal: it does work on the carts, so the kinetic
+energy grows by the energy the spring stored, $\tfrac{1}{2} k\delta^2$ = {{ si.V }} J (with
+$k$ = {{ k }}, $\delta$ = {{ delta }}; work–energy balance, Section 2.2.2).
+
+1. **Cart 1.** Momentum: $m_1 v_1 = m_2 v_2$. Energy:
+   $\tfrac{1}{2} m_1 v_1^2 + \tfrac{1}{2} m_2 v_2^2 = \tfrac{1}{2} k\delta^2$. Eliminating $v_2$:
+   $v_1 = \delta\sqrt{\frac{k\,m_2}{m_1(m_1 + m_2)} }$;
+   with $m_1$ = {{ m1 }} and $m_2$ = {{ m2 }}: $v_1$ = {{ answers.v1 }}.
+2. **Cart 2.** $v_2 = \frac{m_1}{m_2}v_1$ = {{ answers.v2 }}, in the opposite direction; the
+   lighter cart gets the larger speed and the larger share of the energy.
+3. **Separation speed.** $v_1 + v_2 = \delta\sqrt{k(m_1 + m_2)/(m_1 m_2)}$
+   = {{ answers.v_rel }}, i.e. $\tfrac{1}{2}\mu v_{\text{rel} }^2 = \tfrac{1}{2} k\delta^2$ with the
+   reduced mass $\mu = m_1 m_2/(m_1 + m_2)$.
+4. **Formula.** $v_1$ = `{{ answers.v1_formula }}`.
 """,
     solve=solve,
     parts=(

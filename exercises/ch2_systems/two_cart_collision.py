@@ -56,6 +56,8 @@ def solve(p):
         "v1_after": after.v1,
         "v2_after": after.v2,
         "dT": collisions.kinetic_energy_lost_in_impact(p.m1, p.m2, p.v1 - p.v2, p.e),
+        "v_approach": p.v1 - p.v2,
+        "v_c": collisions.common_velocity_after_plastic_impact(p.m1, p.m2, p.v1, p.v2),
     }
 
 
@@ -94,6 +96,28 @@ restitution is $e$ = {{ e }}. Treat the carts as particles and neglect friction.
 2. What is the velocity of cart 2 just after the impact?
 3. How much kinetic energy is lost in the impact?
 4. Give the energy lost as a formula in $m_1$, $m_2$, $v_1$, $v_2$ and $e$.
+""",
+    solution=r"""
+Central impact of two particles (Section 2.3.1). During the short impact only the internal
+contact force acts along the track, so the total momentum is conserved; the coefficient of
+restitution relates the relative speeds after and before:
+$m_1 v_1' + m_2 v_2' = m_1 v_1 + m_2 v_2, \qquad v_2' - v_1' = e\,(v_1 - v_2)$.
+Here $v_1$ = {{ v1 }}, $v_2$ = {{ v2 }}, so the carts approach with $v_1 - v_2$
+= {{ si.v_approach }} m/s; the centre of mass moves with
+$(m_1 v_1 + m_2 v_2)/(m_1 + m_2)$ = {{ si.v_c }} m/s before and after (with $m_1$ = {{ m1 }},
+$m_2$ = {{ m2 }}).
+
+1. **Cart 1.** Solving the two equations:
+   $v_1' = v_1 - \frac{(1 + e)\,m_2}{m_1 + m_2}(v_1 - v_2)$;
+   with $e$ = {{ e }}: $v_1'$ = {{ answers.v1_after }}.
+2. **Cart 2.** $v_2' = v_2 + \frac{(1 + e)\,m_1}{m_1 + m_2}(v_1 - v_2)$ = {{ answers.v2_after }}.
+   (Check: $v_2' - v_1' = e\,(v_1 - v_2)$.)
+3. **Energy lost.** The centre-of-mass motion keeps its kinetic energy; only the energy of
+   the relative motion, $\tfrac{1}{2}\mu (v_1 - v_2)^2$ with $\mu = m_1 m_2/(m_1 + m_2)$, is
+   reduced, by the factor $e^2$:
+   $\Delta T = \frac{m_1 m_2\,(1 - e^2)\,(v_1 - v_2)^2}{2\,(m_1 + m_2)}$
+   = {{ answers.dT }}.
+4. **Formula.** $\Delta T$ = `{{ answers.dT_formula }}`.
 """,
     solve=solve,
     figure=figure,
