@@ -18,6 +18,7 @@ from __future__ import annotations
 import io
 import re
 
+from ..exercise.figure import recycle
 from ..exercise.model import Exercise, Variant
 from .accessible_svg import accessible_svg, figure_description, prefixed_ids
 
@@ -44,6 +45,7 @@ def figure_svg(exercise: Exercise, variant: Variant) -> str | None:
                        metadata={"Date": None, "Creator": "dynagrade"})
     description = figure_description(figure)
     _close(figure)
+    recycle(figure)
     return accessible_svg(buffer.getvalue(), figure_title(exercise), description)
 
 
