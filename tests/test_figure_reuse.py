@@ -65,3 +65,27 @@ def test_a_figure_not_made_as_a_drawing_is_not_reused(no_spare):
     figure.add_axes((0, 0, 1, 1))
     drawings.recycle(figure)
     assert drawings.new_drawing()[0] is not figure
+
+
+def test_the_crop_is_the_box_matplotlibs_own_tight_crop_gives(no_spare):
+    """A label far right of the axes stays in the picture: the box measured in one pass
+    is the one matplotlib's two-pass ``bbox_inches="tight"`` writes into the SVG."""
+    import io
+    import re
+
+    from dynagrade.render.figures import PAD_INCHES, SVG_SETTINGS, tight_box
+
+    figure, axes = drawings.new_drawing(4.0, 2.0)
+    drawings.ground(axes, 0.0, 1.0)
+    axes.text(1.6, 0.5, "$F_{far}$ a label past the axes", ha="left")
+    axes.set_xlim(0.0, 1.0)
+    axes.set_ylim(-0.1, 1.0)
+    buffer = io.StringIO()
+    with matplotlib.rc_context(SVG_SETTINGS):
+        figure.savefig(buffer, format="svg", bbox_inches="tight", pad_inches=PAD_INCHES)
+        box = tight_box(figure, PAD_INCHES)
+    width, height = (float(re.search(rf'{name}="([\d.]+)pt"', buffer.getvalue()).group(1))
+                     for name in ("width", "height"))
+    assert box.width * 72 == pytest.approx(width, abs=1e-5)
+    assert box.height * 72 == pytest.approx(height, abs=1e-5)
+    assert box.width > 4.0  # the label reaches past the figure's own width

@@ -36,7 +36,7 @@ from .manifest import (ExamEntry, ExerciseEntry, Generator, Manifest, PartEntry,
                        StudentEntry, dump)
 from .run import GenerationRun, file_sha256
 from .spec import ExamSpec, ExamSpecError, Student, read_exam_spec, read_roster
-from .student import StudentResult, student_job
+from .student import STAGES, StudentResult, student_job
 from .workers import Pool, default_jobs
 
 Progress = Callable[[str, int, int], None]
@@ -69,6 +69,9 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
         stage = time.perf_counter()
         results = _students(pool, roster, progress)
         report.timings["students"] = time.perf_counter() - stage
+        for name in STAGES:
+            report.timings[f"students: {name} (worker CPU s)"] = sum(
+                r.timings.get(name, 0.0) for r in results)
         stage = time.perf_counter()
         manifest = build_manifest(run.spec, run.exercises, run.parts,
                                   [r.entry for r in results])
