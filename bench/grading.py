@@ -1,6 +1,6 @@
 """Benchmark of the grader: throughput, symbolic verdict latency, a naive CAS baseline,
-the cold-process time of grading one filled-in exercise file, and that of
-`dynagrade list` (which must not run the bank's exercise files).
+the slowest verdict of a fuzzing corpus, the cold-process time of grading one filled-in
+exercise file, and that of `dynagrade list` (which must not run the bank's exercise files).
 
     PYTHONPATH=src python bench/grading.py            # 2000 answers, CI-sized
     PYTHONPATH=src python bench/grading.py --size 10000 --naive 60
@@ -130,6 +130,52 @@ def run_class(size: int) -> list[float]:
     return symbolic_times
 
 
+def fuzzing_corpus(seed: int = 11) -> list[tuple[object, object, str]]:
+    """(spec, reference, answer) triples: the hostile answers of the parser tests and
+    generated unit powers, unit-only answers, extreme exponents and long flat sums,
+    each against every kind of part."""
+    sys.path.insert(0, str(ROOT / "tests"))
+    from test_grading_parser import HOSTILE, SPECS
+
+    rng = random.Random(seed)
+    units = ["m", "km", "deg", "rad", "rev", "lbf", "rpm", "blargs", "Hz", "ft", "bar"]
+    generated = []
+    for _ in range(150):
+        unit, other = rng.choice(units), rng.choice(units)
+        generated += [f"{rng.uniform(0, 1e3):.4g} {unit}^{rng.randint(-400, 400)}",
+                      f"{unit}^{other}", f"{unit} {other}^-{rng.randint(1, 9)}",
+                      f"{rng.uniform(0, 10):.3g}e{rng.choice('-−+')}{rng.randint(0, 5000)}",
+                      "+".join(["x"] * rng.randint(100, 450)),
+                      f"1-cos(x)+x^{rng.randint(-50, 50)}"]
+    return [(spec, expected, answer) for answer in HOSTILE + generated for spec, expected in SPECS]
+
+
+def run_fuzzing() -> None:
+    """Slowest verdict of the fuzzing corpus in a fresh process after ``prepare()``:
+    on the first pass (``ever``: caches empty) and on a second pass (``warm``)."""
+    code = ("import sys, time, json\n"
+            f"sys.path.insert(0, {str(ROOT / 'bench')!r})\n"
+            "from grading import fuzzing_corpus\n"
+            "from dynagrade.grading import grade, prepare\n"
+            "corpus = fuzzing_corpus()\n"
+            "def slowest():\n"
+            "    worst = (0.0, '')\n"
+            "    for spec, expected, answer in corpus:\n"
+            "        t0 = time.perf_counter(); grade(spec, expected, answer)\n"
+            "        worst = max(worst, (time.perf_counter() - t0, answer[:30]))\n"
+            "    return worst\n"
+            "prepare(); ever = slowest(); warm = slowest()\n"
+            "print(json.dumps([len(corpus), ever, warm]))\n")
+    env = dict(os.environ, PYTHONPATH=str(ROOT / "src"))
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env)
+    if done.returncode != 0:
+        print(f"fuzzing corpus: failed ({(done.stderr.strip().splitlines() or ['no output'])[-1]})")
+        return
+    count, (ever, ever_answer), (warm, warm_answer) = json.loads(done.stdout)
+    print(f"fuzzing corpus: {count} verdicts; slowest warm {warm * 1e3:.0f} ms ({warm_answer!r}), "
+          f"slowest ever {ever * 1e3:.0f} ms ({ever_answer!r}); targets 200 ms warm, 1000 ms ever")
+
+
 def run_naive(count: int, ours: list[float]) -> None:
     import sympy
     from sympy.parsing.sympy_parser import parse_expr, standard_transformations
@@ -206,6 +252,7 @@ def main() -> None:
     run_fixtures()
     ours = run_class(args.size)
     run_naive(args.naive, ours)
+    run_fuzzing()
     if not args.no_cold:
         run_cold()
         run_cold_list()

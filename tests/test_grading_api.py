@@ -68,3 +68,45 @@ def test_vector_and_choice_dispatch():
 def test_unreadable_answer_gives_an_error_verdict_not_an_exception():
     verdict = grade(NumericSpec(), 1.0, "2 +* 3")
     assert not verdict.correct and verdict.score == 0 and verdict.error
+
+
+# -- one tolerance rule for numbers and vector components -----------------------------------
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+def test_a_vector_component_at_the_boundary_is_right_like_a_number():
+    # [2.02, 0] for (2, 0) at 1 % was wrong while 2.02 for 2 was right.
+    assert grade(NumericSpec(), 2.0, "2.02").correct
+    assert grade(VectorSpec(2), (2.0, 0.0), "[2.02, 0]").correct
+    assert grade(VectorSpec(2), (2.0, 0.0), "[1.98, 0]").correct
+    assert grade(VectorSpec(2), (2.0, 0.0), "[2, 0.0002]").correct  # 1 % of 1 % of the length
+    assert not grade(VectorSpec(2), (2.0, 0.0), "[2, 0.00021]").correct
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(min_value=1e-3, max_value=1e6), st.floats(min_value=-0.0102, max_value=0.0102),
+       st.sampled_from([1, -1]))
+def test_a_vector_component_is_right_exactly_when_the_same_number_would_be(e, offset, sign):
+    e *= sign
+    answer = repr(e * (1 + offset))
+    as_number = grade(NumericSpec(), e, answer).correct
+    verdict = grade(VectorSpec(2), (e, e), f"[{answer}, {e!r}]")
+    assert ("1: ✓" in verdict.feedback or verdict.correct) is as_number
+
+
+# -- choice labels in every documented form -------------------------------------------------
+@pytest.mark.parametrize("answer", ["(a), (c)", "(a) (c)", "(a)(c)", "a), c)", "[a]; [c]", "{a} and {c}",
+                                    "a. c.", "(A), c", "(a, c)", "c) a"])
+def test_bracketed_labels_in_a_list_are_each_an_option(answer):
+    assert grade(ChoiceSpec(("a", "b", "c", "d"), multiple=True), ("a", "c"), answer).correct
+
+
+def test_an_unknown_label_among_bracketed_ones_is_named():
+    verdict = grade(ChoiceSpec(("a", "b", "c", "d"), multiple=True), ("a", "c"), "(a), (e)")
+    assert verdict.error and "unknown option" in verdict.error and "'(e)'" in verdict.error
+
+
+def test_a_choice_answer_is_length_limited_before_any_work():
+    verdict = grade(ChoiceSpec(("a", "b"), multiple=True), ("a",), "a, " * 1000)
+    assert not verdict.correct and "too long" in verdict.error

@@ -201,3 +201,106 @@ trees = st.recursive(leaves, _extend, max_leaves=25)
 @given(trees)
 def test_random_trees_round_trip_through_print_and_parse(tree):
     assert parse_expression(to_text(tree), NAMES) == tree
+
+
+# -- minus signs, exponents, names and limits ------------------------------------------------
+from dynagrade.grading import read_number  # noqa: E402
+from dynagrade.grading.names import MINUS_SIGNS  # noqa: E402
+from dynagrade.grading.nodes import nesting_and_terms  # noqa: E402
+from dynagrade.grading.parser import MAX_TERMS, check_limits  # noqa: E402
+
+
+@pytest.mark.parametrize("minus", list(MINUS_SIGNS), ids=[f"U+{ord(c):04X}" for c in MINUS_SIGNS])
+def test_every_documented_minus_sign_works_in_a_sign_an_exponent_and_a_formula(minus):
+    assert read_number(f"1.2e{minus}3") == 0.0012
+    assert read_number(f"1.2E{minus}03") == 0.0012
+    assert read_number(f"{minus}4.5") == -4.5
+    assert read_number(f"7 {minus} 2") == 5.0
+    assert parse_expression(f"x*1e{minus}3", ("x",)) == BinOp("*", Name("x"), Num(0.001))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.floats(allow_nan=False, allow_infinity=False), st.sampled_from(list(MINUS_SIGNS)),
+       st.sampled_from(["{!r}", "{:e}", "{:.3E}", "{:.17g}"]))
+def test_a_number_printed_with_any_documented_minus_sign_reads_as_with_ascii_minus(x, minus, form):
+    def reading(text):
+        try:
+            return read_number(text)
+        except AnswerError as error:  # rounding 1.7975e308 to 1.798E+308 overflows either way
+            return error.message
+
+    text = form.format(x)
+    assert reading(text.replace("-", minus)) == reading(text)
+    if form == "{!r}":
+        assert read_number(text.replace("-", minus)) == x
+
+
+def test_the_unicode_minus_in_an_exponent_is_never_read_as_a_product_with_e():
+    # 1.2e−3 used to be 1.2·e − 3 = 0.2619 without a word.
+    assert read_number("1.2e−3") == pytest.approx(1.2e-3, rel=1e-15)
+    assert read_number("1.2 e − 3") == pytest.approx(1.2 * math.e - 3)  # spaced: Euler's number
+
+
+@pytest.mark.parametrize("text, position", [("2e", 1), ("1.2e−", 3), ("3E", 1), ("4e+", 1), ("5e*x", 1), ("6e)", 1)])
+def test_a_number_glued_to_a_lone_e_is_an_unfinished_number(text, position):
+    with pytest.raises(AnswerError) as info:
+        parse_expression(text, ("x",))
+    assert "unfinished number" in info.value.message and info.value.position == position
+    with pytest.raises(AnswerError, match="unfinished number"):
+        parse_quantity(text.replace("*x", ""))
+
+
+def test_a_declared_e_may_follow_a_number():
+    assert parse_expression("2e", ("e",)) == BinOp("*", Num(2.0), Name("e"))
+    assert parse_expression("2E", ("E",)) == BinOp("*", Num(2.0), Name("E"))
+
+
+DYNAMICS_NAMES = ("omega_n", "zeta", "mu_k", "theta_0", "phi_1", "g")
+
+
+@pytest.mark.parametrize("text, canonical", [
+    ("ω_n√(1-ζ²)", "omega_n * sqrt(1 - zeta^2)"),
+    ("omega_n", "omega_n"),
+    ("ωn", "omega_n"),
+    ("μ_k g", "mu_k * g"),
+    ("μ_kg", "mu_k * g"),
+    ("θ_0", "theta_0"),
+    ("theta0", "theta_0"),
+    ("φ_1", "phi_1"),
+])
+def test_a_greek_letter_with_a_suffix_is_one_name(text, canonical):
+    assert to_text(parse_expression(text, DYNAMICS_NAMES)) == canonical
+
+
+def test_a_greek_letter_followed_by_letters_splits_into_declared_names():
+    assert parse_expression("ωt", ("omega", "t")) == BinOp("*", Name("omega"), Name("t"))
+    assert parse_expression("2πr", ("r",)) == BinOp("*", BinOp("*", Num(2.0), Const("pi")), Name("r"))
+
+
+def test_an_undeclared_greek_name_is_named_in_the_message():
+    with pytest.raises(AnswerError, match="unknown name 'omega_m'"):
+        parse_expression("ω_m", DYNAMICS_NAMES)
+
+
+@pytest.mark.parametrize("text, nesting, terms", [
+    ("x", 1, 1), ("x+x", 2, 2), ("x-x+x", 2, 3), ("(x+x)*x", 3, 2), ("((x+x)*x)^2", 4, 2),
+    ("x-x+x*x*x/x", 3, 4), ("sin(x+x+x)", 3, 3), ("+".join(["x"] * 300), 2, 300),
+])
+def test_nesting_counts_flattened_chains_once_and_terms_count_the_longest_chain(text, nesting, terms):
+    assert nesting_and_terms(parse_expression(text, ("x",))) == (nesting, terms)
+
+
+def test_a_flat_sum_of_hundreds_of_terms_is_not_nesting():
+    # 150 terms used to be refused as "nested more than 100 levels".
+    tree = parse_expression("+".join(["x"] * 150), ("x",))
+    assert nesting_and_terms(tree) == (2, 150)
+    assert read_number("*".join(["1"] * 400)) == 1.0
+
+
+def test_more_terms_than_the_term_limit_are_refused():
+    tree = Name("x")
+    for _ in range(MAX_TERMS):
+        tree = BinOp("+", tree, Name("x"))
+    with pytest.raises(AnswerError, match=f"more than {MAX_TERMS} terms"):
+        check_limits(tree)
+    check_limits(tree.left)  # exactly MAX_TERMS terms

@@ -9,6 +9,8 @@ Usage::
     dynagrade verify --variants 200
     dynagrade exam exam.toml --roster roster.csv -o out/
     dynagrade grade --manifest out/manifest.json out/submissions/ -o out/grading/
+    dynagrade links out/manifest.json -o links.csv --instructor
+    dynagrade serve out/manifest.json
 """
 
 from __future__ import annotations
@@ -338,6 +340,11 @@ def _parse_settings(exercise, settings) -> dict[str, float]:
             raise click.BadParameter(f"{setting!r}: {error}", param_hint="--set") from None
     return overrides
 
+
+from .serve.commands import links as _links, serve as _serve  # noqa: E402  (light: click only)
+
+main.add_command(_serve)
+main.add_command(_links)
 
 if __name__ == "__main__":
     main()

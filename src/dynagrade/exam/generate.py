@@ -198,6 +198,7 @@ def build_manifest(spec: ExamSpec, exercises: dict[str, Exercise],
                       file_sha256(exercises[item.id].path), parts[item.id])
         for item in spec.exercises)
     exam = ExamEntry(spec.id, spec.title, spec.date, spec.instructions, spec.total_points,
+                     spec.policy.to_json() if spec.policy != type(spec.policy)() else None,
                      language=spec.language)
     return Manifest(Generator(_version(), numpy.__version__), exam, described,
                     tuple(students))

@@ -38,10 +38,11 @@ from pathlib import Path
 from typing import Callable
 
 from ..errors import DynagradeError
+from .policy import POLICY_KEYS, Policy, PolicyError, read_policy
 
 _EXAM_ID = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
 _STUDENT_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]*$")
-_TOP_KEYS = {"id", "title", "date", "instructions", "language", "exercise"}
+_TOP_KEYS = {"id", "title", "date", "instructions", "language", "exercise"} | POLICY_KEYS
 _LANGUAGE = re.compile(r"^[a-z]{2,3}(-[A-Za-z0-9]{2,8})*$")
 _EXERCISE_KEYS = {"id", "points", "set"}
 ROSTER_HEADERS = (("student_id", "name"), ("student_id", "name", "email"))
@@ -72,6 +73,7 @@ class ExamSpec:
     exercises: tuple[ExamExercise, ...]
     path: str = ""
     language: str = "en"  # a BCP 47 tag: HTML lang and the PDFs' language
+    policy: Policy = Policy()  # delivery by `dynagrade serve` (exam/policy.py)
 
     @property
     def total_points(self) -> float:
@@ -151,8 +153,12 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
         line = lines[index] if index < len(lines) else 0
         at = f"{where}, line {line}, [[exercise]] #{index + 1}"
         exercises.append(_exercise(table, at, line, seen, known))
+    try:
+        policy = read_policy(data, where, lambda key: _key_line(text, key))
+    except PolicyError as error:
+        raise ExamSpecError(str(error)) from None
     return ExamSpec(exam_id, title, date, instructions, tuple(exercises), str(path),
-                    language)
+                    language, policy)
 
 
 def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExercise:

@@ -1,7 +1,10 @@
 """Grading of choice parts: one option, or a set of options with partial credit.
 
-Labels are matched ignoring case and spaces. A multiple-choice answer lists labels
-separated by commas, semicolons or spaces (``a, c``). Partial credit for multiple
+Labels are matched ignoring case and spaces, and may be written ``b``, ``(b)``,
+``b)``, ``[b]``, ``{b}`` or ``b.``. A multiple-choice answer lists labels separated by
+commas, semicolons, spaces or "and" (``a, c``, ``(a) (c)``, ``a) and c)``), in any
+mix of these forms. Answers longer than :data:`lexer.MAX_LENGTH` are refused before
+any other work. Partial credit for multiple
 choice: ``max(0, (right picks - wrong picks) / number of right options)``; only the
 exact set is correct.
 """
@@ -11,7 +14,14 @@ from __future__ import annotations
 import re
 
 from .errors import SpecError
+from .lexer import MAX_LENGTH
 from .verdict import Verdict, unreadable
+
+
+#: What may separate the labels of several options.
+_SEPARATORS = re.compile(r"[,;]|\band\b")
+#: Brackets around labels in a run of labels (``(a)(c)``, ``a) c)``) separate them.
+_BRACKETS_AS_SPACES = str.maketrans("()[]{}", "      ")
 
 
 def _key(label: str) -> str:
@@ -29,24 +39,37 @@ def _expected(spec, expected) -> set[str]:
     return chosen
 
 
+def _label(word: str, keys: dict) -> str | None:
+    """The option a written label names: ``b``, ``(b)``, ``b)``, ``[b]``, ``{b}`` or ``b.``."""
+    for form in (word, word.strip("()[]{}"), word.rstrip(".").strip("()[]{}")):
+        if form and _key(form) in keys:
+            return _key(form)
+    return None
+
+
 def _split(spec, answer: str) -> list[str] | str:
+    if len(answer) > MAX_LENGTH:
+        return f"the answer is too long ({len(answer)} characters; at most {MAX_LENGTH})"
     keys = {_key(o): o for o in spec.options}
-    text = answer.strip().strip("{}[]()")
-    if not text:
+    text = answer.strip()
+    if not text.strip("()[]{}").strip():
         return "the answer is empty: choose " + ("one or more options" if spec.multiple else "an option")
-    if _key(text) in keys:
-        return [_key(text)]
+    whole = _label(text, keys)
+    if whole is not None:
+        return [whole]
     picks = []
-    for chunk in re.split(r"[,;]|\band\b", text):
+    for chunk in _SEPARATORS.split(text):
         chunk = chunk.strip()
         if not chunk:
             continue
-        if _key(chunk) in keys:
-            picks.append(_key(chunk))
+        label = _label(chunk, keys)
+        if label is not None:
+            picks.append(label)
             continue
-        words = chunk.split()
-        if len(words) > 1 and all(_key(w) in keys for w in words):
-            picks.extend(_key(w) for w in words)
+        words = chunk.translate(_BRACKETS_AS_SPACES).split()
+        labels = [_label(w, keys) for w in words]
+        if len(words) > 1 and all(labels):
+            picks.extend(labels)
             continue
         shown = chunk if len(chunk) <= 30 else chunk[:30] + "…"
         return f"unknown option '{shown}'; the options are: {', '.join(spec.options)}"

@@ -14,11 +14,9 @@ from ..errors import DynagradeError
 from . import units
 from .errors import AnswerError
 from .evaluate import evaluate_constant
-from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit, names_in, to_text
+from .functions import FUNCTIONS
+from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit, has_units, names_in, to_text
 
-_TRIG = {"sin", "cos", "tan", "cot", "sec", "csc"}
-_INVERSE_TRIG = {"asin", "acos", "atan"}
-_PURE = {"sinh", "cosh", "tanh", "exp", "ln", "log10", "log2"}
 _ANGLE = (0.0,) * 7 + (1.0,)
 
 
@@ -71,6 +69,8 @@ def _dim(node: Expr, variables) -> tuple:
 
 
 def _power(node: BinOp, base: tuple, variables) -> tuple:
+    if has_units(node.right):
+        raise DimensionIssue(f"an exponent must be a pure number, not a unit ('{to_text(node.right)}')")
     exponent_dim = _dim(node.right, variables)
     if not units.is_dimensionless(exponent_dim):
         raise DimensionIssue(f"an exponent must be a pure number, but '{to_text(node.right)}' "
@@ -89,23 +89,20 @@ def _power(node: BinOp, base: tuple, variables) -> tuple:
 def _call(node: Call, variables) -> tuple:
     args = [_dim(arg, variables) for arg in node.args]
     func = node.func
-    if func in _TRIG:
+    rule = FUNCTIONS[func]
+    if rule.dims == "trig":
         if not units.is_dimensionless(args[0]):
             raise DimensionIssue(f"the argument of {func} must be an angle or a pure number, "
                                  f"but it has units of {show(args[0])}")
         return units.DIMENSIONLESS
-    if func in _PURE or func in _INVERSE_TRIG:
+    if rule.dims in ("pure", "inverse_trig"):
         if not units.is_dimensionless(args[0]):
             raise DimensionIssue(f"the argument of {func} must be a pure number, "
                                  f"but it has units of {show(args[0])}")
-        return _ANGLE if func in _INVERSE_TRIG else units.DIMENSIONLESS
-    if func == "atan2":
+        return _ANGLE if rule.dims == "inverse_trig" else units.DIMENSIONLESS
+    if rule.dims == "atan2":
         if not units.same(args[0], args[1], ignore_angle=True):
             raise DimensionIssue(f"the two arguments of atan2 must have the same units "
                                  f"({show(args[0])} and {show(args[1])} given)")
         return _ANGLE
-    if func == "sqrt":
-        return units.scale(args[0], 0.5)
-    if func == "cbrt":
-        return units.scale(args[0], 1.0 / 3.0)
-    return args[0]  # abs
+    return units.scale(args[0], rule.power)  # roots and abs

@@ -1,30 +1,44 @@
 """Tokenizer: answer text -> tokens, with Unicode and number-format normalisation.
 
-Reads ``^``/``**``, ``×``/``·`` for products, the Unicode minus, superscript
+Reads ``^``/``**``, ``×``/``·`` for products, every minus sign of
+:data:`names.MINUS_SIGNS` (also in a number's exponent: ``1.2e−3``), superscript
 exponents (``m/s²``, ``10⁻³``), ``√``, ``π`` and Greek letters (as their ASCII
 names), and numbers ``1.2``, ``.5``, ``1.2e3``, ``1.2E+03`` (and ``12,5`` where a
-decimal comma is allowed). Everything else is refused with a positioned message.
+decimal comma is allowed). A number token's value is its literal with ASCII signs.
+A number glued to a lone ``e``/``E`` (``2e``, ``1.2e−``) is refused unless that letter
+is a declared name: it is an unfinished exponent, never a product with Euler's number.
+
+A name is a letter (ASCII or Greek) followed by letters, digits and ``_``: ``ω_n`` is
+``omega_n``, ``θ_0`` is ``theta_0``. In number-with-unit answers, where names are
+units, a Greek letter stands alone (``2πrad`` is 2·pi·rad, ``µm`` a micrometre).
+Everything else is refused with a positioned message.
 """
 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from .errors import AnswerError
-from .names import GREEK, OPERATOR_CHARS, SUPERSCRIPTS
+from .names import GREEK, MINUS_SIGNS, OPERATOR_CHARS, PLUS_SIGNS, SUPERSCRIPTS
 
 #: Longest answer accepted, in characters.
 MAX_LENGTH = 2000
 #: Most tokens accepted in one answer.
 MAX_TOKENS = 1000
 
-_NUMBER = re.compile(r"(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
-_NUMBER_COMMA = re.compile(r"(?:[0-9]+(?:[.,][0-9]+|\.)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
+_SIGN = "[" + re.escape(MINUS_SIGNS + PLUS_SIGNS) + "]"
+_EXPONENT = f"(?:[eE]{_SIGN}?[0-9]+)?"
+_NUMBER = re.compile(r"(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)" + _EXPONENT)
+_NUMBER_COMMA = re.compile(r"(?:[0-9]+(?:[.,][0-9]+|\.)?|\.[0-9]+)" + _EXPONENT)
+_ASCII_SIGNS = str.maketrans({**{c: "-" for c in MINUS_SIGNS}, **{c: "+" for c in PLUS_SIGNS}})
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _DIGITS = frozenset("0123456789")
 _LETTERS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ")
+_NAME_CHARS = _LETTERS | _DIGITS | {"_"}
 _NAME_TAIL = re.compile(r"[0-9_]*")
+_FORMULA_NAME = re.compile("[A-Za-z0-9_" + re.escape("".join(GREEK)) + "]+")
+_SPELLED_OUT = str.maketrans(GREEK)
 _SUPERSCRIPT_VALUE = re.compile(r"[+-]?[0-9]+")
 
 NUM, NAME, OP, LPAR, RPAR, COMMA, SEMI, SUP, ROOT, EQUALS, END = (
@@ -50,18 +64,21 @@ _REFUSED_CHARS = {
 }
 
 
-@dataclass(frozen=True, slots=True)
-class Token:
+class Token(NamedTuple):
+    """One token: its kind, its text (numbers with ASCII signs) and where it starts."""
+
     kind: str
     value: str
     pos: int
 
 
-def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False) -> list[Token]:
+def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False,
+             names: frozenset = frozenset()) -> list[Token]:
     """Split ``text`` into tokens.
 
     ``quantity`` selects number-with-unit answers (``°`` is the unit ``deg``, ``µm``
-    is a micrometre); ``decimal_comma`` reads ``12,5`` as 12.5.
+    is a micrometre); ``decimal_comma`` reads ``12,5`` as 12.5; ``names`` are the
+    declared names (a declared ``e`` may follow a number: ``2e``).
     """
     if not isinstance(text, str):
         raise AnswerError("the answer must be text")
@@ -78,25 +95,14 @@ def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False) 
         if len(tokens) >= MAX_TOKENS:
             raise AnswerError(f"the answer is too long (more than {MAX_TOKENS} symbols)", i, text)
         if ch in _DIGITS or (ch == "." and i + 1 < n and text[i + 1] in _DIGITS):
-            m = number_re.match(text, i)
-            literal = m.group()
-            end = m.end()
-            if end < n and text[end] == "." and end + 1 < n and text[end + 1] in _DIGITS:
-                raise AnswerError("a number cannot have two decimal points", end, text)
-            if end < n and text[end] == "," and decimal_comma and end + 1 < n and text[end + 1] in _DIGITS:
-                raise AnswerError("a number cannot have two decimal commas", end, text)
-            value = float(literal.replace(",", "."))
-            if value == float("inf"):
-                raise AnswerError("this number is too large", i, text)
-            tokens.append(Token(NUM, literal, i))
-            i = end
+            token, i = _number(text, i, number_re, decimal_comma, names)
+            tokens.append(token)
             continue
-        if ch in _LETTERS or ch == "_":
-            m = _NAME.match(text, i)
-            end = m.end()
+        if ch in _LETTERS or ch == "_" or (ch in GREEK and not quantity):
+            word, end = _unit_name(text, i) if quantity else _name(text, i)
             if end < n and text[end] == "." and end + 1 < n and (text[end + 1] in _LETTERS or text[end + 1] == "_"):
                 raise AnswerError("attribute access like a.b is not allowed", end, text)
-            tokens.append(Token(NAME, m.group(), i))
+            tokens.append(Token(NAME, word, i))
             i = end
             continue
         if ch in ("µ", "μ") and quantity and i + 1 < n and text[i + 1] in _LETTERS:
@@ -161,3 +167,38 @@ def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False) 
         raise AnswerError(f"unexpected character '{shown}'", i, text)
     tokens.append(Token(END, "", n))
     return tokens
+
+
+def _number(text: str, i: int, number_re, decimal_comma: bool, names: frozenset) -> tuple[Token, int]:
+    """The number starting at ``i`` (its literal with ASCII signs) and where it ends."""
+    n = len(text)
+    end = number_re.match(text, i).end()
+    if end < n and text[end] == "." and end + 1 < n and text[end + 1] in _DIGITS:
+        raise AnswerError("a number cannot have two decimal points", end, text)
+    if end < n and text[end] == "," and decimal_comma and end + 1 < n and text[end + 1] in _DIGITS:
+        raise AnswerError("a number cannot have two decimal commas", end, text)
+    if end < n and text[end] in "eE" and text[end] not in names:
+        after = text[end + 1] if end + 1 < n else ""
+        if after in MINUS_SIGNS or after in PLUS_SIGNS or not (after in _NAME_CHARS or after in GREEK):
+            mantissa = text[i:end]
+            raise AnswerError(f"'{mantissa}{text[end]}' is an unfinished number: write the exponent's digits "
+                              f"({mantissa}{text[end]}3, {mantissa}{text[end]}-3), or '{mantissa}*e' for "
+                              "a product with Euler's number", end, text)
+    literal = text[i:end].translate(_ASCII_SIGNS)
+    value = float(literal.replace(",", "."))
+    if value == float("inf"):
+        raise AnswerError("this number is too large", i, text)
+    return Token(NUM, literal, i), end
+
+
+def _name(text: str, i: int) -> tuple[str, int]:
+    """A formula's name at ``i``: a letter, then letters, digits and ``_``; Greek
+    letters are spelled out (``ω_n`` -> ``omega_n``)."""
+    m = _FORMULA_NAME.match(text, i)
+    return m.group().translate(_SPELLED_OUT), m.end()
+
+
+def _unit_name(text: str, i: int) -> tuple[str, int]:
+    """A unit's name at ``i``: ASCII letters, digits and ``_``."""
+    m = _NAME.match(text, i)
+    return m.group(), m.end()

@@ -1,18 +1,14 @@
-"""Vocabulary of expressions: functions, constants, aliases and Unicode letters."""
+"""Vocabulary of expressions: spellings of functions, constants, and Unicode letters.
+
+The functions themselves (arguments, values, units) are the table in :mod:`functions`.
+"""
 
 from __future__ import annotations
 
 import difflib
 import math
 
-#: Canonical function name -> number of arguments.
-FUNCTIONS: dict[str, int] = {
-    "sin": 1, "cos": 1, "tan": 1, "cot": 1, "sec": 1, "csc": 1,
-    "asin": 1, "acos": 1, "atan": 1, "atan2": 2,
-    "sinh": 1, "cosh": 1, "tanh": 1,
-    "exp": 1, "ln": 1, "log10": 1, "log2": 1,
-    "sqrt": 1, "cbrt": 1, "abs": 1,
-}
+from .functions import FUNCTIONS
 
 #: Spellings students use -> canonical function name. ``log`` is the natural logarithm.
 FUNCTION_ALIASES: dict[str, str] = {
@@ -57,11 +53,18 @@ SUPERSCRIPTS: dict[str, str] = {
     "⁸": "8", "⁹": "9", "⁻": "-", "⁺": "+",
 }
 
+#: Every character read as a minus sign, in a formula and in a number's exponent alike:
+#: ASCII ``-``, the minus sign U+2212, and the dashes and hyphens students paste from
+#: calculators, PDFs, word processors and phones.
+MINUS_SIGNS = "-\u2212\u2010\u2011\u2012\u2013\u2014\ufe63\uff0d"
+#: Every character read as a plus sign.
+PLUS_SIGNS = "+\ufe62\uff0b"
+
 #: Characters read as operators.
 OPERATOR_CHARS: dict[str, str] = {
-    "−": "-", "‒": "-", "–": "-", "—": "-", "﹣": "-", "－": "-",
+    **{c: "-" for c in MINUS_SIGNS[1:]}, **{c: "+" for c in PLUS_SIGNS[1:]},
     "×": "*", "·": "*", "⋅": "*", "∙": "*", "•": "*", "∗": "*", "÷": "/", "∕": "/",
-    "＋": "+", "（": "(", "）": ")",
+    "（": "(", "）": ")",
 }
 
 

@@ -133,21 +133,41 @@ def walk(node: Expr) -> Iterator[Expr]:
             stack.extend(reversed(current.args))
 
 
-def depth(node: Expr) -> int:
-    """Height of a tree (iterative)."""
-    best = 0
-    stack = [(node, 1)]
+#: Operators that form associative chains, by chain.
+_CHAINS = {"+": "sum", "-": "sum", "*": "product", "/": "product"}
+
+
+def nesting_and_terms(node: Expr) -> tuple[int, int]:
+    """The height of a tree once chains of ``+ -`` and of ``* /`` are flattened into one
+    node each (a sum of 500 terms has height 2, like ``a + b``), and the most terms in
+    one chain. Iterative, so any tree is safe to measure."""
+    height, most = 0, 1
+    terms: dict[int, int] = {}  # id of a chain's top link -> its terms so far
+    stack: list = [(node, 1, None, None)]
     while stack:
-        current, d = stack.pop()
-        best = max(best, d)
-        if isinstance(current, Neg):
-            stack.append((current.operand, d + 1))
-        elif isinstance(current, BinOp):
-            stack.append((current.left, d + 1))
-            stack.append((current.right, d + 1))
+        current, level, parent_kind, key = stack.pop()
+        kind = _CHAINS.get(current.op) if isinstance(current, BinOp) else None
+        if kind is not None and kind == parent_kind:
+            level -= 1  # a link of the parent's chain sits at the chain's level
+        if level > height:
+            height = level
+        if isinstance(current, BinOp):
+            if kind is None:
+                stack.append((current.left, level + 1, None, None))
+                stack.append((current.right, level + 1, None, None))
+                continue
+            if kind != parent_kind:
+                key = id(current)
+            count = terms[key] = terms.get(key, 1) + 1
+            if count > most:
+                most = count
+            stack.append((current.left, level + 1, kind, key))
+            stack.append((current.right, level + 1, kind, key))
+        elif isinstance(current, Neg):
+            stack.append((current.operand, level + 1, None, None))
         elif isinstance(current, Call):
-            stack.extend((a, d + 1) for a in current.args)
-    return best
+            stack.extend((a, level + 1, None, None) for a in current.args)
+    return height, most
 
 
 def names_in(node: Expr) -> set[str]:

@@ -14,7 +14,8 @@ at the same level (so ``1/2g`` is ``(1/2)·g``); unary ``- +``; powers ``^``/``*
 (right-associative, ``-x^2`` is ``-(x^2)``) and superscripts. The parser never
 evaluates anything and stops with a positioned :class:`AnswerError` on the first
 problem. Limits: :data:`lexer.MAX_LENGTH` characters, :data:`lexer.MAX_TOKENS`
-tokens, :data:`MAX_DEPTH` levels of nesting.
+tokens, :data:`MAX_DEPTH` levels of nesting, :data:`MAX_TERMS` terms in a flat sum or
+product.
 """
 
 from __future__ import annotations
@@ -25,11 +26,20 @@ from functools import lru_cache
 from . import lexer
 from .errors import AnswerError
 from .lexer import COMMA, END, EQUALS, LPAR, NAME, NUM, OP, ROOT, RPAR, SEMI, SUP, Token
-from .names import CONSTANTS, FUNCTIONS, REFUSED_FUNCTIONS, canonical_function, suggest
-from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit, depth
+from .functions import FUNCTIONS
+from .names import CONSTANTS, REFUSED_FUNCTIONS, canonical_function, suggest
+from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit, nesting_and_terms
 
-#: Deepest nesting accepted (brackets, operators, and height of the tree).
+#: Deepest nesting accepted: brackets, function calls, unary signs and powers, and the
+#: height of the tree once chains of ``+ -`` and of ``* /`` are flattened.
 MAX_DEPTH = 100
+#: Most terms in one flat sum or product (``a + b - c`` has three).
+MAX_TERMS = 1000
+
+#: Most tree nodes one character of an answer can make (a superscript: power, number and
+#: sign; and a product written without an operator between two operands), so answers
+#: shorter than MAX_DEPTH / 4 characters cannot exceed a limit and are not measured.
+_NODES_PER_CHARACTER = 4
 
 _BP_SUM, _BP_PRODUCT, _BP_UNARY, _BP_POWER, _BP_SUPERSCRIPT = 10, 20, 30, 40, 50
 _BP_ROOT = 35  # √ takes the next operand with its exponent: √x² is √(x²)
@@ -93,7 +103,7 @@ def parse_vector(text: str) -> tuple[list[Expr], Expr | None]:
             unit = parser.expression(0)
     parser.expect_end()
     for part in components + ([unit] if unit is not None else []):
-        _check_depth(part)
+        check_limits(part)
     return components, unit
 
 
@@ -122,7 +132,8 @@ def _has_top_level(tokens: list[Token], separator: str) -> bool:
 
 
 def _parse(text: str, vocabulary: Vocabulary, *, decimal_comma: bool) -> Expr:
-    tokens = lexer.tokenize(text, quantity=vocabulary.quantity, decimal_comma=decimal_comma)
+    tokens = lexer.tokenize(text, quantity=vocabulary.quantity, decimal_comma=decimal_comma,
+                            names=vocabulary.variables)
     # "v = 12 m/s": the name on the left of a single '=' is ignored.
     if len(tokens) > 2 and tokens[0].kind == NAME and tokens[1].kind == EQUALS:
         tokens = tokens[2:]
@@ -131,13 +142,19 @@ def _parse(text: str, vocabulary: Vocabulary, *, decimal_comma: bool) -> Expr:
         raise AnswerError("the answer is empty")
     tree = parser.expression(0)
     parser.expect_end()
-    _check_depth(tree)
+    if len(text) * _NODES_PER_CHARACTER > MAX_DEPTH:
+        check_limits(tree)
     return tree
 
 
-def _check_depth(tree: Expr) -> None:
-    if depth(tree) > MAX_DEPTH:
+def check_limits(tree: Expr) -> None:
+    """Refuse a tree nested more than :data:`MAX_DEPTH` levels (chains of ``+ -`` and
+    ``* /`` count once) or with a chain of more than :data:`MAX_TERMS` terms."""
+    nesting, terms = nesting_and_terms(tree)
+    if nesting > MAX_DEPTH:
         raise AnswerError(f"the expression is too complex (nested more than {MAX_DEPTH} levels)")
+    if terms > MAX_TERMS:
+        raise AnswerError(f"the expression is too long (a sum or product of more than {MAX_TERMS} terms)")
 
 
 class _Parser:
@@ -150,7 +167,10 @@ class _Parser:
 
     # -- token stream -------------------------------------------------------------------
     def peek(self, offset: int = 0) -> Token:
-        return self.tokens[min(self.index + offset, len(self.tokens) - 1)]
+        try:
+            return self.tokens[self.index + offset]
+        except IndexError:
+            return self.tokens[-1]
 
     def advance(self) -> Token:
         token = self.tokens[self.index]
@@ -287,9 +307,9 @@ class _Parser:
         variables = self.vocabulary.variables
         if word in variables:
             return Name(word)
-        squeezed = word.replace("_", "")
-        if squeezed != word and squeezed in variables:
-            return Name(squeezed)
+        spelled = _without_underscores(variables).get(word.replace("_", ""))
+        if spelled and "_" in word:
+            return Name(spelled)
         if word in CONSTANTS:
             return Const(word)
         if function:
@@ -299,6 +319,8 @@ class _Parser:
         pieces = _split_name(word, variables, follows_bracket)
         if pieces:
             return self.product_of_pieces(token, pieces)
+        if spelled:
+            return Name(spelled)
         pool = list(variables) + list(CONSTANTS) + list(FUNCTIONS)
         hint = suggest(word, pool) if len(word) <= 40 else None
         word = word if len(word) <= 30 else word[:30] + "…"
@@ -329,7 +351,7 @@ class _Parser:
 
     def call(self, token: Token, function: str) -> Expr:
         opener = self.advance()
-        arity = FUNCTIONS[function]
+        arity = FUNCTIONS[function].arity
         if self.peek().kind == RPAR:
             raise self.error(f"{token.value}() needs an argument", self.peek())
         args = [self.expression(0)]
@@ -342,6 +364,16 @@ class _Parser:
         if len(args) != arity:
             raise self.error(f"{token.value} takes {arity} arguments", token)
         return Call(function, tuple(args))
+
+
+@lru_cache(maxsize=256)
+def _without_underscores(variables: frozenset) -> dict[str, str]:
+    """Declared names by their spelling without ``_`` (``omegan`` -> ``omega_n``), leaving
+    out spellings two declared names share."""
+    spellings: dict[str, list[str]] = {}
+    for name in variables:
+        spellings.setdefault(name.replace("_", ""), []).append(name)
+    return {key: names[0] for key, names in spellings.items() if len(names) == 1}
 
 
 def _split_name(word: str, variables: frozenset, follows_bracket: bool) -> list[str] | None:

@@ -69,6 +69,9 @@ def quantity_from_tree(tree: Expr, text: str, *, require_number: bool = True) ->
     if unit_part is not None:
         unit_text = to_text(unit_part)
         unit_factor = float(evaluate(unit_part, {}, factors))
+        if not (math.isfinite(unit_factor) and unit_factor > 0):
+            shown = unit_text if len(unit_text) <= 30 else unit_text[:30] + "…"
+            raise AnswerError(f"the unit '{shown}' is too large or too small to compute with")
     return Quantity(value, dim, unit_text, unit_factor, number_text, tree)
 
 

@@ -29,6 +29,8 @@ from .parser import parse_expression
 from .quantity import unit_info
 from .spec import SymbolicSpec
 from .timing import Deadline
+from .tolerance import median, point_tolerance
+from .precise import agree_precisely, extended
 from .tosympy import exactly_equal
 from .verdict import Verdict, unreadable
 
@@ -48,6 +50,7 @@ class _Reference:
     known: tuple
     domains: dict
     rtol: float
+    extended: tuple | None
 
 
 def _parse_reference(text, names, what: str) -> Expr:
@@ -70,7 +73,7 @@ def _reference(spec: SymbolicSpec, expected: str) -> _Reference:
         dims[name] = dim
     all_dims = None if any(d is None for d in dims.values()) else dims
     env, values = _sample(spec, expected, tree, factors)
-    tol = _tolerance(values, spec.rtol)
+    tol = point_tolerance(values, spec.rtol)
     ref_dim = None
     if all_dims is not None:
         try:
@@ -85,7 +88,8 @@ def _reference(spec: SymbolicSpec, expected: str) -> _Reference:
         wrong_tree = _parse_reference(wrong.value, names, f"misconception {wrong.name!r}")
         known.append((wrong, _values(wrong_tree, env, values.shape)))
     domains = {n: (v.min * factors[n], v.max * factors[n]) for n, v in spec.variables.items()}
-    return _Reference(tree, names, env, values, tol, all_dims, ref_dim, swapped, tuple(known), domains, spec.rtol)
+    return _Reference(tree, names, env, values, tol, all_dims, ref_dim, swapped, tuple(known), domains, spec.rtol,
+                      extended(tree, env))
 
 
 def _values(tree: Expr, env: dict, shape) -> np.ndarray:
@@ -100,7 +104,7 @@ def _sample(spec: SymbolicSpec, expected: str, tree: Expr, factors: dict):
     kept: list[np.ndarray] = []
     count = 0
     for _ in range(_MAX_DRAWS):
-        batch = {n: rng.uniform(v.min, v.max, size=2 * want) * factors[n] for n, v in spec.variables.items()}
+        batch = {n: _uniform(rng, v.min, v.max, 2 * want) * factors[n] for n, v in spec.variables.items()}
         vals = _values(tree, batch, (2 * want,))
         ok = np.isfinite(vals)
         for n in batch:
@@ -116,6 +120,14 @@ def _sample(spec: SymbolicSpec, expected: str, tree: Expr, factors: dict):
     return env, values
 
 
+def _uniform(rng, low: float, high: float, size: int) -> np.ndarray:
+    """Points drawn uniformly from [low, high], also when high - low overflows (±1e308)."""
+    if math.isfinite(high - low):
+        return rng.uniform(low, high, size=size)
+    u = rng.uniform(0.0, 1.0, size=size)
+    return low * (1.0 - u) + high * u
+
+
 def _swap_sin_cos(tree: Expr) -> Expr:
     if isinstance(tree, Call):
         func = {"sin": "cos", "cos": "sin"}.get(tree.func, tree.func)
@@ -129,8 +141,8 @@ def _swap_sin_cos(tree: Expr) -> Expr:
 
 def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
     """The verdict on a formula answer (see :func:`dynagrade.grading.grade`)."""
-    deadline = Deadline()
     ref = _reference(spec, expected)
+    deadline = Deadline()  # the reference (and the units it loads) is prepared outside the budget
     try:
         tree = parse_expression(answer, ref.names)
     except AnswerError as error:
@@ -152,12 +164,11 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
         return Verdict(False, 0.0, "Not correct: your expression is undefined for some allowed values of "
                                     "the variables (a division by zero, the root or logarithm of a negative "
                                     "number, or a number too large to compute) where the expected one is defined." + reveal)
-    diff = np.abs(values - ref.values)
-    if np.all(diff <= ref.tol) or (np.all(diff <= 100 * ref.tol) and
-                                   exactly_equal(tree, ref.tree, ref.domains, min(0.3, deadline.remaining()))):
+    if _equivalent(tree, ref, values, deadline):
         return _form_verdict(spec, ref, tree)
     hints = " ".join(reading_hints(tree))
-    found = _misconception(spec, ref, values)
+    with np.errstate(all="ignore"):  # ratios of values near the float limit overflow
+        found = _misconception(spec, ref, values)
     if found is not None:
         name, feedback, score = found
         return Verdict(False, score, " ".join(x for x in (feedback, hints) if x) + reveal, misconception=name)
@@ -165,6 +176,21 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
     read = read if len(read) <= 120 else read[:120] + "…"
     text = f"Not correct: your expression (read as {read}) is not equivalent to the expected one."
     return Verdict(False, 0.0, " ".join(x for x in (text, hints) if x) + reveal)
+
+
+def _equivalent(tree: Expr, ref: _Reference, values: np.ndarray, deadline: Deadline) -> bool:
+    """Float values within the tolerance; else, both being finite, the values in high
+    precision decide, and when those cannot, the exact check if the float values are
+    within 100 times the tolerance."""
+    diff = np.abs(values - ref.values)
+    if np.all(diff <= ref.tol):
+        return True
+    precise = agree_precisely(tree, ref.tree, ref.env, values, ref.values, ref.tol, ref.rtol, deadline,
+                              ref.extended)
+    if precise is not None:
+        return precise
+    return bool(np.all(diff <= 100 * ref.tol)) and \
+        bool(exactly_equal(tree, ref.tree, ref.domains, min(0.3, deadline.remaining())))
 
 
 def _form_verdict(spec: SymbolicSpec, ref: _Reference, tree: Expr) -> Verdict:
@@ -186,18 +212,11 @@ def _form_verdict(spec: SymbolicSpec, ref: _Reference, tree: Expr) -> Verdict:
     return Verdict(True, 1.0, "Correct.")
 
 
-def _tolerance(target: np.ndarray, rtol: float) -> np.ndarray:
-    """Per point ``rtol * max(|t_i|, 1e-3*M)``, M the median of |t| (the module's rule)."""
-    scale = float(np.median(np.abs(target)))
-    floor = 1e-3 * scale if scale > 0 else 1e-12 / max(rtol, 1e-300)
-    return rtol * np.maximum(np.abs(target), floor)
-
-
 def _agrees(values: np.ndarray, target: np.ndarray, ref: _Reference) -> bool:
     """Whether ``values`` match ``target`` under the reference's tolerance rule."""
     if not np.all(np.isfinite(target)):
         return False
-    return bool(np.all(np.abs(values - target) <= _tolerance(target, ref.rtol)))
+    return bool(np.all(np.abs(values - target) <= point_tolerance(target, ref.rtol)))
 
 
 def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray):
@@ -210,7 +229,7 @@ def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray):
     nonzero = np.abs(e) > 0
     if np.count_nonzero(nonzero) >= 3:
         ratio = values[nonzero] / e[nonzero]
-        c = float(np.median(ratio))
+        c = median(ratio)
         if np.all(np.abs(ratio - c) <= 1e-6 * max(abs(c), 1e-300)) and c != 0:
             if abs(c + 1) < 1e-6:
                 return "sign", "Your expression has the wrong sign: check the direction you took as positive.", 0.0
@@ -219,7 +238,7 @@ def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray):
             if abs(c - 0.5) < 1e-6:
                 return "factor 1/2", "Your expression is half the expected one: check for a missing factor of 2.", 0.0
             k = math.log10(abs(c))
-            if abs(k - round(k)) < 1e-6 and c > 0:
+            if abs(k - round(k)) < 1e-6 and c > 0 and round(k) != 0:
                 return "power of ten", f"Your expression is off by a factor 10^{round(k)}.", 0.0
     if ref.swapped is not None and _agrees(values, ref.swapped, ref) and not _agrees(e, ref.swapped, ref):
         return "sin/cos", "Your expression has sin where cos belongs (or the other way round): check which angle you used.", 0.0
@@ -230,11 +249,11 @@ def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray):
             return "reciprocal", "Your expression is the reciprocal of the expected one: is a fraction upside down?", 0.0
     if np.count_nonzero(nonzero) >= 3:
         ratio = values[nonzero] / e[nonzero]
-        c = float(np.median(ratio))
+        c = median(ratio)
         if c != 0 and np.all(np.abs(ratio - c) <= 1e-6 * abs(c)):
             return "constant factor", "Your expression differs from the expected one by a constant factor.", 0.0
     offset = values - e
-    d = float(np.median(offset))
+    d = median(offset)
     if d != 0 and np.all(np.abs(offset - d) <= ref.tol) and names_in(ref.tree):
         return "constant term", "Your expression differs from the expected one by a constant term.", 0.0
     return None

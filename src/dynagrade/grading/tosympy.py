@@ -11,6 +11,7 @@ import math
 from typing import Mapping
 
 from ..errors import DynagradeError
+from .functions import FUNCTIONS
 from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit
 from .timing import OutOfTime, can_interrupt, time_limit
 
@@ -30,14 +31,6 @@ def to_sympy(expr: Expr, domains: Mapping[str, tuple[float, float]]):
         elif hi < 0:
             assumptions["negative"] = True
         symbols[name] = sympy.Symbol(name, **assumptions)
-    functions = {
-        "sin": sympy.sin, "cos": sympy.cos, "tan": sympy.tan, "cot": sympy.cot, "sec": sympy.sec,
-        "csc": sympy.csc, "asin": sympy.asin, "acos": sympy.acos, "atan": sympy.atan,
-        "atan2": sympy.atan2, "sinh": sympy.sinh, "cosh": sympy.cosh, "tanh": sympy.tanh,
-        "exp": sympy.exp, "ln": sympy.log, "log10": lambda x: sympy.log(x, 10),
-        "log2": lambda x: sympy.log(x, 2), "sqrt": sympy.sqrt, "cbrt": sympy.cbrt, "abs": sympy.Abs,
-    }
-
     def convert(node: Expr):
         if isinstance(node, Num):
             value = node.value
@@ -67,7 +60,7 @@ def to_sympy(expr: Expr, domains: Mapping[str, tuple[float, float]]):
                 raise NotConvertible("large exponent")
             return sympy.Pow(a, b)
         if isinstance(node, Call):
-            return functions[node.func](*[convert(a) for a in node.args])
+            return FUNCTIONS[node.func].sympy(sympy, *[convert(a) for a in node.args])
         raise NotConvertible(type(node).__name__)
 
     return convert(expr)

@@ -83,9 +83,25 @@ def registry():
     return _registry
 
 
-@lru_cache(maxsize=2048)
 def lookup(name: str) -> tuple[float, tuple]:
     """(factor to SI, dimension) of one unit name; AnswerError when unknown."""
+    found = _lookup(name)
+    if isinstance(found, str):
+        raise AnswerError(found)
+    return found
+
+
+@lru_cache(maxsize=2048)
+def _lookup(name: str) -> tuple[float, tuple] | str:
+    """What :func:`lookup` answers, or the message why not (unknown names are asked of
+    pint once, not once per answer)."""
+    try:
+        return _find(name)
+    except AnswerError as error:
+        return error.message
+
+
+def _find(name: str) -> tuple[float, tuple]:
     if name in BUILTIN:
         return BUILTIN[name]
     if name in _REFUSED:
@@ -112,14 +128,14 @@ def _product(parts) -> tuple[float, tuple]:
 
 def _pint_unit(name: str) -> tuple[float, tuple]:
     if not name.replace("_", "").isalnum() or len(name) > 40 or name.startswith("_"):
-        raise AnswerError(f"unknown unit '{name[:30]}'")
+        raise AnswerError(f"'{name[:30]}' is not a unit I know")
     ureg = registry()
     try:
         factor, root = ureg.get_root_units(name)
     except Exception:  # pint raises several error types for unknown names
         hint = suggest(name, _COMMON)
         tail = f"; did you mean '{hint}'?" if hint else ""
-        raise AnswerError(f"unknown unit '{name}'{tail}") from None
+        raise AnswerError(f"'{name}' is not a unit I know{tail}") from None
     exps = [0.0] * 8
     factor = float(factor)
     for root_name, power in dict(root._units).items():
@@ -134,22 +150,21 @@ def _pint_unit(name: str) -> tuple[float, tuple]:
 
 
 def _split(name: str) -> list[str] | None:
-    """Read ``Nm``-like names as units written together, longest first."""
+    """Read ``kNm``-like names as common units written together, longest first.
+
+    Only the built-in units are pieces, so that an unknown word (``blargs``) stays an
+    unknown unit instead of a product of one-letter units pint happens to know."""
     if len(name) > 12:
         return None
     for k in range(len(name) - 1, 0, -1):
         head, tail = name[:k], name[k:]
-        try:
-            BUILTIN.get(head) or _pint_unit(head)
-        except AnswerError:
+        if head not in BUILTIN:
             continue
-        try:
-            BUILTIN.get(tail) or _pint_unit(tail)
+        if tail in BUILTIN:
             return [head, tail]
-        except AnswerError:
-            rest = _split(tail)
-            if rest:
-                return [head] + rest
+        rest = _split(tail)
+        if rest:
+            return [head] + rest
     return None
 
 

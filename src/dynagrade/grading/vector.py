@@ -13,7 +13,7 @@ from .nodes import BinOp
 from .parser import parse_vector
 from .quantity import quantity_from_tree, unit_info
 from .spec import VectorSpec
-from .tolerance import DEFAULT_ATOL
+from .tolerance import allowed_error, is_close
 from .verdict import Verdict, unreadable
 
 
@@ -27,11 +27,16 @@ def _expected(spec: VectorSpec, expected) -> np.ndarray:
     return values
 
 
+def component_scale(e: np.ndarray) -> np.ndarray:
+    """What each component's relative tolerance is taken of: ``max(|e_i|, 0.01*|e|)``,
+    so a zero component is judged against the vector's length."""
+    return np.maximum(np.abs(e), 0.01 * float(np.linalg.norm(e)))
+
+
 def component_tolerance(spec: VectorSpec, e: np.ndarray) -> np.ndarray:
-    """max(atol, rtol*max(|e_i|, 0.01*|e|)): a zero component is judged against the norm."""
-    floor = DEFAULT_ATOL if spec.atol is None else spec.atol
-    norm = float(np.linalg.norm(e))
-    return np.maximum(floor, spec.rtol * np.maximum(np.abs(e), 0.01 * norm))
+    """The largest error each component may have (for exports that state tolerances):
+    the number rule's :func:`allowed_error` with the scale of :func:`component_scale`."""
+    return allowed_error(e, spec.rtol, spec.atol, component_scale(e))
 
 
 def grade_vector(spec: VectorSpec, expected, answer: str) -> Verdict:
@@ -48,15 +53,15 @@ def grade_vector(spec: VectorSpec, expected, answer: str) -> Verdict:
         return Verdict(False, 0.0, f"Not correct: the answer needs {spec.size} components, you gave {len(values)}.")
     if not np.all(np.isfinite(values)):
         return unreadable("a component of your answer is not a finite number")
-    tol = component_tolerance(spec, e)
-    right = np.abs(values - e) <= tol
+    scale = component_scale(e)
+    right = is_close(values, e, spec.rtol, spec.atol, scale)
     reveal = ""
     if spec.reveal:
         reveal = " The expected answer is (" + ", ".join(show_number(x) for x in e) + ")" + \
             (f" {spec.unit}." if spec.unit else ".")
     if right.all():
         return Verdict(True, 1.0, "Correct.")
-    found = _misconception(spec, e, values, tol)
+    found = _misconception(spec, e, values, scale)
     if found is not None:
         name, feedback, score = found
         return Verdict(False, score, feedback + reveal, misconception=name)
@@ -92,11 +97,13 @@ def _read(spec, components, unit_tree, text, part_factor, part_dim):
     return np.array(values, dtype=np.float64), None
 
 
-def _misconception(spec: VectorSpec, e: np.ndarray, values: np.ndarray, tol: np.ndarray):
+def _misconception(spec: VectorSpec, e: np.ndarray, values: np.ndarray, scale: np.ndarray):
+    def close(a, b) -> bool:
+        return bool(np.all(is_close(a, b, spec.rtol, spec.atol, scale)))
+
     def matches(target) -> bool:
         target = np.asarray(target, dtype=np.float64)
-        return target.shape == e.shape and bool(np.all(np.abs(values - target) <= tol)) \
-            and not bool(np.all(np.abs(e - target) <= tol))
+        return target.shape == e.shape and close(values, target) and not close(e, target)
 
     for known in spec.misconceptions:
         try:

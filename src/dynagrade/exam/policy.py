@@ -1,0 +1,137 @@
+"""An exam's delivery policy: when students may answer, how often, and what they see.
+
+Top-level keys of ``exam.toml`` (all optional)::
+
+    mode = "homework"                       # "exam" (default) | "homework" | "practice"
+    opens = 2025-04-14T08:00:00+02:00       # a TOML date-time with its offset (or "Z")
+    closes = 2025-04-21T23:59:00+02:00
+    attempts = 3                            # submissions per part; 0 = no limit (default)
+    penalty = 0.1                           # fraction of a part's points lost per extra attempt
+    feedback = "immediate"                  # "immediate" | "after-close"
+    counts = "best"                         # which attempt the gradebook takes: "best" | "last"
+
+Defaults follow the mode: an exam shows feedback after the close and counts the last
+saved answer; homework and practice show verdicts at once and count the best attempt.
+An exam cannot show verdicts before its close (``feedback = "immediate"`` is refused).
+The server enforces ``opens`` and ``closes`` with its own clock.
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+import math
+from dataclasses import dataclass
+from typing import Callable
+
+from ..errors import DynagradeError
+
+MODES = ("exam", "homework", "practice")
+FEEDBACK = ("immediate", "after-close")
+COUNTS = ("best", "last")
+POLICY_KEYS = {"mode", "opens", "closes", "attempts", "penalty", "feedback", "counts"}
+
+
+class PolicyError(DynagradeError, ValueError):
+    """A policy key with a bad value; the message names the file, line and key."""
+
+
+@dataclass(frozen=True)
+class Policy:
+    """How an exam is delivered. Times are timezone-aware (``None``: no limit)."""
+
+    mode: str = "exam"
+    opens: dt.datetime | None = None
+    closes: dt.datetime | None = None
+    attempts: int = 0
+    penalty: float = 0.0
+    feedback: str = "after-close"
+    counts: str = "last"
+
+    def is_open(self, now: dt.datetime) -> bool:
+        """Whether answers are accepted at ``now``."""
+        return (self.opens is None or now >= self.opens) and \
+            (self.closes is None or now < self.closes)
+
+    def shows_verdicts(self, now: dt.datetime) -> bool:
+        """Whether students see right/wrong and points at ``now``."""
+        if self.feedback == "immediate":
+            return True
+        return self.closes is not None and now >= self.closes
+
+    def attempt_factor(self, attempt: int) -> float:
+        """The fraction of the points an answer earns at its ``attempt``-th try (1-based)."""
+        return max(0.0, 1.0 - self.penalty * (attempt - 1))
+
+    def to_json(self) -> dict:
+        return {"mode": self.mode, "opens": _iso(self.opens), "closes": _iso(self.closes),
+                "attempts": self.attempts, "penalty": self.penalty,
+                "feedback": self.feedback, "counts": self.counts}
+
+    @classmethod
+    def from_json(cls, data: dict | None) -> "Policy":
+        """The policy a manifest stored (a manifest without one: the exam defaults)."""
+        if not data:
+            return cls()
+        return cls(data["mode"], _parse_iso(data.get("opens")), _parse_iso(data.get("closes")),
+                   int(data["attempts"]), float(data["penalty"]), data["feedback"],
+                   data["counts"])
+
+
+def read_policy(data: dict, where: str, line_of: Callable[[str], str]) -> Policy:
+    """The policy in the top-level table ``data`` of an exam spec.
+
+    ``where`` names the file and ``line_of(key)`` the line of a key, for the errors.
+    """
+    def fail(key: str, message: str):
+        raise PolicyError(f"{where}, line {line_of(key)}, field {key!r}: {message}")
+
+    mode = data.get("mode", "exam")
+    if mode not in MODES:
+        fail("mode", f"{mode!r}; choose one of {', '.join(MODES)}")
+    feedback = data.get("feedback", "after-close" if mode == "exam" else "immediate")
+    if feedback not in FEEDBACK:
+        fail("feedback", f"{feedback!r}; choose one of {', '.join(FEEDBACK)}")
+    if mode == "exam" and feedback == "immediate":
+        fail("feedback", "an exam shows verdicts only after it closes; use mode = "
+                         "\"homework\" for immediate feedback")
+    counts = data.get("counts", "last" if mode == "exam" else "best")
+    if counts not in COUNTS:
+        fail("counts", f"{counts!r}; choose one of {', '.join(COUNTS)}")
+    opens, closes = (_moment(data.get(k), lambda m, k=k: fail(k, m)) for k in ("opens", "closes"))
+    if opens and closes and closes <= opens:
+        fail("closes", f"{_iso(closes)} is not after opens = {_iso(opens)}")
+    attempts = data.get("attempts", 0)
+    if isinstance(attempts, bool) or not isinstance(attempts, int) or not 0 <= attempts <= 1000:
+        fail("attempts", f"{attempts!r}; give a whole number of attempts per part "
+                         "(0 for no limit, at most 1000)")
+    penalty = data.get("penalty", 0.0)
+    if isinstance(penalty, bool) or not isinstance(penalty, (int, float)) \
+            or not math.isfinite(penalty) or not 0 <= penalty <= 1:
+        fail("penalty", f"{penalty!r}; give the fraction of the points lost per extra "
+                        "attempt, between 0 and 1")
+    return Policy(mode, opens, closes, attempts, float(penalty), feedback, counts)
+
+
+def _moment(value, fail) -> dt.datetime | None:
+    if value is None:
+        return None
+    if isinstance(value, str):
+        try:
+            value = dt.datetime.fromisoformat(value.strip())
+        except ValueError:
+            fail(f"{value!r} is not a date-time; write e.g. 2025-04-21T23:59:00+02:00")
+    if not isinstance(value, dt.datetime):
+        fail(f"{value!r}; give a date and time with its offset, e.g. "
+             "2025-04-21T23:59:00+02:00")
+    if value.tzinfo is None:
+        fail(f"{value.isoformat()} has no time zone; add the offset (e.g. +02:00 or Z) so "
+             "that the server closes at the time you mean")
+    return value
+
+
+def _iso(moment: dt.datetime | None) -> str | None:
+    return moment.isoformat() if moment else None
+
+
+def _parse_iso(text: str | None) -> dt.datetime | None:
+    return dt.datetime.fromisoformat(text) if text else None

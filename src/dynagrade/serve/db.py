@@ -1,0 +1,388 @@
+"""Every statement the server sends to its database, and nothing else.
+
+Tables (created by the Alembic migrations in ``migrations/``; see docs/serve.md):
+
+``settings``     key/value, e.g. the secret that signs CSRF fields (shared by all workers)
+``tokens``       sha256 of each secret link's token, its role and its student
+``submissions``  one row per accepted submit: exam, student, exercise, attempt number,
+                 idempotency key, time, whether it counts (practice draws do not)
+``answers``      one row per part of a submission: the raw text, how it read, the verdict
+
+Submissions and answers are only ever inserted, never updated or deleted. A submit is
+one transaction; the caller acknowledges it only after :func:`record_submission`
+returned, i.e. after the commit.
+
+Works on SQLite (WAL, one file) and PostgreSQL with the same statements.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import datetime as dt
+import fcntl
+import hashlib
+import secrets
+import threading
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+
+import sqlalchemy as sa
+from sqlalchemy.exc import IntegrityError
+
+from ..errors import DynagradeError
+
+metadata = sa.MetaData()
+
+settings = sa.Table(
+    "settings", metadata,
+    sa.Column("key", sa.String(64), primary_key=True),
+    sa.Column("value", sa.Text, nullable=False),
+)
+
+tokens = sa.Table(
+    "tokens", metadata,
+    sa.Column("token_hash", sa.String(64), primary_key=True),
+    sa.Column("exam_id", sa.String(200), nullable=False),
+    sa.Column("role", sa.String(16), nullable=False),  # "student" | "staff"
+    sa.Column("student_id", sa.String(200), nullable=True),
+    sa.Column("created_at", sa.DateTime(timezone=True), nullable=False),
+    sa.Column("revoked", sa.Boolean, nullable=False, server_default=sa.false()),
+    sa.Index("ix_tokens_exam_student", "exam_id", "student_id"),
+)
+
+submissions = sa.Table(
+    "submissions", metadata,
+    sa.Column("id", sa.Integer, primary_key=True, autoincrement=True),
+    sa.Column("exam_id", sa.String(200), nullable=False),
+    sa.Column("student_id", sa.String(200), nullable=False),
+    sa.Column("exercise_id", sa.String(200), nullable=False),
+    sa.Column("attempt", sa.Integer, nullable=False),
+    sa.Column("seed", sa.BigInteger, nullable=False),
+    sa.Column("counted", sa.Boolean, nullable=False),
+    sa.Column("idempotency_key", sa.String(100), nullable=False),
+    sa.Column("created_at", sa.DateTime(timezone=True), nullable=False),
+    sa.UniqueConstraint("exam_id", "idempotency_key", name="uq_submissions_idempotency"),
+    sa.UniqueConstraint("exam_id", "student_id", "exercise_id", "counted", "attempt",
+                        name="uq_submissions_attempt"),
+)
+
+answers = sa.Table(
+    "answers", metadata,
+    sa.Column("id", sa.Integer, primary_key=True, autoincrement=True),
+    sa.Column("submission_id", sa.Integer, sa.ForeignKey("submissions.id"), nullable=False,
+              index=True),
+    sa.Column("part", sa.String(200), nullable=False),
+    sa.Column("raw", sa.Text, nullable=False),
+    sa.Column("readable", sa.Boolean, nullable=False),
+    sa.Column("message", sa.Text, nullable=False),
+    sa.Column("status", sa.String(32), nullable=False),
+    sa.Column("correct", sa.Boolean, nullable=False),
+    sa.Column("score", sa.Float, nullable=False),
+    sa.Column("max_score", sa.Float, nullable=False),
+    sa.Column("feedback", sa.Text, nullable=False),
+    sa.UniqueConstraint("submission_id", "part", name="uq_answers_part"),
+)
+
+
+def hash_token(token: str) -> str:
+    """What the database stores of a secret link's token."""
+    return hashlib.sha256(token.encode("utf-8")).hexdigest()
+
+
+def new_token() -> str:
+    """A fresh secret: 32 random bytes, URL-safe."""
+    return secrets.token_urlsafe(32)
+
+
+def now() -> dt.datetime:
+    return dt.datetime.now(dt.timezone.utc)
+
+
+# -- connecting ---------------------------------------------------------------------------
+
+
+def sqlite_url_beside(manifest: Path) -> str:
+    """The default database: a SQLite file next to the manifest."""
+    return f"sqlite:///{manifest.resolve().parent / 'serve.sqlite3'}"
+
+
+def connect(url: str) -> sa.Engine:
+    """An engine for ``url`` with the schema migrated to the newest version."""
+    if url.startswith("postgresql://"):
+        url = "postgresql+psycopg://" + url[len("postgresql://"):]
+    if url.startswith("sqlite"):
+        engine = sa.create_engine(url, connect_args={"timeout": 30})
+        sa.event.listen(engine, "connect", _sqlite_pragmas)
+        _WRITER_LOCKS.setdefault(engine.url.database, _WriterLock(engine.url.database))
+    else:
+        engine = sa.create_engine(url, pool_pre_ping=True, pool_size=5, max_overflow=5)
+    migrate(engine)
+    return engine
+
+
+class _WriterLock:
+    """SQLite has one writer at a time, and a writer that finds the database busy polls
+    with growing sleeps (up to 100 ms each): under load that, not the work, makes the
+    slow submits. Writers therefore queue on a lock instead: a thread lock within a
+    process and ``flock`` on a file beside the database across the workers (a blocking
+    wait, no polling). PostgreSQL needs none of this."""
+
+    def __init__(self, database: str | None):
+        self._threads = threading.Lock()
+        self._path = f"{database}.writer-lock" if database and database != ":memory:" else None
+
+    @contextlib.contextmanager
+    def held(self):
+        with self._threads:
+            if self._path is None:
+                yield
+                return
+            with open(self._path, "a") as handle:
+                fcntl.flock(handle, fcntl.LOCK_EX)
+                try:
+                    yield
+                finally:
+                    fcntl.flock(handle, fcntl.LOCK_UN)
+
+
+#: one writer lock per SQLite file in this process
+_WRITER_LOCKS: dict[str, _WriterLock] = {}
+
+
+def _writing(engine: sa.Engine):
+    lock = _WRITER_LOCKS.get(engine.url.database) if engine.dialect.name == "sqlite" else None
+    return lock.held() if lock is not None else contextlib.nullcontext()
+
+
+def _sqlite_pragmas(connection, _record) -> None:
+    cursor = connection.cursor()
+    cursor.execute("PRAGMA journal_mode=WAL")      # readers never block the writer
+    cursor.execute("PRAGMA synchronous=FULL")      # a commit survives a power cut too
+    cursor.execute("PRAGMA foreign_keys=ON")
+    cursor.execute("PRAGMA busy_timeout=30000")    # several workers share the file
+    cursor.close()
+
+
+def migrate(engine: sa.Engine) -> None:
+    """Bring the schema to the newest migration (``alembic upgrade head``)."""
+    from alembic import command
+    from alembic.config import Config
+
+    config = Config()
+    config.set_main_option("script_location",
+                           str(resources.files("dynagrade.serve") / "migrations"))
+    with engine.begin() as connection:
+        if engine.dialect.name == "postgresql":  # several workers may start at once
+            connection.execute(sa.text("SELECT pg_advisory_xact_lock(7413)"))
+        config.attributes["connection"] = connection
+        command.upgrade(config, "head")
+
+
+def ping(engine: sa.Engine) -> None:
+    """Raise when the database does not answer."""
+    with engine.connect() as connection:
+        connection.execute(sa.text("SELECT 1"))
+
+
+def server_secret(engine: sa.Engine) -> str:
+    """The secret every worker signs CSRF fields with, created once."""
+    with engine.begin() as connection:
+        value = connection.execute(sa.select(settings.c.value)
+                                   .where(settings.c.key == "csrf_secret")).scalar()
+        if value is not None:
+            return value
+        try:
+            with connection.begin_nested():
+                connection.execute(settings.insert().values(key="csrf_secret",
+                                                            value=secrets.token_hex(32)))
+        except IntegrityError:  # another worker created it first
+            pass
+        return connection.execute(sa.select(settings.c.value)
+                                  .where(settings.c.key == "csrf_secret")).scalar_one()
+
+
+# -- tokens -------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Identity:
+    """Who a token belongs to."""
+
+    role: str
+    student_id: str | None
+
+
+def identify(engine: sa.Engine, exam_id: str, token: str) -> Identity | None:
+    """The holder of ``token`` in exam ``exam_id``, or ``None`` for an unknown token."""
+    with engine.connect() as connection:
+        row = connection.execute(
+            sa.select(tokens.c.role, tokens.c.student_id).where(
+                tokens.c.token_hash == hash_token(token), tokens.c.exam_id == exam_id,
+                tokens.c.revoked == sa.false())).first()
+    return Identity(row.role, row.student_id) if row else None
+
+
+def issue_tokens(engine: sa.Engine, exam_id: str, student_ids: list[str],
+                 rotate: bool = False) -> dict[str, str | None]:
+    """A fresh token for each student without one (every student with ``rotate``).
+
+    Returns ``{student_id: token}``; the token is ``None`` for a student who keeps an
+    existing token (only its hash is stored, so it cannot be shown again).
+    """
+    issued: dict[str, str | None] = {}
+    with engine.begin() as connection:
+        have = set(connection.execute(
+            sa.select(tokens.c.student_id).where(
+                tokens.c.exam_id == exam_id, tokens.c.role == "student",
+                tokens.c.revoked == sa.false())).scalars())
+        if rotate:
+            connection.execute(tokens.update().where(
+                tokens.c.exam_id == exam_id, tokens.c.role == "student")
+                .values(revoked=True))
+            have = set()
+        for student_id in student_ids:
+            if student_id in have:
+                issued[student_id] = None
+                continue
+            token = new_token()
+            connection.execute(tokens.insert().values(
+                token_hash=hash_token(token), exam_id=exam_id, role="student",
+                student_id=student_id, created_at=now()))
+            issued[student_id] = token
+    return issued
+
+
+def issue_staff_token(engine: sa.Engine, exam_id: str) -> str:
+    """A new staff token (earlier staff links keep working until rotated)."""
+    token = new_token()
+    with engine.begin() as connection:
+        connection.execute(tokens.insert().values(
+            token_hash=hash_token(token), exam_id=exam_id, role="staff", student_id=None,
+            created_at=now()))
+    return token
+
+
+# -- submissions --------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class StoredAnswer:
+    """One part of one submission, as stored."""
+
+    submission_id: int
+    student_id: str
+    exercise_id: str
+    attempt: int
+    counted: bool
+    seed: int
+    created_at: dt.datetime
+    part: str
+    raw: str
+    readable: bool
+    message: str
+    status: str
+    correct: bool
+    score: float
+    max_score: float
+    feedback: str
+
+
+class DuplicateAttempt(DynagradeError):
+    """Another worker stored the same attempt number first; retry with the next one."""
+
+
+class DuplicateSubmission(DynagradeError):
+    """A submission with this idempotency key is stored already (the same submit arrived
+    twice at once); the caller replays the stored one."""
+
+
+def find_submission(engine: sa.Engine, exam_id: str, key: str) -> list[StoredAnswer] | None:
+    """The answers of the submission with idempotency ``key``, or ``None``."""
+    with engine.connect() as connection:
+        found = connection.execute(sa.select(submissions.c.id).where(
+            submissions.c.exam_id == exam_id, submissions.c.idempotency_key == key)).scalar()
+        if found is None:
+            return None
+        return _answers(connection, submissions.c.id == found)
+
+
+def part_attempts(engine: sa.Engine, exam_id: str, student_id: str, exercise_id: str,
+                  counted: bool = True) -> tuple[int, dict[str, int]]:
+    """The number of (counted, or else practice) submissions of an exercise, and of
+    answers per part."""
+    with engine.connect() as connection:
+        last = connection.execute(sa.select(sa.func.max(submissions.c.attempt)).where(
+            submissions.c.exam_id == exam_id, submissions.c.student_id == student_id,
+            submissions.c.exercise_id == exercise_id,
+            submissions.c.counted == counted)).scalar() or 0
+        rows = connection.execute(
+            sa.select(answers.c.part, sa.func.count()).select_from(
+                answers.join(submissions)).where(
+                submissions.c.exam_id == exam_id, submissions.c.student_id == student_id,
+                submissions.c.exercise_id == exercise_id,
+                submissions.c.counted == counted).group_by(answers.c.part)).all()
+    return int(last), {part: int(count) for part, count in rows}
+
+
+def record_submission(engine: sa.Engine, exam_id: str, student_id: str, exercise_id: str,
+                      attempt: int, seed: int, counted: bool, key: str,
+                      parts: list[dict]) -> None:
+    """Store a submission and its answers in one transaction (committed on return).
+
+    Raises :class:`DuplicateAttempt` when ``attempt`` was taken meanwhile, and
+    :class:`DuplicateSubmission` when a submission with this idempotency key exists already.
+    """
+    try:
+        with _writing(engine), engine.begin() as connection:
+            submission_id = connection.execute(submissions.insert().values(
+                exam_id=exam_id, student_id=student_id, exercise_id=exercise_id,
+                attempt=attempt, seed=seed, counted=counted, idempotency_key=key,
+                created_at=now()).returning(submissions.c.id)).scalar_one()
+            connection.execute(answers.insert(), [
+                {**part, "submission_id": submission_id} for part in parts])
+    except IntegrityError as error:
+        if "idempotency" in str(error.orig):  # the constraint or column name
+            raise DuplicateSubmission(key) from None
+        raise DuplicateAttempt() from None
+
+
+def student_answers(engine: sa.Engine, exam_id: str, student_id: str) -> list[StoredAnswer]:
+    """Every answer a student submitted, oldest first."""
+    with engine.connect() as connection:
+        return _answers(connection, sa.and_(submissions.c.exam_id == exam_id,
+                                            submissions.c.student_id == student_id))
+
+
+def all_answers(engine: sa.Engine, exam_id: str) -> list[StoredAnswer]:
+    """Every answer of the exam, oldest first."""
+    with engine.connect() as connection:
+        return _answers(connection, submissions.c.exam_id == exam_id)
+
+
+def counts(engine: sa.Engine, exam_id: str) -> dict[str, int]:
+    """How many submissions and answers the exam holds (for monitoring and checks)."""
+    with engine.connect() as connection:
+        subs = connection.execute(sa.select(sa.func.count()).select_from(submissions)
+                                  .where(submissions.c.exam_id == exam_id)).scalar_one()
+        parts = connection.execute(sa.select(sa.func.count()).select_from(
+            answers.join(submissions)).where(submissions.c.exam_id == exam_id)).scalar_one()
+    return {"submissions": int(subs), "answers": int(parts)}
+
+
+def idempotency_keys(engine: sa.Engine, exam_id: str) -> list[str]:
+    """The idempotency key of every stored submission (a key appears at most once)."""
+    with engine.connect() as connection:
+        return list(connection.execute(sa.select(submissions.c.idempotency_key).where(
+            submissions.c.exam_id == exam_id)).scalars())
+
+
+def _answers(connection, condition) -> list[StoredAnswer]:
+    s, a = submissions.c, answers.c
+    rows = connection.execute(
+        sa.select(s.id, s.student_id, s.exercise_id, s.attempt, s.counted, s.seed,
+                  s.created_at, a.part, a.raw, a.readable, a.message, a.status, a.correct,
+                  a.score, a.max_score, a.feedback)
+        .select_from(answers.join(submissions)).where(condition)
+        .order_by(s.id, a.id)).all()
+    return [StoredAnswer(*row) for row in rows]

@@ -1,0 +1,198 @@
+"""The exam the server delivers: the one place that reads the manifest.
+
+:class:`ExamData` holds what ``dynagrade exam`` wrote (students, their variants with the
+stored reference answers, part points, the policy) and the bank's exercises that grade
+them. It renders a student's statement (HTML with MathML; the figure ``dynagrade exam``
+drew), reads answers (:mod:`dynagrade.grading.readability`) and grades them exactly as
+class grading does (:func:`dynagrade.exam.classgrade.grade_student`), so a regrade of the
+server's submissions with ``dynagrade grade`` gives the same points.
+"""
+
+from __future__ import annotations
+
+import secrets
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+from ..errors import UnknownExercise
+from ..exam.classgrade import grade_student
+from ..exam.manifest import ManifestError, PartEntry, StudentEntry, VariantEntry, load
+from ..exam.policy import Policy
+from ..exam.submissions import Submission
+from ..exercise.loader import Bank, open_bank
+from ..exercise.model import ConstraintError, Exercise
+from ..grading.readability import readability
+
+#: Longest answer text accepted for one part (longer answers are refused, not graded).
+MAX_ANSWER_CHARS = 2000
+
+
+@dataclass(frozen=True)
+class PartInfo:
+    """One answer part as the student page shows it."""
+
+    name: str
+    label: str
+    kind: str
+    unit: str  # as printed ("m/s²")
+    points: float
+    hint: str
+
+
+class ExamData:
+    """An exam manifest with its exercises, ready to show and grade."""
+
+    def __init__(self, manifest_path: str | Path, bank: Bank | None = None):
+        self.path = Path(manifest_path)
+        self.manifest = load(self.path)
+        exam = self.manifest.exam
+        self.exam_id: str = exam.id
+        self.title: str = exam.title
+        self.instructions: str = exam.instructions
+        self.policy = Policy.from_json(exam.policy)
+        self.exercises_meta = {e.id: e for e in self.manifest.exercises}
+        self.exercise_ids = self.manifest.exercise_ids
+        self.manifest_parts: dict[str, tuple[PartEntry, ...]] = {
+            e.id: e.parts for e in self.manifest.exercises}
+        self.students: dict[str, StudentEntry] = {s.student_id: s
+                                                  for s in self.manifest.students}
+        bank = bank or open_bank()
+        self.exercises: dict[str, Exercise] = {}
+        for exercise_id in self.exercise_ids:
+            try:
+                self.exercises[exercise_id] = bank.get(exercise_id)
+            except UnknownExercise as error:
+                raise ManifestError(f"{self.path}: {error} (needed to serve this "
+                                    "exam; point --exercises at its folder)") from None
+
+    # -- what the pages show --------------------------------------------------------------
+
+    def parts(self, exercise_id: str) -> list[PartInfo]:
+        from ..exercise.units import pretty_unit
+
+        exercise = self.exercises[exercise_id]
+        return [PartInfo(p.name, p.label, p.kind, pretty_unit(p.unit) if p.unit else "",
+                         float(p.points), exercise.part(p.name).input_hint())
+                for p in self.manifest_parts[exercise_id]]
+
+    def entry(self, student_id: str, exercise_id: str,
+              seed: int | None = None) -> VariantEntry:
+        """The student's variant as the manifest stores it, or a practice draw ``seed``."""
+        if seed is None:
+            return self.students[student_id].variant(exercise_id)
+        return _practice_entry(self, exercise_id, seed)
+
+    def statement_html(self, student_id: str, exercise_id: str,
+                       seed: int | None = None) -> str:
+        entry = self.entry(student_id, exercise_id, seed)
+        return _statement_html(self, exercise_id, entry.seed,
+                               tuple(sorted(entry.params.items())))
+
+    def figure_svg(self, student_id: str, exercise_id: str) -> str | None:
+        """The figure ``dynagrade exam`` drew for the student's variant, inline."""
+        from ..render.figures import inline_svg
+
+        path = self.path.parent / "students" / student_id / "figures" / f"{exercise_id}.svg"
+        try:
+            return inline_svg(path.read_text(encoding="utf-8"))
+        except (OSError, UnicodeDecodeError):
+            return None
+
+    # -- reading and grading --------------------------------------------------------------
+
+    def read(self, student_id: str, exercise_id: str, part: str, text: str,
+             seed: int | None = None) -> tuple[bool, str]:
+        """How ``text`` reads as an answer to ``part`` (never reveals correctness)."""
+        if len(text) > MAX_ANSWER_CHARS:
+            return False, f"the answer is longer than {MAX_ANSWER_CHARS} characters"
+        exercise = self.exercises[exercise_id]
+        entry = self.entry(student_id, exercise_id, seed)
+        spec = exercise.part(part).spec(exercise.si(entry.params))
+        found = readability(spec, text)
+        return found.readable, found.message
+
+    def preview(self, student_id: str, exercise_id: str, part: str, text: str,
+                seed: int | None = None) -> dict:
+        """How ``text`` reads (:meth:`read`) and, for a formula, the formula typeset as
+        MathML (``formula``: None otherwise)."""
+        from .formula import formula_mathml
+
+        readable, message = self.read(student_id, exercise_id, part, text, seed)
+        variables = getattr(self.exercises[exercise_id].part(part), "variables", None)
+        shown = formula_mathml(text, tuple(variables)) if readable and variables else None
+        return {"readable": readable, "message": message, "formula": shown}
+
+    def grade(self, student_id: str, exercise_id: str, answers: dict[str, str],
+              seed: int | None = None) -> list[dict]:
+        """Each submitted part read and graded, with points in the exam's scale.
+
+        A part whose grading fails (a fault of the grader, not of the student) gets the
+        status "error", 0 points and a message; the other parts are graded as usual.
+        """
+        try:
+            graded = self._grade_parts(student_id, exercise_id, answers, seed)
+        except Exception:  # grade part by part so that one failure costs one part
+            graded = {}
+            for name, text in answers.items():
+                try:
+                    graded.update(self._grade_parts(student_id, exercise_id,
+                                                    {name: text}, seed))
+                except Exception as error:
+                    graded[name] = _failed(self.manifest_parts[exercise_id], name, error)
+        out = []
+        for part in self.manifest_parts[exercise_id]:
+            name = part.name
+            if name not in answers:
+                continue
+            readable, message = self.read(student_id, exercise_id, name, answers[name], seed)
+            verdict = graded[name]
+            out.append({"part": name, "raw": answers[name], "readable": readable,
+                        "message": message, "status": verdict["status"],
+                        "correct": verdict["status"] == "correct", "score": verdict["score"],
+                        "max_score": verdict["points"], "feedback": verdict["feedback"] or ""})
+        return out
+
+    def _grade_parts(self, student_id: str, exercise_id: str, answers: dict[str, str],
+                     seed: int | None) -> dict[str, dict]:
+        entry = self.entry(student_id, exercise_id, seed)
+        student = StudentEntry(student_id, "", "", (entry,))
+        submission = Submission("server", student_id, exercise_id, dict(answers))
+        graded = grade_student(student, {exercise_id: self.manifest_parts[exercise_id]},
+                               {exercise_id: self.exercises[exercise_id]},
+                               {exercise_id: submission})[exercise_id]
+        return {part["name"]: part for part in graded["parts"] if part["name"] in answers}
+
+    def new_practice_seed(self, exercise_id: str) -> int:
+        """A fresh seed whose draw meets the exercise's constraints."""
+        for _ in range(20):
+            seed = secrets.randbits(48)
+            try:
+                _practice_entry(self, exercise_id, seed)
+            except ConstraintError:
+                continue
+            return seed
+        raise ConstraintError(f"no practice variant of {exercise_id!r} could be drawn")
+
+
+def _failed(parts: tuple[PartEntry, ...], name: str, error: Exception) -> dict:
+    points = next(float(p.points) for p in parts if p.name == name)
+    return {"status": "error", "score": 0.0, "points": points,
+            "feedback": f"this answer could not be graded ({type(error).__name__}); the "
+                        "staff will look at it"}
+
+
+@lru_cache(maxsize=4096)
+def _statement_html(data: ExamData, exercise_id: str, seed: int, params: tuple) -> str:
+    from ..render.markup import markdown_to_html
+
+    variant = data.exercises[exercise_id].variant_from_params(seed, dict(params))
+    return markdown_to_html(variant.statement, heading_offset=2)
+
+
+@lru_cache(maxsize=1024)
+def _practice_entry(data: ExamData, exercise_id: str, seed: int) -> VariantEntry:
+    exercise = data.exercises[exercise_id]
+    variant = exercise.variant(seed, dict(data.exercises_meta[exercise_id].set))
+    return VariantEntry(exercise_id, seed, variant.params, dict(variant.answers))
+

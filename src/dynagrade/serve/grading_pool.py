@@ -1,0 +1,100 @@
+"""Grading off the event loop, in a bounded pool of processes.
+
+Each pool process loads the exam once and grades in its main thread, so the grader's own
+time limits (SIGALRM around the exact symbolic check) work as they do on the command
+line. The server waits at most :func:`budget` seconds for a job; a job that takes longer
+gets "not graded in time" verdicts and the other students' jobs go on in the other
+processes. At most ``queue`` jobs wait per server process; beyond that a request gets
+503 with ``Retry-After`` instead of piling up.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import multiprocessing
+from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
+
+from ..errors import DynagradeError
+from ..grading.timing import ANSWER_BUDGET
+
+_EXAM = {}
+
+
+class Busy(DynagradeError):
+    """Too many grading jobs are waiting; the client should retry shortly."""
+
+
+def budget(parts: int) -> float:
+    """Seconds the server waits for the grading of ``parts`` answers."""
+    return 2.0 + 4 * ANSWER_BUDGET * max(1, parts)
+
+
+def _load(manifest_path: str, folders: tuple[str, ...]) -> None:
+    from ..exercise.loader import open_bank
+    from .exam_data import ExamData
+
+    _EXAM["data"] = ExamData(manifest_path, open_bank(folders))
+
+
+def _grade(student_id, exercise_id, answers, seed):
+    return _EXAM["data"].grade(student_id, exercise_id, answers, seed)
+
+
+def _read(student_id, exercise_id, part, text, seed):
+    return _EXAM["data"].preview(student_id, exercise_id, part, text, seed)
+
+
+class GradingPool:
+    """``workers`` processes grading answers for one exam."""
+
+    def __init__(self, manifest_path: str, folders: tuple[str, ...] = (), workers: int = 2,
+                 queue: int = 256):
+        self._args = (str(manifest_path), tuple(folders))
+        self._workers = workers
+        self._waiting = 0
+        self._queue = queue
+        self._executor = self._start()
+
+    def _start(self) -> ProcessPoolExecutor:
+        return ProcessPoolExecutor(self._workers, mp_context=multiprocessing.get_context("spawn"),
+                                   initializer=_load, initargs=self._args)
+
+    def warm_up(self) -> None:
+        """Start every process and load the exam now, not on the first request."""
+        futures = [self._executor.submit(_read, None, None, None, None, None)
+                   for _ in range(self._workers)]
+        for future in futures:
+            future.exception()
+
+    async def grade(self, student_id, exercise_id, answers: dict, seed) -> list[dict] | None:
+        """The graded parts, or ``None`` when grading took longer than its budget."""
+        return await self._run(budget(len(answers)), _grade, student_id, exercise_id,
+                               answers, seed)
+
+    async def read(self, student_id, exercise_id, part, text, seed) -> dict | None:
+        """How an answer reads (``ExamData.preview``), or ``None`` when reading took too
+        long."""
+        return await self._run(budget(1), _read, student_id, exercise_id, part, text, seed)
+
+    async def _run(self, seconds, function, *args):
+        if self._waiting >= self._queue:
+            raise Busy()
+        self._waiting += 1
+        try:
+            loop = asyncio.get_running_loop()
+            for tries in (1, 2):
+                try:
+                    future = loop.run_in_executor(self._executor, function, *args)
+                    return await asyncio.wait_for(future, seconds)
+                except asyncio.TimeoutError:
+                    return None
+                except BrokenProcessPool:  # a process died (e.g. out of memory): restart
+                    if tries == 2:
+                        raise
+                    self._executor = self._start()
+        finally:
+            self._waiting -= 1
+
+    def close(self) -> None:
+        self._executor.shutdown(wait=False, cancel_futures=True)

@@ -1,0 +1,174 @@
+"""One submit, from the request to the committed row and the answer the student sees.
+
+The rules, the same for the student page's form and ``POST /api/v1/answers``:
+
+1. The exercise and part names must be the exam's, each answer at most
+   :data:`~dynagrade.serve.exam_data.MAX_ANSWER_CHARS` long, at least one answer given
+   (otherwise 422).
+2. Counted answers are accepted only while the exam is open (server clock) and while
+   every submitted part has attempts left (otherwise 403). Practice draws (practice mode,
+   "new variant") are graded the same way but never counted.
+3. A submit with an idempotency key that is already stored returns the stored result
+   instead of storing it again; a retry after a lost response is therefore safe.
+4. The answers are graded in the pool; the submission (attempt number = the exercise's
+   next one, penalties applied per part) is inserted in one transaction; only then is the
+   response built. Two workers racing for the same attempt number: the loser retries.
+5. What the response shows follows the policy: always how each answer was read; right or
+   wrong, points and feedback only where the policy shows verdicts at that moment.
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+import re
+import uuid
+from dataclasses import dataclass
+
+from starlette.concurrency import run_in_threadpool
+
+from ..errors import DynagradeError
+from . import db
+from .exam_data import MAX_ANSWER_CHARS, ExamData
+
+_KEY = re.compile(r"^[A-Za-z0-9._:-]{8,100}$")
+
+
+@dataclass
+class Refused(DynagradeError):
+    """A submit the rules refuse: the HTTP status and a message for the student."""
+
+    status: int
+    message: str
+
+
+def check_request(data: ExamData, exercise_id, answers) -> dict[str, str]:
+    """The non-empty answers of a well-formed request; :class:`Refused` (422) otherwise."""
+    if not isinstance(exercise_id, str) or exercise_id not in data.exercises_meta:
+        raise Refused(422, f"no exercise {exercise_id!r} in this exam")
+    if not isinstance(answers, dict) or not all(
+            isinstance(k, str) and isinstance(v, str) for k, v in answers.items()):
+        raise Refused(422, "'answers' must map part names to answer texts")
+    names = [p.name for p in data.parts(exercise_id)]
+    unknown = [name for name in answers if name not in names]
+    if unknown:
+        raise Refused(422, f"no part {unknown[0]!r} in {exercise_id}; the parts are "
+                           f"{', '.join(names)}")
+    long = [name for name, text in answers.items() if len(text) > MAX_ANSWER_CHARS]
+    if long:
+        raise Refused(422, f"the answer to {long[0]!r} is longer than {MAX_ANSWER_CHARS} "
+                           "characters")
+    given = {name: text for name, text in answers.items() if text.strip()}
+    if not given:
+        raise Refused(422, "no answer given")
+    return {name: given[name] for name in names if name in given}
+
+
+async def submit(state, student_id: str, exercise_id, answers, key: str | None,
+                 practice_seed: int | None, now: dt.datetime) -> dict:
+    """Grade, store and describe one submit (see the module's rules)."""
+    data: ExamData = state.data
+    policy = data.policy
+    given = check_request(data, exercise_id, answers)
+    counted = practice_seed is None
+    if not counted and policy.mode != "practice":
+        raise Refused(422, "new variants are offered in practice mode only")
+    if key is not None and not _KEY.match(key):
+        raise Refused(422, "the idempotency key must be 8-100 letters, digits or ._:-")
+    if key is not None:
+        stored = await run_in_threadpool(db.find_submission, state.engine, data.exam_id, key)
+        if stored is not None:
+            return _replay(data, student_id, stored, now, key)
+    key = key or uuid.uuid4().hex
+    if counted:
+        _check_open(policy, now)
+    if counted and policy.attempts:  # refuse before grading; checked again when storing
+        _, per_part = await run_in_threadpool(db.part_attempts, state.engine, data.exam_id,
+                                              student_id, exercise_id)
+        _check_attempts(policy, per_part, given)
+    graded = await state.pool.grade(student_id, exercise_id, given, practice_seed)
+    if graded is None:
+        graded = [_not_in_time(data, exercise_id, name, text) for name, text in given.items()]
+    seed = practice_seed if practice_seed is not None else \
+        data.entry(student_id, exercise_id).seed
+    for _ in range(20):
+        last, per_part = await run_in_threadpool(
+            db.part_attempts, state.engine, data.exam_id, student_id, exercise_id, counted)
+        if counted:
+            _check_attempts(policy, per_part, given)
+        rows = [_with_penalty(policy, row, per_part.get(row["part"], 0) + 1, counted)
+                for row in graded]
+        attempt = last + 1
+        try:
+            await run_in_threadpool(db.record_submission, state.engine, data.exam_id,
+                                    student_id, exercise_id, attempt, seed, counted, key, rows)
+        except db.DuplicateAttempt:
+            continue
+        except db.DuplicateSubmission:  # the same key arrived twice at once: the other was stored
+            stored = await run_in_threadpool(db.find_submission, state.engine,
+                                             data.exam_id, key)
+            return _replay(data, student_id, stored, now, key)
+        return describe(data, exercise_id, attempt, rows, policy.shows_verdicts(now), key)
+    raise Refused(503, "too many submits at once; try again")
+
+
+def describe(data: ExamData, exercise_id: str, attempt: int, rows: list[dict],
+             verdicts: bool, key: str) -> dict:
+    """The response body of a submit."""
+    parts = []
+    for row in rows:
+        shown = {"name": row["part"], "readable": row["readable"], "message": row["message"]}
+        if verdicts:
+            shown.update(correct=row["correct"], score=round(row["score"], 6),
+                         feedback=row["feedback"])
+        parts.append(shown)
+    body = {"exercise": exercise_id, "attempt": attempt, "idempotency_key": key,
+            "parts": parts}
+    if verdicts:
+        body["score"] = round(sum(r["score"] for r in rows), 6)
+        body["max_score"] = round(sum(r["max_score"] for r in rows), 6)
+    return body
+
+
+def _replay(data: ExamData, student_id: str, stored: list[db.StoredAnswer],
+            now: dt.datetime, key: str) -> dict:
+    if stored[0].student_id != student_id:
+        raise Refused(422, "this idempotency key was used by another submission; send a "
+                           "fresh key with each new submit")
+    rows = [{"part": a.part, "readable": a.readable, "message": a.message,
+             "correct": a.correct, "score": a.score, "max_score": a.max_score,
+             "feedback": a.feedback} for a in stored]
+    return describe(data, stored[0].exercise_id, stored[0].attempt, rows,
+                    data.policy.shows_verdicts(now), key) | {"replayed": True}
+
+
+def _check_open(policy, now: dt.datetime) -> None:
+    if policy.opens is not None and now < policy.opens:
+        raise Refused(403, f"the exam opens at {policy.opens.isoformat()}")
+    if policy.closes is not None and now >= policy.closes:
+        raise Refused(403, f"the exam closed at {policy.closes.isoformat()}; answers are no "
+                           "longer accepted")
+
+
+def _check_attempts(policy, per_part: dict[str, int], given: dict[str, str]) -> None:
+    if not policy.attempts:
+        return
+    spent = [name for name in given if per_part.get(name, 0) >= policy.attempts]
+    if spent:
+        raise Refused(403, f"no attempts left for {', '.join(spent)} (each part allows "
+                           f"{policy.attempts})")
+
+
+def _with_penalty(policy, row: dict, attempt: int, counted: bool) -> dict:
+    factor = policy.attempt_factor(attempt) if counted else 1.0
+    if factor >= 1.0:
+        return dict(row)
+    note = f" (attempt {attempt}: {round(100 * factor)} % of the points)"
+    return {**row, "score": row["score"] * factor, "feedback": row["feedback"] + note}
+
+
+def _not_in_time(data: ExamData, exercise_id: str, name: str, text: str) -> dict:
+    points = next(p.points for p in data.parts(exercise_id) if p.name == name)
+    message = "could not be graded in time; the staff will grade it"
+    return {"part": name, "raw": text, "readable": False, "message": message,
+            "status": "error", "correct": False, "score": 0.0, "max_score": points,
+            "feedback": message}
