@@ -567,3 +567,21 @@ def test_a_vector_verdict_says_right_or_wrong_beside_its_marks():
     verdict = grade(VectorSpec(2, unit="m/s"), (1.2, -3.4), "(1.2, 5) m/s")
     assert not verdict.correct and verdict.score == 0.5
     assert "(1: ✓ right, 2: ✗ wrong)" in verdict.feedback
+
+
+def test_the_served_student_page_declares_the_language_and_keeps_figure_ids_unique(
+        outputs, tmp_path):
+    """`dynagrade serve` shows every exercise of a student on one page: both figures
+    inlined, their ids apart, the page in the exam's language."""
+    pytest.importorskip("fastapi", reason="the server's dependencies are not installed")
+    from serve_support import serve
+
+    copy = tmp_path / "exam"
+    shutil.copytree(outputs["out"], copy, ignore=shutil.ignore_patterns("grading"))
+    with serve(copy / "manifest.json") as served:
+        text = served.client.get(f"/s/{served.tokens['s-0']}").text
+    page = _Elements(text)
+    assert page.all("html")[0]["lang"] == "de"
+    assert len([s for s in _svgs(text) if 'role="img"' in s]) == 2
+    ids = Counter(attrs["id"] for _, attrs in page.tags if "id" in attrs)
+    assert [name for name, count in ids.items() if count > 1] == []

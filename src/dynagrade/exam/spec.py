@@ -72,8 +72,8 @@ class ExamSpec:
     instructions: str
     exercises: tuple[ExamExercise, ...]
     path: str = ""
-    language: str = "en"  # a BCP 47 tag: HTML lang and the PDFs' language
     policy: Policy = Policy()  # delivery by `dynagrade serve` (exam/policy.py)
+    language: str = "en"  # a BCP 47 tag: HTML lang and the PDFs' language
 
     @property
     def total_points(self) -> float:
@@ -157,8 +157,8 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
         policy = read_policy(data, where, lambda key: _key_line(text, key))
     except PolicyError as error:
         raise ExamSpecError(str(error)) from None
-    return ExamSpec(exam_id, title, date, instructions, tuple(exercises), str(path),
-                    language, policy)
+    return ExamSpec(exam_id, title, date, instructions, tuple(exercises), str(path), policy,
+                    language)
 
 
 def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExercise:

@@ -327,6 +327,7 @@ def _student_html(request: Request, token: str, student_id: str, practice: str |
                    else "The exam is closed; answers are no longer accepted.")
     return _TEMPLATES.get_template("student.html").render(
         title=data.title, student=data.students[student_id], token=token, base=_base(request),
+        language=data.manifest.exam.language,
         csrf=limits.csrf_field(state.secret, token), exercises=exercises, verdicts=verdicts,
         mode=data.policy.mode, policy_text=_policy_text(data.policy, now), is_open=is_open,
         closed_text=closed_text, error=error, max_chars=MAX_ANSWER_CHARS,
@@ -342,6 +343,7 @@ def _staff_html(request: Request, token: str) -> str:
     columns = ["student_id", *data.exercise_ids, "total", "max_total", "percent", "status"]
     return _TEMPLATES.get_template("staff.html").render(
         title=data.title, token=token, base=_base(request), rows=rows, columns=columns,
+        language=data.manifest.exam.language,
         progress=gradebook.progress(data, stored), exercise_ids=data.exercise_ids,
         counts=db.counts(state.engine, data.exam_id), refresh=60,
         policy_text=_policy_text(data.policy, state.clock()))

@@ -95,7 +95,7 @@ class ExamData:
 
         path = self.path.parent / "students" / student_id / "figures" / f"{exercise_id}.svg"
         try:
-            return inline_svg(path.read_text(encoding="utf-8"))
+            return inline_svg(path.read_text(encoding="utf-8"), f"figure-{exercise_id}-")
         except (OSError, UnicodeDecodeError):
             return None
 
