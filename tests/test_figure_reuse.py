@@ -89,3 +89,15 @@ def test_the_crop_is_the_box_matplotlibs_own_tight_crop_gives(no_spare):
     assert box.width * 72 == pytest.approx(width, abs=1e-5)
     assert box.height * 72 == pytest.approx(height, abs=1e-5)
     assert box.width > 4.0  # the label reaches past the figure's own width
+
+
+def test_margins_and_aspect_an_author_changed_do_not_reach_the_next_figure(no_spare):
+    figure, axes = drawings.new_drawing()
+    fresh = (axes.margins(), axes.get_adjustable(), axes.get_anchor(), axes.get_aspect())
+    axes.margins(0.0, 0.3)
+    axes.set_aspect(2.0, adjustable="datalim", anchor="NE")
+    drawings.recycle(figure)
+    again, axes = drawings.new_drawing()
+    assert again is figure
+    assert (axes.margins(), axes.get_adjustable(), axes.get_anchor(),
+            axes.get_aspect()) == fresh

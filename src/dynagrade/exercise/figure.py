@@ -108,6 +108,7 @@ def recycle(figure) -> None:
             or axes.child_axes or axes.get_title() or axes.get_xlabel()
             or axes.get_ylabel()):
         return
+    from matplotlib import rcParams
     from matplotlib.transforms import Bbox
 
     for artist in (*axes.lines, *axes.patches, *axes.texts, *axes.collections,
@@ -120,7 +121,8 @@ def recycle(figure) -> None:
     axes.set_xscale("linear")
     axes.set_yscale("linear")
     axes.set_prop_cycle(None)
-    axes.set_aspect("equal")
+    axes.margins(x=rcParams["axes.xmargin"], y=rcParams["axes.ymargin"])
+    axes.set_aspect("equal", adjustable="box", anchor="C")
     axes.set_axis_off()
     axes.set_position(_AXES_BOX)
     if hasattr(figure, NOTES_ATTRIBUTE):
