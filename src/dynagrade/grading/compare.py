@@ -26,6 +26,7 @@ from typing import Iterable, Iterator
 from ..errors import DynagradeError
 from .dispatch import grade
 from .errors import AnswerError, SpecError
+from .preparation import prepare
 from .spec import ChoiceSpec, KnownWrong, NumericSpec, SymbolicSpec, Variable, VectorSpec
 
 
@@ -237,7 +238,11 @@ def compare_record(record: dict) -> dict:
 
 
 def compare_lines(lines: Iterable[str]) -> Iterator[str]:
-    """Grade JSON lines; yields one JSON text (without newline) per non-blank input line."""
+    """Grade JSON lines; yields one JSON text (without newline) per non-blank input line.
+
+    What any answer may need (pint's registry, the exact and high-precision checks) is
+    loaded before the first line, so no verdict spends its time budget on imports."""
+    prepare()
     for number, line in enumerate(lines, start=1):
         if not line.strip():
             continue
