@@ -10,10 +10,15 @@ from dynagrade.mechanics.examples import projectile
 
 
 def solve(p):
+    v1, v2 = projectile.velocity(0.0, p.v0, p.alpha, p.g)
     return {
         "x_max": projectile.horizontal_range(p.v0, p.alpha, p.g),
         "h_max": projectile.peak_height(p.v0, p.alpha, p.g),
         "t_flight": projectile.flight_time(p.v0, p.alpha, p.g),
+        # intermediate quantities of the worked solution
+        "v1": float(v1),
+        "v2": float(v2),
+        "t_peak": projectile.peak_time(p.v0, p.alpha, p.g),
     }
 
 
@@ -66,6 +71,24 @@ $\\alpha$ = {{ alpha }} above the horizontal. Gravity is $g$ = {{ g }}; neglect 
 2. How high above the ground does it rise?
 3. How long is it in the air?
 4. Write the landing distance as a formula in $v_0$, $\\alpha$ and $g$.
+""",
+    solution=r"""
+Linear momentum balance for the ball, eq. (1.63), in the two directions (Example 1.9):
+the only force is the weight $-mg\,\mathbf{e}_2$, so $\ddot x_1 = 0$ and $\ddot x_2 = -g$.
+With the launch velocity of eq. (1.75), $v_0\cos\alpha$ = {{ si.v1 }} m/s along
+$\mathbf{e}_1$ and $v_0\sin\alpha$ = {{ si.v2 }} m/s along $\mathbf{e}_2$, integrating
+twice gives the path of eq. (1.78): $x_1(t) = v_0 t\cos\alpha$ and
+$x_2(t) = v_0 t\sin\alpha - g t^2/2$.
+
+1. The ball lands when $x_2 = 0$ again, at $t_{1,\max} = 2 v_0\sin\alpha/g$, eq. (1.79).
+   Then $x_{1,\max} = v_0\cos\alpha\, t_{1,\max}$, eq. (1.80):
+   $x_{1,\max} = 2 v_0^2\sin\alpha\cos\alpha/g = v_0^2\sin 2\alpha/g$ = {{ answers.x_max }}.
+2. At the peak the vertical velocity vanishes: $\dot x_2 = v_0\sin\alpha - g t = 0$ at
+   $t_{2,\max} = v_0\sin\alpha/g$ = {{ si.t_peak }} s, eq. (1.81). Putting it into $x_2(t)$,
+   eq. (1.82): $x_{2,\max} = v_0^2\sin^2\alpha/(2g)$ = {{ answers.h_max }}.
+3. The flight time is $t_{1,\max} = 2 v_0\sin\alpha/g$ = {{ answers.t_flight }}: twice the
+   time to the peak, because the parabola is symmetric about its peak.
+4. Step 1 as a formula: `{{ answers.x_max_formula }}`.
 """,
     solve=solve,
     figure=figure,

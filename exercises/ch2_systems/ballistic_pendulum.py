@@ -43,11 +43,17 @@ def figure(p):
 def solve(p):
     common = collisions.common_velocity_after_plastic_impact(p.m, p.M, p.v, 0.0)
     lost = collisions.kinetic_energy_lost_in_impact(p.m, p.M, p.v, 0.0)
+    before = energy.particle_kinetic_energy(p.m, p.v)
     return {
         "V": common,
         # the block swings up like a vertical throw with the speed V: h = V^2 / (2 g)
         "h": projectile.peak_height(common, np.pi / 2, p.g),
-        "fraction_lost": lost / energy.particle_kinetic_energy(p.m, p.v),
+        "fraction_lost": lost / before,
+        # intermediate quantities of the worked solution
+        "momentum": p.m * p.v,
+        "T_before": before,
+        "T_after": energy.particle_kinetic_energy(p.m + p.M, common),
+        "T_lost": lost,
     }
 
 
@@ -71,6 +77,26 @@ Treat bullet and block as particles; $g$ = {{ g }}.
 2. How high does the block rise?
 3. Which fraction of the bullet's kinetic energy is lost in the impact?
 4. Give $V$ as a formula in $m$, $M$ and $v$.
+""",
+    solution=r"""
+Two stages, each with its own balance (Section 2.3.1): the impact is so short that the
+strings, still vertical, and gravity give no horizontal impulse, so the horizontal linear
+momentum of bullet and block is conserved; but the bullet sticks (a plastic impact), so
+kinetic energy is not. During the swing that follows, only gravity does work (the strings
+are perpendicular to the motion), so mechanical energy is conserved.
+
+1. Momentum before and after the impact, with $m$ = {{ si.m }} kg:
+   $m v = (m + M) V$, where $m v$ = {{ si.momentum }} kg·m/s. Hence
+   $V = m v/(m + M)$ = {{ answers.V }}.
+2. Work-energy balance from the lowest to the highest point of the swing:
+   $\frac{1}{2}(m + M) V^2 = (m + M) g h$, so $h = V^2/(2g)$ = {{ answers.h }}.
+   The masses cancel: the block rises as high as a body thrown straight up with $V$.
+3. Kinetic energy of the bullet $T_1 = \frac{1}{2} m v^2$ = {{ si.T_before }} J; of bullet and
+   block just after the impact $T_2 = \frac{1}{2}(m + M) V^2$ = {{ si.T_after }} J. The impact
+   dissipates $T_1 - T_2$ = {{ si.T_lost }} J, the fraction
+   $(T_1 - T_2)/T_1 = M/(m + M)$ = {{ answers.fraction_lost }}: nearly all of it, since the
+   block is much heavier than the bullet.
+4. From step 1: `{{ answers.V_formula }}`.
 """,
     solve=solve,
     figure=figure,

@@ -43,7 +43,9 @@ def solve(p):
     wd = vibrations.damped_frequency(w, zeta(p))
     return {"omega_n": w, "zeta": zeta(p), "omega_d": wd, "T_d": vibrations.period(wd),
             "regime": vibrations.damping_regime(zeta(p)),
-            "delta": vibrations.logarithmic_decrement(zeta(p))}
+            "delta": vibrations.logarithmic_decrement(zeta(p)),
+            # intermediate quantity of the worked solution
+            "c_cr": vibrations.critical_damping(p.k, p.m)}
 
 
 EXERCISE = Exercise(
@@ -68,6 +70,24 @@ damper with coefficient $c$ = {{ c }}. It is displaced and released.
 2. What are the damped angular frequency $\\omega_d$ and the period $T_d$ of the decaying oscillation?
 3. Which regime is this: undamped, underdamped, critically damped or overdamped?
 4. What is the logarithmic decrement $\\delta$ between successive peaks?
+""",
+    solution=r"""
+The mass is displaced by $x$ from its rest position; the spring pulls back with $k x$, the
+damper with $c \dot x$. Linear momentum balance gives the equation of motion of
+Section 4.3.1, $m \ddot x + c \dot x + k x = 0$, or, divided by $m$,
+$\ddot x + 2 \zeta \omega_n \dot x + \omega_n^2 x = 0$ (Section 4.3.2).
+
+1. Comparing the two forms: $\omega_n = \sqrt{k/m}$ = {{ answers.omega_n }}. The critical
+   damping is $c_{\mathrm{cr}} = 2\sqrt{k m}$ = {{ si.c_cr }} N·s/m, and the damping ratio
+   $\zeta = c/c_{\mathrm{cr}} = c/(2\sqrt{k m})$ = {{ answers.zeta }}.
+2. For $\zeta < 1$ the solution is $x(t) = e^{-\zeta \omega_n t}(A \cos \omega_d t + B \sin \omega_d t)$
+   with the damped angular frequency $\omega_d = \omega_n \sqrt{1 - \zeta^2}$ = {{ answers.omega_d }}
+   and the period $T_d = 2\pi/\omega_d$ = {{ answers.T_d }}.
+3. $0 < \zeta < 1$: the motion is {{ answers.regime }}: it oscillates with an
+   amplitude that decays like $e^{-\zeta \omega_n t}$.
+4. Successive peaks are one period $T_d$ apart, so their ratio is
+   $e^{\zeta \omega_n T_d}$ and the logarithmic decrement is
+   $\delta = \zeta \omega_n T_d = 2\pi\zeta/\sqrt{1 - \zeta^2}$ = {{ answers.delta }}.
 """,
     solve=solve,
     figure=figure,

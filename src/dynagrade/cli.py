@@ -101,21 +101,28 @@ def list_command(context, as_json):
 @click.option("--set", "settings", multiple=True, metavar="NAME=VALUE",
               help="Fix a parameter, in its unit or with one (alpha=30 or 'alpha=0.5 rad').")
 @click.option("--answers", is_flag=True, help="Show the reference answers too.")
+@click.option("--solution", is_flag=True, help="Show the worked solution too.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 @click.pass_obj
-def show(context, exercise_id, seed, student, settings, answers, as_json):
-    """Show an exercise's variant: its statement, and on request its answers."""
+def show(context, exercise_id, seed, student, settings, answers, solution, as_json):
+    """Show an exercise's variant: its statement, and on request its answers and worked
+    solution."""
     exercise = context.exercise(exercise_id)
     variant = _variant(exercise, seed, student, settings)
+    worked = _solution(exercise, variant) if solution else None
     if as_json:
         data = variant.to_json()
         if not answers:
             data.pop("answers")
+        if solution:
+            data["solution"] = worked
         click.echo(json.dumps(data, indent=2, ensure_ascii=False))
         return
-    from .render.terminal import variant_panel
+    from .render.terminal import solution_panel, variant_panel
 
     variant_panel(exercise, variant, with_answers=answers)
+    if solution:
+        solution_panel(exercise, variant, worked)
 
 
 @main.command()
@@ -145,16 +152,21 @@ def solve(context, exercise_id, seed, settings, as_json):
 @click.option("--student", required=True, help="The student's id.")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
               help="Where to write the file (default: print it).")
+@click.option("--solution", is_flag=True,
+              help="End the file with the worked solution, as comments (for practice).")
 @click.pass_obj
-def sheet(context, exercise_id, student, output):
+def sheet(context, exercise_id, student, output, solution):
     """Write a student's fill-in file for an exercise."""
     from .exercise.seeds import student_seed
     from .exercise.sheet import write_sheet
+    from .exercise.solution import as_comments
 
     exercise = context.exercise(exercise_id)
     variant = exercise.variant(student_seed(exercise.id, student))
     filename = Path(output).name if output else "exercise.py"
     text = write_sheet(exercise, variant, student, filename)
+    if solution:
+        text += as_comments(exercise, _solution(exercise, variant))
     if output:
         Path(output).write_text(text, encoding="utf-8")
         click.echo(f"wrote {output}: {exercise.title}, variant of {student}", err=True)
@@ -166,15 +178,24 @@ def sheet(context, exercise_id, student, output):
 @click.argument("exercise_ids", nargs=-1)
 @click.option("--variants", type=click.IntRange(1), default=50, show_default=True,
               help="Seeds to check per exercise (0 .. N-1).")
+@click.option("--require-solutions/--allow-missing-solutions", default=None,
+              help="Whether an exercise without a worked solution fails or is only noted "
+                   "(default: it fails once every exercise of the shipped bank has one).")
 @click.pass_obj
-def verify(context, exercise_ids, variants):
-    """Check exercises for variants that cannot tell right from wrong."""
+def verify(context, exercise_ids, variants, require_solutions):
+    """Check exercises for variants that cannot tell right from wrong, and their worked
+    solutions."""
+    from .exercise.solution_check import bank_is_complete
     from .exercise.verify import verify_exercise
+    from .render.solutions import math_problems
     from .render.terminal import verify_progress
 
     exercises = ([context.exercise(i) for i in exercise_ids] if exercise_ids
                  else context.bank.all())
-    reports = verify_progress(exercises, lambda e: verify_exercise(e, range(variants)))
+    if require_solutions is None:
+        require_solutions = bank_is_complete()
+    reports = verify_progress(exercises, lambda e: verify_exercise(
+        e, range(variants), require_solution=require_solutions, math_check=math_problems))
     if any(not r.ok for r in reports):
         sys.exit(1)
 
@@ -225,15 +246,18 @@ def grade_command(context, files, as_json, manifest, output, jobs):
 @click.option("--jobs", type=click.IntRange(1), default=None,
               help="Worker processes (default: up to 2).")
 @click.option("--no-pdf", is_flag=True, help="Skip the PDFs (faster drafts).")
+@click.option("--solutions", is_flag=True,
+              help="Write each student's worked solutions (students/<id>/solution.*) and "
+                   "solutions.pdf with all of them, for the staff.")
 @click.pass_obj
-def exam(context, exam_file, roster, output, jobs, no_pdf):
+def exam(context, exam_file, roster, output, jobs, no_pdf, solutions):
     """Generate an exam: every student's variants, sheets, keys, Moodle XML, manifest."""
     from .exam.generate import generate_exam
     from .render.terminal import progress_reporter
 
     with progress_reporter() as progress:
         report = generate_exam(exam_file, roster, output, bank=context.bank, jobs=jobs,
-                               pdf=not no_pdf, progress=progress)
+                               pdf=not no_pdf, progress=progress, solutions=solutions)
     click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
                f"({report.redraws} draws replaced because they could not discriminate; see "
                f"manifest.json) in {report.timings['total']:.1f} s", err=True)
@@ -245,17 +269,18 @@ def exam(context, exam_file, roster, output, jobs, no_pdf):
 @click.command(cls=_Command, context_settings={"help_option_names": ["-h", "--help"]})
 @click.argument("file", type=click.Path(exists=True, dir_okay=False))
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@click.option("--solution", is_flag=True, help="Print the worked solution after the verdicts.")
 @_exercises_option
-def grade_main(file, as_json, folders):
+def grade_main(file, as_json, solution, folders):
     """Grade one filled-in exercise file and print feedback per part.
 
     The file is read, never run: each answer must be a number, a quoted string, a list
     of numbers or None.
     """
-    _grade_files(_Context(folders), (file,), as_json)
+    _grade_files(_Context(folders), (file,), as_json, solution)
 
 
-def _grade_files(context, files, as_json):
+def _grade_files(context, files, as_json, solution=False):
     from .exercise.scoring import grade_variant
     from .exercise.seeds import student_seed
     from .exercise.sheet import read_sheet
@@ -273,16 +298,21 @@ def _grade_files(context, files, as_json):
             click.echo(f"warning: {note}", err=True)
         variant = exercise.variant(sheet.seed)
         result = grade_variant(exercise, variant, sheet.answers, sheet.problems)
-        results.append((exercise, result))
+        results.append((exercise, variant, result))
     if as_json:
-        data = [r.to_json() for _, r in results]
+        data = [r.to_json() for _, _, r in results]
+        if solution:
+            for entry, (exercise, variant, _) in zip(data, results):
+                entry["solution"] = _solution(exercise, variant)
         click.echo(json.dumps(data[0] if len(data) == 1 else data, indent=2,
                               ensure_ascii=False))
         return
-    from .render.terminal import result_table
+    from .render.terminal import result_table, solution_panel
 
-    for exercise, result in results:
+    for exercise, variant, result in results:
         result_table(exercise, result)
+        if solution:
+            solution_panel(exercise, variant, _solution(exercise, variant))
 
 
 def _grade_class(context, manifest, files, output, jobs, as_json):
@@ -319,6 +349,13 @@ def _variant(exercise, seed, student, settings):
     for warning in variant.warnings:
         click.echo(f"warning: the values set break the constraint '{warning}'", err=True)
     return variant
+
+
+def _solution(exercise, variant) -> str | None:
+    """The variant's worked solution (Markdown), ``None`` when the exercise has none."""
+    from .exercise.solution import render_solution
+
+    return render_solution(exercise, variant)
 
 
 def _parse_settings(exercise, settings) -> dict[str, float]:

@@ -34,6 +34,9 @@ from ..exercise.numbers import GRADEBOOK_DECIMALS, points_text
 from ..exercise.scoring import grade_variant
 from .files import write_atomic
 from .run import GradingRun, file_sha256
+from .policy import Policy
+from .solution_policy import with_feedback
+from .solutions import feedback_solutions
 from .manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
 from .stats import part_statistics
 from .submissions import Problem, Submission, collect
@@ -144,6 +147,9 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
     graded = _run(work, manifest_parts, exercises, jobs, progress)
     timings["grading"] = time.perf_counter() - stage
     outcome = _outcome(manifest, graded, problems, timings)
+    solutions = Policy.from_json(manifest.exam.policy).solutions
+    if out_dir is not None and with_feedback(solutions):
+        _add_solutions(outcome, manifest, exercises)
     if out_dir is not None:
         stage = time.perf_counter()
         write_outputs(outcome, manifest, Path(out_dir), progress)
@@ -169,6 +175,19 @@ def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
     ordered_parts = [(e.id, p) for e in manifest.exercises for p in e.parts]
     return ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
                         part_statistics(ordered_parts, analysed), feedback, timings)
+
+
+def _add_solutions(outcome: ClassOutcome, manifest: Manifest,
+                   exercises: dict[str, Exercise]) -> None:
+    """Each student's worked solutions, to end their feedback (:mod:`.solutions`)."""
+    for student in manifest.students:
+        def warn(exercise_id: str, message: str, student_id=student.student_id) -> None:
+            outcome.problems.append(Problem("warning", "solution", message, student_id,
+                                            exercise_id))
+
+        solved = [(exercises[e.exercise], stored_variant(exercises[e.exercise], e))
+                  for e in student.variants]
+        outcome.feedback[student.student_id]["solutions"] = feedback_solutions(solved, warn)
 
 
 def gradebook_row(student_id: str, results: dict, exercise_ids: list[str],

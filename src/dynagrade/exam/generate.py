@@ -9,6 +9,9 @@ Output folder::
                           figures/<exercise-id>.svg
     sheets.pdf                      every student's sheet, for printing (the students' PDFs
                                     embedded page by page)
+    students/<student_id>/solution.md, solution.html, solution.pdf
+    solutions.pdf                   with ``solutions=True`` (``--solutions``): every
+                                    student's worked solutions, for the staff
     key.csv, key.pdf                answer keys
     moodle.xml                      a question category per exercise, a question per variant
 
@@ -35,6 +38,7 @@ from .files import write_atomic
 from .manifest import (ExamEntry, ExerciseEntry, Generator, Manifest, PartEntry,
                        StudentEntry, dump)
 from .run import GenerationRun, file_sha256
+from .solutions import solutions_title
 from .spec import ExamSpec, ExamSpecError, Student, read_exam_spec, read_roster
 from .student import STAGES, StudentResult, student_job
 from .workers import Pool, default_jobs
@@ -58,11 +62,13 @@ class GenerationReport:
 
 def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
                   jobs: int | None = None, pdf: bool = True,
-                  progress: Progress | None = None) -> GenerationReport:
+                  progress: Progress | None = None,
+                  solutions: bool = False) -> GenerationReport:
     """Write the whole exam into ``out_dir`` (see the module docstring)."""
     started = time.perf_counter()
     progress = progress or (lambda stage, done, total: None)
     run, roster = open_run(exam_path, roster_path, Path(out_dir), bank, pdf)
+    run.solutions = solutions
     report = GenerationReport(run.out_dir, len(roster), len(roster) * len(run.spec.exercises), 0)
     report.timings["load"] = time.perf_counter() - started
     with Pool(run, default_jobs(jobs)) as pool:
@@ -149,36 +155,42 @@ def _write_key_and_moodle(run: GenerationRun, manifest: Manifest) -> None:
 def _write_printing_pdfs(run: GenerationRun, pool: Pool, manifest: Manifest,
                          roster: list[Student], results: list[StudentResult],
                          progress: Progress) -> None:
-    """key.pdf (in a worker, meanwhile) and sheets.pdf."""
+    """key.pdf (in a worker, meanwhile), sheets.pdf and, with solutions, solutions.pdf."""
     from ..render.keys import key_typst
 
     title = f"{run.spec.title}: answer key"
     key_job = pool.submit(_compile_key,
                           typst_preamble(run.spec.to_json(), title) + key_typst(manifest))
-    _write_sheets_pdf(run, roster, results)
-    progress("combined PDFs", 1, 2)
+    steps = 3 if run.solutions else 2
+    _write_combined_pdf(run, roster, "sheet.pdf", [r.body for r in results],
+                        f"{run.spec.title}: all sheets", "sheets.pdf")
+    progress("combined PDFs", 1, steps)
+    if run.solutions:
+        _write_combined_pdf(run, roster, "solution.pdf", [r.solution_body for r in results],
+                            solutions_title(run.spec.title), "solutions.pdf")
+        progress("combined PDFs", 2, steps)
     key_job.result()
-    progress("combined PDFs", 2, 2)
+    progress("combined PDFs", steps, steps)
 
 
-def _write_sheets_pdf(run: GenerationRun, roster: list[Student],
-                      results: list[StudentResult]) -> None:
-    """sheets.pdf: every student's PDF embedded page by page, or, where typst cannot
-    embed PDFs, the sheets laid out again."""
-    preamble = typst_preamble(run.spec.to_json(), f"{run.spec.title}: all sheets")
+def _write_combined_pdf(run: GenerationRun, roster: list[Student], student_pdf: str,
+                        bodies: list[str], title: str, combined_pdf: str) -> None:
+    """``combined_pdf``: every student's ``student_pdf`` embedded page by page, or, where
+    typst cannot embed PDFs, their typst ``bodies`` laid out again."""
+    preamble = typst_preamble(run.spec.to_json(), title)
 
     def laid_out() -> str:
-        return preamble + _PAGE_BREAK.join(r.body for r in results)
+        return preamble + _PAGE_BREAK.join(bodies)
 
     combined = embedded_pages_source(
-        run.out_dir, [f"students/{s.student_id}/sheet.pdf" for s in roster], laid_out)
+        run.out_dir, [f"students/{s.student_id}/{student_pdf}" for s in roster], laid_out)
     if not combined.startswith("#set document"):
         combined = preamble + combined
     try:
         pdf = run.compiler.compile(combined, str(run.out_dir.resolve()))
-    except Exception:  # a typst without PDF images: lay the sheets out again
+    except Exception:  # a typst without PDF images: lay the pages out again
         pdf = run.compiler.compile(laid_out())
-    write_atomic(run.out_dir / "sheets.pdf", pdf)
+    write_atomic(run.out_dir / combined_pdf, pdf)
 
 
 def _compile_key(run: GenerationRun, source: str) -> None:

@@ -9,9 +9,11 @@ Top-level keys of ``exam.toml`` (all optional)::
     penalty = 0.1                           # fraction of a part's points lost per extra attempt
     feedback = "immediate"                  # "immediate" | "after-close"
     counts = "best"                         # which attempt the gradebook takes: "best" | "last"
+    solutions = "after-close"               # when worked solutions are shown (solution_policy.py)
 
-Defaults follow the mode: an exam shows feedback after the close and counts the last
-saved answer; homework and practice show verdicts at once and count the best attempt.
+Defaults follow the mode: an exam shows feedback after the close, counts the last saved
+answer and shows no worked solution; homework and practice show verdicts at once, count
+the best attempt and show worked solutions with the feedback.
 An exam cannot show verdicts before its close (``feedback = "immediate"`` is refused).
 The server enforces ``opens`` and ``closes`` with its own clock.
 """
@@ -24,11 +26,13 @@ from dataclasses import dataclass
 from typing import Callable
 
 from ..errors import DynagradeError
+from .solution_policy import SOLUTIONS, default_solutions
 
 MODES = ("exam", "homework", "practice")
 FEEDBACK = ("immediate", "after-close")
 COUNTS = ("best", "last")
-POLICY_KEYS = {"mode", "opens", "closes", "attempts", "penalty", "feedback", "counts"}
+POLICY_KEYS = {"mode", "opens", "closes", "attempts", "penalty", "feedback", "counts",
+               "solutions"}
 
 
 class PolicyError(DynagradeError, ValueError):
@@ -46,6 +50,11 @@ class Policy:
     penalty: float = 0.0
     feedback: str = "after-close"
     counts: str = "last"
+    solutions: str | None = None  # None: the mode's default (solution_policy.py)
+
+    def __post_init__(self):
+        if self.solutions is None:
+            object.__setattr__(self, "solutions", default_solutions(self.mode))
 
     def is_open(self, now: dt.datetime) -> bool:
         """Whether answers are accepted at ``now``."""
@@ -65,7 +74,8 @@ class Policy:
     def to_json(self) -> dict:
         return {"mode": self.mode, "opens": _iso(self.opens), "closes": _iso(self.closes),
                 "attempts": self.attempts, "penalty": self.penalty,
-                "feedback": self.feedback, "counts": self.counts}
+                "feedback": self.feedback, "counts": self.counts,
+                "solutions": self.solutions}
 
     @classmethod
     def from_json(cls, data: dict | None) -> "Policy":
@@ -74,7 +84,7 @@ class Policy:
             return cls()
         return cls(data["mode"], _parse_iso(data.get("opens")), _parse_iso(data.get("closes")),
                    int(data["attempts"]), float(data["penalty"]), data["feedback"],
-                   data["counts"])
+                   data["counts"], data.get("solutions"))
 
 
 def read_policy(data: dict, where: str, line_of: Callable[[str], str]) -> Policy:
@@ -109,7 +119,10 @@ def read_policy(data: dict, where: str, line_of: Callable[[str], str]) -> Policy
             or not math.isfinite(penalty) or not 0 <= penalty <= 1:
         fail("penalty", f"{penalty!r}; give the fraction of the points lost per extra "
                         "attempt, between 0 and 1")
-    return Policy(mode, opens, closes, attempts, float(penalty), feedback, counts)
+    solutions = data.get("solutions", default_solutions(mode))
+    if solutions not in SOLUTIONS:
+        fail("solutions", f"{solutions!r}; choose one of {', '.join(SOLUTIONS)}")
+    return Policy(mode, opens, closes, attempts, float(penalty), feedback, counts, solutions)
 
 
 def _moment(value, fail) -> dt.datetime | None:

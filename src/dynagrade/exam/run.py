@@ -94,6 +94,7 @@ class GenerationRun:
     parts: dict[str, tuple[PartEntry, ...]]
     out_dir: Path
     pdf: bool = True
+    solutions: bool = False  # write each student's worked solutions (``--solutions``)
     problems: VariantCache[tuple[str, ...]] = field(
         default_factory=lambda: VariantCache(_variant_problems, 50_000))
     figures: VariantCache[str | None] = field(
@@ -102,11 +103,11 @@ class GenerationRun:
 
     def __getstate__(self):
         paths = {i: e.path for i, e in self.exercises.items()}
-        return (self.spec, paths, self.parts, self.out_dir, self.pdf)
+        return (self.spec, paths, self.parts, self.out_dir, self.pdf, self.solutions)
 
     def __setstate__(self, state):
-        spec, paths, parts, out_dir, pdf = state
-        self.__init__(spec, _load(paths), parts, out_dir, pdf)
+        spec, paths, parts, out_dir, pdf, solutions = state
+        self.__init__(spec, _load(paths), parts, out_dir, pdf, solutions)
 
 
 @dataclass

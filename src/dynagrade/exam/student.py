@@ -20,24 +20,27 @@ from ..render.sheets import (SheetExercise, SheetPart, StudentSheet, sheet_html,
 from .files import write_atomic
 from .manifest import StudentEntry, VariantEntry
 from .run import GenerationRun
+from .solutions import write_solution_sheet
 from .spec import ExamExercise, Student
 from .variants import exam_variant
 
 
 @dataclass(frozen=True)
 class StudentResult:
-    """What one student's job hands back: the manifest entry, the sheet's typst body and
-    the CPU seconds the job spent per stage (:data:`STAGES`; CPU rather than wall time,
-    which says little on a shared machine)."""
+    """What one student's job hands back: the manifest entry, the sheet's typst body,
+    with ``--solutions`` the solution sheet's, and the CPU seconds the job spent per
+    stage (:data:`STAGES`; CPU rather than wall time, which says little on a shared
+    machine)."""
 
     entry: StudentEntry
     body: str
+    solution_body: str | None = None
     timings: dict[str, float] = field(default_factory=dict)
 
 
 #: the stages of a student's job, as :attr:`StudentResult.timings` names them: drawing
 #: the figures, writing the sheets (Markdown, HTML, typst source), compiling the PDF and
-#: everything else (variants, fill-in files)
+#: everything else (variants, fill-in files, the solution sheet)
 STAGES = ("figures", "sheets", "PDFs", "the rest")
 
 
@@ -45,7 +48,7 @@ def student_job(run: GenerationRun, student: Student) -> StudentResult:
     """Variants, fill-in files, figures, sheets and the PDF of ``student``."""
     started = time.process_time()
     timings = dict.fromkeys(STAGES, 0.0)
-    entries, sheet_exercises = [], []
+    entries, sheet_exercises, solved = [], [], []
     for number, item in enumerate(run.spec.exercises, 1):
         exercise = run.exercises[item.id]
         variant, redraws = exam_variant(exercise, run.spec.id, student.student_id, item.set,
@@ -54,12 +57,16 @@ def student_job(run: GenerationRun, student: Student) -> StudentResult:
                                     dict(variant.answers), redraws))
         sheet_exercises.append(_exercise_files(run, student, number, item, exercise, variant,
                                                timings))
+        solved.append((exercise, variant))
     sheet = StudentSheet(run.spec.to_json(), student.student_id, student.name,
                          tuple(sheet_exercises))
     body = _write_sheets(run, student, sheet, timings)
+    solution_body = None
+    if run.solutions:
+        solution_body = write_solution_sheet(run, student, solved)
     entry = StudentEntry(student.student_id, student.name, student.email, tuple(entries))
     timings["the rest"] = time.process_time() - started - sum(timings.values())
-    return StudentResult(entry, body, timings)
+    return StudentResult(entry, body, solution_body, timings)
 
 
 def _exercise_files(run: GenerationRun, student: Student, number: int, item: ExamExercise,

@@ -19,6 +19,7 @@ from ..errors import DefinitionError, DynagradeError, UnknownParameter, UnknownP
 from .listing import summary
 from .params import Constraint, Parameter, ParamValues, symbol_domain, to_si_values
 from .parts import Part
+from .solution import check_solution
 from .statement import compile_statement, render_statement
 
 _ID = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
@@ -57,7 +58,10 @@ class Exercise:
     """An exercise template: parameters, constraints, statement, solver and parts.
 
     ``solve(p)`` receives the parameters in SI (``p.alpha`` in radians) and returns the
-    reference answer of every non-symbolic part, in SI, by calling the mechanics core.
+    reference answer of every non-symbolic part, in SI, by calling the mechanics core;
+    it may return extra keys beside the parts' names (intermediate quantities for the
+    worked ``solution``, never graded). ``solution`` is a jinja2 template of Markdown
+    (:mod:`.solution`).
 
     The loader sets ``path`` (the file it came from) and ``fingerprint`` (the SHA-256 of
     that file's bytes): the exercise's identity, the key for anything cached about it.
@@ -74,6 +78,7 @@ class Exercise:
     constraints: tuple[Constraint, ...] = ()
     chapter: int | None = None
     figure: Callable[[ParamValues], Any] | None = None
+    solution: str | None = None
     path: str | None = field(default=None, compare=False)
     fingerprint: str | None = field(default=None, compare=False)
     _draw: list = field(default_factory=list, init=False, repr=False, compare=False)
@@ -96,6 +101,7 @@ class Exercise:
             object.__setattr__(self, "chapter", chapter_of(self.source))
         object.__setattr__(self, "topics", tuple(self.topics))
         compile_statement(self.statement)
+        check_solution(self)
 
     # -- parameters -------------------------------------------------------------------
 

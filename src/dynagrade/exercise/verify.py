@@ -5,16 +5,22 @@ are finite and pass their own part, the part's near misses (an answer 5 % off, a
 option) fail, every declared misconception fails, and each symbolic part's expression
 reproduces the numeric part it ``equals`` at the variant's parameters (a cross-check of
 formula against mechanics core). What each kind tries is its own
-(:mod:`dynagrade.exercise.parts`).
+(:mod:`dynagrade.exercise.parts`). The worked solution of every variant is checked too
+(:mod:`.solution_check`), its math once per exercise by ``math_check`` (the render
+layer's, handed in by the command); an exercise without a solution is a finding when
+``require_solution`` is set (the command sets it once the shipped bank is complete, or
+on request), otherwise a note.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Iterable
+from typing import Callable, Iterable
 
 from ..grading import grade
 from .model import ConstraintError, Exercise, Variant
+from .solution import SolutionError, render_solution
+from .solution_check import missing_solution, solution_problems
 from .statement import referenced_names
 
 
@@ -25,16 +31,22 @@ class VerifyReport:
     exercise_id: str
     variants: int = 0
     failures: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
 
     @property
     def ok(self) -> bool:
         return not self.failures
 
 
-def verify_exercise(exercise: Exercise, seeds: Iterable[int]) -> VerifyReport:
+def verify_exercise(exercise: Exercise, seeds: Iterable[int], require_solution: bool = False,
+                    math_check: Callable[[str], list[str]] | None = None) -> VerifyReport:
     """Every check of the module docstring, for each of ``seeds``."""
     report = VerifyReport(exercise.id)
     report.failures += static_problems(exercise)
+    missing = missing_solution(exercise)
+    if missing:
+        (report.failures if require_solution else report.notes).append(missing)
+    math_checked = math_check is None or missing is not None
     for seed in seeds:
         report.variants += 1
         try:
@@ -46,7 +58,20 @@ def verify_exercise(exercise: Exercise, seeds: Iterable[int]) -> VerifyReport:
             report.failures.append(f"seed {seed}: {type(error).__name__}: {error}")
             continue
         report.failures += [f"seed {seed}: {p}" for p in variant_problems(exercise, variant)]
+        report.failures += [f"seed {seed}: {p}" for p in solution_problems(exercise, variant)]
+        if not math_checked:
+            math_checked = True
+            report.failures += [f"seed {seed}: solution: {p}"
+                                for p in _solution_math(exercise, variant, math_check)]
     return report
+
+
+def _solution_math(exercise: Exercise, variant: Variant,
+                   math_check: Callable[[str], list[str]]) -> list[str]:
+    try:
+        return math_check(render_solution(exercise, variant))
+    except SolutionError:  # solution_problems reported it
+        return []
 
 
 def static_problems(exercise: Exercise) -> list[str]:

@@ -47,7 +47,8 @@ def _feedback_context(exam, exercises, data) -> dict:
                               "answer_shown": part["answer"] if part["answer"] is not None
                               else NO_ANSWER})
         sections.append({"id": exercise_id, "title": described.title,
-                         "points": described.points, "result": result, "parts": parts})
+                         "points": described.points, "result": result, "parts": parts,
+                         "solution": data.get("solutions", {}).get(exercise_id)})
     return {"exam": exam, "student": data["student"], "row": data["row"],
             "sections": sections}
 

@@ -48,6 +48,18 @@ def variant_panel(exercise, variant, with_answers: bool) -> None:
         answers_table(exercise, variant)
 
 
+def solution_panel(exercise, variant, solution: str | None) -> None:
+    """The variant's worked solution (Markdown), or a line saying there is none yet."""
+    from rich.markdown import Markdown
+
+    console = _console()
+    if solution is None:
+        console.print(f"[dim]{exercise.id} has no worked solution yet[/]")
+        return
+    console.print(Panel(Markdown(solution), title=f"Solution: {exercise.title}",
+                        subtitle=f"{exercise.id} · seed {variant.seed}"))
+
+
 def result_table(exercise, result) -> None:
     table = Table(title=f"{exercise.title} ({exercise.id}, seed {result.seed})")
     for column in ("part", "verdict", "points", "feedback"):
@@ -74,7 +86,9 @@ def verify_progress(exercises: Sequence, check: Callable) -> list:
     out = _console()
     for report in reports:
         if report.ok:
-            out.print(f"[green]ok[/]    {report.exercise_id}: {report.variants} variants")
+            notes = "".join(f"; {note}" for note in report.notes)
+            out.print(f"[green]ok[/]    {report.exercise_id}: {report.variants} variants"
+                      f"{notes}")
         else:
             out.print(f"[red]FAIL[/]  {report.exercise_id}: {len(report.failures)} problems "
                       f"in {report.variants} variants")
@@ -84,6 +98,9 @@ def verify_progress(exercises: Sequence, check: Callable) -> list:
                 out.print(f"        … and {len(report.failures) - 10} more")
     failed = sum(not r.ok for r in reports)
     out.print(f"{len(reports) - failed} of {len(reports)} exercises passed")
+    noted = sum(bool(r.notes) for r in reports)
+    if noted:
+        out.print(f"{noted} noted: " + "; ".join(sorted({n for r in reports for n in r.notes})))
     return reports
 
 

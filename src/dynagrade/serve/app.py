@@ -23,6 +23,7 @@ from __future__ import annotations
 import datetime as dt
 import os
 import uuid
+from collections import Counter
 from contextlib import asynccontextmanager
 from pathlib import Path
 from typing import Callable
@@ -34,6 +35,7 @@ from markupsafe import Markup
 from pydantic import BaseModel, Field
 from starlette.concurrency import run_in_threadpool
 
+from ..exam.solution_policy import solution_visible
 from . import db, gradebook, limits
 from .exam_data import MAX_ANSWER_CHARS, ExamData
 from .grading_pool import Busy, GradingPool
@@ -309,6 +311,8 @@ def _student_html(request: Request, token: str, student_id: str, practice: str |
         mine = [a for a in stored if a.exercise_id == exercise_id and
                 (a.counted if seed is None else a.seed == seed and not a.counted)]
         last = {a.part: a.raw for a in mine}
+        solution = (_solution(data, student_id, exercise_id, mine, now)
+                    if seed is None else None)
         exercises.append({
             "id": exercise_id, "title": meta.title, "points": meta.points,
             "statement": Markup(data.statement_html(student_id, exercise_id, seed)),
@@ -321,7 +325,8 @@ def _student_html(request: Request, token: str, student_id: str, practice: str |
                          "part": a.part, "raw": a.raw, "message": a.message,
                          "status": a.status, "correct": a.correct,
                          "score": round(a.score, 3), "max_score": round(a.max_score, 3),
-                         "feedback": a.feedback} for a in reversed(mine)]})
+                         "feedback": a.feedback} for a in reversed(mine)],
+            "solution": Markup(solution) if solution else None})
     is_open = data.policy.is_open(now)
     closed_text = ("The exam is not open yet." if data.policy.opens and now < data.policy.opens
                    else "The exam is closed; answers are no longer accepted.")
@@ -333,6 +338,22 @@ def _student_html(request: Request, token: str, student_id: str, practice: str |
         closed_text=closed_text, error=error, max_chars=MAX_ANSWER_CHARS,
         instructions=Markup(markdown_to_html(data.instructions)) if data.instructions else "",
         submit_label="Save answers" if not verdicts else "Submit")
+
+
+def _solution(data: ExamData, student_id: str, exercise_id: str, mine: list,
+              now: dt.datetime) -> str | None:
+    """The worked solution of the student's variant as HTML, once the policy lets them
+    see it: after the close, or after the last attempt of every part (``mine``: the
+    student's counted answers to the exercise)."""
+    policy = data.policy
+    closed = policy.closes is not None and now >= policy.closes
+    used = Counter(a.part for a in mine)
+    out_of_attempts = bool(policy.attempts) and all(
+        used[part.name] >= policy.attempts for part in data.manifest_parts[exercise_id])
+    if not solution_visible(policy.solutions, closed, policy.shows_verdicts(now),
+                            out_of_attempts):
+        return None
+    return data.solution_html(student_id, exercise_id)
 
 
 def _staff_html(request: Request, token: str) -> str:

@@ -16,7 +16,7 @@ from functools import lru_cache
 from pathlib import Path
 
 from ..errors import UnknownExercise
-from ..exam.classgrade import grade_student
+from ..exam.classgrade import grade_student, stored_variant
 from ..exam.manifest import ManifestError, PartEntry, StudentEntry, VariantEntry, load
 from ..exam.policy import Policy
 from ..exam.submissions import Submission
@@ -88,6 +88,11 @@ class ExamData:
         entry = self.entry(student_id, exercise_id, seed)
         return _statement_html(self, exercise_id, entry.seed,
                                tuple(sorted(entry.params.items())))
+
+    def solution_html(self, student_id: str, exercise_id: str) -> str | None:
+        """The worked solution of the student's variant as HTML (MathML), from the
+        variant the manifest stores; ``None`` when the exercise has none."""
+        return _solution_html(self, exercise_id, student_id)
 
     def figure_svg(self, student_id: str, exercise_id: str) -> str | None:
         """The figure ``dynagrade exam`` drew for the student's variant, inline."""
@@ -188,6 +193,17 @@ def _statement_html(data: ExamData, exercise_id: str, seed: int, params: tuple) 
 
     variant = data.exercises[exercise_id].variant_from_params(seed, dict(params))
     return markdown_to_html(variant.statement, heading_offset=2)
+
+
+@lru_cache(maxsize=4096)
+def _solution_html(data: ExamData, exercise_id: str, student_id: str) -> str | None:
+    from ..exercise.solution import render_solution
+    from ..render.markup import markdown_to_html
+
+    exercise = data.exercises[exercise_id]
+    solution = render_solution(exercise, stored_variant(exercise, data.entry(student_id,
+                                                                             exercise_id)))
+    return None if solution is None else markdown_to_html(solution, heading_offset=3)
 
 
 @lru_cache(maxsize=1024)
