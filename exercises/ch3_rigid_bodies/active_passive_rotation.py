@@ -28,6 +28,7 @@ def solve(p):
         "a_rotated": rotations.actively_rotated_vector(rot, _vector(p)),
         "a_in_B": rotations.components_in_rotated_frame(rot, _vector(p)),
         "angle": rotations.rotation_angle(rot),
+        "trace_R": float(np.trace(rot)),
     }
 
 
@@ -66,6 +67,29 @@ $(a_1, a_2, a_3)$ = ({{ a1 }}, {{ a2 }}, {{ a3 }}).
 2. What are the components of the (unmoved) vector $a$ in the body frame $B$ after the
    turn (passive rotation)?
 3. By which single angle (between 0° and 180°) is the body turned in total?
+""",
+    solution=r"""
+A turn about a fixed axis that follows another multiplies its matrix from the left
+(rotation matrices, Section 3.4.1), so the combined turn is
+$$R = R_1(\beta)\,R_3(\gamma),$$
+with $\gamma$ = {{ gamma }} and $\beta$ = {{ beta }}. The columns of $R_3(\gamma)$ are the
+turned axes $(\cos\gamma, \sin\gamma, 0)$, $(-\sin\gamma, \cos\gamma, 0)$ and $(0, 0, 1)$;
+those of $R_1(\beta)$ are $(1, 0, 0)$, $(0, \cos\beta, \sin\beta)$ and
+$(0, -\sin\beta, \cos\beta)$.
+
+1. **Active rotation.** The arrow turns with the body, so its new components in the fixed
+   frame are $a' = R\,a$. With $a$ = ({{ a1 }}, {{ a2 }}, {{ a3 }}):
+   $a' = R\,a$ = {{ answers.a_rotated }}.
+2. **Passive rotation.** The vector stays where it is and we ask for its components along
+   the turned axes $R\,e_i$: $a_i^B = (R\,e_i)\cdot a$, i.e. $a^B = R^{\mathsf T} a$:
+   $a^B = R^{\mathsf T} a$ = {{ answers.a_in_B }}.
+   Active and passive use differ: $R$ versus its inverse $R^{\mathsf T}$.
+3. **Total angle.** Every rotation is a single turn by an angle $\varphi$ about one axis,
+   and the trace of its matrix is $\operatorname{tr} R = 1 + 2\cos\varphi$. Here
+   $\operatorname{tr} R$ = {{ si.trace_R }}, and
+   $$\varphi = \arccos\frac{\operatorname{tr} R - 1}{2}$$
+   turns the body by $\varphi$ = {{ answers.angle }} in total.
+   The angles $\gamma$ and $\beta$ about different axes do not simply add.
 """,
     solve=solve,
     parts=(

@@ -43,6 +43,26 @@ Gravity is carried by the rod's vertical reaction and plays no further part.
 2. How fast does it slide along the rod then?
 3. How large is the horizontal force of the rod on the bead then?
 """,
+    solution=r"""
+Describe the bead in the frame that turns with the rod (relative motion in a rotating
+frame, Section 3.4.3). Along the frictionless rod only the centrifugal term acts; normal
+to the rod, in the horizontal plane, the rod must supply the Coriolis term.
+
+1. **Motion along the rod.** The radial balance in the rotating frame reads
+   $m\ddot r = m\Omega^2 r$, i.e. $\ddot r - \Omega^2 r = 0$. With $r(0) = r_0$ and
+   $\dot r(0) = 0$ its solution is
+   $$r(t) = r_0\cosh(\Omega t).$$
+   With $r_0$ = {{ r0 }}, $\Omega$ = {{ Omega }} and $t$ = {{ t }}:
+   $r(t)$ = {{ answers.r_t }}.
+2. **Sliding speed.** Differentiating,
+   $$\dot r(t) = r_0\,\Omega\sinh(\Omega t),$$
+   so the bead slides outward at $\dot r$ = {{ answers.rdot_t }}.
+3. **Force of the rod.** Normal to the rod the relative acceleration is zero, so the rod's
+   force balances the Coriolis term $2m\,\Omega\times v_{\mathrm{rel} }$:
+   $$N = 2m\,\Omega\,\dot r,$$
+   and with $m$ = {{ m }} the rod pushes with $N$ = {{ answers.N }},
+   forward in the sense of rotation. The centrifugal term is along the rod and needs no force there.
+""",
     solve=solve,
     parts=(
         Numeric("r_t", "distance from O", unit="m", points=2,

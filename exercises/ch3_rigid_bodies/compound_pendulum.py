@@ -32,6 +32,7 @@ def solve(p):
             np.pi / 2, p.g, mass, _centre_distance(p), i_o)),
         "omega_bottom": rigid_kinetics.angular_speed_of_pendulum_from_energy(
             np.pi / 2, 0.0, p.g, mass, _centre_distance(p), i_o),
+        "d_C": _centre_distance(p),
     }
 
 
@@ -72,6 +73,28 @@ plane of the disk. The pendulum is released from rest with the rod horizontal
 1. What is the moment of inertia of the pendulum about the pivot axis?
 2. What is its angular acceleration just after release?
 3. What is its angular speed when the rod passes the vertical?
+""",
+    solution=r"""
+The pendulum turns about the fixed pivot O, so we use the balance of angular momentum about
+O and the work-energy balance (Section 3.2.2), both with the moment of inertia about O.
+
+1. **Moment of inertia about O.** The rod about its end: $\tfrac{1}{3} m_r L^2$ (its centroidal
+   $\tfrac{1}{12} m_r L^2$ shifted by $L/2$). The disk swings in its own plane: its own
+   $\tfrac{1}{2} m_d R^2$, shifted by $L$ with the parallel-axis theorem:
+   $$I_O = \tfrac{1}{3} m_r L^2 + \tfrac{1}{2} m_d R^2 + m_d L^2.$$
+   With $m_r$ = {{ m_r }}, $L$ = {{ L }}, $m_d$ = {{ m_d }} and $R$ = {{ R }}:
+   $I_O$ = {{ answers.I_O }}.
+2. **Angular acceleration at release.** The centre of mass lies at
+   $$d_C = \frac{m_r L/2 + m_d L}{m_r + m_d},$$
+   here $d_C$ = {{ si.d_C }} m below O. With the rod horizontal the weight's moment about O is $(m_r + m_d)\,g\,d_C$,
+   and $I_O\ddot\varphi = (m_r + m_d)\,g\,d_C$ gives
+   $$\ddot\varphi = \frac{(m_r + m_d)\,g\,d_C}{I_O},$$
+   so just after release $\ddot\varphi$ = {{ answers.alpha0 }}.
+3. **Angular speed at the vertical.** From the horizontal to the vertical the centre of
+   mass drops by $d_C$; the work of gravity becomes kinetic energy of rotation about O:
+   $$\tfrac{1}{2} I_O\,\omega^2 = (m_r + m_d)\,g\,d_C
+   \quad\Rightarrow\quad \omega = \sqrt{\frac{2(m_r + m_d)\,g\,d_C}{I_O} },$$
+   and the rod passes the vertical at $\omega$ = {{ answers.omega_bottom }}.
 """,
     solve=solve,
     parts=(

@@ -5,11 +5,12 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform)
-from dynagrade.mechanics import frames
+from dynagrade.mechanics import frames, kinematics
 
 
 def solve(p):
-    return {"d": frames.eastward_deflection_of_falling_body(p.h, p.lat, p.Omega_E, p.g)}
+    return {"d": frames.eastward_deflection_of_falling_body(p.h, p.lat, p.Omega_E, p.g),
+            "t_fall": kinematics.time_from_rest_over_distance(p.h, p.g)}
 
 
 EXERCISE = Exercise(
@@ -35,6 +36,25 @@ $\lambda$ = {{ lat }}. The Earth turns with $\Omega_E$ = {{ Omega_E }}; $g$ = {{
 1. How far east of the foot of the plumb line does the stone land (to first order in
    $\Omega_E$)?
 2. Give this deflection as a formula in $\Omega_E$, $g$, $h$ and $\lambda$.
+""",
+    solution=r"""
+In the frame of the rotating Earth the falling stone feels the Coriolis acceleration
+$-2\,\Omega_E\times v_{\mathrm{rel} }$ (relative motion in a rotating frame, Section 3.4.3).
+To first order in $\Omega_E$ we use the fall velocity of the non-rotating problem,
+$v = g t$ downward.
+
+1. **Deflection.** Only the component $\Omega_E\cos\lambda$ of the Earth's rate normal to
+   the vertical turns a vertical velocity; the Coriolis acceleration points east and grows
+   with the fall speed:
+   $$\ddot x_{\mathrm{east} } = 2\,\Omega_E\cos\lambda\; g\,t .$$
+   Integrating twice from rest, $x_{\mathrm{east} }(t) = \tfrac{1}{3}\,\Omega_E\,g\cos\lambda\;t^3$.
+   The fall lasts $t_f = \sqrt{2h/g}$ = {{ si.t_fall }} s, so with $h$ = {{ h }},
+   $\lambda$ = {{ lat }}, $\Omega_E$ = {{ Omega_E }} and $g$ = {{ g }}
+   $$d = \tfrac{1}{3}\,\Omega_E\,g\cos\lambda\;t_f^{\,3},$$
+   and the stone lands $d$ = {{ answers.d }} east of the plumb line.
+2. **As a formula.** Inserting $t_f$:
+   $$d = \frac{\Omega_E\,g\cos\lambda}{3}\left(\frac{2h}{g}\right)^{3/2},$$
+   written as `{{ answers.d_formula }}`.
 """,
     solve=solve,
     parts=(

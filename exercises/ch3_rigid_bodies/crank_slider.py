@@ -81,6 +81,8 @@ def solve(p):
     return {
         "v_B": rk.slider_velocity(p.r, p.l, p.theta, w),
         "omega_rod": abs(rk.connecting_rod_angular_velocity(p.r, p.l, p.theta, w)),
+        "omega_crank": w,
+        "beta": rk.connecting_rod_angle(p.r, p.l, p.theta),
     }
 
 
@@ -122,6 +124,26 @@ the angle $\theta$ = {{ theta }} with the line OB (measured from OB, toward the 
 
 1. What is the velocity of the slider (positive away from O)?
 2. What is the angular speed of the connecting rod?
+""",
+    solution=r"""
+Crank and rod are rigid bodies in plane motion; we transfer the velocity of the crank pin
+A to the slider B with $v_B = v_A + \omega_{AB}\times r_{AB}$ (velocity transfer in a rigid
+body, Section 3.1.1), knowing that $v_B$ lies along the slider line.
+
+**Geometry and crank rate.** The crank turns at $\omega = 2\pi n$ = {{ si.omega_crank }} rad/s
+($n$ = {{ n }}). The rod's angle $\beta$ below the slider line follows from
+$l\sin\beta = r\sin\theta$: with $r$ = {{ r }}, $l$ = {{ l }} and $\theta$ = {{ theta }},
+$\beta$ = {{ si.beta | deg }}°.
+
+1. **Slider velocity.** The pin A moves normal to the crank with $|v_A| = r\omega$. The
+   component of $v_B = v_A + \omega_{AB}\times r_{AB}$ normal to the slider line must vanish,
+   which fixes $\omega_{AB}$ (step 2); the component along it gives
+   $$v_B = -r\,\omega\,\frac{\sin(\theta + \beta)}{\cos\beta},$$
+   so $v_B$ = {{ answers.v_B }} (a negative value means the slider moves toward O).
+2. **Angular speed of the rod.** The vertical component of the transfer equation
+   (counter-clockwise positive), $r\omega\cos\theta + \omega_{AB}\,l\cos\beta = 0$, gives
+   $$\omega_{AB} = -\frac{r\,\omega\cos\theta}{l\cos\beta},$$
+   and the rod turns at $|\omega_{AB}|$ = {{ answers.omega_rod }}.
 """,
     solve=solve,
     figure=figure,

@@ -53,6 +53,27 @@ $\dot\psi$ = {{ psi_dot }}, $\dot\theta$ = {{ theta_dot }}, $\dot\varphi$ = {{ p
    ($e_1^B, e_2^B, e_3^B$)?
 2. What is the magnitude of the angular velocity?
 """,
+    solution=r"""
+The angular velocity of the top is the sum of the three rotation rates about their own
+axes (Euler angles, Section 3.5.1):
+$$\omega = \dot\psi\,e_3 + \dot\theta\,e_1' + \dot\varphi\,e_3^B,$$
+where $e_1'$ is the line of nodes. To add them we need all three in the body frame.
+
+1. **Body-frame components.** The spin axis is $e_3^B$ itself; the line of nodes has the
+   components $(\cos\varphi, -\sin\varphi, 0)$; the vertical $e_3$ has
+   $(\sin\theta\sin\varphi, \sin\theta\cos\varphi, \cos\theta)$. Hence
+   $$\omega_1^B = \dot\psi\sin\theta\sin\varphi + \dot\theta\cos\varphi,\qquad
+   \omega_2^B = \dot\psi\sin\theta\cos\varphi - \dot\theta\sin\varphi,\qquad
+   \omega_3^B = \dot\psi\cos\theta + \dot\varphi .$$
+   With $\theta$ = {{ theta }}, $\varphi$ = {{ phi }}, $\dot\psi$ = {{ psi_dot }},
+   $\dot\theta$ = {{ theta_dot }} and $\dot\varphi$ = {{ phi_dot }}:
+   $\omega^B$ = {{ answers.omega_body }}.
+2. **Magnitude.** The length of a vector is the same in every frame:
+   $$|\omega| = \sqrt{(\omega_1^B)^2 + (\omega_2^B)^2 + (\omega_3^B)^2},$$
+   which gives $|\omega|$ = {{ answers.omega_abs }}.
+   Adding $\dot\psi$ and $\dot\varphi$ as if about one axis is wrong: the vertical and the
+   symmetry axis make the angle $\theta$.
+""",
     solve=solve,
     parts=(
         Vector("omega_body", "body-frame angular velocity", unit="rad/s", size=3, points=3,

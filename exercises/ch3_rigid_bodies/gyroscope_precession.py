@@ -20,7 +20,8 @@ def solve(p):
     rate = gyro.fast_top_precession_rate(p.m, p.g, p.l, disk[2, 2], _spin(p))
     spin_momentum = rigid_kinetics.rigid_body_angular_momentum(disk, [0.0, 0.0, _spin(p)])[2]
     # one precession revolution takes the period of the rotation at the rate psi_dot
-    return {"H": float(spin_momentum), "psi_dot": rate, "T": vibrations.period(rate)}
+    return {"H": float(spin_momentum), "psi_dot": rate, "T": vibrations.period(rate),
+            "omega_spin": _spin(p), "I3": disk[2, 2]}
 
 
 EXERCISE = Exercise(
@@ -48,6 +49,25 @@ is at $l$ = {{ l }} from the pivot. The disk spins about the axle at $n$ = {{ n 
 1. What is the spin angular momentum of the disk?
 2. With which angular velocity does the axle precess about the vertical?
 3. How long does one full precession take?
+""",
+    solution=r"""
+The weight's moment about the pivot turns the spin angular momentum of the disk; in the
+fast-top approximation the angular momentum is that of the spin alone, and its rate of
+change $\dot\psi\,e_3\times H$ equals the moment (gyroscope, Section 3.5.2).
+
+1. **Spin angular momentum.** The disk spins about its axis of symmetry with
+   $\omega_s = 2\pi n$ = {{ si.omega_spin }} rad/s ($n$ = {{ n }}), and its axial moment of
+   inertia is $I_3 = \tfrac{1}{2} m R^2$ = {{ si.I3 }} kg·m² ($m$ = {{ m }}, $R$ = {{ R }}). So
+   $$H = I_3\,\omega_s = \tfrac{1}{2} m R^2\,\omega_s,$$
+   which gives $H$ = {{ answers.H }}.
+2. **Precession rate.** The weight acts at $l$ = {{ l }} from the pivot, so its moment is
+   $M = m g l$, horizontal and normal to the axle. With the axle horizontal,
+   $|\dot H| = \dot\psi H = m g l$:
+   $$\dot\psi = \frac{m g l}{I_3\,\omega_s},$$
+   and the axle precesses at $\dot\psi$ = {{ answers.psi_dot }}.
+3. **Period of precession.** One full turn about the vertical takes
+   $$T = \frac{2\pi}{\dot\psi},$$
+   that is $T$ = {{ answers.T }}.
 """,
     solve=solve,
     parts=(

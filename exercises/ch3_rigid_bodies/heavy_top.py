@@ -56,6 +56,30 @@ $\omega_3$ = {{ w3 }} ($g$ = {{ g }}).
 3. What is the rate of the fast steady precession?
 4. What precession rate does the fast-top approximation give?
 """,
+    solution=r"""
+In steady precession the tilt $\theta$, the precession rate $\dot\psi$ and the axial rate
+$\omega_3$ stay constant, and the balance of angular momentum about the fixed tip O reduces
+to one equation (heavy symmetric top, Section 3.5.2):
+$$m g l = \dot\psi\,\bigl(I_3\,\omega_3 - I_1\,\dot\psi\cos\theta\bigr),
+\qquad\text{i.e.}\qquad I_1\cos\theta\;\dot\psi^2 - I_3\,\omega_3\,\dot\psi + m g l = 0 .$$
+Here $m$ = {{ m }}, $l$ = {{ l }}, $I_1$ = {{ I1 }}, $I_3$ = {{ I3 }},
+$\theta$ = {{ theta }}, $\omega_3$ = {{ w3 }} and $g$ = {{ g }}.
+
+1. **Smallest spin.** The quadratic in $\dot\psi$ has real roots only if its discriminant
+   is not negative, $I_3^2\,\omega_3^2 \ge 4 I_1 m g l\cos\theta$:
+   $$\omega_{3,\min} = \frac{\sqrt{4 I_1 m g l\cos\theta} }{I_3},$$
+   that is $\omega_{3,\min}$ = {{ answers.w_min }}.
+2. **Slow precession.** The smaller root,
+   $$\dot\psi_{\mathrm{slow} } = \frac{I_3\,\omega_3 - \sqrt{I_3^2\,\omega_3^2 - 4 I_1 m g l\cos\theta} }{2 I_1\cos\theta},$$
+   gives $\dot\psi_{\mathrm{slow} }$ = {{ answers.psi_slow }}.
+3. **Fast precession.** The larger root (plus sign in front of the square root) gives
+   $\dot\psi_{\mathrm{fast} }$ = {{ answers.psi_fast }}.
+4. **Fast-top approximation.** For a fast top the term $I_1\dot\psi^2\cos\theta$ is small
+   beside $I_3\,\omega_3\,\dot\psi$; dropping it leaves $m g l = \dot\psi\, I_3\,\omega_3$:
+   $$\dot\psi \approx \frac{m g l}{I_3\,\omega_3},$$
+   which gives {{ answers.psi_approx }}, close to the slow root of step 2 and independent
+   of the tilt.
+""",
     solve=solve,
     parts=(
         Numeric("w_min", "smallest axial spin", unit="rad/s", points=1),

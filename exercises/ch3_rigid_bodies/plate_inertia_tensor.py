@@ -61,6 +61,33 @@ $e_1, e_2, e_3$ (with $I_{12} = -\int x_1 x_2\,dm$).
 4. What is the moment of inertia about the plate's diagonal through O?
 5. What is the smallest principal moment of inertia at O?
 """,
+    solution=r"""
+The inertia tensor about O has the entries $I_{ii} = \int (|x|^2 - x_i^2)\,dm$ and
+$I_{ij} = -\int x_i x_j\,dm$ (moment of inertia tensor, Section 3.2.3). For the thin plate
+$x_3 = 0$ and $dm = \frac{m}{ab}\,dx_1\,dx_2$; with $m$ = {{ m }}, $a$ = {{ a }} and
+$b$ = {{ b }}:
+
+1. **$I_{11}$.** $I_{11} = \int x_2^2\,dm = \frac{m}{ab}\int_0^a\!\!\int_0^b x_2^2\,dx_2\,dx_1
+   = \tfrac{1}{3} m b^2$, so $I_{11}$ = {{ answers.I11 }}.
+   (The same follows from the centroidal $\tfrac{1}{12} m b^2$ and the parallel-axis term
+   $m (b/2)^2$.)
+2. **Product of inertia.** $I_{12} = -\int x_1 x_2\,dm = -\frac{m}{ab}\,\frac{a^2}{2}\,\frac{b^2}{2}
+   = -\tfrac{1}{4} m a b$, so $I_{12}$ = {{ answers.I12 }}. It does not vanish because O is a
+   corner, not the centre.
+3. **$I_{3 3}$.** For a plane body $I_{3 3} = \int (x_1^2 + x_2^2)\,dm = I_{11} + I_{2 2}
+   = \tfrac{1}{3} m (a^2 + b^2)$, so $I_{3 3}$ = {{ answers.I33 }}.
+4. **About the diagonal.** With the unit vector $n = (a, b, 0)/\sqrt{a^2 + b^2}$ along the
+   diagonal, $I_n = n\cdot I\,n = I_{11} n_1^2 + 2 I_{12} n_1 n_2 + I_{2 2} n_2^2$:
+   $$I_n = \frac{\tfrac{1}{3} m b^2 a^2 - \tfrac{1}{2} m a^2 b^2 + \tfrac{1}{3} m a^2 b^2}{a^2 + b^2}
+   = \frac{m\,a^2 b^2}{6\,(a^2 + b^2)},$$
+   so $I_n$ = {{ answers.I_diag }}. The product of inertia must be kept: it lowers the
+   moment.
+5. **Smallest principal moment.** $e_3$ is a principal axis; the other two principal
+   moments are the eigenvalues of the $2\times2$ block of $I_{11}$, $I_{12}$ and
+   $I_{2 2} = \tfrac{1}{3} m a^2$,
+   $$I_{\min} = \frac{I_{11} + I_{2 2} }{2} - \sqrt{\Bigl(\frac{I_{11} - I_{2 2} }{2}\Bigr)^2 + I_{12}^2},$$
+   which gives $I_{\min}$ = {{ answers.I_min }}.
+""",
     solve=solve,
     parts=(
         Numeric("I11", "I11 about the corner", unit="kg*m^2", points=1,

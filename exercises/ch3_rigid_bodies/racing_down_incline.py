@@ -34,6 +34,11 @@ def solve(p):
         "mu_min": rigid_kinetics.minimum_friction_coefficient_for_rolling(
             p.alpha, p.g, p.m, p.R, _moments(p)["cylinder"]),
         "first": min(times, key=times.get),
+        "a_sphere": _acceleration(p, "sphere"),
+        "a_hoop": _acceleration(p, "hoop"),
+        "t_cylinder": times["cylinder"],
+        "t_hoop": times["hoop"],
+        "height": height,
     }
 
 
@@ -61,6 +66,36 @@ of angle $\alpha$ = {{ alpha }} and roll down without slipping ($g$ = {{ g }}).
 4. Which smallest coefficient of static friction lets the cylinder roll without slipping?
 5. Which body arrives first at the end of the distance $s$?
 6. Give the cylinder's acceleration as a formula in $g$ and $\alpha$.
+""",
+    solution=r"""
+Each body rolls without slipping, so $v = \omega R$. The balance of linear momentum along
+the incline, $m a = m g\sin\alpha - F$, and the balance of angular momentum about the
+centre, $I_C\,\dot\omega = F R$ with $\dot\omega = a/R$, give (rolling on an incline,
+Section 3.2.1)
+$$a = \frac{g\sin\alpha}{1 + I_C/(m R^2)},\qquad F = \frac{I_C}{R^2}\,a .$$
+The three bodies differ only in $I_C/(mR^2)$: ½ for the cylinder, 2/5 for the sphere and
+1 for the hoop. Here $m$ = {{ m }}, $R$ = {{ R }}, $\alpha$ = {{ alpha }}, $g$ = {{ g }}.
+
+1. **Cylinder.** $a_{\mathrm{cyl} } = \frac{g\sin\alpha}{1 + 1/2} = \tfrac{2}{3} g\sin\alpha$,
+   so $a_{\mathrm{cyl} }$ = {{ answers.a_cyl }}.
+2. **Time of the sphere.** $a_{\mathrm{sph} } = \tfrac{5}{7} g\sin\alpha$ = {{ si.a_sphere }} m/s².
+   From rest at constant acceleration $s = \tfrac{1}{2} a t^2$, so over $s$ = {{ s }}
+   $$t = \sqrt{\frac{2 s}{a_{\mathrm{sph} } } },$$
+   that is $t$ = {{ answers.t_sphere }}.
+3. **Speed of the hoop.** The work-energy balance: the hoop drops $h = s\sin\alpha$ =
+   {{ si.height }} m, and its kinetic energy is $\tfrac{1}{2} m v^2 + \tfrac{1}{2} m R^2 (v/R)^2 = m v^2$:
+   $$m g h = m v^2 \quad\Rightarrow\quad v = \sqrt{g h},$$
+   so $v$ = {{ answers.v_hoop }}.
+4. **Friction for the cylinder.** Rolling needs $F = \frac{I_C}{R^2} a = \tfrac{1}{3} m g\sin\alpha$,
+   and static friction can supply at most $\mu N = \mu\, m g\cos\alpha$:
+   $$\mu \ge \frac{F}{m g\cos\alpha} = \tfrac{1}{3}\tan\alpha,$$
+   so $\mu_{\min}$ = {{ answers.mu_min }}.
+5. **Who arrives first.** The smallest $I_C/(mR^2)$ gives the largest acceleration and the
+   shortest time: $a_{\mathrm{sph} }$ = {{ si.a_sphere }} m/s² > $a_{\mathrm{cyl} }$ >
+   $a_{\mathrm{hoop} }$ = {{ si.a_hoop }} m/s², with the times {{ answers.t_sphere }},
+   {{ si.t_cylinder }} s and {{ si.t_hoop }} s. First: **{{ answers.first }}**, whatever
+   $m$, $R$ and $\alpha$.
+6. **As a formula.** From step 1, $a_{\mathrm{cyl} }$ = `{{ answers.a_cyl_formula }}`.
 """,
     solve=solve,
     parts=(

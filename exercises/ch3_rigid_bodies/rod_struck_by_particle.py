@@ -57,6 +57,8 @@ def solve(p):
         "v_after": collisions.velocity_after_impulse(p.m, p.v, -impulse),
         "R_pivot": abs(rigid_impact.pivot_impulse(impulse, p.d, p.M, p.L / 2, i_o)),
         "d_percussion": rigid_impact.centre_of_percussion_distance(i_o, p.M, p.L / 2),
+        "I_O": i_o,
+        "impulse": impulse,
     }
 
 
@@ -106,6 +108,33 @@ restitution is $e$ = {{ e }}. Gravity plays no part during the short impact.
 2. What is the ball's velocity just after the impact (positive in its original direction)?
 3. How large is the impulse the pivot exerts on the rod during the impact?
 4. At which distance below O would the blow cause no impulse at the pivot?
+""",
+    solution=r"""
+During the short impact only the contact impulse $\hat F$ and the pivot's impulse act on
+the rod, so we use the impulse balances of an eccentric impact on a body pinned at O
+together with the coefficient of restitution (impact of rigid bodies, Section 3.3).
+
+**Moment of inertia and impulse.** About its end the rod has
+$I_O = \tfrac{1}{3} M L^2$ = {{ si.I_O }} kg·m² ($M$ = {{ M }}, $L$ = {{ L }}). The ball
+changes its momentum by $-\hat F$; the rod its angular momentum about O by $\hat F d$:
+$$m v' = m v - \hat F,\qquad I_O\,\omega = \hat F d .$$
+Restitution says the hit point of the rod, moving at $\omega d$, separates from the ball
+with $e$ times the approach speed: $\omega d - v' = e\,v$. Together,
+$$\hat F = \frac{(1 + e)\,v}{1/m + d^2/I_O},$$
+where $d^2/I_O$ is the rod's effective inverse mass at the hit point. With $m$ = {{ m }},
+$v$ = {{ v }}, $d$ = {{ d }} and $e$ = {{ e }}: $\hat F$ = {{ si.impulse }} N·s.
+
+1. **Angular speed of the rod.** $\omega = \hat F d / I_O$, so $\omega$ = {{ answers.omega }}.
+2. **Velocity of the ball.** $v' = v - \hat F/m$, so $v'$ = {{ answers.v_after }}
+   (a negative value means the ball bounces back).
+3. **Pivot impulse.** The linear impulse balance of the rod, whose centre moves at
+   $\omega L/2$ afterwards: $M\,\omega\,\tfrac{L}{2} = \hat F + \hat R$, so
+   $$|\hat R| = \Bigl|M\,\omega\,\frac{L}{2} - \hat F\Bigr|,$$
+   that is $|\hat R|$ = {{ answers.R_pivot }}.
+4. **Centre of percussion.** The pivot impulse vanishes when
+   $M\,\frac{L}{2}\,\frac{\hat F d}{I_O} = \hat F$, i.e.
+   $$d_P = \frac{I_O}{M\,L/2} = \tfrac{2}{3} L,$$
+   so $d_P$ = {{ answers.d_percussion }}, whatever the ball and its speed.
 """,
     solve=solve,
     figure=figure,

@@ -46,6 +46,27 @@ momentum
 3. about the fixed point A at height $h$ = {{ h }} above the ground, on the vertical
    through P.
 """,
+    solution=r"""
+The angular momentum about any point A follows from the one about the centre of mass with
+the transfer formula (Section 3.2.4)
+$$H_A = H_C + r_{AC}\times m\,v_C .$$
+Rolling without slipping to the right turns the sphere clockwise:
+$\omega = -\frac{v}{R}\,e_3$. Here $m$ = {{ m }}, $R$ = {{ R }} and $v$ = {{ v }}.
+
+1. **About the centre.** For a solid sphere $I_C = \tfrac{2}{5} m R^2$, so
+   $$H_C = I_C\,\omega = -\tfrac{2}{5}\,m R\,v,$$
+   that is $H_C$ = {{ answers.H_C }}.
+2. **About the contact point.** C lies $R$ above P: $r_{PC} = R\,e_2$, and
+   $R\,e_2\times m v\,e_1 = -m R v\,e_3$. Hence
+   $$H_P = -\tfrac{2}{5}\,m R v - m R v = -\tfrac{7}{5}\,m R v,$$
+   that is $H_P$ = {{ answers.H_P }}. (The same as $I_P\,\omega$ with
+   $I_P = \tfrac{7}{5} m R^2$, since P is the instantaneous centre of rotation.)
+3. **About A.** A lies at height $h$ = {{ h }} on the vertical through P, so
+   $r_{AC} = (R - h)\,e_2$ and
+   $$H_A = -\tfrac{2}{5}\,m R v - m\,(R - h)\,v,$$
+   that is $H_A$ = {{ answers.H_A }}. Above the centre ($h > R$) the translation part
+   changes sign.
+""",
     solve=solve,
     parts=(
         Numeric("H_C", "angular momentum about C", unit="kg*m^2/s", points=1),

@@ -95,6 +95,25 @@ $\varphi$ = {{ phi }} from the contact point, measured about the hub counter-clo
 4. How far is P from the instantaneous centre of rotation?
 5. Give the speed of P as a formula in $v$ and $\varphi$.
 """,
+    solution=r"""
+The wheel is a rigid body in plane motion: velocities transfer as
+$v_P = v_C + \omega\times r_{CP}$, and rolling without slipping makes the contact point
+the instantaneous centre of rotation (Section 3.1.1). Here $R$ = {{ R }}, $v$ = {{ v }},
+$\varphi$ = {{ phi }}.
+
+1. **Angular speed.** The contact point is at rest: $v - \omega R = 0$, so
+   $\omega = v/R$ = {{ answers.omega }} (clockwise, $\omega = -\frac{v}{R}\,e_3$).
+2. **Velocity of P.** From the hub, $r_{CP} = R\,(\sin\varphi,\,-\cos\varphi)$ and
+   $\omega\times r_{CP} = -\frac{v}{R}\,e_3\times r_{CP} = -v\,(\cos\varphi,\,\sin\varphi)$:
+   $$v_P = \bigl(v\,(1 - \cos\varphi),\; -v\sin\varphi\bigr),$$
+   that is $v_P$ = {{ answers.v_P }}.
+3. **Speed.** $|v_P| = v\sqrt{(1 - \cos\varphi)^2 + \sin^2\varphi} = v\sqrt{2 - 2\cos\varphi}
+   = 2v\,|\sin(\varphi/2)|$, so $|v_P|$ = {{ answers.speed }}.
+4. **Distance from the instantaneous centre.** The contact point is the instantaneous
+   centre; P is a chord of length $2R\,|\sin(\varphi/2)|$ away from it, so
+   $d$ = {{ answers.d_ICR }}. Check: $|v_P| = \omega\,d$.
+5. **As a formula.** From step 3, $|v_P|$ = `{{ answers.speed_formula }}`.
+""",
     solve=solve,
     figure=figure,
     parts=(

@@ -51,6 +51,22 @@ $r_{OP} = d\,e_1 + R(\sin\gamma\, e_2 + \cos\gamma\, e_3)$ with $\gamma$ = {{ ga
 2. What is the velocity vector of P?
 3. What is the speed of P?
 """,
+    solution=r"""
+The disk's angular velocity is the sum of its spin relative to the axle and the axle's
+own turning, and a point's velocity follows from the velocity transfer formula with the
+fixed point O (rigid-body kinematics in 3D, Section 3.1.2). Here $\omega_s$ = {{ ws }},
+$\Omega$ = {{ Omega }}, $d$ = {{ d }}, $R$ = {{ R }}, $\gamma$ = {{ gamma }}.
+
+1. **Angular velocity.** The spin is about the axle $e_1$, the axle turns about $e_3$:
+   $$\omega = \omega_s\,e_1 + \Omega\,e_3,$$
+   that is $\omega$ = {{ answers.omega_vec }}.
+2. **Velocity of P.** O is fixed, so $v_P = \omega\times r_{OP}$ with
+   $r_{OP} = (d,\; R\sin\gamma,\; R\cos\gamma)$:
+   $$v_P = \bigl(-\Omega R\sin\gamma,\;\; \Omega d - \omega_s R\cos\gamma,\;\; \omega_s R\sin\gamma\bigr),$$
+   that is $v_P$ = {{ answers.v_P }}. Both rotations must be in $\omega\times r$: with
+   the spin alone the axle's turning would be missing.
+3. **Speed.** $|v_P| = \sqrt{v_1^2 + v_2^2 + v_3^2}$ = {{ answers.speed }}.
+""",
     solve=solve,
     parts=(
         Vector("omega_vec", "angular velocity", unit="rad/s", size=3, points=1,

@@ -27,6 +27,9 @@ def solve(p):
         "I_max": moments[_largest(p)],
         "stable": stable,
         "nu": euler_equations.wobble_frequency(moments, _largest(p), p.w),
+        "I_1": moments[0], "I_2": moments[1], "I_3": moments[2],
+        "axis_max": AXES[_largest(p)],
+        "axis_min": AXES[int(np.argmin(moments))],
     }
 
 
@@ -60,6 +63,29 @@ negligible.
    `e1`, `e2`, `e3` that are.)
 3. The book spins with $\omega_0$ = {{ w }} about the axis of the largest moment and is
    disturbed slightly. With which angular frequency does its angular velocity wobble?
+""",
+    solution=r"""
+With no moment about the centre of mass the book's rotation obeys the torque-free Euler
+equations; linearised about a steady spin they tell which spins are stable (stability of
+rotation, Section 3.4.4).
+
+1. **Principal moments.** The body axes through the centre are principal axes of the box;
+   about each the moment is $m/12$ times the sum of the squares of the two other edges:
+   $$I_1 = \tfrac{1}{12} m (b^2 + c^2),\quad I_2 = \tfrac{1}{12} m (a^2 + c^2),\quad
+   I_3 = \tfrac{1}{12} m (a^2 + b^2).$$
+   With $m$ = {{ m }}, $a$ = {{ a }}, $b$ = {{ b }} and $c$ = {{ c }}: $I_1$ = {{ si.I_1 }},
+   $I_2$ = {{ si.I_2 }} and $I_3$ = {{ si.I_3 }} kg·m². The largest is
+   $I_{\max}$ = {{ answers.I_max }}, about `{{ si.axis_max }}`.
+2. **Stable axes.** A small disturbance of a spin $\Omega$ about principal axis $k$ grows
+   like $e^{\lambda t}$ with
+   $$\lambda^2 = \Omega^2\,\frac{(I_k - I_i)(I_j - I_k)}{I_i\,I_j}.$$
+   For the largest or the smallest moment the two factors have opposite signs,
+   $\lambda^2 < 0$, and the disturbance only oscillates; for the intermediate moment
+   $\lambda^2 > 0$ and it grows. The stable axes are therefore those of the largest
+   (`{{ si.axis_max }}`) and the smallest (`{{ si.axis_min }}`) moment: **{{ answers.stable }}**.
+3. **Wobble frequency.** About the axis of the largest moment, with $\omega_0$ = {{ w }},
+   $$\nu = \omega_0\sqrt{\frac{(I_k - I_i)(I_k - I_j)}{I_i\,I_j} },$$
+   which gives $\nu$ = {{ answers.nu }}.
 """,
     solve=solve,
     parts=(

@@ -55,6 +55,26 @@ vectors $e_r$, $e_\varphi$ at the person's position.
 1. What is the person's absolute acceleration (components along $e_r$, $e_\varphi$)?
 2. Which horizontal force must the floor exert on the person?
 """,
+    solution=r"""
+The person's motion is known relative to the turning turntable, so the absolute
+acceleration follows from the acceleration formula for a rotating frame
+(Section 3.4.2), with the origin on the fixed axis:
+$$a = \dot\Omega\times r + \Omega\times(\Omega\times r) + 2\,\Omega\times v_{\mathrm{rel} } + a_{\mathrm{rel} } .$$
+Here $r = r\,e_r$, $v_{\mathrm{rel} } = u\,e_r$, $a_{\mathrm{rel} } = a_{rel}\,e_r$,
+$\Omega = \Omega\,e_3$, with $r$ = {{ r }}, $u$ = {{ u }}, $a_{rel}$ = {{ a_rel }},
+$\Omega$ = {{ Omega }} and $\dot\Omega$ = {{ Omega_dot }}.
+
+1. **Absolute acceleration.** Term by term: $\dot\Omega\times r = \dot\Omega r\,e_\varphi$
+   (the turntable speeds up), $\Omega\times(\Omega\times r) = -\Omega^2 r\,e_r$
+   (centripetal), $2\Omega\times v_{\mathrm{rel} } = 2\Omega u\,e_\varphi$ (Coriolis) and
+   $a_{rel}\,e_r$. Collected:
+   $$a = \bigl(a_{rel} - \Omega^2 r\bigr)\,e_r + \bigl(\dot\Omega r + 2\Omega u\bigr)\,e_\varphi,$$
+   that is $a$ = {{ answers.a }}.
+2. **Floor force.** By the balance of linear momentum the floor's horizontal force
+   provides all of it (gravity and the vertical reaction cancel): $F = m\,|a|$ with
+   $m$ = {{ m }}, so $F$ = {{ answers.F }}. Its circumferential part, which includes the
+   Coriolis term, is what pushes the walker sideways.
+""",
     solve=solve,
     parts=(
         Vector("a", "absolute acceleration", unit="m/s^2", size=2, points=3, atol=0.01,

@@ -49,6 +49,24 @@ is held fixed. The yo-yo is released from rest with the string vertical ($g$ = {
 3. What is the tension in the string while it unwinds?
 4. Give the speed of question 1 as a formula in $g$, $h$, $R$ and $r$.
 """,
+    solution=r"""
+The string does no work (its end is fixed and the yo-yo rolls on it), so the work-energy
+balance holds between release and any later instant (Section 3.2.5). The string unwinds
+from the axle, so the centre's speed and the spin are tied by $v = \omega r$.
+
+1. **Speed after dropping $h$.** With $I_C = \tfrac{1}{2} m R^2$ for the disk,
+   $$m g h = \tfrac{1}{2} m v^2 + \tfrac{1}{2} I_C\Bigl(\frac{v}{r}\Bigr)^2
+   \quad\Rightarrow\quad v = \sqrt{\frac{2 g h}{1 + R^2/(2 r^2)} } .$$
+   With $m$ = {{ m }}, $R$ = {{ R }}, $r$ = {{ r }}, $h$ = {{ h }} and $g$ = {{ g }}:
+   $v$ = {{ answers.v }}. The mass drops out.
+2. **Angular speed.** $\omega = v/r$ = {{ answers.omega }}.
+3. **Tension.** The balances of linear momentum, $m a = m g - S$, and of angular momentum
+   about the centre, $I_C\,\dot\omega = S r$ with $\dot\omega = a/r$, give
+   $$S = \frac{m g}{1 + 2 r^2/R^2},$$
+   so $S$ = {{ answers.S }}, less than the weight because the yo-yo accelerates
+   downward.
+4. **As a formula.** From step 1, $v$ = `{{ answers.v_formula }}`.
+""",
     solve=solve,
     parts=(
         Numeric("v", "speed after dropping h", unit="m/s", points=2,

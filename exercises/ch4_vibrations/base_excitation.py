@@ -19,7 +19,9 @@ def solve(p):
     Omega = vibrations.road_forcing_frequency(p.v, p.lam)
     zeta = vibrations.damping_ratio(p.c, p.k, p.m)
     return {"Omega": Omega, "v_res": vibrations.road_speed_for_forcing_frequency(_omega_n(p), p.lam),
-            "X": vibrations.base_excitation_amplitude(p.Y, _eta(p), zeta)}
+            "X": vibrations.base_excitation_amplitude(p.Y, _eta(p), zeta),
+            "omega_n": _omega_n(p), "eta": _eta(p), "zeta": zeta,
+            "TR": vibrations.transmissibility(_eta(p), zeta)}
 
 
 EXERCISE = Exercise(
@@ -50,6 +52,26 @@ drives at $v$ = {{ v }}.
 1. With which angular frequency $\\Omega$ is the suspension excited?
 2. At which driving speed (in km/h) would the body be excited at its natural frequency?
 3. What is the amplitude of the body's vertical motion in steady state?
+""",
+    solution=r"""
+The wheel imposes the road's profile on the lower end of spring and damper: a base
+excitation $y(t) = Y\cos\Omega t$ of a single-degree-of-freedom oscillator
+(Section 4.3.3). The body's absolute motion follows from
+$m\ddot x + c(\dot x - \dot y) + k(x - y) = 0$.
+
+1. **Excitation frequency.** The car covers one wavelength in $\lambda/v$, so
+   $$\Omega = \frac{2\pi v}{\lambda},$$
+   and with $v$ = {{ v }} and $\lambda$ = {{ lam }}: $\Omega$ = {{ answers.Omega }}.
+2. **Resonant speed.** The natural frequency is $\omega_n = \sqrt{k/m}$ = {{ si.omega_n }} rad/s
+   ($m$ = {{ m }}, $k$ = {{ k }}). Setting $\Omega = \omega_n$ and solving for the speed,
+   $$v_{\mathrm{res} } = \frac{\omega_n\lambda}{2\pi},$$
+   that is $v_{\mathrm{res} }$ = {{ answers.v_res }}.
+3. **Body amplitude.** With the frequency ratio $\eta = \Omega/\omega_n$ = {{ si.eta }} and
+   the damping ratio $\zeta = c/(2\sqrt{k m})$ = {{ si.zeta }} ($c$ = {{ c }}), the steady
+   state has the amplitude ratio (transmissibility)
+   $$\frac{X}{Y} = \sqrt{\frac{1 + (2\zeta\eta)^2}{(1 - \eta^2)^2 + (2\zeta\eta)^2} },$$
+   here $X/Y$ = {{ si.TR }}. With $Y$ = {{ Y }}: $X$ = {{ answers.X }}. Spring and damper both pass
+   the road's motion on, hence the $(2\zeta\eta)^2$ in the numerator.
 """,
     solve=solve,
     parts=(

@@ -39,7 +39,8 @@ def matrices(p):
 def solve(p):
     K, M = matrices(p)
     w = multi_dof.natural_frequencies(K, M)
-    return {"M11": M[0, 0], "M12": M[0, 1], "K22": K[1, 1], "omega1": w[0], "omega2": w[1]}
+    return {"M11": M[0, 0], "M12": M[0, 1], "K22": K[1, 1], "omega1": w[0], "omega2": w[1],
+            "M22": M[1, 1], "K11": K[0, 0]}
 
 
 def _apart(p):
@@ -76,6 +77,30 @@ generalized coordinates.
    $\\mathbf M\\ddot{\\mathbf q} + \\mathbf K\\mathbf q = \\mathbf 0$ with $\\mathbf q = (x, \\varphi)$.
    Give the entries $M_{11}$, $M_{12}$ and $K_{22}$.
 2. What are the two natural angular frequencies $\\omega_1 < \\omega_2$?
+""",
+    solution=r"""
+Two degrees of freedom, $q = (x, \varphi)$: we set up the kinetic and potential energies,
+linearise the Lagrange equations about the rest position and solve the eigenvalue problem
+(coupled vibrations, Section 4.4.1).
+
+1. **Mass and stiffness matrices.** The bob sits at $(x + L\sin\varphi,\; -L\cos\varphi)$, so
+   $$T = \tfrac{1}{2} M\dot x^2 + \tfrac{1}{2} m\bigl(\dot x^2 + 2L\dot x\dot\varphi\cos\varphi + L^2\dot\varphi^2\bigr),
+   \qquad V = \tfrac{1}{2} k x^2 - m g L\cos\varphi .$$
+   Linearised about $x = 0$, $\varphi = 0$ ($\cos\varphi \approx 1$ in $T$,
+   $\cos\varphi \approx 1 - \varphi^2/2$ in $V$), $T = \tfrac{1}{2}\dot q^{\mathsf T}\mathbf M\dot q$ and
+   $V = \tfrac{1}{2} q^{\mathsf T}\mathbf K q$ + const with
+   $$M_{11} = M + m,\quad M_{12} = M_{2 1} = mL,\quad M_{2 2} = mL^2,\qquad
+   K_{11} = k,\quad K_{12} = K_{2 1} = 0,\quad K_{2 2} = m g L .$$
+   With $M$ = {{ M }}, $m$ = {{ m }}, $L$ = {{ L }}, $k$ = {{ k }} and $g$ = {{ g }}:
+   $M_{11}$ = {{ answers.M11 }}, $M_{12}$ = {{ answers.M12 }} (the coupling: the cart's
+   acceleration swings the pendulum) and $K_{2 2}$ = {{ answers.K22 }}; further
+   $M_{2 2}$ = {{ si.M22 }} kg·m² and $K_{11}$ = {{ si.K11 }} N/m.
+2. **Natural frequencies.** Non-trivial solutions $q = \hat q\cos\omega t$ need
+   $\det(\mathbf K - \omega^2\mathbf M) = 0$:
+   $$\bigl(k - \omega^2 (M + m)\bigr)\bigl(m g L - \omega^2 m L^2\bigr) - \omega^4 m^2 L^2 = 0,$$
+   a quadratic in $\omega^2$. Its two roots give $\omega_1$ = {{ answers.omega1 }} and
+   $\omega_2$ = {{ answers.omega2 }}. Neither is $\sqrt{k/M}$ or $\sqrt{g/L}$: the
+   coupling moves both.
 """,
     solve=solve,
     parts=(

@@ -18,6 +18,7 @@ def solve(p):
         "c_cr": vibrations.critical_damping(p.kt, p.J),
         "theta_crit": vibrations.free_response(p.t1, p.theta0, 0.0, w, 1.0),
         "theta_over": vibrations.free_response(p.t1, p.theta0, 0.0, w, p.ratio),
+        "omega_n": w,
     }
 
 
@@ -47,6 +48,28 @@ damper. The door is opened to $\\theta_0$ = {{ theta0 }} and released from rest.
 1. Which damping coefficient $c_{cr}$ (in N·m·s) makes the closer critically damped?
 2. With critical damping, what is the door's angle at $t_1$ = {{ t1 }} after release?
 3. The damper is set to $c = {{ ratio.value }}\\,c_{cr}$ instead. What is the angle at $t_1$ now?
+""",
+    solution=r"""
+The door is a torsional oscillator, $J\ddot\theta + c\,\dot\theta + k_t\theta = 0$; its free
+response depends on the damping ratio $\zeta = c/c_{cr}$ (free damped vibration,
+Section 4.3.2). The natural frequency is $\omega_n = \sqrt{k_t/J}$ = {{ si.omega_n }} rad/s
+with $J$ = {{ J }} and $k_t$ = {{ kt }}.
+
+1. **Critical damping.** The characteristic equation $J\lambda^2 + c\lambda + k_t = 0$ has a
+   double root when its discriminant vanishes, $c^2 = 4 k_t J$:
+   $$c_{cr} = 2\sqrt{k_t J},$$
+   that is $c_{cr}$ = {{ answers.c_cr }}.
+2. **Critically damped.** The double root $\lambda = -\omega_n$ gives
+   $\theta = (A + B t)\,e^{-\omega_n t}$; with $\theta(0) = \theta_0$ and $\dot\theta(0) = 0$,
+   $B = \omega_n\theta_0$:
+   $$\theta(t) = \theta_0\,(1 + \omega_n t)\,e^{-\omega_n t}.$$
+   With $\theta_0$ = {{ theta0 }} and $t_1$ = {{ t1 }}: $\theta(t_1)$ = {{ answers.theta_crit }}.
+3. **Overdamped.** With $\zeta$ = {{ ratio.value }} the roots are real,
+   $\lambda_{1,2} = -\omega_n\bigl(\zeta \mp \sqrt{\zeta^2 - 1}\bigr)$, and the same initial
+   conditions give
+   $$\theta(t) = \theta_0\,\frac{\lambda_2 e^{\lambda_1 t} - \lambda_1 e^{\lambda_2 t} }{\lambda_2 - \lambda_1},$$
+   so $\theta(t_1)$ = {{ answers.theta_over }}: more damping closes the door more slowly,
+   because the slow root $\lambda_1$ moves toward zero.
 """,
     solve=solve,
     parts=(

@@ -94,6 +94,30 @@ from the downward vertical); $g$ = {{ g }}.
 3. Linearize about this equilibrium. What are the natural angular frequencies of the
    stretching mode ($\\omega_r$) and of the swinging mode ($\\omega_\\varphi$)?
 """,
+    solution=r"""
+A holonomic system with the two coordinates $r$, $\varphi$: Lagrange's equations from
+$T$ and $V$, the equilibrium where $\partial V/\partial q = 0$, and the linearisation about
+it (Section 4.1; equilibrium and linearisation, Section 4.2).
+
+1. **Lagrange equations.** In polar coordinates
+   $$T = \tfrac{1}{2} m\bigl(\dot r^2 + r^2\dot\varphi^2\bigr),\qquad
+   V = \tfrac{1}{2} k (r - L_0)^2 - m g r\cos\varphi .$$
+   For $r$: $\frac{d}{dt}\frac{\partial T}{\partial\dot r} - \frac{\partial T}{\partial r}
+   + \frac{\partial V}{\partial r} = m\ddot r - m r\dot\varphi^2 + k(r - L_0) - m g\cos\varphi = 0$;
+   for $\varphi$: $m r^2\ddot\varphi + 2 m r\dot r\dot\varphi + m g r\sin\varphi = 0$. The
+   radial acceleration is
+   $$\ddot r = r\dot\varphi^2 - \frac{k}{m}(r - L_0) + g\cos\varphi,$$
+   written as `{{ answers.r_ddot }}`.
+2. **Static equilibrium.** At rest with $\varphi = 0$: $k(r_s - L_0) = m g$, so
+   $$r_s = L_0 + \frac{m g}{k};$$
+   with $m$ = {{ m }}, $k$ = {{ k }}, $L_0$ = {{ L0 }} and $g$ = {{ g }}: $r_s$ = {{ answers.r_static }}.
+3. **Small oscillations.** About $(r_s, 0)$ the mass matrix is
+   $\operatorname{diag}(m,\; m r_s^2)$ and the stiffness matrix
+   $\operatorname{diag}(k,\; m g r_s)$: the two motions decouple. Hence
+   $$\omega_r = \sqrt{\frac{k}{m} },\qquad \omega_\varphi = \sqrt{\frac{g}{r_s} },$$
+   that is $\omega_r$ = {{ answers.omega_r }} and $\omega_\varphi$ = {{ answers.omega_phi }}
+   — a pendulum of the stretched length $r_s$, not of $L_0$.
+""",
     solve=solve,
     parts=(
         Symbolic("r_ddot", "radial acceleration", points=2,

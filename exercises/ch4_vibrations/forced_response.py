@@ -18,7 +18,9 @@ def solve(p):
     return {"X": vibrations.steady_state_amplitude(p.F0, p.k, eta, zeta),
             "phi": vibrations.phase_lag(eta, zeta),
             "Omega_res": w * vibrations.resonance_frequency_ratio(zeta),
-            "X_max": p.F0 / p.k * vibrations.peak_amplification(zeta)}
+            "X_max": p.F0 / p.k * vibrations.peak_amplification(zeta),
+            "omega_n": w, "eta": eta, "zeta": zeta,
+            "V": vibrations.amplification_factor(eta, zeta)}
 
 
 EXERCISE = Exercise(
@@ -48,6 +50,29 @@ force $F(t) = F_0\\cos(\\Omega t)$ with $F_0$ = {{ F0 }} and $\\Omega$ = {{ Omeg
 1. What is the amplitude of the steady-state vibration?
 2. By which phase angle (between 0° and 180°) does the displacement lag behind the force?
 3. At which forcing frequency would the amplitude be largest, and how large would it be?
+""",
+    solution=r"""
+The equation of motion $m\ddot x + c\dot x + k x = F_0\cos\Omega t$ has the steady-state
+solution $x = X\cos(\Omega t - \varphi)$ (harmonic forcing, Section 4.3.3). Everything
+follows from the natural frequency $\omega_n = \sqrt{k/m}$ = {{ si.omega_n }} rad/s, the
+frequency ratio $\eta = \Omega/\omega_n$ = {{ si.eta }} and the damping ratio
+$\zeta = c/(2\sqrt{k m})$ = {{ si.zeta }}, with $m$ = {{ m }}, $k$ = {{ k }}, $c$ = {{ c }}
+and $\Omega$ = {{ Omega }}.
+
+1. **Amplitude.** The amplitude is the static deflection $F_0/k$ times the amplification
+   factor
+   $$V = \frac{1}{\sqrt{(1 - \eta^2)^2 + (2\zeta\eta)^2} },$$
+   here $V$ = {{ si.V }}, so with $F_0$ = {{ F0 }}: $X = \frac{F_0}{k}V$ = {{ answers.X }}.
+2. **Phase lag.**
+   $$\tan\varphi = \frac{2\zeta\eta}{1 - \eta^2};$$
+   $\varphi$ lies below $\pi/2$ under resonance ($\eta < 1$) and between $\pi/2$ and $\pi$
+   above it. Here $\varphi$ = {{ answers.phi }}.
+3. **Resonance.** $V$ is largest where $(1 - \eta^2)^2 + (2\zeta\eta)^2$ is smallest,
+   at $\eta = \sqrt{1 - 2\zeta^2}$:
+   $$\Omega_{\mathrm{res} } = \omega_n\sqrt{1 - 2\zeta^2},\qquad
+   X_{\max} = \frac{F_0}{k}\,\frac{1}{2\zeta\sqrt{1 - \zeta^2} },$$
+   that is $\Omega_{\mathrm{res} }$ = {{ answers.Omega_res }} and
+   $X_{\max}$ = {{ answers.X_max }}.
 """,
     solve=solve,
     parts=(

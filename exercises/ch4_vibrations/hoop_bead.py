@@ -16,6 +16,7 @@ def solve(p):
         "theta_star": theta,
         "bottom": bottom,
         "omega": hoop.hoop_oscillation_frequency(p.R, p.Omega, p.g),
+        "curvature_bottom": hoop.hoop_potential_curvature(0.0, p.m, p.R, p.Omega, p.g),
     }
 
 
@@ -49,6 +50,30 @@ point of the hoop, measured at the hoop's centre.
 2. At the given spin rate, at which angle $\\theta^* \\in (0, 90°)$ does the bead rest relative to the hoop?
 3. Is the lowest point stable or unstable at the given spin rate?
 4. With which angular frequency does the bead oscillate about $\\theta^*$ when slightly disturbed?
+""",
+    solution=r"""
+Seen from the spinning hoop the bead has one degree of freedom, $\theta$, and moves in the
+effective potential of gravity and the centrifugal term (equilibrium and stability,
+Section 4.2):
+$$V^*(\theta) = -m g R\cos\theta - \tfrac{1}{2} m R^2\Omega^2\sin^2\theta .$$
+Equilibria are where $V^{*\prime} = m R\sin\theta\,(g - R\Omega^2\cos\theta) = 0$; they are
+stable where $V^{*\prime\prime} = m R\,(g\cos\theta - R\Omega^2\cos 2\theta) > 0$.
+Here $m$ = {{ m }}, $R$ = {{ R }}, $g$ = {{ g }} and $\Omega$ = {{ Omega }} = {{ si.Omega }} rad/s.
+
+1. **Critical spin rate.** At the lowest point $V^{*\prime\prime}(0) = m R\,(g - R\Omega^2)$,
+   positive only for $\Omega^2 < g/R$:
+   $$\Omega_c = \sqrt{g/R},$$
+   that is $\Omega_c$ = {{ answers.Omega_c }}.
+2. **Off-axis equilibrium.** The second factor of $V^{*\prime}$ vanishes at
+   $$\cos\theta^* = \frac{g}{R\,\Omega^2},$$
+   which needs $\Omega > \Omega_c$; here $\theta^*$ = {{ answers.theta_star }}.
+3. **Lowest point.** $V^{*\prime\prime}(0) = m R\,(g - R\Omega^2)$ = {{ si.curvature_bottom }} J,
+   so the lowest point is **{{ answers.bottom }}**.
+4. **Small oscillations about $\theta^*$.** With $\cos\theta^* = g/(R\Omega^2)$ the curvature
+   becomes $V^{*\prime\prime}(\theta^*) = m R^2\Omega^2\sin^2\theta^*$, and the equivalent
+   mass is $m R^2$, so
+   $$\omega = \sqrt{\frac{V^{*\prime\prime}(\theta^*)}{m R^2} } = \Omega\sin\theta^*,$$
+   that is $\omega$ = {{ answers.omega }}.
 """,
     solve=solve,
     parts=(

@@ -38,7 +38,8 @@ def omega(p):
 
 def solve(p):
     k_min = _upright()[0]
-    return {"k_min": k_min(p.m, p.L, p.a_frac * p.L, p.g), "omega": omega(p)}
+    return {"k_min": k_min(p.m, p.L, p.a_frac * p.L, p.g), "omega": omega(p),
+            "a": p.a_frac * p.L}
 
 
 EXERCISE = Exercise(
@@ -69,6 +70,26 @@ stay horizontal. Let $\\theta$ be the rod's angle from the vertical; $g$ = {{ g 
 1. Write the potential energy $V(\\theta)$ as an expression in `theta`, `m`, `g`, `L`, `k`, `a`.
 2. Which spring stiffness $k_{\\min}$ is at least needed for the upright position to be stable?
 3. With the given springs, what is the angular frequency of small oscillations about the upright position?
+""",
+    solution=r"""
+One degree of freedom, $\theta$: the upright position is an equilibrium, stable when the
+potential energy has a minimum there, and the small oscillations follow from
+$J\ddot\theta + V''(0)\,\theta = 0$ (equilibrium and stability, Section 4.2).
+
+1. **Potential energy.** The centre of mass is at height $\tfrac{L}{2}\cos\theta$; each
+   spring is stretched (or compressed) by $a\sin\theta$:
+   $$V(\theta) = \frac{m g L}{2}\cos\theta + 2\cdot\tfrac{1}{2} k\,(a\sin\theta)^2,$$
+   written as `{{ answers.V }}`.
+2. **Smallest stiffness.** $V'(0) = 0$, and
+   $$V''(0) = 2 k a^2 - \frac{m g L}{2}$$
+   must be positive: gravity destabilises, the springs stabilise. So
+   $$k_{\min} = \frac{m g L}{4 a^2};$$
+   with $m$ = {{ m }}, $L$ = {{ L }}, $a$ = {{ si.a }} m and $g$ = {{ g }}:
+   $k_{\min}$ = {{ answers.k_min }}.
+3. **Small oscillations.** The rod turns about its end, $J = \tfrac{1}{3} m L^2$, and with
+   $k$ = {{ k }}
+   $$\omega = \sqrt{\frac{V''(0)}{J} } = \sqrt{\frac{2 k a^2 - m g L/2}{m L^2/3} },$$
+   that is $\omega$ = {{ answers.omega }}.
 """,
     solve=solve,
     parts=(

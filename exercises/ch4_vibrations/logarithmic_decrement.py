@@ -19,7 +19,8 @@ def solve(p):
     delta, zeta, w = _identified(p)
     k = vibrations.stiffness_from_natural_frequency(p.m, w)
     return {"delta": delta, "zeta": zeta, "omega_n": w, "k": k,
-            "c": vibrations.damping_coefficient(zeta, k, p.m)}
+            "c": vibrations.damping_coefficient(zeta, k, p.m),
+            "omega_d": vibrations.angular_frequency_from_period(p.Td)}
 
 
 @per_draw
@@ -53,6 +54,25 @@ successive peaks is $T_d$ = {{ Td }}.
 2. What is the damping ratio $\\zeta$?
 3. What is the undamped natural angular frequency $\\omega_n$?
 4. What are the stiffness $k$ and the damping coefficient $c$ of the mounting?
+""",
+    solution=r"""
+A viscously damped oscillator decays so that successive peaks shrink by the same factor
+$e^{\delta}$; from $\delta$ and the measured period we recover $\zeta$, $\omega_n$, $k$ and $c$
+(logarithmic decrement, Section 4.3.2).
+
+1. **Logarithmic decrement.** Over $n$ periods the peaks shrink by $e^{n\delta}$, so
+   $$\delta = \frac1n\ln\frac{x_0}{x_n};$$
+   with $x_0$ = {{ x0 }}, $x_n$ = {{ xn }} and $n$ = {{ n.value }}: $\delta$ = {{ answers.delta }}.
+2. **Damping ratio.** $\delta = 2\pi\zeta/\sqrt{1 - \zeta^2}$, solved for $\zeta$:
+   $$\zeta = \frac{\delta}{\sqrt{4\pi^2 + \delta^2} },$$
+   that is $\zeta$ = {{ answers.zeta }}.
+3. **Natural frequency.** The peaks come at the damped period:
+   $\omega_d = 2\pi/T_d$ = {{ si.omega_d }} rad/s ($T_d$ = {{ Td }}). With
+   $\omega_d = \omega_n\sqrt{1 - \zeta^2}$,
+   $$\omega_n = \frac{\omega_d}{\sqrt{1 - \zeta^2} },$$
+   that is $\omega_n$ = {{ answers.omega_n }}.
+4. **Stiffness and damping.** With $m$ = {{ m }}: $k = m\,\omega_n^2$, so $k$ = {{ answers.k }},
+   and $c = 2\zeta\sqrt{k m}$, so $c$ = {{ answers.c }}.
 """,
     solve=solve,
     parts=(

@@ -63,6 +63,29 @@ held in place, and both are released from rest at $t = 0$.
    (in-phase) mode in the motion $x_1(t)$ of mass 1?
 3. What are the displacements $x_1$ and $x_2$ at $t_1$ = {{ t1 }}?
 """,
+    solution=r"""
+The equations of motion $\mathbf M\ddot x + \mathbf K x = 0$ decouple in modal coordinates:
+the free motion is a sum of the modes, each oscillating at its own natural frequency with
+an amplitude fixed by the initial state (modal decomposition, Section 4.4.4).
+
+1. **Natural frequencies.** With $\mathbf M = m\,\mathbf I$ and the stiffness matrix
+   $K_{11} = K_{2 2} = k + k_c$, $K_{12} = K_{2 1} = -k_c$,
+   $\det(\mathbf K - \omega^2\mathbf M) = 0$ gives the in-phase mode $(1, 1)$, which does not
+   stretch the coupling spring, and the opposite-phase mode $(1, -1)$, which stretches it
+   twice:
+   $$\omega_1 = \sqrt{\frac{k}{m} },\qquad \omega_2 = \sqrt{\frac{k + 2k_c}{m} } .$$
+   With $m$ = {{ m }}, $k$ = {{ k }} and $k_c$ = {{ kc }}: $\omega_1$ = {{ answers.omega1 }}
+   and $\omega_2$ = {{ answers.omega2 }}.
+2. **Modal amplitudes.** Released from rest, each mode moves as $\cos\omega_i t$. The
+   initial displacement splits into the modes:
+   $$(a,\; 0) = \frac a2\,(1,\; 1) + \frac a2\,(1,\; -1),$$
+   so the first mode carries $A_1 = a/2$ = {{ answers.A1 }} of $x_1$ ($a$ = {{ a }}).
+3. **Displacements at $t_1$.** Adding the modes,
+   $$x_1(t) = \frac a2\bigl(\cos\omega_1 t + \cos\omega_2 t\bigr),\qquad
+   x_2(t) = \frac a2\bigl(\cos\omega_1 t - \cos\omega_2 t\bigr);$$
+   at $t_1$ = {{ t1 }}: $x_1$ = {{ answers.x1 }} and $x_2$ = {{ answers.x2 }}. The energy
+   passes back and forth between the masses (beats when $k_c \ll k$).
+""",
     solve=solve,
     parts=(
         Numeric("omega1", "lower natural frequency", unit="rad/s", points=1,

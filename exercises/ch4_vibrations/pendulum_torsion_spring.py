@@ -85,6 +85,26 @@ Let $\\theta$ be the angle of the rod from the downward vertical; $g$ = {{ g }}.
 2. Linearize about $\\theta = 0$: what is the natural angular frequency $\\omega$?
 3. What is the natural frequency $f$ in Hz, and the period of small oscillations?
 """,
+    solution=r"""
+One generalized coordinate, $\theta$: Lagrange's equation
+$\frac{d}{dt}\frac{\partial T}{\partial\dot\theta} - \frac{\partial T}{\partial\theta}
++ \frac{\partial V}{\partial\theta} = 0$ (Section 4.1), then the linearisation about the
+hanging position.
+
+1. **Equation of motion.** The mass moves on a circle of radius $L$; gravity and the
+   torsional spring both store energy:
+   $$T = \tfrac{1}{2} m L^2\dot\theta^2,\qquad V = -m g L\cos\theta + \tfrac{1}{2} k_t\theta^2 .$$
+   Lagrange's equation gives $m L^2\ddot\theta + m g L\sin\theta + k_t\theta = 0$, so
+   $$\ddot\theta = -\frac{g}{L}\sin\theta - \frac{k_t\,\theta}{m L^2},$$
+   written as `{{ answers.theta_ddot }}`.
+2. **Natural angular frequency.** For small angles $\sin\theta \approx \theta$:
+   $\ddot\theta + \bigl(\frac gL + \frac{k_t}{m L^2}\bigr)\theta = 0$, so
+   $$\omega = \sqrt{\frac{g}{L} + \frac{k_t}{m L^2} }$$
+   (`{{ answers.omega_formula }}`). With $m$ = {{ m }}, $L$ = {{ L }}, $k_t$ = {{ kt }} and
+   $g$ = {{ g }}: $\omega$ = {{ answers.omega }}.
+3. **Frequency and period.** $f = \omega/(2\pi)$ = {{ answers.f }} and
+   $T = 2\pi/\omega$ = {{ answers.T_period }}.
+""",
     solve=solve,
     parts=(
         Symbolic("theta_ddot", "angular acceleration", points=2,

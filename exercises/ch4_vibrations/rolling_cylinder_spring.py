@@ -56,6 +56,26 @@ centre; consider small motions.
 3. What are the natural angular frequency and the natural frequency in Hz?
 4. Give $\\omega$ as a formula in `k`, `m`, `r`, `a`.
 """,
+    solution=r"""
+A one-degree-of-freedom system in the coordinate $x$: write the kinetic and potential
+energies as $T = \tfrac{1}{2} m_{eq}\dot x^2$ and $V = \tfrac{1}{2} k_{eq} x^2$; then
+$\omega = \sqrt{k_{eq}/m_{eq} }$ (equivalent mass and stiffness, Section 4.3.1).
+
+1. **Equivalent mass.** Rolling without slipping ties the rotation to the translation,
+   $\dot\varphi = \dot x/r$, and the solid cylinder has $J = \tfrac{1}{2} m r^2$:
+   $$T = \tfrac{1}{2} m\dot x^2 + \tfrac{1}{2}\cdot\tfrac{1}{2} m r^2\Bigl(\frac{\dot x}{r}\Bigr)^2
+   = \tfrac{1}{2}\cdot\tfrac{3}{2} m\,\dot x^2,$$
+   so $m_{eq} = \tfrac{3}{2} m$ = {{ answers.m_eq }} ($m$ = {{ m }}).
+2. **Equivalent stiffness.** The contact point is the instantaneous centre, so a point at
+   height $r + a$ above it moves $x\,(r + a)/r$ horizontally for small motions. The spring
+   is stretched that much:
+   $$V = \tfrac{1}{2} k\Bigl(\frac{r + a}{r}\Bigr)^2 x^2,\qquad k_{eq} = k\Bigl(\frac{r + a}{r}\Bigr)^2,$$
+   so with $k$ = {{ k }}, $r$ = {{ r }} and $a$ = {{ a }}: $k_{eq}$ = {{ answers.k_eq }}.
+3. **Natural frequency.** $\omega = \sqrt{k_{eq}/m_{eq} }$ = {{ answers.omega }} and
+   $f = \omega/(2\pi)$ = {{ answers.f }}.
+4. **As a formula.** $$\omega = \frac{r + a}{r}\sqrt{\frac{2k}{3m} },$$ written as
+   `{{ answers.omega_formula }}`.
+""",
     solve=solve,
     parts=(
         Numeric("m_eq", "equivalent mass", unit="kg", points=1,

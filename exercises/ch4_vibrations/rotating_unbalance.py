@@ -74,7 +74,8 @@ def solve(p):
     w, eta = _state(p)
     X = amplitude(p)
     c = vibrations.damping_coefficient(p.zeta, p.k, p.M)
-    return {"n_crit": w, "X": X, "F_T": vibrations.transmitted_force_amplitude(X, p.k, c, p.n)}
+    return {"n_crit": w, "X": X, "F_T": vibrations.transmitted_force_amplitude(X, p.k, c, p.n),
+            "eta": eta, "V": vibrations.amplification_factor(eta, p.zeta), "c": c}
 
 
 EXERCISE = Exercise(
@@ -111,6 +112,23 @@ motion is possible.
 1. At which rotor speed (in rpm) is the mounting in resonance ($\\Omega = \\omega_n$)?
 2. What is the amplitude of the machine's vertical vibration at the operating speed?
 3. What is the amplitude of the force transmitted to the floor through springs and dampers?
+""",
+    solution=r"""
+The unbalance $m_u$ at eccentricity $e$ spinning at $\Omega$ shakes the machine with the
+vertical force $m_u e\,\Omega^2\cos\Omega t$: a harmonic forcing whose amplitude grows with
+$\Omega^2$ (rotating unbalance, Section 4.3.3). The operating speed is
+$n$ = {{ n }}, i.e. $\Omega$ = {{ si.n }} rad/s (one revolution is $2\pi$).
+
+1. **Critical speed.** Resonance when $\Omega = \omega_n = \sqrt{k/M}$; with $M$ = {{ M }} and
+   $k$ = {{ k }}, $\omega_n$ = {{ si.n_crit }} rad/s, that is $n_{\mathrm{crit} }$ = {{ answers.n_crit }}.
+2. **Amplitude.** With $\eta = \Omega/\omega_n$ = {{ si.eta }}, $\zeta$ = {{ zeta }} and the
+   amplification factor $V = 1/\sqrt{(1 - \eta^2)^2 + (2\zeta\eta)^2}$ = {{ si.V }},
+   $$X = \frac{m_u e}{M}\,\eta^2 V;$$
+   with $m_u$ = {{ m_u }} and $e$ = {{ e }}: $X$ = {{ answers.X }}.
+3. **Transmitted force.** Spring and damper push on the floor with $k x + c\dot x$, whose
+   parts are a quarter period apart. With $c = 2\zeta\sqrt{k M}$ = {{ si.c }} N·s/m,
+   $$F_T = X\sqrt{k^2 + (c\,\Omega)^2},$$
+   that is $F_T$ = {{ answers.F_T }}.
 """,
     solve=solve,
     figure=figure,

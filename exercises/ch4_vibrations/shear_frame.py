@@ -56,7 +56,9 @@ def solve(p):
     w = multi_dof.natural_frequencies(K, M)
     ratios = multi_dof.amplitude_ratios(K, M)
     return {"k": storey_stiffness(p), "f1": vibrations.frequency_in_hertz(w[0]),
-            "f2": vibrations.frequency_in_hertz(w[1]), "r1": ratios[1, 0], "r2": ratios[1, 1]}
+            "f2": vibrations.frequency_in_hertz(w[1]), "r1": ratios[1, 0], "r2": ratios[1, 1],
+            "k_column": stiffness.column_sway_stiffness(p.E, p.I, p.h),
+            "omega1": w[0], "omega2": w[1]}
 
 
 def _f1(p, per_column=None):
@@ -90,6 +92,29 @@ consider horizontal floor displacements $x_1$, $x_2$ only.
 1. What is the stiffness $k$ of one storey?
 2. What are the two natural frequencies $f_1 < f_2$ in Hz?
 3. For each mode, give the amplitude ratio $x_2/x_1$ (roof over first floor).
+""",
+    solution=r"""
+With rigid floors and massless columns the frame is a chain of two masses and two springs
+(multi-degree-of-freedom vibrations, Section 4.4.2); each storey's spring is its columns
+in parallel (column stiffness, Section 5.1).
+
+1. **Storey stiffness.** A column clamped at both ends and swayed by $x$ resists with
+   $12 E I/h^3$; with $E$ = {{ E }}, $I$ = {{ I }} and $h$ = {{ h }} that is
+   {{ si.k_column }} N/m per column. The {{ n_col.value }} columns of a storey add:
+   $$k = n\,\frac{12 E I}{h^3},$$
+   so $k$ = {{ answers.k }}.
+2. **Natural frequencies.** With $x_1$, $x_2$ the floor displacements,
+   the mass matrix is $\operatorname{diag}(m_1, m_2)$ and the stiffness matrix has
+   $K_{11} = 2k$ (both storeys resist $x_1$), $K_{12} = K_{2 1} = -k$ and $K_{2 2} = k$,
+   and $\det(\mathbf K - \omega^2\mathbf M) = 0$ reads
+   $$m_1 m_2\,\omega^4 - k\,(m_1 + 2m_2)\,\omega^2 + k^2 = 0 .$$
+   With $m_1$ = {{ m1 }} and $m_2$ = {{ m2 }} its roots are $\omega_1$ = {{ si.omega1 }} rad/s
+   and $\omega_2$ = {{ si.omega2 }} rad/s, so $f_1 = \omega_1/(2\pi)$ = {{ answers.f1 }}
+   and $f_2 = \omega_2/(2\pi)$ = {{ answers.f2 }}.
+3. **Mode shapes.** The first row of $(\mathbf K - \omega^2\mathbf M)\,\hat x = 0$ gives
+   $$\frac{x_2}{x_1} = \frac{2k - \omega^2 m_1}{k}:$$
+   in mode 1, $x_2/x_1$ = {{ answers.r1 }} (both floors sway the same way, the roof more);
+   in mode 2, $x_2/x_1$ = {{ answers.r2 }} (the floors move against each other).
 """,
     solve=solve,
     figure=figure,

@@ -17,7 +17,8 @@ def solve(p):
     return {"X0": vibrations.steady_state_amplitude(p.F0, p.k, vibrations.frequency_ratio(
                 _Omega(p), vibrations.natural_frequency(p.k, p.m)), 0.0),
             "k_a": k_a, "X_a": abs(multi_dof.absorber_amplitude(p.F0, k_a)),
-            "f_low": vibrations.frequency_in_hertz(w[0]), "f_high": vibrations.frequency_in_hertz(w[1])}
+            "f_low": vibrations.frequency_in_hertz(w[0]), "f_high": vibrations.frequency_in_hertz(w[1]),
+            "Omega": _Omega(p), "omega_n": vibrations.natural_frequency(p.k, p.m)}
 
 
 EXERCISE = Exercise(
@@ -47,6 +48,31 @@ $f = \\Omega/2\\pi$ = {{ f }}.
    Which $k_a$ keeps the machine at rest at this frequency?
 3. What is then the absorber's amplitude?
 4. What are the two natural frequencies (in Hz) of the machine with the absorber?
+""",
+    solution=r"""
+Without damping, the machine driven at $\Omega$ responds in phase or in antiphase with the
+force; a second mass tuned to $\Omega$ can take up the force and keep the machine at rest
+(vibration absorber, Section 4.4.3). Here $\Omega = 2\pi f$ = {{ si.Omega }} rad/s
+($f$ = {{ f }}).
+
+1. **Without absorber.** $\omega_n = \sqrt{k/m}$ = {{ si.omega_n }} rad/s ($m$ = {{ m }},
+   $k$ = {{ k }}), $\eta = \Omega/\omega_n$, and without damping
+   $$X_0 = \frac{F_0/k}{|1 - \eta^2|};$$
+   with $F_0$ = {{ F0 }}: $X_0$ = {{ answers.X0 }}.
+2. **Tuning.** The machine stays at rest if the absorber's spring passes exactly
+   $-F_0\cos\Omega t$ to it; the absorber alone then vibrates on its spring at its own
+   natural frequency, so $\sqrt{k_a/m_a} = \Omega$:
+   $$k_a = m_a\,\Omega^2,$$
+   that is $k_a$ = {{ answers.k_a }} ($m_a$ = {{ m_a }}).
+3. **Absorber amplitude.** Its spring force $k_a X_a$ must balance $F_0$:
+   $|X_a| = F_0/k_a$ = {{ answers.X_a }}.
+4. **Natural frequencies with absorber.** With
+   the mass matrix $\operatorname{diag}(m, m_a)$ and the stiffness matrix
+   $K_{11} = k + k_a$, $K_{12} = K_{2 1} = -k_a$, $K_{2 2} = k_a$,
+   $\det(\mathbf K - \omega^2\mathbf M) = 0$ gives two roots on either side of the
+   operating frequency: $f_{\mathrm{low} }$ = {{ answers.f_low }} and
+   $f_{\mathrm{high} }$ = {{ answers.f_high }}. The absorber splits the resonance in two,
+   so it works only near the tuned speed.
 """,
     solve=solve,
     parts=(

@@ -24,7 +24,8 @@ def solve(p):
     shape = multi_dof.mode_shapes(K, M)[:, 1]
     # the twist varies linearly along the shaft: its zero lies at L * phi1 / (phi1 - phi2)
     node = p.L * shape[0] / (shape[0] - shape[1])
-    return {"kt": K[1, 1], "f": vibrations.frequency_in_hertz(w), "node": node}
+    return {"kt": K[1, 1], "f": vibrations.frequency_in_hertz(w), "node": node,
+            "I_p": stiffness.circle_polar_moment(p.d), "J1": M[0, 0], "J2": M[1, 1], "omega": w}
 
 
 EXERCISE = Exercise(
@@ -56,6 +57,27 @@ frictionless bearings; neglect its mass.
 1. What is the torsional stiffness $k_t$ of the shaft?
 2. The system can turn as a whole ($\\omega = 0$). What is the frequency (in Hz) of its torsional vibration?
 3. How far from disk 1 is the cross-section of the shaft that does not rotate in this mode?
+""",
+    solution=r"""
+Two rotors on a massless elastic shaft and no support moment: the system has a rigid-body
+mode ($\omega = 0$) and one torsional mode, in which the total angular momentum stays zero
+(multi-degree-of-freedom vibrations, Section 4.4.2).
+
+1. **Torsional stiffness.** For a solid circular shaft $I_p = \frac{\pi}{2}\bigl(\frac{d}{2}\bigr)^4$ = {{ si.I_p }} m⁴
+   ($d$ = {{ d }}), and
+   $$k_t = \frac{G I_p}{L},$$
+   so with $G$ = {{ G }} and $L$ = {{ L }}: $k_t$ = {{ answers.kt }}.
+2. **Natural frequency.** The disks have $J_i = \tfrac{1}{2} m_i R_i^2$: $J_1$ = {{ si.J1 }} and
+   $J_2$ = {{ si.J2 }} kg·m² ($m_1$ = {{ m1 }}, $R_1$ = {{ R1 }}, $m_2$ = {{ m2 }},
+   $R_2$ = {{ R2 }}). The equations $J_1\ddot\varphi_1 = k_t(\varphi_2 - \varphi_1)$ and
+   $J_2\ddot\varphi_2 = -k_t(\varphi_2 - \varphi_1)$ give
+   $\omega^2\bigl(J_1 J_2\,\omega^2 - k_t (J_1 + J_2)\bigr) = 0$, so besides $\omega = 0$
+   $$\omega = \sqrt{\frac{k_t\,(J_1 + J_2)}{J_1 J_2} },$$
+   here $\omega$ = {{ si.omega }} rad/s, and $f = \omega/(2\pi)$ = {{ answers.f }}.
+3. **Node.** In this mode $J_1\varphi_1 + J_2\varphi_2 = 0$: the disks turn against each
+   other. The twist varies linearly along the shaft, so it vanishes at
+   $$x_{\mathrm{node} } = \frac{J_2}{J_1 + J_2}\,L$$
+   from disk 1, that is $x_{\mathrm{node} }$ = {{ answers.node }} — closer to the disk with the larger moment of inertia.
 """,
     solve=solve,
     parts=(

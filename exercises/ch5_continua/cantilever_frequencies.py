@@ -20,7 +20,9 @@ def _f(p, support="cantilever", n=2, EI=None):
 
 def solve(p):
     f = _f(p)
-    return {"beta1L": beams.beam_eigenvalues("cantilever", 1)[0], "f1": f[0], "f2": f[1]}
+    roots = beams.beam_eigenvalues("cantilever", 2)
+    return {"beta1L": roots[0], "f1": f[0], "f2": f[1],
+            "beta2L": roots[1], "EI": _EI(p), "rhoA": _rhoA(p)}
 
 
 EXERCISE = Exercise(
@@ -46,6 +48,25 @@ vibrates in bending across its thickness (Euler–Bernoulli beam).
 1. What is the smallest positive root $\\beta_1 L$ of the characteristic equation
    $\\cos(\\beta L)\\cosh(\\beta L) + 1 = 0$?
 2. What are the two lowest natural frequencies $f_1$ and $f_2$ (in Hz)?
+""",
+    solution=r"""
+Free bending vibrations of a uniform Euler–Bernoulli beam obey
+$EI\,w'''' + \rho A\,\ddot w = 0$; separating $w = W(x)\cos\omega t$ gives
+$W'''' = \beta^4 W$ with $\beta^4 = \rho A\,\omega^2/(EI)$, and the boundary conditions pick
+the admissible $\beta$ (flexural vibration, Section 5.3.3).
+
+1. **Characteristic equation.** At the clamped end $W = W' = 0$, at the free end
+   $W'' = W''' = 0$ (no moment, no shear force). A non-zero solution exists only if
+   $$\cos(\beta L)\cosh(\beta L) + 1 = 0 .$$
+   Since $\cosh$ grows fast, the higher roots approach the zeros of $\cos(\beta L)$;
+   the lowest ones must be found numerically: the first is $\beta_1 L$ = {{ answers.beta1L }}, the second
+   $\beta_2 L$ = {{ si.beta2L }}.
+2. **Natural frequencies.** Solving $\beta^4 = \rho A\,\omega^2/(EI)$ for $\omega$:
+   $$\omega_j = \frac{(\beta_j L)^2}{L^2}\sqrt{\frac{EI}{\rho A} },\qquad f_j = \frac{\omega_j}{2\pi}.$$
+   The strip bends across its thickness, so $I = b h^3/12$ and $EI$ = {{ si.EI }} N·m²;
+   $\rho A = \rho b h$ = {{ si.rhoA }} kg/m (with $b$ = {{ b }}, $h$ = {{ h }}, $E$ = {{ E }},
+   $\rho$ = {{ rho }}). With $L$ = {{ L }}: $f_1$ = {{ answers.f1 }} and
+   $f_2$ = {{ answers.f2 }}, not an integer multiple of $f_1$.
 """,
     solve=solve,
     parts=(

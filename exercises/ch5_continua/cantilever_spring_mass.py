@@ -17,7 +17,10 @@ def _f(k, m):
 
 def solve(p):
     return {"k_b": k_beam(p), "f_series": _f(stiffness.series_stiffness(k_beam(p), p.k), p.m),
-            "f_parallel": _f(stiffness.parallel_stiffness(k_beam(p), p.k), p.m)}
+            "f_parallel": _f(stiffness.parallel_stiffness(k_beam(p), p.k), p.m),
+            "I": stiffness.rectangle_second_moment(p.b, p.h),
+            "k_series": stiffness.series_stiffness(k_beam(p), p.k),
+            "k_parallel": stiffness.parallel_stiffness(k_beam(p), p.k)}
 
 
 EXERCISE = Exercise(
@@ -46,6 +49,26 @@ is used to support a mass $m$ = {{ m }}. Neglect the beam's mass.
    frequency of vertical vibrations (in Hz)?
 3. Instead, the mass is fixed to the tip and the same spring connects it to the ground
    below. What is the natural frequency now?
+""",
+    solution=r"""
+Each arrangement is one mass on one equivalent spring; what matters is whether the beam and
+the spring carry the same force (series) or deform by the same amount (parallel)
+(equivalent stiffness, Section 5.1).
+
+1. **Tip stiffness of the beam.** A cantilever under a tip force $F$ deflects
+   $w = F L^3/(3EI)$, so
+   $$k_b = \frac{3 E I}{L^3},\qquad I = \frac{b h^3}{12},$$
+   where $I$ = {{ si.I }} m⁴ (bent about the width, $b$ = {{ b }}, $h$ = {{ h }}). With $E$ = {{ E }}
+   and $L$ = {{ L }}: $k_b$ = {{ answers.k_b }}.
+2. **Mass hanging on the spring.** Beam and spring carry the same force and their
+   deflections add: springs in series,
+   $$\frac{1}{k_s} = \frac{1}{k_b} + \frac{1}{k},$$
+   so with $k$ = {{ k }}, $k_s$ = {{ si.k_series }} N/m and with $m$ = {{ m }}
+   $$f = \frac{1}{2\pi}\sqrt{\frac{k_s}{m} },$$
+   that is $f$ = {{ answers.f_series }}. The softer element dominates.
+3. **Spring to the ground.** The mass's displacement deflects the beam and the spring by
+   the same amount and both push back: springs in parallel, $k_p = k_b + k$ =
+   {{ si.k_parallel }} N/m, and $f = \frac{1}{2\pi}\sqrt{k_p/m}$ = {{ answers.f_parallel }}.
 """,
     solve=solve,
     parts=(

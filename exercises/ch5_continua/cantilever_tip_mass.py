@@ -21,7 +21,9 @@ def _f(m_extra, p):
 
 def solve(p):
     return {"m_eff": continua.cantilever_effective_mass(_m_b(p)),
-            "f": _f(continua.cantilever_effective_mass(_m_b(p)), p)}
+            "f": _f(continua.cantilever_effective_mass(_m_b(p)), p),
+            "m_b": _m_b(p), "I": stiffness.circle_second_moment(p.d), "k": _k(p),
+            "omega": continua.rayleigh_frequency(_k(p), p.m, continua.cantilever_effective_mass(_m_b(p)))}
 
 
 EXERCISE = Exercise(
@@ -47,6 +49,24 @@ tip load.
 
 1. Which effective mass does the bar add at its tip?
 2. Estimate the fundamental frequency (in Hz) of vertical vibrations.
+""",
+    solution=r"""
+Rayleigh's method: assume the bar vibrates in the shape of its static deflection under a
+tip load, so its kinetic energy is that of an effective mass moving with the tip; then the
+system is one mass on the tip spring (effective mass and Rayleigh's estimate, Section 5.2).
+
+1. **Effective mass.** The bar's mass is $m_b = \rho\,\frac{\pi d^2}{4}\,L$ = {{ si.m_b }} kg
+   ($d$ = {{ d }}, $L$ = {{ L }}, $\rho$ = {{ rho }}). With the static tip-load shape
+   $w(x) = w_L\,\frac{x^2(3L - x)}{2L^3}$ the kinetic energy
+   $\tfrac{1}{2}\int_0^L \rho A\,\dot w^2\,dx$ equals $\tfrac{1}{2} m_{\mathrm{eff} }\dot w_L^2$ with
+   $$m_{\mathrm{eff} } = \frac{\rho A}{w_L^2}\int_0^L w^2\,dx,$$
+   which evaluates to {{ answers.m_eff }}, about a quarter of $m_b$: the parts near the
+   clamp hardly move.
+2. **Fundamental frequency.** The tip stiffness is $k = 3EI/L^3$ with
+   $I = \frac{\pi}{4}\bigl(\frac d2\bigr)^4$ = {{ si.I }} m⁴, so with $E$ = {{ E }}:
+   $k$ = {{ si.k }} N/m. With the tip mass $m$ = {{ m }},
+   $$\omega \approx \sqrt{\frac{k}{m + m_{\mathrm{eff} } } },$$
+   here $\omega$ = {{ si.omega }} rad/s, and $f = \omega/(2\pi)$ = {{ answers.f }}.
 """,
     solve=solve,
     parts=(

@@ -14,7 +14,8 @@ def solve(p):
     w, EI, rhoA = _args(p)
     k = beams.flexural_wavenumber(w, EI, rhoA)
     return {"lam": beams.wavelength(k), "c_p": beams.flexural_phase_speed(w, EI, rhoA),
-            "c_g": beams.flexural_group_speed(w, EI, rhoA)}
+            "c_g": beams.flexural_group_speed(w, EI, rhoA),
+            "omega": w, "EI": EI, "rhoA": rhoA, "k": k}
 
 
 EXERCISE = Exercise(
@@ -37,6 +38,24 @@ $f$ = {{ f }}, so that bending waves run along it (Euler–Bernoulli theory).
 1. What is the wavelength of the bending waves?
 2. What is their phase speed?
 3. With which speed does the energy of a wave packet at this frequency travel (the group speed)?
+""",
+    solution=r"""
+A harmonic bending wave $w = \hat w\cos(kx - \omega t)$ satisfies
+$EI\,w'''' + \rho A\,\ddot w = 0$ only if $EI\,k^4 = \rho A\,\omega^2$: the dispersion relation
+of flexural waves (Section 5.3.3). Their speed depends on the frequency.
+
+Here $\omega = 2\pi f$ = {{ si.omega }} rad/s ($f$ = {{ f }}), $EI = E\,b h^3/12$ =
+{{ si.EI }} N·m² and $\rho A = \rho b h$ = {{ si.rhoA }} kg/m ($b$ = {{ b }}, $h$ = {{ h }},
+$E$ = {{ E }}, $\rho$ = {{ rho }}).
+
+1. **Wavelength.** From the dispersion relation
+   $$k = \sqrt{\omega}\,\Bigl(\frac{\rho A}{EI}\Bigr)^{1/4},$$
+   here $k$ = {{ si.k }} rad/m, and $\lambda = 2\pi/k$ = {{ answers.lam }}.
+2. **Phase speed.** $$c_p = \frac{\omega}{k} = \sqrt{\omega}\,\Bigl(\frac{EI}{\rho A}\Bigr)^{1/4},$$
+   that is $c_p$ = {{ answers.c_p }}. It grows with $\sqrt\omega$: the beam is dispersive.
+3. **Group speed.** With $\omega = \sqrt{EI/(\rho A)}\;k^2$,
+   $$c_g = \frac{d\omega}{dk} = 2\sqrt{\frac{EI}{\rho A} }\;k = 2\,c_p,$$
+   so a wave packet's energy travels at $c_g$ = {{ answers.c_g }}.
 """,
     solve=solve,
     parts=(

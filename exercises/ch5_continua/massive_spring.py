@@ -14,7 +14,7 @@ def solve(p):
     # the spring as a continuous bar with a tip mass: c = L sqrt(k/m_s), so omega = kL sqrt(k/m_s)
     exact = rods.tip_mass_fundamental_frequency(np.sqrt(p.k / p.m_s), 1.0, p.m_s, p.m)
     return {"m_eff": continua.spring_effective_mass(p.m_s), "f": vibrations.frequency_in_hertz(omega(p)),
-            "error": omega(p) / exact - 1, "omega": omega(p)}
+            "error": omega(p) / exact - 1, "omega": omega(p), "omega_exact": exact}
 
 
 EXERCISE = Exercise(
@@ -41,6 +41,25 @@ linearly from the fixed end to the mass.
    from $\\kappa L\\tan(\\kappa L) = m_s/m$. By what relative amount does your estimate
    exceed it ($\\omega_{\\text{est}}/\\omega_{\\text{exact}} - 1$)?
 4. Give $\\omega$ of part 2 as a formula in `k`, `m`, `m_s`.
+""",
+    solution=r"""
+Rayleigh's method: with the assumed linear velocity profile the spring's kinetic energy is
+that of an effective mass moving with $m$ (effective mass, Section 5.2).
+
+1. **Effective mass.** A coil at distance $s$ from the fixed end (spring length $L$) moves
+   with $\dot x\,s/L$, so
+   $$T_s = \tfrac{1}{2}\int_0^L \frac{m_s}{L}\Bigl(\frac{s}{L}\,\dot x\Bigr)^2 ds = \tfrac{1}{2}\,\frac{m_s}{3}\,\dot x^2 ,$$
+   and $m_{\mathrm{eff} } = m_s/3$ = {{ answers.m_eff }} ($m_s$ = {{ m_s }}).
+2. **Natural frequency.** One mass $m + m_s/3$ on the spring $k$:
+   $$\omega = \sqrt{\frac{k}{m + m_s/3} };$$
+   with $m$ = {{ m }} and $k$ = {{ k }}: $\omega$ = {{ answers.omega }} and
+   $f = \omega/(2\pi)$ = {{ answers.f }}.
+3. **Compared with the continuous bar.** The root of $\kappa L\tan(\kappa L) = m_s/m$ in
+   $(0, \pi/2)$ gives the exact $\omega_{\mathrm{exact} } = c\,\kappa$ = {{ si.omega_exact }} rad/s,
+   where $c = L\sqrt{k/m_s}$ is the spring's wave speed. The estimate exceeds it by
+   $\omega/\omega_{\mathrm{exact} } - 1$ = {{ answers.error }}: Rayleigh's method, with an
+   assumed shape, always errs high, and very little while $m_s < m$.
+4. **As a formula.** `{{ answers.omega_formula }}`.
 """,
     solve=solve,
     parts=(

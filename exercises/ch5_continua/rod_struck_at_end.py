@@ -64,6 +64,24 @@ velocity $v$ = {{ v }} along the rod by a hammer blow.
 3. What compressive stress does the wave carry?
 4. Give the first two natural frequencies (in Hz) of longitudinal vibration of the free rod as a vector $[f_1, f_2]$.
 """,
+    solution=r"""
+Longitudinal motion of a slender rod obeys the wave equation $u_{tt} = c^2 u_{xx}$ with
+$c = \sqrt{E/\rho}$; a sudden end velocity starts a step wave, and the free ends fix the
+natural modes (longitudinal waves, Section 5.3.1).
+
+1. **Wave speed.** $$c = \sqrt{\frac{E}{\rho} },$$ with $E$ = {{ E }} and $\rho$ = {{ rho }}:
+   $c$ = {{ answers.c }}.
+2. **Arrival time.** The front covers $L$ = {{ L }} at $c$: $t = L/c$ = {{ answers.t_arrival }}.
+3. **Stress in the wave.** Across the front the particles jump from rest to $v$; the
+   momentum balance of the material the front sweeps in $dt$ gives
+   $\sigma\,A\,dt = \rho A\,c\,dt\,v$:
+   $$\sigma = \rho\,c\,v,$$
+   so with $v$ = {{ v }}: $\sigma$ = {{ answers.sigma }} (compressive).
+4. **Natural frequencies.** Free ends carry no force, $u_x = 0$ at both ends, so the modes are
+   $\cos(n\pi x/L)$ with $\omega_n = n\pi c/L$ and
+   $$f_n = \frac{n\,c}{2L}:$$
+   $[f_1, f_2]$ = {{ answers.f }}.
+""",
     solve=solve,
     figure=figure,
     parts=(

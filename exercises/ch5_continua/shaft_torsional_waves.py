@@ -16,7 +16,7 @@ def _f(p, c, ends="fixed-free", n=2):
 
 def solve(p):
     f = _f(p, c_T(p))
-    return {"c_T": c_T(p), "f1": f[0], "f2": f[1]}
+    return {"c_T": c_T(p), "f1": f[0], "f2": f[1], "G": stiffness.shear_modulus(p.E, p.nu)}
 
 
 EXERCISE = Exercise(
@@ -36,6 +36,22 @@ material has $E$ = {{ E }}, Poisson's ratio $\\nu$ = {{ nu }} and density $\\rho
 
 1. With which speed do torsional waves travel along the shaft?
 2. What are the two lowest natural frequencies (in Hz) of its torsional vibration?
+""",
+    solution=r"""
+The twist angle of a circular shaft obeys the wave equation $\theta_{tt} = c_T^2\,\theta_{xx}$
+with $c_T = \sqrt{G/\rho}$; the clamped and the free end fix the natural modes
+(torsional waves, Section 5.3.2).
+
+1. **Wave speed.** The shear modulus of an isotropic material is
+   $$G = \frac{E}{2(1 + \nu)},$$
+   here $G$ = {{ si.G }} Pa ($E$ = {{ E }}, $\nu$ = {{ nu }}), and with $\rho$ = {{ rho }}
+   $$c_T = \sqrt{\frac{G}{\rho} },$$
+   that is $c_T$ = {{ answers.c_T }}. It does not depend on the shaft's diameter.
+2. **Natural frequencies.** Clamped at $x = 0$ ($\theta = 0$) and free at $x = L$
+   (no torque, $\theta_x = 0$): the modes are $\sin\bigl((2j - 1)\pi x/(2L)\bigr)$, a quarter
+   wave, three quarters, …, so
+   $$f_j = \frac{(2j - 1)\,c_T}{4L};$$
+   with $L$ = {{ L }}: $f_1$ = {{ answers.f1 }} and $f_2 = 3 f_1$ = {{ answers.f2 }}.
 """,
     solve=solve,
     parts=(

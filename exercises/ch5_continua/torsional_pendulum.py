@@ -19,7 +19,8 @@ def _period(p):
 
 
 def solve(p):
-    return {"kt": k_t(p), "T": _period(p)}
+    return {"kt": k_t(p), "T": _period(p), "G": stiffness.shear_modulus(p.E, p.nu),
+            "I_p": stiffness.circle_polar_moment(p.d), "J": _J(p)}
 
 
 EXERCISE = Exercise(
@@ -47,6 +48,21 @@ the rod's mass.
 
 1. What is the torsional stiffness $k_t$ of the rod?
 2. What is the period of the disk's torsional oscillations?
+""",
+    solution=r"""
+The massless rod is a torsional spring; the disk a rigid body turning about the rod's
+axis: $J\ddot\varphi + k_t\varphi = 0$ (torsional stiffness, Section 5.1).
+
+1. **Torsional stiffness.** A rod of length $L$ twisted by $\varphi$ carries the torque
+   $G I_p\,\varphi/L$, so
+   $$k_t = \frac{G I_p}{L},\qquad G = \frac{E}{2(1 + \nu)},\qquad I_p = \frac{\pi}{2}\Bigl(\frac d2\Bigr)^4 .$$
+   With $E$ = {{ E }} and $\nu$ = {{ nu }}: $G$ = {{ si.G }} Pa; with $d$ = {{ d }}:
+   $I_p$ = {{ si.I_p }} m⁴; with $L$ = {{ L }}: $k_t$ = {{ answers.kt }}. (The polar
+   moment, not the bending moment of area $I_p/2$.)
+2. **Period.** The disk has $J = \tfrac{1}{2} m R^2$ = {{ si.J }} kg·m² ($m$ = {{ m }},
+   $R$ = {{ R }}), so $\omega = \sqrt{k_t/J}$ and
+   $$T = 2\pi\sqrt{\frac{J}{k_t} },$$
+   that is $T$ = {{ answers.T }}.
 """,
     solve=solve,
     parts=(
