@@ -222,13 +222,16 @@ def run_cold() -> None:
                 lines[k] = line.replace("None", value)
         sheet.write_text("\n".join(lines) + "\n", encoding="utf-8")
         command = [sys.executable, "-c", "import sys; from dynagrade.cli import grade_main; grade_main()", str(sheet)]
-        times = []
-        for _ in range(3):
-            t0 = time.perf_counter()
-            done = subprocess.run(command, capture_output=True, text=True, env=env)
-            times.append(time.perf_counter() - t0)
-        status = "ok" if done.returncode == 0 else f"exit {done.returncode}"
-        print(f"cold `grade FILE` (answered sheet, {status}): best of 3 {min(times):.2f} s")
+        print("cold `grade FILE` (answered sheet" + cold_runs(command, env))
+
+
+def cold_runs(command: list[str], env: dict, runs: int = 5) -> str:
+    """``command`` run ``runs`` times in fresh processes: ", status): the median wall time
+    (and the fastest) and the median CPU time (user + system of the process)"."""
+    walls, cpus, code = fresh_process_times(command, env, runs)
+    status = "ok" if code == 0 else f"exit {code}"
+    return (f", {status}): median of {runs} {statistics.median(walls):.2f} s "
+            f"(min {min(walls):.2f} s), CPU {statistics.median(cpus):.2f} s")
 
 
 def fresh_process_times(command: list[str], env: dict, runs: int) -> tuple[list[float], list[float], int]:
@@ -246,12 +249,10 @@ def fresh_process_times(command: list[str], env: dict, runs: int) -> tuple[list[
 
 
 def run_cold_list(runs: int = 5) -> None:
-    """The wall time of `dynagrade list` in fresh processes: the median of ``runs``."""
+    """The time of `dynagrade list` in fresh processes: the median of ``runs``."""
     env = dict(os.environ, PYTHONPATH=str(ROOT / "src"))
-    times, _, code = fresh_process_times([sys.executable, "-m", "dynagrade.cli", "list"], env, runs)
-    status = "ok" if code == 0 else f"exit {code}"
-    print(f"cold `dynagrade list` ({status}): median of {runs} {statistics.median(times):.2f} s "
-          f"(min {min(times):.2f} s)")
+    command = [sys.executable, "-m", "dynagrade.cli", "list"]
+    print("cold `dynagrade list` (" + cold_runs(command, env, runs).removeprefix(", "))
 
 
 def run_collect(runs: int = 3) -> None:

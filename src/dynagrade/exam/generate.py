@@ -44,7 +44,7 @@ from .outputs import staging_folder, swap_in
 from .run import GenerationRun, file_sha256
 from .solutions import solutions_title
 from .spec import ExamSpec, ExamSpecError, Student, read_exam_spec, read_roster
-from .student import StudentResult, student_job
+from .student import STAGES, StudentResult, student_job
 from .workers import Pool, default_jobs
 
 Progress = Callable[[str, int, int], None]
@@ -85,6 +85,9 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
         stage = time.perf_counter()
         results = _students(pool, roster, progress)
         report.timings["students"] = time.perf_counter() - stage
+        for name in STAGES:
+            report.timings[f"students: {name} (worker CPU s)"] = sum(
+                r.timings.get(name, 0.0) for r in results)
         stage = time.perf_counter()
         manifest = build_manifest(run.spec, run.exercises, run.parts,
                                   [r.entry for r in results])

@@ -8,7 +8,8 @@ typst body of their sheet (for the printing PDF, should the PDFs not embed).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import time
+from dataclasses import dataclass, field
 
 from ..exercise.model import Exercise, Variant
 from ..exercise.seeds import variant_token
@@ -27,16 +28,27 @@ from .variants import exam_variant
 
 @dataclass(frozen=True)
 class StudentResult:
-    """What one student's job hands back: the manifest entry, the sheet's typst body and,
-    with ``--solutions``, the solution sheet's."""
+    """What one student's job hands back: the manifest entry, the sheet's typst body,
+    with ``--solutions`` the solution sheet's, and the CPU seconds the job spent per
+    stage (:data:`STAGES`; CPU rather than wall time, which says little on a shared
+    machine)."""
 
     entry: StudentEntry
     body: str
     solution_body: str | None = None
+    timings: dict[str, float] = field(default_factory=dict)
+
+
+#: the stages of a student's job, as :attr:`StudentResult.timings` names them: drawing
+#: the figures, writing the sheets (Markdown, HTML, typst source), compiling the PDF and
+#: everything else (variants, fill-in files, the solution sheet)
+STAGES = ("figures", "sheets", "PDFs", "the rest")
 
 
 def student_job(run: GenerationRun, student: Student) -> StudentResult:
     """Variants, fill-in files, figures, sheets and the PDF of ``student``."""
+    started = time.process_time()
+    timings = dict.fromkeys(STAGES, 0.0)
     entries, sheet_exercises, solved = [], [], []
     for number, item in enumerate(run.spec.exercises, 1):
         exercise = run.exercises[item.id]
@@ -45,20 +57,23 @@ def student_job(run: GenerationRun, student: Student) -> StudentResult:
                                         run.problems)
         entries.append(VariantEntry(exercise.id, variant.seed, variant.params,
                                     dict(variant.answers), redraws))
-        sheet_exercises.append(_exercise_files(run, student, number, item, exercise, variant))
+        sheet_exercises.append(_exercise_files(run, student, number, item, exercise, variant,
+                                               timings))
         solved.append((exercise, variant))
     sheet = StudentSheet(run.spec.to_json(), student.student_id, student.name,
                          tuple(sheet_exercises))
-    body = _write_sheets(run, student, sheet)
+    body = _write_sheets(run, student, sheet, timings)
     solution_body = None
     if run.solutions:
         solution_body = write_solution_sheet(run, student, solved)
     entry = StudentEntry(student.student_id, student.name, student.email, tuple(entries))
-    return StudentResult(entry, body, solution_body)
+    timings["the rest"] = time.process_time() - started - sum(timings.values())
+    return StudentResult(entry, body, solution_body, timings)
 
 
 def _exercise_files(run: GenerationRun, student: Student, number: int, item: ExamExercise,
-                    exercise: Exercise, variant: Variant) -> SheetExercise:
+                    exercise: Exercise, variant: Variant,
+                    timings: dict[str, float]) -> SheetExercise:
     """The fill-in file and figure of one exercise; its section of the sheet."""
     folder = run.out_dir / "students" / student.student_id
     scaled = run.parts[exercise.id]
@@ -68,7 +83,9 @@ def _exercise_files(run: GenerationRun, student: Student, number: int, item: Exa
     write_atomic(folder / fill_in, write_sheet(exercise, variant, student.student_id, fill_in,
                                                {entry.name: entry.points for entry in scaled},
                                                token=token, exam_id=run.spec.id))
+    started = time.process_time()
     svg = run.figures(exercise, variant)
+    timings["figures"] += time.process_time() - started
     figure_file = None
     if svg is not None:
         figure_file = f"figures/{exercise.id}.svg"
@@ -80,14 +97,18 @@ def _exercise_files(run: GenerationRun, student: Student, number: int, item: Exa
                          variant.statement, parts, fill_in, svg, figure_file)
 
 
-def _write_sheets(run: GenerationRun, student: Student, sheet: StudentSheet) -> str:
+def _write_sheets(run: GenerationRun, student: Student, sheet: StudentSheet,
+                  timings: dict[str, float]) -> str:
     """sheet.md, sheet.html and (with PDFs) sheet.pdf; returns the typst body."""
+    started = time.process_time()
     folder = run.out_dir / "students" / student.student_id
     write_atomic(folder / "sheet.md", sheet_markdown(sheet))
     write_atomic(folder / "sheet.html", sheet_html(sheet))
     body = sheet_typst_body(sheet)
+    source = typst_preamble(run.spec.to_json()) + body
+    timings["sheets"] += time.process_time() - started
     if run.pdf:
-        preamble = typst_preamble(run.spec.to_json())
-        write_atomic(folder / "sheet.pdf", run.compiler.compile(preamble + body,
-                                                                standards=ACCESSIBLE))
+        started = time.process_time()
+        write_atomic(folder / "sheet.pdf", run.compiler.compile(source, standards=ACCESSIBLE))
+        timings["PDFs"] += time.process_time() - started
     return body

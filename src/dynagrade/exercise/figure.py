@@ -72,14 +72,62 @@ def _named(kind: str, label: str) -> str:
 def new_drawing(width: float = 5.0, height: float = 3.0):
     """A figure with one borderless axes of equal scale in x and y: ``(figure, axes)``.
 
-    Built as a plain :class:`matplotlib.figure.Figure` (no pyplot state to leak)."""
+    Built as a plain :class:`matplotlib.figure.Figure` (no pyplot state to leak). Making
+    a figure and its axes costs more than drawing a schematic on it, so a drawing given
+    back with :func:`recycle` is emptied and handed out again, the same as a new one."""
     from matplotlib.figure import Figure
 
+    if _SPARE:
+        figure, axes = _SPARE.pop()
+        figure.set_size_inches(width, height)
+        return figure, axes
     figure = Figure(figsize=(width, height))
-    axes = figure.add_axes((0.01, 0.01, 0.98, 0.98))
+    axes = figure.add_axes(_AXES_BOX)
     axes.set_aspect("equal")
     axes.set_axis_off()
+    setattr(figure, _OWN_AXES, axes)
     return figure, axes
+
+
+#: where :func:`new_drawing` puts its axes in the figure (fractions of width and height)
+_AXES_BOX = (0.01, 0.01, 0.98, 0.98)
+_OWN_AXES = "dynagrade_drawing_axes"
+#: emptied drawings of this process, ready to hand out again (at most one is kept)
+_SPARE: list = []
+
+
+def recycle(figure) -> None:
+    """Give back a figure made by :func:`new_drawing` once it has been saved: it is
+    emptied to the state of a new drawing (its artists removed, limits, colour cycle and
+    notes reset) and handed out by the next :func:`new_drawing`. A figure that was given
+    more axes or figure-level artists than a drawing has, or that was not made here, is
+    left alone."""
+    axes = getattr(figure, _OWN_AXES, None)
+    if (axes is None or _SPARE or figure.axes != [axes] or figure.texts or figure.lines
+            or figure.patches or figure.images or figure.legends or axes.get_legend()
+            or axes.child_axes or axes.get_title() or axes.get_xlabel()
+            or axes.get_ylabel()):
+        return
+    from matplotlib import rcParams
+    from matplotlib.transforms import Bbox
+
+    for artist in (*axes.lines, *axes.patches, *axes.texts, *axes.collections,
+                   *axes.images, *axes.artists, *axes.tables):
+        artist.remove()
+    axes.dataLim.set(Bbox.null())
+    axes.ignore_existing_data_limits = True
+    axes.set_xlim(0.0, 1.0, auto=True)
+    axes.set_ylim(0.0, 1.0, auto=True)
+    axes.set_xscale("linear")
+    axes.set_yscale("linear")
+    axes.set_prop_cycle(None)
+    axes.margins(x=rcParams["axes.xmargin"], y=rcParams["axes.ymargin"])
+    axes.set_aspect("equal", adjustable="box", anchor="C")
+    axes.set_axis_off()
+    axes.set_position(_AXES_BOX)
+    if hasattr(figure, NOTES_ATTRIBUTE):
+        delattr(figure, NOTES_ATTRIBUTE)
+    _SPARE.append((figure, axes))
 
 
 def arrow(axes, start, end, label: str = "", offset=(0.0, 0.0), color="C0") -> None:
