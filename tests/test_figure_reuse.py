@@ -4,14 +4,21 @@ than a drawing has is never handed out again."""
 
 from __future__ import annotations
 
-import matplotlib
 import pytest
 
 from dynagrade.exercise import figure as drawings
 from dynagrade.exercise import open_bank
 from dynagrade.render.figures import figure_svg
+from deferred import deferred
 
-matplotlib.use("Agg")
+matplotlib = deferred("matplotlib")
+
+
+@pytest.fixture(autouse=True, scope="module")
+def agg_backend():
+    """Figures are drawn without a display (chosen when the tests run, so that collecting
+    this module does not import matplotlib)."""
+    matplotlib.use("Agg")
 
 
 @pytest.fixture
