@@ -31,6 +31,7 @@ import sys
 import tempfile
 import time
 import uuid
+from dataclasses import replace
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -41,18 +42,20 @@ def build_exam(folder: Path, students: int) -> Path:
     from dynagrade.exam.generate import build_manifest, exercise_parts, load_exam
     from dynagrade.exam.manifest import StudentEntry, VariantEntry, dump
     from dynagrade.exam.variants import exam_variant
+    from dynagrade.exercise.seeds import new_secret
 
     roster = folder / "roster.csv"
     roster.write_text("student_id,name\n" + "".join(
         f"b{n:04d},Student {n}\n" for n in range(1, students + 1)), encoding="utf-8")
     spec, people, exercises = load_exam(ROOT / "examples" / "exam.toml", roster)
+    spec = replace(spec, secret=new_secret())
     parts = {item.id: exercise_parts(exercises[item.id], item.points) for item in spec.exercises}
     entries = []
     for person in people:
         variants = []
         for item in spec.exercises:
-            variant, redraws = exam_variant(exercises[item.id], spec.id, person.student_id,
-                                            item.set)
+            variant, redraws = exam_variant(exercises[item.id], spec.secret, spec.id,
+                                            person.student_id, item.set)
             variants.append(VariantEntry(item.id, variant.seed, variant.params,
                                          dict(variant.answers), redraws))
         entries.append(StudentEntry(person.student_id, person.name, person.email,
