@@ -142,7 +142,7 @@ class BodySizeLimit:
 
 
 class _TooLarge(DynagradeError):
-    pass
+    """A request body over MAX_BODY_BYTES, stopping the read before the rest arrives."""
 
 
 async def _too_large(send) -> None:
