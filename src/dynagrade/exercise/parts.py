@@ -21,6 +21,7 @@ its own unit, which is also the unit a bare number is read in.
 from __future__ import annotations
 
 import textwrap
+from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 from typing import Any, Callable, ClassVar, Mapping
 
@@ -61,7 +62,7 @@ class Misconception:
 
 
 @dataclass(frozen=True)
-class Part:
+class Part(ABC):
     """What every part has: a name (the variable on the student's sheet), a label, points."""
 
     name: str
@@ -111,9 +112,9 @@ class Part:
         answers (:mod:`.scoring`)."""
         return False
 
+    @abstractmethod
     def asks(self) -> str:
-        """What the answer is, in words (``a number in m/s``)."""
-        raise NotImplementedError
+        """What the answer is, in words (``a number in m/s``); every kind says its own."""
 
     def describe(self, points: float) -> str:
         """The part's line in a fill-in file; ``points`` as the exam scales them (the

@@ -192,12 +192,10 @@ def server_secret(engine: sa.Engine) -> str:
                                    .where(settings.c.key == "csrf_secret")).scalar()
         if value is not None:
             return value
-        try:
+        with contextlib.suppress(IntegrityError):  # another worker created it first
             with connection.begin_nested():
                 connection.execute(settings.insert().values(key="csrf_secret",
                                                             value=secrets.token_hex(32)))
-        except IntegrityError:  # another worker created it first
-            pass
         return connection.execute(sa.select(settings.c.value)
                                   .where(settings.c.key == "csrf_secret")).scalar_one()
 
