@@ -70,8 +70,10 @@ EXERCISE = Exercise(
 A cart of mass $M$ = {{ M }} rolls without friction on a horizontal track and is tied to
 a wall by a spring of stiffness $k$ = {{ k }}. From the cart hangs a pendulum: a point
 mass $m$ = {{ m }} on a massless rod of length $L$ = {{ L }}; $g$ = {{ g }}. Use the
-cart's displacement $x$ and the pendulum's angle $\\varphi$ from the vertical as
-generalized coordinates.
+cart's displacement $x$ from the position where the spring is relaxed (positive to the
+right) and the pendulum's angle $\\varphi$ from the downward vertical as generalized
+coordinates, $\\varphi$ positive counter-clockwise: the bob is then at
+$(x + L\\sin\\varphi,\\; -L\\cos\\varphi)$ from where the pivot is when the spring is relaxed.
 
 1. Linearize the Lagrange equations about $x = 0$, $\\varphi = 0$ into
    $\\mathbf M\\ddot{\\mathbf q} + \\mathbf K\\mathbf q = \\mathbf 0$ with $\\mathbf q = (x, \\varphi)$.
