@@ -47,6 +47,11 @@ def _mean_velocity(p):
     return tuple(_velocities(p).mean(axis=0))
 
 
+def _reversed(name):
+    """The wrong route: the relative vector of part ``name`` taken the other way round."""
+    return lambda p: tuple(-np.asarray(solve(p)[name]))
+
+
 def _differ(a, b) -> bool:
     """Whether ``a`` and ``b`` differ in a component by clearly more than a part's
     tolerance (5 % of the component, or of a tenth of the vector, and 2 cm or cm/s)."""
@@ -68,9 +73,9 @@ def _discriminating(p) -> bool:
     s = solve(p)
     r, v = _positions(p), _velocities(p)
     return (_differ(_centroid(p), s["r_C"]) and _differ(_mean_velocity(p), s["v_C"])
-            and _differ(-np.asarray(s["rho_1"]), s["rho_1"])
+            and _differ(_reversed("rho_1")(p), s["rho_1"])
             and _differ(r[0] - _centroid(p), s["rho_1"])
-            and _differ(-np.asarray(s["u_2"]), s["u_2"])
+            and _differ(_reversed("u_2")(p), s["u_2"])
             and _differ(v[1] - v[0], s["u_2"]))
 
 
@@ -214,8 +219,7 @@ $m_3$ = {{ m3 }}).
         Vector("rho_1", "position of puck 1 relative to C", unit="m", size=2, points=1,
                atol=0.005,
                misconceptions=(
-                   Misconception("r_C − r_1 instead of r_1 − r_C",
-                                 lambda p: tuple(-np.asarray(solve(p)["rho_1"])),
+                   Misconception("r_C − r_1 instead of r_1 − r_C", _reversed("rho_1"),
                                  "The relative position points from C to the puck: "
                                  "rho_1 = r_1 − r_C."),
                    Misconception("relative to the plain mean of the positions",
@@ -226,8 +230,7 @@ $m_3$ = {{ m3 }}).
         Vector("u_2", "velocity of puck 2 relative to C", unit="m/s", size=2, points=1,
                atol=0.005,
                misconceptions=(
-                   Misconception("v_C − v_2 instead of v_2 − v_C",
-                                 lambda p: tuple(-np.asarray(solve(p)["u_2"])),
+                   Misconception("v_C − v_2 instead of v_2 − v_C", _reversed("u_2"),
                                  "The relative velocity is the rate of rho_2 = r_2 − r_C: "
                                  "v_2 − v_C."),
                    Misconception("relative to puck 1 instead of C",
