@@ -23,8 +23,8 @@ def _cart(axes, left, width, name):
 
 def figure(p):
     """The two carts on their track just before the impact, with velocity arrows drawn to a
-    common scale in the direction of motion and labelled with the speed (Section 2.3.1). A cart's width grows with the
-    cube root of its mass, like that of a solid body."""
+    common scale in the direction of motion and labelled with the speed (Section 2.3.1).
+    A cart's width grows with the cube root of its mass, like that of a solid body."""
     w1, w2 = 0.5 * p.m1 ** (1 / 3), 0.5 * p.m2 ** (1 / 3)
     scale = 0.12                                   # arrow length per m/s
     gap = 1.2
