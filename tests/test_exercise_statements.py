@@ -148,6 +148,16 @@ def test_cart_pendulum_coupling_has_the_sign_of_the_stated_angle(seed):
     assert variant.answers["M12"] > 0
 
 
+def test_cart_pendulum_figure_draws_the_positive_senses_the_statement_states():
+    from dynagrade.exercise.figure import figure_notes
+
+    exercise, (variant,) = _variants("cart-pendulum-matrices", (3,))
+    drawn = figure_notes(exercise.figure(exercise.si(variant.params)))["drawn"]
+    assert "an arrow x pointing to the right" in drawn
+    assert ("an angle φ measured from the direction pointing down, turning "
+            "counter-clockwise") in drawn
+
+
 # -- beam-flexural-waves --------------------------------------------------------------------
 
 
