@@ -61,5 +61,5 @@ def test_the_figure_does_not_draw_the_centre_of_mass(hand):
     exercise, variant = hand
     axes = exercise.figure(exercise.si(variant.params)).axes[0]
     labels = {t.get_text() for t in axes.texts}
-    assert {"1", "2", "3", "v₁", "v₂", "v₃", "O", "x", "y"} <= labels
+    assert {"m₁", "m₂", "m₃", "v₁", "v₂", "v₃", "O", "x", "y"} <= labels
     assert "C" not in labels

@@ -95,20 +95,21 @@ def figure(p):
     axes.text(0.0, 0.36, "y", ha="center", va="bottom", fontsize=10, color="0.3")
     axes.text(-0.05, -0.05, "O", ha="right", va="top", fontsize=10)
     heaviest = max(_masses(p))
-    for number, (point, velocity, mass) in enumerate(zip(r, v, _masses(p)), 1):
+    for sub, point, velocity, mass in zip("₁₂₃", r, v, _masses(p)):
         radius = 0.12 * np.sqrt(mass / heaviest)
         axes.add_patch(Circle(tuple(point), radius, facecolor="C0", edgecolor="0.1", lw=1.0,
                               zorder=3))
         speed = np.linalg.norm(velocity)
         away = velocity / speed if speed > 1e-9 else np.array([0.6, -0.8])
-        # the puck's number on the side away from its velocity arrow
-        axes.text(*(point - (radius + 0.08) * away), str(number), ha="center", va="center",
-                  fontsize=10)
+        # the puck's mass symbol on the side away from its velocity arrow (a subscript
+        # digit, which no reader takes for a number of the variant)
+        axes.text(*(point - (radius + 0.09) * away), f"m{sub}", ha="center",
+                  va="center", fontsize=10)
         if speed > 1e-9:
             tip = point + scale * velocity
             arrow(axes, tuple(point), tuple(tip), color="C3")
             label_at = point + (max(scale * speed, radius) + 0.1) * away   # clear of the puck
-            axes.text(*label_at, f"v{'₁₂₃'[number - 1]}", color="C3", ha="center",
+            axes.text(*label_at, f"v{sub}", color="C3", ha="center",
                       va="center", fontsize=10)
     describe(axes, "Seen from above: the pucks glide on the table in the directions of "
              "their velocity arrows; x points to the right, y up the page, from the origin O.")
