@@ -13,7 +13,6 @@ import re
 
 import numpy as np
 import pytest
-from scipy.integrate import solve_ivp
 
 from dynagrade.exercise import open_bank
 from dynagrade.exercise.scoring import grade_variant
@@ -201,6 +200,8 @@ def test_slingshot_is_guided_so_the_spring_cannot_lift_it():
 def test_slingshot_key_matches_the_guided_motion_integrated(seed):
     # in the slot only the spring's horizontal pull accelerates the particle:
     # m ẍ = −k (s − l0) x / s, s = sqrt(x² + l0²); integrate from rest at x = dx to x = 0
+    from scipy.integrate import solve_ivp
+
     exercise, (variant,) = _variants("elastic-slingshot", (seed,))
     p = exercise.si(variant.params)
 
