@@ -45,7 +45,7 @@ from .policy import Policy
 from .solution_policy import with_feedback
 from .solutions import feedback_solutions
 from .manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
-from .stats import part_statistics
+from .stats import declared_names, part_statistics
 from .submissions import Problem, Submission, collect
 from .workers import Pool, default_jobs
 
@@ -163,7 +163,7 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
                  if (s.student_id, e) in chosen}) for s in manifest.students]
     graded = _run(work, manifest_parts, exercises, jobs, progress)
     timings["grading"] = time.perf_counter() - stage
-    outcome = _outcome(manifest, graded, problems, timings)
+    outcome = _outcome(manifest, graded, problems, timings, declared_names(exercises))
     solutions = Policy.from_json(manifest.exam.policy).solutions
     if out_dir is not None and with_feedback(solutions):
         _add_solutions(outcome, manifest, exercises)
@@ -178,7 +178,7 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
 
 
 def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
-             timings: dict[str, float]) -> ClassOutcome:
+             timings: dict[str, float], declared: dict | None = None) -> ClassOutcome:
     """The gradebook, the feedback per student and the item statistics."""
     exercise_ids = manifest.exercise_ids
     max_total = sum(float(e.points) for e in manifest.exercises)
@@ -198,7 +198,8 @@ def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
                 (e, p["name"]): p for e in submitted for p in results[e]["parts"]}})
     ordered_parts = [(e.id, p) for e in manifest.exercises for p in e.parts]
     return ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
-                        part_statistics(ordered_parts, analysed), feedback, timings)
+                        part_statistics(ordered_parts, analysed, declared=declared), feedback,
+                        timings)
 
 
 def part_errors(manifest: Manifest, graded: list[dict]) -> list[Problem]:
