@@ -147,15 +147,18 @@ def _grade_one(run: GradingRun, work: tuple[StudentEntry, dict[str, Submission]]
 
 
 def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
-                jobs: int | None = None, progress=None) -> ClassOutcome:
-    """Grade every submission in ``paths`` and, with ``out_dir``, write the outputs."""
+                jobs: int | None = None, progress=None, roster=None,
+                platform: str | None = None) -> ClassOutcome:
+    """Grade every submission in ``paths`` and, with ``out_dir``, write the outputs; a
+    platform's ``.zip`` download among ``paths`` is mapped to students by the platform
+    ids of ``roster`` (:mod:`.downloads`)."""
     started = time.perf_counter()
     progress = progress or (lambda stage, done, total: None)
     manifest = load(manifest_path)
     problems: list[Problem] = []
     exercises = _exercises(manifest, bank or open_bank(), problems, str(manifest_path))
     manifest_parts = {e.id: e.parts for e in manifest.exercises}
-    chosen, found = collect(paths, manifest)
+    chosen, found = collect(paths, manifest, roster, platform)
     problems += found
     timings = {"collect": time.perf_counter() - started}
     stage = time.perf_counter()
