@@ -291,6 +291,25 @@ def test_climbing_names_links_and_bombs_are_refused_and_nothing_is_written(exam,
     assert not (tmp_path / "evil.py").exists() and not Path("/tmp/Anna Muster_101_assignsubmission_file").exists()
 
 
+def test_a_damaged_entry_costs_only_itself(exam, tmp_path):
+    archive = tmp_path / "canvas.zip"
+    damaged = "beispielben_5002_700002_projectile-range.py"
+    with zipfile.ZipFile(archive, "w", zipfile.ZIP_STORED) as z:
+        z.writestr(damaged, filled(exam, "s2", "projectile-range"))
+        z.writestr("musteranna_5001_700001_projectile-range.py",
+                   filled(exam, "s1", "projectile-range"))
+    data = bytearray(archive.read_bytes())
+    at = data.index(b"EXERCISE")  # inside the first (stored) entry's bytes
+    data[at] = ord("X")  # its CRC no longer matches
+    archive.write_bytes(bytes(data))
+    outcome = grade(exam, archive)
+    assert [(Path(p.source).name, p.student_id) for p in outcome.problems] == [(damaged, "s2")]
+    assert outcome.problems[0].message.startswith("refused: the entry cannot be read")
+    rows = points(outcome)
+    assert rows["s1"]["projectile-range"] == pytest.approx(full(exam, "projectile-range"))
+    assert rows["s2"]["projectile-range"] == 0.0
+
+
 def test_an_archive_with_too_many_entries_or_not_a_zip_is_an_error_naming_it(exam, tmp_path,
                                                                              monkeypatch):
     import dynagrade.exam.downloads as downloads

@@ -32,6 +32,7 @@ import os
 import re
 import stat
 import zipfile
+import zlib
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 from typing import Callable
@@ -229,9 +230,8 @@ def _entries(archive: zipfile.ZipFile, infos, people: Identities, platform: str,
             raise DownloadError(f"{where}: more than {MAX_TOTAL_BYTES} bytes to read; "
                                 "split the download")
         content = _read_bounded(archive, info, limit)
-        if content is None:
-            entries.append(Entry(name, student_id, problem="refused: it expands beyond "
-                                 "what its header says (a zip bomb?)"))
+        if isinstance(content, str):
+            entries.append(Entry(name, student_id, problem=f"refused: {content}"))
             continue
         total += len(content)
         entries.append(Entry(name, student_id, content))
@@ -277,12 +277,17 @@ def _unreadable(info: zipfile.ZipInfo, limit: int) -> str:
     return ""
 
 
-def _read_bounded(archive: zipfile.ZipFile, info: zipfile.ZipInfo, limit: int) -> bytes | None:
-    """The entry's bytes, reading no more than ``limit`` + 1 whatever its header says;
-    None when there are more."""
-    with archive.open(info) as handle:
-        data = handle.read(limit + 1)
-    return None if len(data) > limit else data
+def _read_bounded(archive: zipfile.ZipFile, info: zipfile.ZipInfo, limit: int) -> bytes | str:
+    """The entry's bytes, reading no more than ``limit`` + 1 whatever its header says; or
+    why they cannot be taken (more than the limit, a damaged or unsupported entry)."""
+    try:
+        with archive.open(info) as handle:
+            data = handle.read(limit + 1)
+    except (zipfile.BadZipFile, EOFError, NotImplementedError, zlib.error) as error:
+        return f"the entry cannot be read ({error})"
+    if len(data) > limit:
+        return "it expands beyond what its header says (a zip bomb?)"
+    return data
 
 
 def _same_name(shown: str, roster: str) -> bool:
