@@ -18,8 +18,9 @@ Outputs (built in a staging folder and swapped in whole, :mod:`.outputs`)::
     problems.csv      every submission that was skipped or replaced, every part whose
                       grading failed, and why
     feedback/<student_id>.md, feedback/<student_id>.html
-    report.html       score histogram, difficulty and discrimination per part, common
-                      wrong answers and the misconceptions they matched
+    report.html       score histogram, difficulty and discrimination per part (with a
+                      caution below 30 students), wrong answers grouped by the
+                      mistake that explains them and the unexplained share per part
 
 A re-run with the same inputs writes the same files.
 """
