@@ -308,6 +308,8 @@ def test_a_damaged_entry_costs_only_itself(exam, tmp_path):
     rows = points(outcome)
     assert rows["s1"]["projectile-range"] == pytest.approx(full(exam, "projectile-range"))
     assert rows["s2"]["projectile-range"] == 0.0
+    # s2's feedback says the file was handed in and why it was not graded
+    assert set(outcome.feedback["s2"]["rejected"]) == {"projectile-range"}
 
 
 def test_an_archive_with_too_many_entries_or_not_a_zip_is_an_error_naming_it(exam, tmp_path,

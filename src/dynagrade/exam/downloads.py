@@ -49,8 +49,10 @@ MAX_ENTRIES = 20_000
 MAX_TOTAL_BYTES = 500_000_000
 #: an entry that expands more than this many times (and beyond 1 MB) is a zip bomb
 MAX_RATIO = 200
+#: the largest responses CSV read, in a submissions folder or a download
+MAX_CSV_BYTES = 50_000_000
 #: the limit of one entry, by suffix: as for a file in a submissions folder
-ENTRY_LIMITS = {".py": MAX_SHEET_BYTES, ".csv": 50_000_000}
+ENTRY_LIMITS = {".py": MAX_SHEET_BYTES, ".csv": MAX_CSV_BYTES}
 #: the largest zip file read at all
 MAX_ARCHIVE_BYTES = 2_000_000_000
 
@@ -155,7 +157,7 @@ def read_download(path, people: Identities | None, platform: str | None) -> list
     path = Path(path)
     where = str(path)
     try:
-        with zipfile.ZipFile(_open_regular(path)) as archive:
+        with _open_regular(path) as handle, zipfile.ZipFile(handle) as archive:
             infos = archive.infolist()
             if len(infos) > MAX_ENTRIES:
                 raise DownloadError(f"{where}: {len(infos)} entries, more than the "

@@ -38,12 +38,11 @@ from pathlib import Path
 from ..exercise.datafile import DataFileError, file_kind, read_data_file
 from ..exercise.seeds import token_matches, variant_token
 from ..exercise.sheet import MAX_SHEET_BYTES, Sheet, SheetError, read_sheet, sheet_from_bytes
-from .downloads import Identities, identities, read_download
+from .downloads import MAX_CSV_BYTES, Identities, identities, read_download
 from .layouts import owner
 from .manifest import Manifest
 
 RESPONSE_HEADER = ("student_id", "exercise_id", "part", "answer")
-MAX_CSV_BYTES = 50_000_000
 
 
 @dataclass(frozen=True)
@@ -115,7 +114,7 @@ SUFFIXES = (".py", ".csv")
 
 
 def walk(paths, roster, problems: list[Problem], people: Identities | None = None,
-         platform: str | None = None) -> list[Found]:
+         platform: str | None = None, exercise_ids=()) -> list[Found]:
     """Every submission file in ``paths`` with its owner (:mod:`.layouts`, or for a
     platform's ``.zip`` download the roster's platform ids in ``people``); what cannot be
     a submission (a link out of the folder, a device, a FIFO) is reported."""
@@ -123,7 +122,8 @@ def walk(paths, roster, problems: list[Problem], people: Identities | None = Non
     for argument in paths:
         argument = Path(argument)
         if argument.suffix.lower() == ".zip" and not argument.is_dir():
-            found += _download_files(argument, people, platform, problems, len(found))
+            found += _download_files(argument, people, platform, problems, len(found),
+                                     exercise_ids)
         elif argument.is_dir() and not argument.is_symlink():
             for path in _folder_files(argument, problems):
                 parts = (argument.resolve().name, *path.relative_to(argument).parts)
@@ -135,15 +135,17 @@ def walk(paths, roster, problems: list[Problem], people: Identities | None = Non
 
 
 def _download_files(archive: Path, people: Identities | None, platform: str | None,
-                    problems: list[Problem], start: int) -> list[Found]:
+                    problems: list[Problem], start: int, exercise_ids=()) -> list[Found]:
     """The files of a platform's download, each with its student; every entry refused or
-    unmatched is reported."""
+    unmatched is reported, with the exercise its file name points to (so that a student's
+    feedback says what was handed in and not graded)."""
     found = []
     for entry in read_download(archive, people, platform):
         source = archive / entry.name
         if entry.problem:
+            named = next((e for e in exercise_ids if e in source.name), "")
             problems.append(Problem(entry.level, str(source), entry.problem,
-                                    entry.student_id or ""))
+                                    entry.student_id or "", named))
         else:
             found.append(Found(source, entry.student_id, 0, start + len(found), entry.content))
     return found
@@ -197,7 +199,7 @@ def collect(paths, manifest: Manifest, roster=None,
     problems: list[Problem] = []
     accepted: dict[tuple[str, str], list[tuple[Found, Submission]]] = {}
     people = identities(roster, exam.students) if roster is not None else None
-    for found in walk(paths, exam.students, problems, people, platform):
+    for found in walk(paths, exam.students, problems, people, platform, list(exam.parts)):
         if found.path.suffix.lower() == ".csv":
             submissions = _read_responses(found, exam, problems)
         else:
