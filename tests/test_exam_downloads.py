@@ -10,6 +10,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import os
 import stat
 import zipfile
 from pathlib import Path
@@ -170,10 +171,14 @@ def test_a_canvas_download_is_graded_by_user_id_late_and_resubmitted_files_inclu
         "beispielben_late_5002_700002_projectile-range-1.py":
             filled(exam, "s2", "projectile-range"),
     })
-    rows = points(grade(exam, archive))
+    outcome = grade(exam, archive)
+    rows = points(outcome)
     assert rows["s1"]["projectile-range"] == pytest.approx(full(exam, "projectile-range"))
     assert rows["s2"]["projectile-range"] == pytest.approx(full(exam, "projectile-range"))
     assert rows["s3"]["status"] == "absent"
+    # the late one is graded, and the staff are told it was late
+    assert [(p.level, p.student_id, p.message) for p in outcome.problems] == [
+        ("warning", "s2", "Canvas marks this submission late; graded all the same")]
 
 
 def test_files_the_roster_cannot_place_are_reported_and_credited_to_nobody(exam, tmp_path):
@@ -324,6 +329,23 @@ def test_an_archive_with_too_many_entries_or_not_a_zip_is_an_error_naming_it(exa
     broken.write_bytes(b"PK\x03\x04 not really")
     with pytest.raises(DownloadError, match="broken.zip: not a readable zip file"):
         grade(exam, broken)
+
+
+def test_a_roster_without_the_platforms_ids_or_a_fifo_for_a_zip_is_an_error_naming_it(
+        exam, tmp_path):
+    archive = make_zip(tmp_path / "canvas.zip", {
+        "musteranna_5001_700001_projectile-range.py": filled(exam, "s1", "projectile-range")})
+    plain = tmp_path / "plain.csv"
+    plain.write_text("student_id,name,moodle_id\ns1,Anna Muster,101\n", encoding="utf-8")
+    with pytest.raises(DownloadError, match=r"canvas.zip: a Canvas download, but .*plain.csv "
+                                            r"gives no exam student a Canvas id; add a "
+                                            r"canvas_id column"):
+        grade_class(exam / "out" / "manifest.json", [archive], roster=plain)
+    fifo = tmp_path / "fifo.zip"
+    os.mkfifo(fifo)
+    with pytest.raises(DownloadError, match=r"fifo.zip: cannot read the download \(it is a "
+                                            r"FIFO \(named pipe\), not a regular file\)"):
+        grade(exam, fifo)
 
 
 def test_the_command_line_grades_a_download_and_says_what_is_missing_without_a_traceback(

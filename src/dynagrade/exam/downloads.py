@@ -120,6 +120,7 @@ class Identities:
 
     students: dict[str, dict[str, str]]
     names: dict[str, str]
+    roster: str = "the roster"
 
     def student(self, platform: str, identifier: str) -> str | None:
         return self.students.get(platform, {}).get(identifier)
@@ -135,7 +136,7 @@ def identities(roster_path, student_ids) -> Identities:
         if student.student_id in wanted:
             for platform, identifier in student.platform_ids:
                 students[platform][identifier] = student.student_id
-    return Identities(students, {s.student_id: s.name for s in roster})
+    return Identities(students, {s.student_id: s.name for s in roster}, str(roster_path))
 
 
 @dataclass(frozen=True)
@@ -168,6 +169,12 @@ def read_download(path, people: Identities | None, platform: str | None) -> list
                                     "the platform's id; give --roster with a moodle_id or "
                                     "canvas_id column (docs/exams.md, Platform downloads)")
             platform = platform or detect_platform([i.filename for i in files], where)
+            if not people.students[platform]:
+                column = "moodle_id" if platform == "moodle" else "canvas_id"
+                raise DownloadError(f"{where}: a {platform.capitalize()} download, but "
+                                    f"{people.roster} gives no exam student a "
+                                    f"{platform.capitalize()} id; add a {column} column "
+                                    "(docs/exams.md, Platform downloads)")
             return _entries(archive, files, people, platform, where)
     except (zipfile.BadZipFile, zipfile.LargeZipFile, OSError, EOFError) as error:
         raise DownloadError(f"{where}: not a readable zip file ({error})") from None
@@ -240,6 +247,9 @@ def _entries(archive: zipfile.ZipFile, infos, people: Identities, platform: str,
         note = _name_note(platform, said, people.names.get(student_id, ""))
         if note:
             entries.append(Entry(name, student_id, problem=note, level="warning"))
+        if said.late:
+            entries.append(Entry(name, student_id, problem=f"{label} marks this submission "
+                                 "late; graded all the same", level="warning"))
     return entries
 
 
