@@ -8,6 +8,15 @@ defined is wrong. Point i agrees when ``|a_i - e_i| <= rtol * max(|e_i|, 1e-3*M)
 with M the median of |e| over the points (an absolute 1e-12 when the reference is
 identically 0). Before that, when every variable has a unit, the answer's dimension
 must match the reference's.
+
+A variable may be written under its name or any spelling of its printed symbol and
+aliases (``spec.spellings``), resolved by the parser's name lookup.
+
+When the spec says an additive constant does not matter (``up_to_constant``: a potential
+energy, a position with an arbitrary origin), the answer is compared by its differences
+``f(x_i) - f(x_0)`` with the reference's, ``x_0`` the first sample point: point i agrees
+when ``|Δa_i - Δe_i| <= t_i + t_0`` (the two points' tolerances). An answer right only
+up to a constant is correct, and its feedback says the constant was ignored.
 """
 
 from __future__ import annotations
@@ -144,7 +153,7 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
     ref = _reference(spec, expected)
     deadline = Deadline()  # the reference (and the units it loads) is prepared outside the budget
     try:
-        tree = parse_expression(answer, ref.names)
+        tree = parse_expression(answer, ref.names, spec.spellings)
     except AnswerError as error:
         return unreadable(str(error))
     reveal = f" The expected answer is {to_text(ref.tree)}." if spec.reveal else ""
@@ -166,6 +175,8 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
                                     "number, or a number too large to compute) where the expected one is defined." + reveal)
     if _equivalent(tree, ref, values, deadline):
         return _form_verdict(spec, ref, tree)
+    if spec.up_to_constant and _same_differences(values, ref.values, ref.tol):
+        return _form_verdict(spec, ref, tree, CONSTANT_IGNORED)
     hints = " ".join(reading_hints(tree))
     with np.errstate(all="ignore"):  # ratios of values near the float limit overflow
         found = _misconception(spec, ref, values)
@@ -193,7 +204,20 @@ def _equivalent(tree: Expr, ref: _Reference, values: np.ndarray, deadline: Deadl
         bool(exactly_equal(tree, ref.tree, ref.domains, min(0.3, deadline.remaining())))
 
 
-def _form_verdict(spec: SymbolicSpec, ref: _Reference, tree: Expr) -> Verdict:
+#: what a formula right up to an additive constant is told
+CONSTANT_IGNORED = ("Your expression differs from the expected one by a constant, which "
+                    "this part ignores (only differences of its values matter).")
+
+
+def _same_differences(values: np.ndarray, expected: np.ndarray, tol: np.ndarray) -> bool:
+    """Whether ``values`` and ``expected`` differ by one constant: their changes from the
+    first sample point agree within the two points' tolerances."""
+    with np.errstate(all="ignore"):
+        change = (values - values[0]) - (expected - expected[0])
+    return bool(np.all(np.abs(change) <= tol + tol[0]))
+
+
+def _form_verdict(spec: SymbolicSpec, ref: _Reference, tree: Expr, note: str = "") -> Verdict:
     problems = []
     if "no_decimals" in spec.form:
         if any(isinstance(n, Num) and n.value != int(n.value) for n in walk(tree)) or \
@@ -207,21 +231,27 @@ def _form_verdict(spec: SymbolicSpec, ref: _Reference, tree: Expr) -> Verdict:
             problems.append("write it without functions (no sin, sqrt, exp, …)")
     if problems:
         return Verdict(False, spec.form_credit,
-                       "Your expression is equivalent, but " + " and ".join(problems) + ".",
-                       misconception="form")
-    return Verdict(True, 1.0, "Correct.")
+                       "Your expression is equivalent, but " + " and ".join(problems) + "." +
+                       (" " + note if note else ""), misconception="form")
+    return Verdict(True, 1.0, "Correct." + (" " + note if note else ""))
 
 
-def _agrees(values: np.ndarray, target: np.ndarray, ref: _Reference) -> bool:
-    """Whether ``values`` match ``target`` under the reference's tolerance rule."""
+def _agrees(values: np.ndarray, target: np.ndarray, ref: _Reference,
+            up_to_constant: bool = False) -> bool:
+    """Whether ``values`` match ``target`` under the reference's tolerance rule (or differ
+    from it by a constant only, when ``up_to_constant``)."""
     if not np.all(np.isfinite(target)):
         return False
-    return bool(np.all(np.abs(values - target) <= point_tolerance(target, ref.rtol)))
+    tol = point_tolerance(target, ref.rtol)
+    if up_to_constant:
+        return _same_differences(values, target, tol)
+    return bool(np.all(np.abs(values - target) <= tol))
 
 
 def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray):
     for wrong, wrong_values in ref.known:
-        if _agrees(values, wrong_values, ref) and not _agrees(ref.values, wrong_values, ref):
+        if _agrees(values, wrong_values, ref, spec.up_to_constant) and \
+                not _agrees(ref.values, wrong_values, ref, spec.up_to_constant):
             return wrong.name, wrong.feedback, wrong.score
     if not spec.generic_misconceptions:
         return None
