@@ -256,9 +256,10 @@ class Symbolic(Part):
 
     A variable is accepted under its name and every spelling of its printed symbol and
     aliases (``Variable(symbol=..., aliases=...)``; a parameter's ``symbol`` by default).
-    ``up_to_constant=True`` declares that an additive constant does not matter (a
-    potential, a position from an arbitrary origin): the answer is compared by its
-    differences between sample points, and the feedback says the constant was ignored.
+    ``up_to_constant`` declares that an additive constant does not matter: it names the
+    variables the constant is constant in (``("theta",)`` for a potential V(θ) whose zero
+    level is a convention; ``True`` for all). The answer is then compared by its changes
+    in those variables, and the feedback says the constant was ignored.
     """
 
     expected: str = ""
@@ -266,7 +267,7 @@ class Symbolic(Part):
     equals: str | None = None
     form: tuple[str, ...] = ()
     form_credit: float = 0.5
-    up_to_constant: bool = False
+    up_to_constant: bool | tuple[str, ...] = ()
 
     kind = "symbolic"
 

@@ -106,7 +106,9 @@ class SymbolicSpec:
 
     Equivalence is decided by evaluation at seeded random points of the variables'
     domains: relative tolerance ``rtol`` (default 1e-6) with a floor scaled to the
-    reference's magnitude. ``form`` lists extra form tests from :data:`FORM_TESTS`;
+    reference's magnitude. ``up_to_constant`` names the variables an additive constant
+    does not depend on, which the answer may then differ by (``True``: all of them; a
+    potential energy V(θ) takes ``("theta",)``: its zero level is a convention). ``form`` lists extra form tests from :data:`FORM_TESTS`;
     an equivalent answer that fails one earns ``form_credit``.
     """
 
@@ -118,7 +120,7 @@ class SymbolicSpec:
     reveal: bool = False
     points: int = 16
     generic_misconceptions: bool = True
-    up_to_constant: bool = False
+    up_to_constant: bool | tuple[str, ...] = ()
     #: spelling -> variable name for every spelling besides the names (:func:`.names.alias_table`)
     spellings: Mapping[str, str] = field(init=False, repr=False, compare=False)
 
@@ -138,6 +140,12 @@ class SymbolicSpec:
         except NameClash as clash:
             raise ValueError(str(clash)) from None
         object.__setattr__(self, "spellings", MappingProxyType(table))
+        constant_in = tuple(variables) if self.up_to_constant is True else \
+            tuple(self.up_to_constant or ())
+        unknown = [n for n in constant_in if n not in variables]
+        if unknown:
+            raise ValueError(f"up_to_constant names {unknown}, which are no variables")
+        object.__setattr__(self, "up_to_constant", constant_in)
         object.__setattr__(self, "misconceptions", tuple(self.misconceptions))
         object.__setattr__(self, "form", tuple(self.form))
         for test in self.form:
