@@ -129,3 +129,17 @@ def test_an_unknown_case_lists_the_numbers_too():
 def test_a_case_number_that_names_another_option_is_refused():
     with pytest.raises(ValueError, match="also names the option '1'"):
         ChoiceSpec(("0", "1", "2"), aliases=(("1", "0"),))
+
+
+def test_a_compare_record_carries_symbols_aliases_and_the_constant_rule():
+    from dynagrade.grading.compare import compare_record
+
+    latitude = {"id": "d", "kind": "symbolic", "expected": "h*cos(lat)", "answer": "h cos(λ) + 2",
+                "variables": {"h": {"min": 1, "max": 2}, "lat": {"min": 0, "max": 1, "symbol": "\\lambda"}},
+                "up_to_constant": True}
+    cases = {"id": "c", "kind": "choice", "expected": ["y", "z"], "answer": "2, 3",
+             "choices": ["x", "y", "z"], "aliases": {"1": "x", "2": "y", "3": "z"}}
+    clash = {"id": "x", "kind": "symbolic", "expected": "h", "answer": "h",
+             "variables": {"h": {"min": 1, "max": 2, "aliases": ["sin"]}}}
+    assert compare_record(latitude)["correct"] and compare_record(cases)["correct"]
+    assert compare_record(clash)["error"] == "the alias 'sin' of 'h' is the function 'sin'"
