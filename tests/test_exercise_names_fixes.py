@@ -88,3 +88,9 @@ def test_every_part_answers_a_question_and_every_variable_is_shown(exercise_id):
     exercise = BANK.get(exercise_id)
     assert question_problems(exercise) == [] and unshown_variables(exercise) == []
     assert all(part.question is not None for part in exercise.parts)
+
+
+def test_the_fill_in_line_names_the_question_and_the_printed_symbols():
+    part = BANK.get("release-under-gravity").part("x2_formula")
+    assert part.describe(1) == ("question 4, height as a formula: a formula in h0 (h₀), "
+                                "v02 (v₂(0)), g, t (1 point)")

@@ -143,3 +143,13 @@ def test_a_compare_record_carries_symbols_aliases_and_the_constant_rule():
              "variables": {"h": {"min": 1, "max": 2, "aliases": ["sin"]}}}
     assert compare_record(latitude)["correct"] and compare_record(cases)["correct"]
     assert compare_record(clash)["error"] == "the alias 'sin' of 'h' is the function 'sin'"
+
+
+@pytest.mark.parametrize("symbol, printed", [
+    (r"\lambda", "λ"), ("I_0", "I₀"), ("v_{2}(0)", "v₂(0)"), (r"\Delta x", "Δx"),
+    (r"\dot\varphi_0", "φ\u0307₀"), (r"\Omega_E", "Ω_E"),
+])
+def test_a_printed_symbol_reads_as_plain_text_for_the_fill_in_file(symbol, printed):
+    from dynagrade.grading.names import printed_form
+
+    assert printed_form(symbol) == printed

@@ -34,6 +34,7 @@ from ..grading.spec import (
     VectorSpec,
 )
 from ..errors import DefinitionError
+from ..grading.names import printed_form
 from ..grading.tolerance import DEFAULT_RTOL
 from .numbers import answer_text, format_number, points_phrase
 from .params import ParamValues
@@ -129,7 +130,7 @@ class Part(ABC):
         part's own points outside an exam)."""
         asked = f"question {self.question}, " if self.question is not None else ""
         return textwrap.shorten(f"{asked}{self.label or self.name}: {self.asks()} "
-                                f"({points_phrase(points)})", 200)
+                                f"({points_phrase(points)})", 240)
 
     def input_hint(self) -> str:
         """What the answer looks like, for a sheet's part line or an input's placeholder."""
@@ -275,7 +276,10 @@ class Symbolic(Part):
         return self.expected
 
     def asks(self) -> str:
-        return "a formula in " + ", ".join(self.variables)
+        """``a formula in h, lat (λ)``: each variable's name, and the symbol the
+        statement prints for it where that reads otherwise."""
+        return "a formula in " + ", ".join(_with_printed_symbol(name, variable)
+                                             for name, variable in self.variables.items())
 
     def input_hint(self) -> str:
         return "in " + ", ".join(self.variables)
@@ -310,6 +314,12 @@ class Symbolic(Part):
         return SymbolicSpec(variables=dict(self.variables), misconceptions=known,
                             form=tuple(self.form), form_credit=self.form_credit,
                             up_to_constant=self.up_to_constant)
+
+
+def _with_printed_symbol(name: str, variable: Variable | None) -> str:
+    symbol = getattr(variable, "symbol", None)
+    printed = printed_form(symbol) if symbol else name
+    return name if printed in (name, printed_form(name)) else f"{name} ({printed})"
 
 
 @dataclass(frozen=True)

@@ -9,6 +9,7 @@ import difflib
 import re
 import math
 
+from .errors import SpecError
 from .functions import FUNCTIONS
 
 #: Spellings students use -> canonical function name. ``log`` is the natural logarithm.
@@ -107,10 +108,13 @@ _PLAIN = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _SPELLED_GREEK = {spelled: letter for letter, spelled in GREEK.items()
                   if letter not in "ϵϑςϕµ"}
 _SUBSCRIPT_RUN = re.compile(r"_(\d+)")
+#: combining marks for the accents: ``\dot x`` prints as ẋ
+_COMBINING = {"ddot": "\u0308", "dot": "\u0307", "hat": "\u0302", "bar": "\u0304", "tilde": "\u0303"}
 
 
-class NameClash(ValueError):
-    """Two variables, or a variable and a function or unit, share a spelling."""
+class NameClash(SpecError):
+    """Two variables, or a variable and a function or unit, share a spelling (an
+    authoring error, found when the part's specification is built)."""
 
 
 def _greek_command(match: re.Match) -> str:
@@ -151,6 +155,17 @@ def _unicode_form(text: str) -> str:
     for spelled in sorted(_SPELLED_GREEK, key=len, reverse=True):
         text = re.sub(rf"(?<![A-Za-z]){spelled}(?![a-z])", _SPELLED_GREEK[spelled], text)
     return text
+
+
+def printed_form(symbol: str) -> str:
+    """A printed (LaTeX) symbol as plain text with Greek letters, accents and subscript
+    digits: ``\\lambda`` -> ``λ``, ``I_0`` -> ``I₀``, ``v_{2}(0)`` -> ``v₂(0)``,
+    ``\\Delta x`` -> ``Δx``, ``\\dot\\varphi_0`` -> ``φ̇₀``."""
+    text = _WRAPPERS.sub(r"\1", symbol.strip())
+    text = _ACCENT.sub(lambda m: m.group(2).strip("{}") + _COMBINING[m.group(1)], text)
+    text = _COMMAND.sub(lambda m: _SPELLED_GREEK.get(_greek_command(m), m.group(1)), text)
+    text = _SPACING.sub("", text).replace("{", "").replace("}", "")
+    return _SUBSCRIPT_RUN.sub(lambda m: "".join(chr(0x2080 + int(d)) for d in m.group(1)), text)
 
 
 def is_plain(spelling: str) -> bool:
