@@ -113,7 +113,8 @@ $\omega = 2\pi n$ = {{ si.omega }} rad/s (with $n$ in revolutions per second).
                                   lambda p: 2 * particle.string_tension(p.m, p.l, p.n),
                                   "The force grows with ω²: twice the rate, four times the force."),
                 )),
-        Symbolic("S_formula", "string force as a formula", question=4, points=1, expected="m*l*omega^2",
+        Symbolic("S_formula", "string force as a formula", question=4,
+                 points=1, expected="m*l*omega^2",
                  variables={"m": None, "l": None,
                             "omega": Variable(0.5, 30, "rad/s")},
                  misconceptions=(

@@ -72,7 +72,8 @@ $m(t) = m_0 + qt$ = {{ si.mass }} kg (with $m_0$ = {{ m0 }}, $q$ = {{ q }}, $t$ 
                                   "The force supplies the momentum q v0 per second given to "
                                   "the gravel."),
                 )),
-        Symbolic("v_t_formula", "speed as a formula", question=3, points=1, expected="m0*v0/(m0+q*t)",
+        Symbolic("v_t_formula", "speed as a formula", question=3,
+                 points=1, expected="m0*v0/(m0+q*t)",
                  variables=("m0", "v0", "q", "t"),
                  equals="v_t",
                  misconceptions=(

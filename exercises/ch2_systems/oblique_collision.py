@@ -84,14 +84,16 @@ $v_{2,n}'$ = {{ si.v2n }} m/s.
 """,
     solve=solve,
     parts=(
-        Vector("v1_after", "velocity of ball 1 after the impact", question=1, unit="m/s", size=2, points=2,
+        Vector("v1_after", "velocity of ball 1 after the impact", question=1,
+               unit="m/s", size=2, points=2,
                misconceptions=(
                    Misconception("treated as a central impact",
                                  lambda p: (_central(p).v1, 0.0),
                                  "Only the component along the line of impact changes; the "
                                  "tangential component is kept."),
                )),
-        Vector("v2_after", "velocity of ball 2 after the impact", question=2, unit="m/s", size=2, points=2,
+        Vector("v2_after", "velocity of ball 2 after the impact", question=2,
+               unit="m/s", size=2, points=2,
                misconceptions=(
                    Misconception("treated as a central impact",
                                  lambda p: (_central(p).v2, 0.0),

@@ -128,7 +128,8 @@ The three bodies differ only in $I_C/(mR^2)$: ½ for the cylinder, 2/5 for the s
                                   "The friction force is I_C a / R², only a third of "
                                   "m g sin α for the cylinder."),
                 )),
-        Options("first", "first to arrive", question=5, options=("cylinder", "sphere", "hoop"), points=1),
+        Options("first", "first to arrive", question=5,
+                options=("cylinder", "sphere", "hoop"), points=1),
         Symbolic("a_cyl_formula", "acceleration of the cylinder as a formula", question=6, points=1,
                  expected="2/3*g*sin(alpha)",
                  variables=("g", "alpha"),

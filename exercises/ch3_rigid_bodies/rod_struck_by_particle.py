@@ -145,7 +145,8 @@ $v$ = {{ v }}, $d$ = {{ d }} and $e$ = {{ e }}: $\hat F$ = {{ si.impulse }} N·s
                                   "The rod turns about O: use I_O = M L²/3 (parallel-axis "
                                   "theorem), not M L²/12."),
                 )),
-        Numeric("v_after", "velocity of the ball after the impact", question=2, unit="m/s", points=2,
+        Numeric("v_after", "velocity of the ball after the impact", question=2,
+                unit="m/s", points=2,
                 misconceptions=(
                     Misconception("rod treated as a free particle of mass M",
                                   lambda p: _free_particle_rebound(p),

@@ -88,8 +88,10 @@ Here $m$ = {{ m }}, $R$ = {{ R }}, $g$ = {{ g }} and $\Omega$ = {{ Omega }} = {{
                                   lambda p: np.arccos(min(1.0, p.g / (p.R * (p.Omega * 60 / (2 * np.pi))**2))),
                                   "Convert rpm to rad/s: multiply by 2 pi / 60."),
                 )),
-        Options("bottom", "stability of the lowest point", question=3, options=("stable", "unstable"), points=1),
-        Numeric("omega", "frequency of small oscillations about theta*", question=4, unit="rad/s", points=2,
+        Options("bottom", "stability of the lowest point", question=3,
+                options=("stable", "unstable"), points=1),
+        Numeric("omega", "frequency of small oscillations about theta*", question=4,
+                unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("the spin rate", lambda p: p.Omega,
                                   "Linearize: V*''(theta*) = m R^2 Omega^2 sin^2(theta*), so omega = Omega sin(theta*)."),

@@ -106,7 +106,8 @@ $J\ddot\theta + V''(0)\,\theta = 0$ (equilibrium and stability, Section 4.2).
                     Misconception("one spring only", lambda p: p.m * p.g * p.L / (2 * (p.a_frac * p.L) ** 2),
                                   "Each of the two springs adds k a^2 to V''(0)."),
                 )),
-        Numeric("omega", "angular frequency of small oscillations", question=3, unit="rad/s", points=2,
+        Numeric("omega", "angular frequency of small oscillations", question=3,
+                unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("gravity forgotten", lambda p: np.sqrt(2 * p.k * (p.a_frac * p.L) ** 2 / (p.m * p.L**2 / 3)),
                                   "Gravity destabilizes: V''(0) = 2 k a^2 - m g L/2."),

@@ -79,7 +79,8 @@ the spring carry the same force (series) or deform by the same amount (parallel)
                     Misconception("simply supported 48EI/L^3", lambda p: stiffness.simply_supported_midspan_stiffness(
                         p.E, stiffness.rectangle_second_moment(p.b, p.h), p.L), "A cantilever tip: k = 3 E I / L^3."),
                 )),
-        Numeric("f_series", "frequency, mass hanging on the spring", question=2, unit="Hz", points=2,
+        Numeric("f_series", "frequency, mass hanging on the spring", question=2,
+                unit="Hz", points=2,
                 misconceptions=(
                     Misconception("parallel instead of series", lambda p: solve(p)["f_parallel"],
                                   "Beam and spring carry the same force one after the other: they are in series, 1/k = 1/k_b + 1/k."),
