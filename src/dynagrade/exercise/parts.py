@@ -11,7 +11,9 @@ everything that differs between kinds, behind the small contract of :class:`Part
   and as a person reads it (the one answer formatter, :func:`.numbers.answer_text`);
 - ``near_misses`` / ``misconception_answer`` / ``cross_check``: what ``dynagrade
   verify`` tries against a variant;
-- ``manifest_fields``: the settings the exam manifest stores; ``follows_through``.
+- ``manifest_fields``: the settings the exam manifest stores; ``follows_through``;
+- ``check_names``: refuses, when the exercise is built, names an answer could not use
+  (an alias of a formula's variable that is another name, a number naming two options).
 
 No other module asks which kind a part is; code that needs a new behaviour per kind adds
 a method here. Reference answers arrive from the solver in SI; a part converts them into
