@@ -153,3 +153,12 @@ def test_a_printed_symbol_reads_as_plain_text_for_the_fill_in_file(symbol, print
     from dynagrade.grading.names import printed_form
 
     assert printed_form(symbol) == printed
+
+
+def test_a_spelling_two_symbols_share_is_left_out_unless_an_author_declared_it():
+    """Both x_1 and x1 (printed x_{1}) would give `x_1`, so nobody gets it; declared as an
+    alias of one of them, it is that one's."""
+    derived = alias_table({"xa": Variable(0, 1, symbol="x_1"), "xb": Variable(0, 1, symbol="x_{1}")})
+    assert "x_1" not in derived
+    declared = alias_table({"xa": Variable(0, 1, aliases=("x_1",)), "xb": Variable(0, 1, symbol="x_{1}")})
+    assert declared["x_1"] == "xa"

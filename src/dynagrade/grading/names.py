@@ -151,7 +151,7 @@ def typed_forms(symbol: str) -> list[str]:
 
 def _unicode_form(text: str) -> str:
     """``v_2(0)`` -> ``v₂(0)``, ``omega(0)`` -> ``ω(0)``: a spelling as pasted from print."""
-    text = _SUBSCRIPT_RUN.sub(lambda m: "".join(chr(0x2080 + int(d)) for d in m.group(1)), text)
+    text = _subscript_digits(text)
     for spelled in sorted(_SPELLED_GREEK, key=len, reverse=True):
         text = re.sub(rf"(?<![A-Za-z]){spelled}(?![a-z])", _SPELLED_GREEK[spelled], text)
     return text
@@ -165,6 +165,11 @@ def printed_form(symbol: str) -> str:
     text = _ACCENT.sub(lambda m: m.group(2).strip("{}") + _COMBINING[m.group(1)], text)
     text = _COMMAND.sub(lambda m: _SPELLED_GREEK.get(_greek_command(m), m.group(1)), text)
     text = _SPACING.sub("", text).replace("{", "").replace("}", "")
+    return _subscript_digits(text)
+
+
+def _subscript_digits(text: str) -> str:
+    """``x_12`` -> ``x₁₂``: every ``_`` followed by digits, as subscript digits."""
     return _SUBSCRIPT_RUN.sub(lambda m: "".join(chr(0x2080 + int(d)) for d in m.group(1)), text)
 
 
@@ -199,6 +204,7 @@ def alias_table(variables, units=()) -> dict[str, str]:
     """
     table: dict[str, str] = {}
     shared: set[str] = set()
+    declared_by_author: set[str] = set()
     for name, variable in variables.items():
         for spelling, declared in spellings_of(name, getattr(variable, "symbol", None),
                                                getattr(variable, "aliases", ())).items():
@@ -207,10 +213,12 @@ def alias_table(variables, units=()) -> dict[str, str]:
             if clash and declared:
                 raise NameClash(f"the alias {spelling!r} of {name!r} {clash}")
             if clash:
-                if spelling in table and table[spelling] != name:
+                if table.get(spelling, name) != name and spelling not in declared_by_author:
                     shared.add(spelling)
                 continue
             table[spelling] = name
+            if declared:
+                declared_by_author.add(spelling)
     return {spelling: name for spelling, name in table.items() if spelling not in shared}
 
 
