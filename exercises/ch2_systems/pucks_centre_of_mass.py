@@ -203,21 +203,21 @@ $m_3$ = {{ m3 }}).
     solve=solve,
     figure=figure,
     parts=(
-        Vector("r_C", "position of the centre of mass", unit="m", size=2, points=2,
+        Vector("r_C", "position of the centre of mass", question=1, unit="m", size=2, points=2,
                atol=0.005,
                misconceptions=(
                    Misconception("plain mean of the positions", _centroid,
                                  "Weight each position with its mass: "
                                  "r_C = (m1 r1 + m2 r2 + m3 r3)/M (Section 2.1)."),
                )),
-        Vector("v_C", "velocity of the centre of mass", unit="m/s", size=2, points=2,
+        Vector("v_C", "velocity of the centre of mass", question=2, unit="m/s", size=2, points=2,
                atol=0.005,
                misconceptions=(
                    Misconception("plain mean of the velocities", _mean_velocity,
                                  "v_C is the time derivative of r_C: weight each velocity "
                                  "with its mass, v_C = (m1 v1 + m2 v2 + m3 v3)/M."),
                )),
-        Vector("rho_1", "position of puck 1 relative to C", unit="m", size=2, points=1,
+        Vector("rho_1", "position of puck 1 relative to C", question=3, unit="m", size=2, points=1,
                atol=0.005,
                misconceptions=(
                    Misconception("r_C − r_1 instead of r_1 − r_C", _reversed("rho_1"),
@@ -228,7 +228,7 @@ $m_3$ = {{ m3 }}).
                                  "C is the mass-weighted mean of the positions, not the "
                                  "plain mean."),
                )),
-        Vector("u_2", "velocity of puck 2 relative to C", unit="m/s", size=2, points=1,
+        Vector("u_2", "velocity of puck 2 relative to C", question=4, unit="m/s", size=2, points=1,
                atol=0.005,
                misconceptions=(
                    Misconception("v_C − v_2 instead of v_2 − v_C", _reversed("u_2"),
