@@ -18,10 +18,21 @@ def format_number(value: float, digits: int = 6) -> str:
     return show_number(value, digits)
 
 
-def points_text(points: float, decimals: int = POINTS_DECIMALS) -> str:
+#: what stands for "no points" (an absent student's exercise or total)
+NO_POINTS = "—"
+
+
+def points_text(points: float | None, decimals: int = POINTS_DECIMALS) -> str:
     """Points as a number: rounded to ``decimals`` decimals, no trailing zeros (``2.4``,
-    ``2.2857``, ``6``)."""
+    ``2.2857``, ``6``); :data:`NO_POINTS` for None (no grade)."""
+    if points is None:
+        return NO_POINTS
     return format_number(round(float(points), decimals), 15)
+
+
+def percent_text(value: float | None, empty: str = NO_POINTS) -> str:
+    """A percentage with two decimals; ``empty`` when there is none (an absent student)."""
+    return empty if value is None else f"{value:.2f}"
 
 
 def points_phrase(points: float) -> str:
