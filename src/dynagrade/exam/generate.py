@@ -193,7 +193,7 @@ def _write_key_and_moodle(run: GenerationRun, manifest: Manifest) -> None:
     from ..render.keys import key_csv
     from ..render.moodle import moodle_xml
 
-    write_atomic(run.out_dir / "key.csv", key_csv(manifest))
+    write_atomic(run.out_dir / "key.csv", key_csv(manifest, run.exercises))
     write_atomic(run.out_dir / "moodle.xml", moodle_xml(manifest, run.exercises))
 
 
@@ -205,7 +205,8 @@ def _write_printing_pdfs(run: GenerationRun, pool: Pool, manifest: Manifest,
 
     title = f"{run.spec.title}: answer key"
     key_job = pool.submit(_compile_key,
-                          typst_preamble(run.spec.to_json(), title) + key_typst(manifest))
+                          typst_preamble(run.spec.to_json(), title)
+                          + key_typst(manifest, run.exercises))
     steps = 3 if run.solutions else 2
     _write_combined_pdf(run, roster, "sheet.pdf", [r.body for r in results],
                         f"{run.spec.title}: all sheets", "sheets.pdf")
