@@ -126,6 +126,22 @@ def test_the_moodle_gradebook_follows_moodles_csv_import_column_rules(graded):
     assert rows[3][4] == "absent: nothing handed in"
 
 
+def test_a_moodle_gradebook_for_a_roster_without_emails_says_to_map_on_the_id_number(
+        exam, tmp_path, bank):
+    (tmp_path / "exam.toml").write_text(EXAM, encoding="utf-8")
+    (tmp_path / "roster.csv").write_text("student_id,name\nn1,No Mail\n", encoding="utf-8")
+    generate_exam(tmp_path / "exam.toml", tmp_path / "roster.csv", tmp_path / "out", bank=bank,
+                  jobs=1, pdf=False)
+    outcome = grade_class(tmp_path / "out" / "manifest.json", [], tmp_path / "grading",
+                          bank=bank, jobs=1, formats=("moodle",))
+    warnings = [p.message for p in outcome.problems if p.source == "grades-moodle.csv"]
+    assert warnings == ["1 student(s) have no email on the roster (n1); in Moodle's import "
+                        "map users from 'ID number', not 'Email address'"]
+    assert _read(tmp_path / "grading" / "grades-moodle.csv")[1][:2] == ["n1", ""]
+    assert not [p for p in _grade(exam, tmp_path / "again").problems
+                if p.source == "grades-moodle.csv"]
+
+
 def test_the_canvas_gradebook_follows_canvass_import_column_rules(graded):
     rows = _read(graded["out"] / "grades-canvas.csv")
     assert rows[0] == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", TITLE]

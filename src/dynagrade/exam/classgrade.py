@@ -188,6 +188,8 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
     graded = _run(work, manifest_parts, exercises, jobs, progress)
     timings["grading"] = time.perf_counter() - stage
     outcome = _outcome(manifest, graded, problems, timings, staff, str(overrides))
+    if "moodle" in formats:
+        outcome.problems += missing_emails(manifest)
     solutions = Policy.from_json(manifest.exam.policy).solutions
     if out_dir is not None and with_feedback(solutions):
         _add_solutions(outcome, manifest, exercises)
@@ -246,6 +248,18 @@ def part_errors(manifest: Manifest, graded: list[dict]) -> list[Problem]:
                                          f"part {part['name']}: {part['feedback']}",
                                          student.student_id, exercise_id))
     return found
+
+
+def missing_emails(manifest: Manifest) -> list[Problem]:
+    """A warning when students of the roster have no email: Moodle's grade import cannot
+    map them by email address (it stops at the first row it cannot match)."""
+    without = [s.student_id for s in manifest.students if not s.email]
+    if not without:
+        return []
+    shown = ", ".join(without[:5]) + (", ..." if len(without) > 5 else "")
+    return [Problem("warning", GRADEBOOK_FILES["moodle"],
+                    f"{len(without)} student(s) have no email on the roster ({shown}); in "
+                    "Moodle's import map users from 'ID number', not 'Email address'")]
 
 
 def rejected_files(problems: list[Problem]) -> dict[str, dict[str, list[str]]]:
