@@ -9,7 +9,7 @@ student's working::
 
 The points replace what the grader gave that part; the comment is added to the part's
 feedback. The file is read as people save it (UTF-8 with or without a byte-order mark,
-``,`` or ``;`` as separator, CRLF or LF; a decimal comma such as ``1,5`` is read as 1.5).
+``,``, ``;`` or a tab as separator, CRLF or LF; a decimal comma such as ``1,5`` is read as 1.5).
 
 Every row is checked before anything is graded or written: a student not on the roster,
 an exercise not in the exam, a part the exercise does not have, points that are not a
@@ -22,8 +22,6 @@ be overridden (there is no graded part to replace); that too is refused with the
 
 from __future__ import annotations
 
-import csv
-import io
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -33,6 +31,7 @@ from ..errors import DynagradeError
 from ..exercise.datafile import DataFileError, read_data_file
 from .manifest import Manifest
 from .points import Rounding
+from .roster import csv_rows
 
 OVERRIDE_COLUMNS = ("student_id", "exercise", "part", "points", "comment")
 MAX_OVERRIDES_BYTES = 5_000_000
@@ -69,14 +68,7 @@ def read_overrides(path: str | Path, manifest: Manifest,
 def parse_overrides(raw: bytes, where: str, manifest: Manifest,
                     rounding: Rounding) -> tuple[Override, ...]:
     """The overrides in ``raw`` (the file's bytes); ``where`` names it in errors."""
-    try:
-        text = raw.decode("utf-8-sig")
-    except UnicodeDecodeError as problem:
-        line = raw[:problem.start].count(b"\n") + 1
-        raise OverrideError(f"{where}, row {line}: not UTF-8 text") from None
-    first_line = text.split("\n", 1)[0]
-    separator = ";" if first_line.count(";") > first_line.count(",") else ","
-    rows = list(csv.reader(io.StringIO(text, newline=""), delimiter=separator))
+    rows = csv_rows(raw, where, OverrideError)
     header = [cell.strip().lower() for cell in rows[0]] if rows else []
     if header[:4] != list(OVERRIDE_COLUMNS[:4]) or len(header) > 5 \
             or header[4:] not in ([], ["comment"]):
