@@ -23,11 +23,14 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
+from hypothesis import given, strategies as st
 
 from dynagrade.cli import main
 from dynagrade.exam.classgrade import grade_class
 from dynagrade.exam.generate import generate_exam
+from dynagrade.exam.gradebook import gradebook_row, round_results
 from dynagrade.exam.overrides import OverrideError
+from dynagrade.exam.points import Rounding
 from dynagrade.exercise.numbers import answer_text
 
 EXAM = """\
@@ -256,3 +259,28 @@ def test_the_command_line_writes_the_platform_gradebooks_and_refuses_bad_overrid
     result = CliRunner().invoke(main, ["grade", "--manifest", str(exam["manifest"]),
                                        str(exam["responses"]), "--format", "moodle"])
     assert result.exit_code == 2 and "--format and --assignment need -o" in result.output
+    result = CliRunner().invoke(main, ["grade", "--manifest", str(exam["manifest"]),
+                                       str(exam["responses"]), "-o", str(out),
+                                       "--assignment", "Midterm"])
+    assert result.exit_code == 2 and "give --format too" in result.output
+
+
+@given(step=st.sampled_from([0.01, 0.1, 0.25, 0.5, 1.0]),
+       exercises=st.lists(st.lists(st.floats(0, 10), min_size=1, max_size=6), min_size=1,
+                          max_size=5))
+def test_every_cell_is_a_multiple_of_the_step_and_the_total_is_the_sum_of_the_cells(
+        step, exercises):
+    """Each part's score is rounded to the step, each exercise cell is the exact sum of its
+    rounded parts, and the total is the exact sum of the exercise cells."""
+    rounding = Rounding(step)
+    ids = [f"e{i}" for i in range(len(exercises))]
+    results = {e: {"parts": [{"score": score} for score in scores], "score": sum(scores)}
+               for e, scores in zip(ids, exercises)}
+    round_results(results, rounding)
+    row = gradebook_row("s", results, ids, 100.0, rounding=rounding)
+    for e, scores in zip(ids, exercises):
+        parts = [rounding.steps(score) for score in scores]  # nearest steps, by hand below
+        assert all(abs(n * step - score) <= step / 2 + 1e-9 for n, score in zip(parts, scores))
+        assert rounding.steps(row[e]) == sum(parts) and rounding.is_multiple(row[e])
+    assert rounding.steps(row["total"]) == sum(rounding.steps(row[e]) for e in ids)
+    assert row["total"] == rounding.points(sum(rounding.steps(row[e]) for e in ids))

@@ -271,6 +271,9 @@ def grade_command(context, files, as_json, manifest, output, jobs, strict, forma
     if (formats or assignment) and output is None:
         raise click.UsageError("--format and --assignment need -o/--output (the folder "
                                "the gradebooks are written to)")
+    if assignment and not formats:
+        raise click.UsageError("--assignment heads the grade column of a --format moodle "
+                               "or canvas gradebook; give --format too")
     _grade_class(context, manifest, files, output, jobs, as_json, strict,
                  {"formats": tuple(dict.fromkeys(formats)), "assignment": assignment,
                   "overrides": overrides})
