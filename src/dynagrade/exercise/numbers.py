@@ -6,10 +6,9 @@ from __future__ import annotations
 from ..grading.feedback import show_number
 
 #: points are shown to people rounded to this many decimals (sheets, fill-in files, keys,
-#: feedback, the terminal)
+#: feedback, the terminal); an exam's points are multiples of its rounding step
+#: (``dynagrade.exam.points``), which the gradebooks write exactly
 POINTS_DECIMALS = 4
-#: the gradebook (grades.csv) records points to this many decimals, for further computing
-GRADEBOOK_DECIMALS = 6
 
 
 def format_number(value: float, digits: int = 6) -> str:
