@@ -236,6 +236,12 @@ def compare(context, source):
               help="With --manifest: exit 1 when any submission was skipped (corrupt, "
                    "foreign, impersonating) or any part could not be graded; the "
                    "gradebook is written all the same.")
+@click.option("--roster", type=click.Path(exists=True, dir_okay=False),
+              help="With --manifest: a roster with the students' platform ids (moodle_id, "
+                   "canvas_id) to map a Moodle or Canvas download (a .zip among FILES).")
+@click.option("--platform", type=click.Choice(["moodle", "canvas"]),
+              help="With --manifest: which platform made the .zip download (default: told "
+                   "from its entry names).")
 @click.option("--format", "formats", multiple=True, type=click.Choice(["moodle", "canvas"]),
               help="With --manifest and -o: also write the gradebook as Moodle's "
                    "(grades-moodle.csv) or Canvas's (grades-canvas.csv) grade import "
@@ -249,8 +255,8 @@ def compare(context, source):
                    "points set by hand; every row is checked before grading and a bad "
                    "one stops the run before anything is written.")
 @click.pass_obj
-def grade_command(context, files, as_json, manifest, output, jobs, strict, formats,
-                  assignment, overrides):
+def grade_command(context, files, as_json, manifest, output, jobs, strict, roster, platform,
+                  formats, assignment, overrides):
     """Grade filled-in exercise files (never executing them); with --manifest, a class.
 
     A class is always graded whole: a bad file or a part that cannot be graded is
@@ -258,10 +264,10 @@ def grade_command(context, files, as_json, manifest, output, jobs, strict, forma
     be graded (a bad manifest, a missing exercise, an unwritable folder) or, with
     --strict, when something was reported as an error."""
     if manifest is None:
-        if output is not None or jobs is not None or strict or formats or assignment \
-                or overrides:
-            raise click.UsageError("-o/--output, --jobs, --strict, --format, --assignment "
-                                   "and --overrides need --manifest")
+        if output is not None or jobs is not None or strict or roster or platform \
+                or formats or assignment or overrides:
+            raise click.UsageError("-o/--output, --jobs, --strict, --roster, --platform, "
+                                   "--format, --assignment and --overrides need --manifest")
         for file in files:
             if Path(file).is_dir():
                 raise click.BadParameter(f"File {file!r} is a directory.",
@@ -275,7 +281,8 @@ def grade_command(context, files, as_json, manifest, output, jobs, strict, forma
         raise click.UsageError("--assignment heads the grade column of a --format moodle "
                                "or canvas gradebook; give --format too")
     _grade_class(context, manifest, files, output, jobs, as_json, strict,
-                 {"formats": tuple(dict.fromkeys(formats)), "assignment": assignment,
+                 {"roster": roster, "platform": platform,
+                  "formats": tuple(dict.fromkeys(formats)), "assignment": assignment,
                   "overrides": overrides})
 
 
@@ -396,13 +403,13 @@ def _print_self_check(checked: dict) -> None:
         click.echo(f"  {part['name']}: {mark}: {part['message']}")
 
 
-def _grade_class(context, manifest, files, output, jobs, as_json, strict, gradebook):
+def _grade_class(context, manifest, files, output, jobs, as_json, strict, options):
     from .exam.classgrade import grade_class
     from .render.terminal import progress_reporter
 
     with progress_reporter() as progress:
         outcome = grade_class(manifest, files, output, bank=context.bank, jobs=jobs,
-                              progress=progress, **gradebook)
+                              progress=progress, **options)
     for problem in outcome.problems:
         click.echo(f"{problem.level}: {problem.source}: {problem.message}", err=True)
     if as_json:
@@ -414,7 +421,7 @@ def _grade_class(context, manifest, files, output, jobs, as_json, strict, gradeb
     if output:
         from .exam.gradebook import GRADEBOOK_FILES
 
-        written = ["grades.csv", *(GRADEBOOK_FILES[f] for f in gradebook["formats"])]
+        written = ["grades.csv", *(GRADEBOOK_FILES[f] for f in options["formats"])]
         click.echo(f"wrote {output}: {', '.join(written)}, problems.csv, feedback/, "
                    "report.html", err=True)
     errors = sum(p.level == "error" for p in outcome.problems)

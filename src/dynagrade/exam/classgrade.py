@@ -23,8 +23,9 @@ Outputs (built in a staging folder and swapped in whole, :mod:`.outputs`)::
     problems.csv      every submission that was skipped or replaced, every part whose
                       grading failed, and why
     feedback/<student_id>.md, feedback/<student_id>.html
-    report.html       score histogram, difficulty and discrimination per part, common
-                      wrong answers and the misconceptions they matched
+    report.html       score histogram, difficulty and discrimination per part (with a
+                      caution below 30 students), wrong answers grouped by the
+                      mistake that explains them and the unexplained share per part
 
 A re-run with the same inputs writes the same files.
 """
@@ -53,7 +54,7 @@ from .policy import Policy
 from .solution_policy import with_feedback
 from .solutions import feedback_solutions
 from .manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
-from .stats import part_statistics
+from .stats import declared_names, part_statistics
 from .submissions import Problem, Submission, collect
 from .workers import Pool, default_jobs
 
@@ -161,10 +162,13 @@ def _grade_one(run: GradingRun, work: tuple[StudentEntry, dict[str, Submission]]
 
 
 def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
-                jobs: int | None = None, progress=None, overrides=None,
+                jobs: int | None = None, progress=None, roster=None,
+                platform: str | None = None, overrides=None,
                 formats: tuple[str, ...] = (), assignment: str | None = None
                 ) -> ClassOutcome:
-    """Grade every submission in ``paths`` and, with ``out_dir``, write the outputs.
+    """Grade every submission in ``paths`` and, with ``out_dir``, write the outputs; a
+    platform's ``.zip`` download among ``paths`` is mapped to students by the platform
+    ids of ``roster`` (:mod:`.downloads`).
 
     ``overrides`` is the path of an overrides file (:mod:`.overrides`), checked before
     anything is graded; ``formats`` the platform gradebooks to write besides grades.csv
@@ -179,7 +183,7 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
     problems: list[Problem] = []
     exercises = _exercises(manifest, bank or open_bank(), problems, str(manifest_path))
     manifest_parts = {e.id: e.parts for e in manifest.exercises}
-    chosen, found = collect(paths, manifest)
+    chosen, found = collect(paths, manifest, roster, platform)
     problems += found
     timings = {"collect": time.perf_counter() - started}
     stage = time.perf_counter()
@@ -187,7 +191,8 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
                  if (s.student_id, e) in chosen}) for s in manifest.students]
     graded = _run(work, manifest_parts, exercises, jobs, progress)
     timings["grading"] = time.perf_counter() - stage
-    outcome = _outcome(manifest, graded, problems, timings, staff, str(overrides))
+    outcome = _outcome(manifest, graded, problems, timings, declared_names(exercises),
+                       staff, str(overrides))
     if "moodle" in formats:
         outcome.problems += missing_emails(manifest)
     solutions = Policy.from_json(manifest.exam.policy).solutions
@@ -205,8 +210,8 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
 
 
 def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
-             timings: dict[str, float], overrides: tuple[Override, ...] = (),
-             overrides_file: str = "") -> ClassOutcome:
+             timings: dict[str, float], declared: dict | None = None,
+             overrides: tuple[Override, ...] = (), overrides_file: str = "") -> ClassOutcome:
     """The gradebook, the feedback per student and the item statistics: every part's
     score rounded to the exam's step, then the staff's overrides applied."""
     exercise_ids = manifest.exercise_ids
@@ -233,8 +238,8 @@ def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
                 (e, p["name"]): p for e in submitted for p in results[e]["parts"]}})
     ordered_parts = [(e.id, p) for e in manifest.exercises for p in e.parts]
     return ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
-                        part_statistics(ordered_parts, analysed), feedback, timings,
-                        rounding, max_total, comments, len(overrides))
+                        part_statistics(ordered_parts, analysed, declared=declared), feedback,
+                        timings, rounding, max_total, comments, len(overrides))
 
 
 def part_errors(manifest: Manifest, graded: list[dict]) -> list[Problem]:
