@@ -19,6 +19,7 @@ import io
 import re
 
 from ..exercise.figure import recycle
+from ..exercise.figure_checks import reported_figure_failure
 from ..exercise.model import Exercise, Variant
 from .accessible_svg import accessible_svg, figure_description, prefixed_ids
 
@@ -30,9 +31,16 @@ _HEADER = re.compile(r"^\s*<\?xml[^>]*>\s*(<!DOCTYPE[^>]*>\s*)?", re.S)
 
 
 def figure_svg(exercise: Exercise, variant: Variant) -> str | None:
-    """The variant's figure as a standalone SVG document, or ``None`` without a figure."""
+    """The variant's figure as a standalone SVG document, or ``None`` without a figure.
+    A figure function that fails raises a one-line
+    :class:`~dynagrade.exercise.figure_checks.FigureError` (exercise, file, line)."""
     if exercise.figure is None:
         return None
+    with reported_figure_failure(exercise, variant.seed):
+        return _rendered_svg(exercise, variant)
+
+
+def _rendered_svg(exercise: Exercise, variant: Variant) -> str:
     import sys
 
     import matplotlib
@@ -71,8 +79,15 @@ def tight_box(figure, pad: float):
 
 
 def figure_title(exercise: Exercise) -> str:
-    """The name of an exercise's figure, as a screen reader announces it."""
-    return f"{exercise.title}: figure drawn to scale"
+    """The name of an exercise's figure, as a screen reader announces it: whether it is
+    drawn to scale is the exercise's ``figure_to_scale``."""
+    return f"{exercise.title}: figure, {scale_phrase(exercise.figure_to_scale)}"
+
+
+def scale_phrase(to_scale: bool) -> str:
+    """What a caption says of a figure's scale: "drawn to scale" only for a figure whose
+    exercise declares ``figure_to_scale=True``."""
+    return "drawn to scale" if to_scale else "schematic, not to scale"
 
 
 def inline_svg(svg: str, id_prefix: str = "") -> str:
