@@ -20,8 +20,9 @@ from collections.abc import Iterator
 def formula_problems(exercise) -> Iterator[tuple[str, str]]:
     """``(part name, problem)`` for every formula of the exercise's Symbolic parts that
     the grader cannot read in the part's variables."""
+    # a part that declares variables holds formulas in them (the Symbolic kind)
     formulas = [(part, "expected formula", getattr(part, "expected", None))
-                for part in exercise.parts if getattr(part, "kind", "") == "symbolic"]
+                for part in exercise.parts if getattr(part, "variables", None) is not None]
     formulas += [(part, f"misconception {m.name!r}", m.value)
                  for part, _, _ in list(formulas) for m in part.misconceptions
                  if isinstance(m.value, str)]
