@@ -64,6 +64,8 @@ FIGURED = textwrap.dedent('''\
     )
 ''')
 RAISING = FIGURED.format(id="raising-figure", body="axes.plot(p.nothing)")  # line 8
+BAD_MATH = FIGURED.format(id="bad-math-figure", body='axes.text(0, 1, "$\\\\frac{a$")')
+CONTROL_CHARACTER = FIGURED.format(id="control-figure", body='axes.text(0, 1, "a\\x01b")')
 TELLING = FIGURED.format(id="telling-figure",
                          body='axes.text(0, 1, "y = {y:g} m".format(y=2 * p.x))')
 
@@ -263,6 +265,29 @@ def test_verify_passes_a_figure_that_labels_given_values_only(run, tmp_path):
                  "--allow-missing-solutions")
     assert result.exit_code == 0, result.output
     assert "1 of 1 exercises passed" in result.output
+
+
+def test_a_label_whose_math_fails_when_rendered_is_named_at_the_figure_function(
+        run, tmp_path):
+    # matplotlib reads the label's $...$ only when the figure is saved, outside the
+    # exercise file: the line named is the one of "def draw" (line 5)
+    folder = _folder(tmp_path, bad_math=BAD_MATH)
+    assert '"$\\\\frac{a$"' in BAD_MATH.splitlines()[7]
+    result = run(main, "--exercises", folder, "verify", "bad-math-figure", "--variants", 1,
+                 "--allow-missing-solutions")
+    assert result.exit_code == 1 and "Traceback" not in result.output
+    assert f"{folder / 'bad_math.py'}, line 5: exercise 'bad-math-figure', seed 0: the " \
+           "figure fails: ValueError" in result.output
+
+
+def test_a_label_with_a_control_character_makes_svg_that_is_not_well_formed(run, tmp_path):
+    # XML 1.0 allows no U+0001 in text, even escaped: the SVG's description carries it
+    folder = _folder(tmp_path, control=CONTROL_CHARACTER)
+    result = run(main, "--exercises", folder, "verify", "control-figure", "--variants", 1,
+                 "--allow-missing-solutions")
+    assert result.exit_code == 1
+    assert "seed 0: the figure is not well formed SVG: not well-formed (invalid token)" \
+        in result.output
 
 
 def test_a_figure_that_is_not_well_formed_svg_fails_verify(tmp_path):
