@@ -25,8 +25,6 @@ GOOD = textwrap.dedent('''\
     )
 ''')
 
-NOT_KEBAB = GOOD.format(id="Fine_Exercise")  # the id is written on line 4
-
 UNKNOWN_NAME = textwrap.dedent('''\
     from dynagrade.exercise import Exercise, Numeric, Symbolic, Uniform
 
@@ -149,13 +147,15 @@ def test_a_file_that_defines_no_exercise_is_named_by_every_command(run, tmp_path
         assert "name starting with '_'" in line, command
 
 
-def test_an_id_that_is_not_kebab_case_is_named_with_its_file_and_line(run, tmp_path):
+@pytest.mark.parametrize("bad_id", ["Fine_Exercise", "fine--exercise"])
+def test_an_id_that_is_not_kebab_case_is_named_with_its_file_and_line(run, tmp_path,
+                                                                       bad_id):
     _make_sheet(run, _folder(tmp_path), tmp_path, "fine-exercise")
-    folder = _folder(tmp_path, shouting=NOT_KEBAB)
+    folder = _folder(tmp_path, shouting=GOOD.format(id=bad_id))
     for command, result in _every_command(run, folder, tmp_path).items():
         line = _error_line(result)
         # the frame in the file is the Exercise(...) call, on line 3
-        assert f"{folder / 'shouting.py'}, line 3: exercise id 'Fine_Exercise' is not " \
+        assert f"{folder / 'shouting.py'}, line 3: exercise id '{bad_id}' is not " \
                "kebab-case" in line, command
 
 

@@ -35,7 +35,7 @@ from .model import Exercise
 from .source_lines import line_of_error, line_of_string
 
 ENVIRONMENT_VARIABLE = "DYNAGRADE_EXERCISES"
-_DECLARED_ID = re.compile(r"""\bid\s*=\s*["']([a-z0-9-]+)["']""")
+_DECLARED_ID = re.compile(r"""\bid\s*=\s*["']([a-z0-9]+(?:-[a-z0-9]+)*)["']""")
 
 
 class ExerciseFileError(DynagradeError):
