@@ -13,17 +13,39 @@ from click.testing import CliRunner
 
 from dynagrade.cli import grade_main, main
 
-GOOD = textwrap.dedent('''\
+EXERCISE_FILE = textwrap.dedent('''\
     from dynagrade.exercise import Exercise, Numeric, Uniform
-
+    {draw}
     EXERCISE = Exercise(
-        id="{id}", title="Fine", source="Example 1.1",
-        params=(Uniform("x", 1, 2, step=0.5, unit="m"),),
+        id="{id}", title="An exercise", source="Example 1.1",
+        params=(Uniform("x", 1, 2, step=0.25, unit="m"),),
         statement="The length is x = {{{{ x }}}}.",
         solve=lambda p: {{"y": 2 * p.x}},
-        parts=(Numeric("y", unit="m"),),
+        parts=(Numeric("y", unit="m"),),{figure}
     )
-''')
+''')  # without a figure: the Exercise(...) call is on line 3, its id on line 4
+
+DRAW = textwrap.dedent('''\
+    from dynagrade.exercise.figure import arrow, new_drawing
+
+
+    def draw(p):
+        figure, axes = new_drawing()
+        arrow(axes, (0, 0), (p.x, 0), "x = {{x}} m".format(x=p.x))
+        {body}
+        return figure
+
+''')  # in the exercise file: "def draw" on line 5, the body on line 8
+
+
+def exercise_file(exercise_id: str, figure_body: str | None = None) -> str:
+    """An exercise file of one parameter x and one answer y = 2 x; with ``figure_body``,
+    a figure that labels x and then runs that line."""
+    if figure_body is None:
+        return EXERCISE_FILE.format(id=exercise_id, draw="", figure="")
+    draw = DRAW.format(body=figure_body).rstrip("\n") + "\n\n"
+    return EXERCISE_FILE.format(id=exercise_id, draw=draw, figure="\n    figure=draw,")
+
 
 UNKNOWN_NAME = textwrap.dedent('''\
     from dynagrade.exercise import Exercise, Numeric, Symbolic, Uniform
@@ -40,32 +62,10 @@ UNKNOWN_NAME = textwrap.dedent('''\
     )
 ''')  # the part y_formula is written on line 10, and k is no variable of it
 
-FIGURED = textwrap.dedent('''\
-    from dynagrade.exercise import Exercise, Numeric, Uniform
-    from dynagrade.exercise.figure import arrow, new_drawing
-
-
-    def draw(p):
-        figure, axes = new_drawing()
-        arrow(axes, (0, 0), (p.x, 0), "x = {{x}} m".format(x=p.x))
-        {body}
-        return figure
-
-
-    EXERCISE = Exercise(
-        id="{id}", title="Figured", source="Example 1.1",
-        params=(Uniform("x", 1, 2, step=0.25, unit="m"),),
-        statement="The length is x = {{{{ x }}}}.",
-        solve=lambda p: {{"y": 2 * p.x}},
-        parts=(Numeric("y", unit="m"),),
-        figure=draw,
-    )
-''')
-RAISING = FIGURED.format(id="raising-figure", body="axes.plot(p.nothing)")  # line 8
-BAD_MATH = FIGURED.format(id="bad-math-figure", body='axes.text(0, 1, "$\\\\frac{a$")')
-CONTROL_CHARACTER = FIGURED.format(id="control-figure", body='axes.text(0, 1, "a\\x01b")')
-TELLING = FIGURED.format(id="telling-figure",
-                         body='axes.text(0, 1, "y = {y:g} m".format(y=2 * p.x))')
+RAISING = exercise_file("raising-figure", "axes.plot(p.nothing)")
+BAD_MATH = exercise_file("bad-math-figure", 'axes.text(0, 1, "$\\\\frac{a$")')
+CONTROL_CHARACTER = exercise_file("control-figure", 'axes.text(0, 1, "a\\x01b")')
+TELLING = exercise_file("telling-figure", 'axes.text(0, 1, "y = {y:g} m".format(y=2 * p.x))')
 
 
 @pytest.fixture
@@ -92,7 +92,7 @@ def _error_line(result) -> str:
 
 def _folder(tmp_path, **files) -> object:
     """An exercise folder with a good exercise beside the given files."""
-    (tmp_path / "fine.py").write_text(GOOD.format(id="fine-exercise"), encoding="utf-8")
+    (tmp_path / "fine.py").write_text(exercise_file("fine-exercise"), encoding="utf-8")
     for name, text in files.items():
         (tmp_path / f"{name}.py").write_text(text, encoding="utf-8")
     return tmp_path
@@ -151,7 +151,7 @@ def test_a_file_that_defines_no_exercise_is_named_by_every_command(run, tmp_path
 def test_an_id_that_is_not_kebab_case_is_named_with_its_file_and_line(run, tmp_path,
                                                                        bad_id):
     _make_sheet(run, _folder(tmp_path), tmp_path, "fine-exercise")
-    folder = _folder(tmp_path, shouting=GOOD.format(id=bad_id))
+    folder = _folder(tmp_path, shouting=exercise_file(bad_id))
     for command, result in _every_command(run, folder, tmp_path).items():
         line = _error_line(result)
         # the frame in the file is the Exercise(...) call, on line 3
@@ -161,7 +161,7 @@ def test_an_id_that_is_not_kebab_case_is_named_with_its_file_and_line(run, tmp_p
 
 def test_two_files_with_one_id_are_both_named_with_their_lines(run, tmp_path):
     _make_sheet(run, _folder(tmp_path), tmp_path, "fine-exercise")
-    folder = _folder(tmp_path, copy=GOOD.format(id="fine-exercise"))
+    folder = _folder(tmp_path, copy=exercise_file("fine-exercise"))
     for command, result in _every_command(run, folder, tmp_path).items():
         line = _error_line(result)
         assert f"exercise id 'fine-exercise' is declared by both {folder / 'copy.py'}, " \
@@ -260,7 +260,7 @@ def test_verify_fails_a_figure_that_shows_a_reference_answer(run, tmp_path):
 
 
 def test_verify_passes_a_figure_that_labels_given_values_only(run, tmp_path):
-    folder = _folder(tmp_path, plain=FIGURED.format(id="plain-figure", body="pass"))
+    folder = _folder(tmp_path, plain=exercise_file("plain-figure", "pass"))
     result = run(main, "--exercises", folder, "verify", "plain-figure", "--variants", 3,
                  "--allow-missing-solutions")
     assert result.exit_code == 0, result.output
@@ -294,7 +294,7 @@ def test_a_figure_that_is_not_well_formed_svg_fails_verify(tmp_path):
     from dynagrade.exercise import open_bank
     from dynagrade.exercise.verify import verify_exercise
 
-    folder = _folder(tmp_path, plain=FIGURED.format(id="plain-figure", body="pass"))
+    folder = _folder(tmp_path, plain=exercise_file("plain-figure", "pass"))
     exercise = open_bank([folder]).get("plain-figure")
     broken = verify_exercise(exercise, range(1),
                              render_figure=lambda e, v: "<svg><g></svg>")
