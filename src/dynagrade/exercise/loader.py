@@ -8,10 +8,11 @@ shipped exercise by copying it; two files with one id in the same folder tree ar
 
 Every ``.py`` file below an exercise folder is an exercise file, except ``__init__.py``
 and any file whose name starts with ``_`` (helper modules an exercise may import). A
-file that defines no exercise, an id that is not kebab-case, two files with one id, a
-Symbolic part whose expected formula names something that is not one of its variables:
-each is an :class:`ExerciseFileError` of one line that names the file and the line,
-raised whichever command looks at the bank (nothing is skipped in silence).
+file that defines no exercise, an id that is not kebab-case, two files with one id: each
+is an :class:`ExerciseFileError` of one line naming the file and line, raised by every
+command that looks at the bank (nothing is skipped in silence). A Symbolic formula that
+names what is not one of its part's variables is one too, raised when the file is loaded
+(``dynagrade list`` reads files without loading them where it can).
 
 Exercise files are the authors' code and are imported; students' files never are.
 """
@@ -104,10 +105,11 @@ def load_file(path: str | os.PathLike) -> Exercise:
         raise ExerciseFileError(
             f"{path}: defines no EXERCISE = Exercise(...); a helper module of an exercise "
             "folder has a name starting with '_'")
-    for part_name, problem in formula_problems(exercise):
-        line = line_of_string(source, part_name) or "?"
-        raise ExerciseFileError(f"{path}, line {line}: exercise {exercise.id!r}, part "
-                                f"{part_name!r}: {problem}")
+    unreadable = next(formula_problems(exercise), None)
+    if unreadable is not None:
+        part_name, problem = unreadable
+        raise ExerciseFileError(f"{path}, line {line_of_string(source, part_name) or '?'}: "
+                                f"exercise {exercise.id!r}, part {part_name!r}: {problem}")
     object.__setattr__(exercise, "path", str(path))
     object.__setattr__(exercise, "fingerprint", fingerprint)
     for stale in [name for name in sys.modules if name.startswith(f"dynagrade_exercise_{place}_")]:
