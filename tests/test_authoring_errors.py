@@ -174,28 +174,35 @@ def test_an_unknown_name_in_an_expected_formula_is_named_with_its_part_and_line(
     _make_sheet(run, readable, tmp_path, "unknown-name")
     folder = _folder(tmp_path, formula=UNKNOWN_NAME)
     results = _every_command(run, folder, tmp_path, "unknown-name")
-    # list reads files without running them (docs/authoring.md): it lists the exercise;
-    # every command that loads it names the formula
-    assert results["list"].exit_code == 0 and "unknown-name" in results["list"].output
-    for command in ("show", "verify", "exam", "grade", "grade FILE"):
-        line = _error_line(results[command])
+    for command, result in results.items():
+        line = _error_line(result)
         assert f"{folder / 'formula.py'}, line 10: exercise 'unknown-name', part " \
                "'y_formula': the expected formula '2*x*k' cannot be read" in line, command
         assert "'k'" in line, command
 
 
-def test_a_misconception_formula_with_an_unknown_name_is_named(tmp_path):
+MISCONCEIVED = UNKNOWN_NAME.replace(
+    'expected="2*x*k"', 'expected="2*x", misconceptions=(Misconception("half", "x/q", '
+    '"half of it"),)').replace("Exercise, Numeric,", "Exercise, Misconception, Numeric,")
+COMPUTED_VARIABLES = UNKNOWN_NAME.replace('variables=("x",)', 'variables=tuple("x")')
+
+
+@pytest.mark.parametrize("text, what", [
+    (MISCONCEIVED, "misconception 'half' 'x/q'"),
+    (COMPUTED_VARIABLES, "expected formula '2*x*k'")])
+def test_list_and_the_loader_name_an_unreadable_formula_however_it_is_written(
+        run, tmp_path, text, what):
+    # the listing reads a misconception's formula from the text; variables computed by
+    # the file make list load the file, which checks the formula all the same
     from dynagrade.exercise import ExerciseFileError, load_file
 
-    text = UNKNOWN_NAME.replace('expected="2*x*k"', 'expected="2*x", misconceptions=('
-                                'Misconception("half", "x/q", "half of it"),)')
-    text = text.replace("Exercise, Numeric,", "Exercise, Misconception, Numeric,")
-    path = tmp_path / "misconceived.py"
-    path.write_text(text, encoding="utf-8")
+    folder = _folder(tmp_path, formula=text)
+    expected = f"{folder / 'formula.py'}, line 10: exercise 'unknown-name', part " \
+               f"'y_formula': the {what} cannot be read"
+    assert expected in _error_line(run(main, "--exercises", folder, "list"))
     with pytest.raises(ExerciseFileError) as error:
-        load_file(path)
-    assert f"{path}, line 10: exercise 'unknown-name', part 'y_formula': the " \
-           "misconception 'half' 'x/q' cannot be read" in str(error.value)
+        load_file(folder / "formula.py")
+    assert expected in str(error.value)
 
 
 def test_helper_modules_and_init_files_are_tolerated(run, tmp_path):

@@ -11,8 +11,9 @@ and any file whose name starts with ``_`` (helper modules an exercise may import
 file that defines no exercise, an id that is not kebab-case, two files with one id: each
 is an :class:`ExerciseFileError` of one line naming the file and line, raised by every
 command that looks at the bank (nothing is skipped in silence). A Symbolic formula that
-names what is not one of its part's variables is one too, raised when the file is loaded
-(``dynagrade list`` reads files without loading them where it can).
+names what is not one of its part's variables is one too, raised when the file is loaded,
+and by ``dynagrade list`` (which reads files without running them) where the file writes
+the formula and the variables' names as literals.
 
 Exercise files are the authors' code and are imported; students' files never are.
 """
@@ -30,7 +31,7 @@ from pathlib import Path
 from typing import Iterable, Iterator
 
 from ..errors import DynagradeError, UnknownExercise
-from .formula_check import formula_problems
+from .formula_check import formula_problems, written_formula_problems
 from .listing import ExerciseListing, read_listing
 from .model import Exercise
 from .source_lines import line_of_error, line_of_string
@@ -105,17 +106,24 @@ def load_file(path: str | os.PathLike) -> Exercise:
         raise ExerciseFileError(
             f"{path}: defines no EXERCISE = Exercise(...); a helper module of an exercise "
             "folder has a name starting with '_'")
-    unreadable = next(formula_problems(exercise), None)
-    if unreadable is not None:
-        part_name, problem = unreadable
-        raise ExerciseFileError(f"{path}, line {line_of_string(source, part_name) or '?'}: "
-                                f"exercise {exercise.id!r}, part {part_name!r}: {problem}")
+    _require_readable_formulas(path, exercise.id, formula_problems(exercise))
     object.__setattr__(exercise, "path", str(path))
     object.__setattr__(exercise, "fingerprint", fingerprint)
     for stale in [name for name in sys.modules if name.startswith(f"dynagrade_exercise_{place}_")]:
         del sys.modules[stale]
     sys.modules[module_name] = module
     return exercise
+
+
+def _require_readable_formulas(path: Path, exercise_id: str, problems) -> None:
+    """Raise the first of ``problems`` (``(part name, problem)``) as the file's error,
+    at the line where the part's name is written."""
+    unreadable = next(iter(problems), None)
+    if unreadable is not None:
+        part_name, problem = unreadable
+        line = line_of_string(path.read_bytes(), part_name) or "?"
+        raise ExerciseFileError(f"{path}, line {line}: exercise {exercise_id!r}, part "
+                                f"{part_name!r}: {problem}")
 
 
 class _SourceLoader(importlib.abc.SourceLoader):
@@ -200,6 +208,8 @@ class Bank:
         listings = {}
         for path in sorted(set(self._index().values())):
             listing = read_listing(path) or ExerciseListing.of(load_file(path))
+            _require_readable_formulas(Path(path), listing.id,
+                                       written_formula_problems(listing.formulas))
             listings.setdefault(listing.id, listing)
         return sorted(listings.values(), key=_listing_order)
 
