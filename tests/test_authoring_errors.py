@@ -63,7 +63,7 @@ UNKNOWN_NAME = textwrap.dedent('''\
 ''')  # the part y_formula is written on line 10, and k is no variable of it
 
 RAISING = exercise_file("raising-figure", "axes.plot(p.nothing)")
-BAD_MATH = exercise_file("bad-math-figure", 'axes.text(0, 1, "$\\\\frac{a$")')
+NO_FIGURE = exercise_file("no-figure", "figure = None")
 CONTROL_CHARACTER = exercise_file("control-figure", 'axes.text(0, 1, "a\\x01b")')
 TELLING = exercise_file("telling-figure", 'axes.text(0, 1, "y = {y:g} m".format(y=2 * p.x))')
 
@@ -274,17 +274,17 @@ def test_verify_passes_a_figure_that_labels_given_values_only(run, tmp_path):
     assert "1 of 1 exercises passed" in result.output
 
 
-def test_a_label_whose_math_fails_when_rendered_is_named_at_the_figure_function(
+def test_a_figure_that_fails_outside_the_exercise_file_is_named_at_its_def_line(
         run, tmp_path):
-    # matplotlib reads the label's $...$ only when the figure is saved, outside the
-    # exercise file: the line named is the one of "def draw" (line 5)
-    folder = _folder(tmp_path, bad_math=BAD_MATH)
-    assert '"$\\\\frac{a$"' in BAD_MATH.splitlines()[7]
-    result = run(main, "--exercises", folder, "verify", "bad-math-figure", "--variants", 1,
+    # a figure function that returns no figure fails where the figure is rendered, in
+    # dynagrade's code: the line named is the one of "def draw" (line 5)
+    folder = _folder(tmp_path, no_figure=NO_FIGURE)
+    assert NO_FIGURE.splitlines()[4] == "def draw(p):"
+    result = run(main, "--exercises", folder, "verify", "no-figure", "--variants", 1,
                  "--allow-missing-solutions")
     assert result.exit_code == 1 and "Traceback" not in result.output
-    assert f"{folder / 'bad_math.py'}, line 5: exercise 'bad-math-figure', seed 0: the " \
-           "figure fails: ValueError" in result.output
+    assert f"{folder / 'no_figure.py'}, line 5: exercise 'no-figure', seed 0: the " \
+           "figure fails: AttributeError" in result.output
 
 
 def test_a_label_with_a_control_character_makes_svg_that_is_not_well_formed(run, tmp_path):
