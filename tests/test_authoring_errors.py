@@ -7,6 +7,7 @@ answer or that is not well formed SVG."""
 from __future__ import annotations
 
 import textwrap
+from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
@@ -90,7 +91,7 @@ def _error_line(result) -> str:
     return errors[0]
 
 
-def _folder(tmp_path, **files) -> object:
+def _folder(tmp_path, **files) -> Path:
     """An exercise folder with a good exercise beside the given files."""
     (tmp_path / "fine.py").write_text(exercise_file("fine-exercise"), encoding="utf-8")
     for name, text in files.items():
