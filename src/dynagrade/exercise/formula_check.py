@@ -3,9 +3,9 @@
 A Symbolic part's ``expected`` formula (and each of its misconceptions written as a
 formula) is the author's text, read by the grader's own parser in the part's declared
 variables only when a student's answer is graded. A name that is not one of those
-variables (``k`` in ``2*x*k`` when only ``x`` is declared) would end grading, or make a
-misconception that never matches; the loader reports it when the file is loaded, and
-``dynagrade list`` from the file's text (:mod:`.listing` reads the same formulas).
+variables (``k`` in ``2*x*k`` when only ``x`` is declared) would end that grading with
+an error; the loader reports it when the file is loaded, and ``dynagrade list`` from the
+file's text (:mod:`.listing` reads the same formulas).
 
 A formula is given as ``(part name, what, text, variable names)``, ``what`` naming it in
 the message ("expected formula", "misconception 'half'").
