@@ -20,7 +20,7 @@ def figure(p):
     angle of Section 3.1.1 (l sin beta = r sin theta) and the slider B on the line through O.
     The crank is short beside the rod, so the drawing names r, l, theta and n and lists
     their values underneath."""
-    from matplotlib.patches import Circle, Polygon
+    from dynagrade.exercise.figure import Circle, Polygon
 
     beta = rk.connecting_rod_angle(p.r, p.l, p.theta)
     a = p.r * np.array([np.cos(p.theta), np.sin(p.theta)])

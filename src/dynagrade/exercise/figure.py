@@ -28,10 +28,6 @@ Usage::
 
 from __future__ import annotations
 
-from .colours import to_rgb
-from .drawing import Drawing
-from .shapes import Circle, Ellipse, Polygon, Rectangle
-
 __all__ = ["Circle", "Ellipse", "Polygon", "Rectangle", "angle_arc", "arrow", "block",
            "ceiling", "damper", "describe", "dimension", "direction_words", "figure_notes",
            "ground", "inclined_plane", "new_drawing", "pivot", "spring", "wall"]
@@ -87,8 +83,21 @@ def new_drawing(width: float = 5.0, height: float = 3.0):
     ``text``, ``annotate``, ``add_patch``, ``set_xlim`` …, see
     :mod:`dynagrade.exercise.drawing`) and record them; the SVG is written from the record
     (:func:`dynagrade.render.figures.figure_svg`)."""
+    from .drawing import Drawing
+
     drawing = Drawing(width, height)
     return drawing, drawing.axes[0]
+
+
+def __getattr__(name: str):
+    """The shapes (:class:`Circle`, :class:`Ellipse`, :class:`Polygon`,
+    :class:`Rectangle`), imported when first asked for: an exercise file that only names
+    the helpers loads no drawing code until it draws."""
+    if name in ("Circle", "Ellipse", "Polygon", "Rectangle"):
+        from . import shapes
+
+        return getattr(shapes, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def arrow(axes, start, end, label: str = "", offset=(0.0, 0.0), color="C0") -> None:
@@ -231,6 +240,8 @@ def block(axes, center, width: float, height: float, label: str = "", angle: flo
     ``angle`` (rad, counter-clockwise), with ``label`` written inside."""
     import numpy as np
 
+    from .shapes import Polygon
+
     c, s = np.cos(angle), np.sin(angle)
     corners = [(-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5)]
     points = [(center[0] + c * u * width - s * v * height,
@@ -246,6 +257,8 @@ def block(axes, center, width: float, height: float, label: str = "", angle: flo
 def _label_colour(face) -> str:
     """White or black, whichever contrasts more with the colour ``face`` (WCAG 2.1
     relative luminance), for a label written on it."""
+    from .colours import to_rgb
+
     def linear(c):
         return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
 
@@ -258,6 +271,8 @@ def pivot(axes, point, size: float) -> None:
     """A fixed pin support at ``point``: the pin as a small circle on a triangle of height
     ``size`` hanging from a hatched base above it (for bodies hanging from the pin)."""
     import numpy as np
+
+    from .shapes import Circle, Polygon
 
     x, y = point
     axes.add_patch(Polygon([(x, y), (x - 0.6 * size, y + size), (x + 0.6 * size, y + size)],
@@ -296,6 +311,7 @@ def inclined_plane(alpha: float, length: float = 1.0):
     import numpy as np
 
     from .numbers import format_number
+    from .shapes import Polygon
 
     along = np.array([np.cos(alpha), np.sin(alpha)])
     normal = np.array([-np.sin(alpha), np.cos(alpha)])
