@@ -1,21 +1,20 @@
 """Every exercise figure in the bank renders to well-formed SVG, the same bytes each time,
-and labels no reference answer of its variant."""
+and labels no reference answer of its variant; its caption says "drawn to scale" only
+when its exercise declares it so."""
 
 from __future__ import annotations
 
 import dataclasses
-import math
-import re
 import xml.etree.ElementTree as ET
 
 import pytest
 
 from dynagrade.exercise import open_bank
-from dynagrade.render.figures import figure_svg
+from dynagrade.exercise.figure_checks import given_away
+from dynagrade.render.figures import figure_svg, figure_title
 from dynagrade.exercise.numbers import format_number
 
 SEEDS = (0, 1, 2)
-_NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e-?\d+)?")
 _FIGURED = sorted(e.id for e in open_bank().listing() if e.figured)  # no file is run
 
 
@@ -27,35 +26,10 @@ def _label_texts(exercise, variant) -> list[str]:
             if element.tag.rsplit("}", 1)[-1] == "text"]
 
 
-def _answer_numbers(exercise, variant) -> set[str]:
-    """Every numeric reference answer of the variant, printed as the sheets print numbers,
-    both in the part's unit and in SI."""
-    in_si = exercise.solve(exercise.si(variant.params))
-    printed = set()
-    for answers in (variant.answers, in_si):
-        for name, value in answers.items():
-            values = value if isinstance(value, (tuple, list)) else (value,)
-            for number in values:
-                if isinstance(number, (int, float)) and not isinstance(number, bool) \
-                        and math.isfinite(number):
-                    printed.add(format_number(float(number)))
-    return printed
-
-
-def _given_numbers(exercise, variant) -> set[str]:
-    """The parameters as the statement prints them (declared units) and in SI: a label
-    showing one of them gives nothing away, even when an answer happens to share it."""
-    in_si = exercise.si(variant.params)
-    return {format_number(float(value)) for name, value in variant.params.items()} \
-        | {format_number(float(getattr(in_si, name))) for name in variant.params}
-
-
 def _given_away(exercise, variant) -> set[str]:
-    """The answers that appear as a number in one of the figure's labels, other than the
-    given values."""
-    shown = {number for text in _label_texts(exercise, variant)
-             for number in _NUMBER.findall(text.replace("\u2212", "-"))}
-    return _answer_numbers(exercise, variant) & (shown - _given_numbers(exercise, variant))
+    """The answers that the rendered figure's text shows as a number, other than the
+    given values: the check ``dynagrade verify`` makes of any exercise's figure."""
+    return given_away(exercise, variant, figure_svg(exercise, variant))
 
 
 def test_a_dozen_or_more_exercises_across_the_chapters_have_figures():
@@ -95,3 +69,42 @@ def test_a_figure_that_prints_an_answer_is_caught(bank):
 
     assert _given_away(dataclasses.replace(exercise, figure=telling), variant) \
         == {format_number(exercise.solve(exercise.si(variant.params))["a"])}
+
+
+#: the figures whose given lengths and angles are drawn at their values on one scale, so
+#: that a proportion or an angle of the variant can be read off (docs/authoring.md); the
+#: others are schematics: nothing geometric given (two-cart, ballistic pendulum, the
+#: oscillators), or one given length with everything else in fixed proportion to it
+DRAWN_TO_SCALE = {
+    "oblique-wall-impact", "block-sliding-down-incline", "projectile-range",
+    "car-in-a-looping", "elastic-slingshot", "sliding-up-a-slope", "crank-slider-velocity",
+    "rolling-wheel-rim-velocity", "rod-struck-by-particle"}
+
+
+def test_the_bank_says_which_figures_are_drawn_to_scale(bank):
+    assert {exercise.id for exercise in bank.all() if exercise.figure is not None
+            and exercise.figure_to_scale} == DRAWN_TO_SCALE
+
+
+@pytest.mark.parametrize("exercise_id, words", [
+    ("car-in-a-looping", "drawn to scale"), ("ballistic-pendulum", "schematic, not to scale")])
+def test_the_figures_name_and_the_sheets_caption_follow_the_scale_flag(bank, exercise_id,
+                                                                        words):
+    from dynagrade.render.sheets import SheetExercise, StudentSheet, sheet_html, \
+        sheet_typst_body
+
+    exercise = bank.get(exercise_id)
+    variant = exercise.variant(0)
+    svg = figure_svg(exercise, variant)
+    assert figure_title(exercise) == f"{exercise.title}: figure, {words}"
+    assert f"<title id=\"figure-title\">{exercise.title}: figure, {words}</title>" in svg
+    entry = SheetExercise(1, exercise.id, exercise.title, exercise.source, 1.0,
+                          variant.statement, (), f"{exercise.id}.py", svg,
+                          f"figures/{exercise.id}.svg", exercise.figure_to_scale)
+    sheet = StudentSheet({"id": "e", "title": "E", "date": "2025-04-14",
+                          "instructions": "", "language": "en"}, "s1", "S", (entry,))
+    assert f"<figcaption>Figure 1: {exercise.title}, {words}.</figcaption>" in \
+        sheet_html(sheet)
+    assert f"caption: [{exercise.title}, {words}.]" in sheet_typst_body(sheet)
+    other = "schematic" if words == "drawn to scale" else "drawn to scale"
+    assert other not in sheet_html(sheet)

@@ -86,7 +86,7 @@ slides down (eq. (1.74)).
 4. **Formula.** $\ddot x_1$ = `{{ answers.a_formula }}`.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("a", "acceleration down the slope", question=1, unit="m/s^2", points=2,
                 misconceptions=(

@@ -116,7 +116,7 @@ $R(1 - \cos\varphi)$ above the entry (Example 1.13).
 6. **Formula.** $v_{0,\min}$ = `{{ answers.v_min_formula }}`.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("v_min_entry", "smallest entry speed", question=1, unit="m/s", points=2,
                 misconceptions=(

@@ -98,7 +98,7 @@ $v_n' = e\,v_n$ = {{ si.v_n_out }} m/s (with $e$ = {{ e }}) and $v_t' = v_t$.
 5. **Formula.** $\theta'$ = `{{ answers.theta_formula }}`.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("theta_out", "rebound angle", question=1, unit="deg", points=2,
                 misconceptions=(

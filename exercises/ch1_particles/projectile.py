@@ -91,7 +91,7 @@ $x_2(t) = v_0 t\sin\alpha - g t^2/2$.
 4. Step 1 as a formula: `{{ answers.x_max_formula }}`.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("x_max", "landing distance", question=1, unit="m", points=2,
                 misconceptions=(

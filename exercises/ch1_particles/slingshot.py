@@ -94,7 +94,7 @@ only force doing work, and it is conservative: the energy $T + V$ is conserved
 4. **Formula.** $v$ = `{{ answers.v_formula }}`.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("stretch", "stretch of the spring", question=1, unit="cm", points=1,
                 misconceptions=(

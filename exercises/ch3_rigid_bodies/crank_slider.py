@@ -147,7 +147,7 @@ $\beta$ = {{ si.beta | deg }}°.
    and the rod turns at $|\omega_{AB}|$ = {{ answers.omega_rod }}.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("v_B", "slider velocity", question=1, unit="m/s", points=2,
                 misconceptions=(

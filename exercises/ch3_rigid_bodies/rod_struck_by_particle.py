@@ -137,7 +137,7 @@ $v$ = {{ v }}, $d$ = {{ d }} and $e$ = {{ e }}: $\hat F$ = {{ si.impulse }} N·s
    so $d_P$ = {{ answers.d_percussion }}, whatever the ball and its speed.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("omega", "angular speed of the rod", question=1, unit="rad/s", points=2,
                 misconceptions=(

@@ -115,7 +115,7 @@ $\varphi$ = {{ phi }}.
 5. **As a formula.** From step 3, $|v_P|$ = `{{ answers.speed_formula }}`.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("omega", "angular speed", question=1, unit="rad/s", points=1),
         Vector("v_P", "velocity of P", question=2, unit="m/s", size=2, points=2,

@@ -103,12 +103,17 @@ def list_command(context, as_json):
 @click.option("--answers", is_flag=True, help="Show the reference answers too.")
 @click.option("--solution", is_flag=True, help="Show the worked solution too.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@click.option("--figure", "figure_file", type=click.Path(dir_okay=False, writable=True),
+              help="Also write the variant's figure to this SVG file.")
 @click.pass_obj
-def show(context, exercise_id, seed, student, settings, answers, solution, as_json):
-    """Show an exercise's variant: its statement, and on request its answers and worked
-    solution."""
+def show(context, exercise_id, seed, student, settings, answers, solution, as_json,
+         figure_file):
+    """Show an exercise's variant: its statement, and on request its answers, worked
+    solution and figure."""
     exercise = context.exercise(exercise_id)
     variant = _variant(exercise, seed, student, settings, force=None)
+    if figure_file:
+        _write_figure(exercise, variant, figure_file)
     worked = _solution(exercise, variant) if solution else None
     if as_json:
         data = variant.to_json()
@@ -193,10 +198,11 @@ def sheet(context, exercise_id, student, output, solution):
                    "(default: it fails once every exercise of the shipped bank has one).")
 @click.pass_obj
 def verify(context, exercise_ids, variants, require_solutions):
-    """Check exercises for variants that cannot tell right from wrong, and their worked
-    solutions."""
+    """Check exercises for variants that cannot tell right from wrong, their worked
+    solutions and every variant's figure."""
     from .exercise.solution_check import bank_is_complete
     from .exercise.verify import verify_exercise
+    from .render.figures import figure_svg
     from .render.solutions import math_problems
     from .render.terminal import verify_progress
 
@@ -205,7 +211,8 @@ def verify(context, exercise_ids, variants, require_solutions):
     if require_solutions is None:
         require_solutions = bank_is_complete()
     reports = verify_progress(exercises, lambda e: verify_exercise(
-        e, range(variants), require_solution=require_solutions, math_check=math_problems))
+        e, range(variants), require_solution=require_solutions, math_check=math_problems,
+        render_figure=figure_svg))
     if any(not r.ok for r in reports):
         sys.exit(1)
 
@@ -458,6 +465,22 @@ def _variant(exercise, seed, student, settings, force=False):
     for warning in variant.warnings:
         click.echo(f"warning: the values set break the constraint '{warning}'", err=True)
     return variant
+
+
+def _write_figure(exercise, variant, figure_file) -> None:
+    """Write the variant's figure as SVG to ``figure_file``; an error when the exercise
+    draws none."""
+    from .render.figures import figure_svg
+
+    svg = figure_svg(exercise, variant)
+    if svg is None:
+        raise click.ClickException(f"{exercise.id} draws no figure (it has no figure=)")
+    try:
+        Path(figure_file).write_text(svg, encoding="utf-8")
+    except OSError as error:
+        raise click.ClickException(f"cannot write {figure_file}: {error.strerror}") from None
+    click.echo(f"wrote {figure_file}: the figure of {exercise.id}, seed {variant.seed}",
+               err=True)
 
 
 def _solution(exercise, variant) -> str | None:

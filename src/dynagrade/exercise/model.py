@@ -61,7 +61,9 @@ class Exercise:
     reference answer of every non-symbolic part, in SI, by calling the mechanics core;
     it may return extra keys beside the parts' names (intermediate quantities for the
     worked ``solution``, never graded). ``solution`` is a jinja2 template of Markdown
-    (:mod:`.solution`).
+    (:mod:`.solution`). ``figure(p)`` draws the variant; ``figure_to_scale`` says whether
+    its lengths and angles are those of the variant (the caption says "drawn to scale"
+    only then) or it is a schematic.
 
     The loader sets ``path`` (the file it came from) and ``fingerprint`` (the SHA-256 of
     that file's bytes): the exercise's identity, the key for anything cached about it.
@@ -78,6 +80,7 @@ class Exercise:
     constraints: tuple[Constraint, ...] = ()
     chapter: int | None = None
     figure: Callable[[ParamValues], Any] | None = None
+    figure_to_scale: bool = False
     solution: str | None = None
     path: str | None = field(default=None, compare=False)
     fingerprint: str | None = field(default=None, compare=False)

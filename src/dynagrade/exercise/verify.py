@@ -11,7 +11,10 @@ is shown in the statement under a name the grader accepts (:mod:`.asked`). What 
 (:mod:`.solution_check`), its math once per exercise by ``math_check`` (the render
 layer's, handed in by the command); an exercise without a solution is a finding when
 ``require_solution`` is set (the command sets it once the shipped bank is complete, or
-on request), otherwise a note.
+on request), otherwise a note. With ``render_figure`` (the render layer's SVG writer,
+handed in by the command as ``math_check`` is), every variant's figure is drawn and
+checked (:mod:`.figure_checks`): it does not fail, its SVG is well formed, and its text
+shows no reference answer.
 """
 
 from __future__ import annotations
@@ -21,6 +24,7 @@ from typing import Callable, Iterable
 
 from ..grading import grade
 from .asked import question_problems, unshown_variables
+from .figure_checks import figure_problems
 from .model import ConstraintError, Exercise, Variant
 from .solution import SolutionError, render_solution
 from .solution_check import missing_solution, solution_problems
@@ -42,7 +46,9 @@ class VerifyReport:
 
 
 def verify_exercise(exercise: Exercise, seeds: Iterable[int], require_solution: bool = False,
-                    math_check: Callable[[str], list[str]] | None = None) -> VerifyReport:
+                    math_check: Callable[[str], list[str]] | None = None,
+                    render_figure: Callable[[Exercise, Variant], str | None] | None = None
+                    ) -> VerifyReport:
     """Every check of the module docstring, for each of ``seeds``."""
     report = VerifyReport(exercise.id)
     report.failures += static_problems(exercise)
@@ -62,6 +68,8 @@ def verify_exercise(exercise: Exercise, seeds: Iterable[int], require_solution: 
             continue
         report.failures += [f"seed {seed}: {p}" for p in variant_problems(exercise, variant)]
         report.failures += [f"seed {seed}: {p}" for p in solution_problems(exercise, variant)]
+        if render_figure is not None:
+            report.failures += figure_problems(exercise, variant, render_figure)
         if not math_checked:
             math_checked = True
             report.failures += [f"seed {seed}: solution: {p}"

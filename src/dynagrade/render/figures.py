@@ -20,6 +20,7 @@ import io
 import re
 
 from ..exercise.drawing import Drawing
+from ..exercise.figure_checks import reported_figure_failure
 from ..exercise.model import Exercise, Variant
 from .accessible_svg import accessible_svg, figure_description, prefixed_ids
 from .svg_figure import drawing_svg
@@ -32,15 +33,18 @@ _HEADER = re.compile(r"^\s*<\?xml[^>]*>\s*(<!DOCTYPE[^>]*>\s*)?", re.S)
 
 
 def figure_svg(exercise: Exercise, variant: Variant) -> str | None:
-    """The variant's figure as a standalone SVG document, or ``None`` without a figure."""
+    """The variant's figure as a standalone SVG document, or ``None`` without a figure.
+    A figure function that fails raises a one-line
+    :class:`~dynagrade.exercise.figure_checks.FigureError` (exercise, file, line)."""
     if exercise.figure is None:
         return None
-    figure = exercise.figure(exercise.si(variant.params))
-    if isinstance(figure, Drawing):
-        svg = drawing_svg(figure)
-    else:
-        svg = matplotlib_svg(figure)
-    return accessible_svg(svg, figure_title(exercise), figure_description(figure))
+    with reported_figure_failure(exercise, variant.seed):
+        figure = exercise.figure(exercise.si(variant.params))
+        if isinstance(figure, Drawing):
+            svg = drawing_svg(figure)
+        else:
+            svg = matplotlib_svg(figure)
+        return accessible_svg(svg, figure_title(exercise), figure_description(figure))
 
 
 def matplotlib_svg(figure) -> str:
@@ -80,8 +84,15 @@ def tight_box(figure, pad: float):
 
 
 def figure_title(exercise: Exercise) -> str:
-    """The name of an exercise's figure, as a screen reader announces it."""
-    return f"{exercise.title}: figure drawn to scale"
+    """The name of an exercise's figure, as a screen reader announces it: whether it is
+    drawn to scale is the exercise's ``figure_to_scale``."""
+    return f"{exercise.title}: figure, {scale_phrase(exercise.figure_to_scale)}"
+
+
+def scale_phrase(to_scale: bool) -> str:
+    """What a caption says of a figure's scale: "drawn to scale" only for a figure whose
+    exercise declares ``figure_to_scale=True``."""
+    return "drawn to scale" if to_scale else "schematic, not to scale"
 
 
 def inline_svg(svg: str, id_prefix: str = "") -> str:
