@@ -287,9 +287,12 @@ def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file, solution
                                solutions=solutions)
     for warning in report.warnings:
         click.echo(f"notice: {warning}", err=True)
+    for warning in report.skew:
+        click.echo(f"warning: {warning}", err=True)
+    warned = f"; {len(report.skew)} warning(s) above" if report.skew else ""
     click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
                f"({report.redraws} draws replaced because they could not discriminate; see "
-               f"manifest.json) in {report.timings['total']:.1f} s", err=True)
+               f"manifest.json{warned}) in {report.timings['total']:.1f} s", err=True)
 
 
 # -- grade exercise.py -------------------------------------------------------------------
