@@ -96,7 +96,7 @@ def test_with_applies_nothing_is_redrawn_and_both_answers_occur(tmp_path):
 def test_the_command_prints_each_warning_on_one_line_of_stderr(tmp_path):
     folder, exam, roster = _exam(tmp_path, regime=False)
     secret = tmp_path / "secret"
-    secret.write_text("fixed", encoding="utf-8")
+    secret.write_text("fixed-" * 6, encoding="utf-8")
     result = CliRunner().invoke(main, ["exam", str(exam), "--roster", str(roster), "-o",
                                        str(tmp_path / "out"), "--no-pdf", "--jobs", "1",
                                        "--exercises", str(folder),

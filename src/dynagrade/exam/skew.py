@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from collections import Counter
 
+from ..exercise.parts import PART_KINDS
 from ..exercise.redraws import REDRAW_WARNING, percent
 from .manifest import Manifest
 
@@ -37,7 +38,7 @@ def skew_warnings(manifest: Manifest) -> list[str]:
         if len(variants) < MIN_CLASS:
             continue
         for part in exercise.parts:
-            if part.kind == "symbolic":
+            if not PART_KINDS[part.kind].answer_varies:
                 continue
             answers = {_comparable(v.answers.get(part.name)) for v in variants}
             if len(answers) == 1:

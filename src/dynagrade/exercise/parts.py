@@ -81,6 +81,8 @@ class Part(ABC):
     kind = "part"
     #: the settings the exam manifest stores for parts of this kind (attribute names)
     manifest_fields: ClassVar[tuple[str, ...]] = ()
+    #: whether the reference answer follows the parameters (a formula is one for all)
+    answer_varies: ClassVar[bool] = True
 
     def __post_init__(self):
         if not self.name.isidentifier():
@@ -261,6 +263,7 @@ class Symbolic(Part):
     form_credit: float = 0.5
 
     kind = "symbolic"
+    answer_varies = False
 
     def reference(self, solved):
         return self.expected
