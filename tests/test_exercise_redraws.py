@@ -134,3 +134,50 @@ def test_more_than_a_tenth_redrawn_is_too_many():
     assert not share.too_many  # exactly 10 %
     share.record(["coincides"])
     assert share.too_many
+
+
+# -- the bank: misconceptions limited to where they are mistakes, instead of constraints
+# that kept a band of the parameters away from every class -------------------------------
+
+REGIMES = [
+    # (exercise, part, misconception, where it coincides with the key, where it does not)
+    ("peak-height-by-energy", "v_top", "sin for cos", {"alpha": 45}, {"alpha": 30}),
+    ("block-sliding-down-incline", "a", "sin and cos swapped", {"alpha": 45, "mu": 0.3},
+     {"alpha": 30, "mu": 0.3}),
+    ("projectile-range", "x_max", "sin(alpha) for sin(2 alpha)", {"alpha": 60},
+     {"alpha": 30}),
+]
+
+
+@pytest.mark.parametrize("exercise_id, part, name, coinciding, distinct", REGIMES)
+def test_where_the_misconception_equals_the_key_the_variant_is_handed_out(
+        bank, exercise_id, part, name, coinciding, distinct):
+    exercise = bank.get(exercise_id)
+    variant = exercise.variant(0, coinciding)
+    misconception = next(m for m in exercise.part(part).misconceptions if m.name == name)
+    # the key and the misconception agree here (sin 45° = cos 45°, sin 60° = sin 120°) ...
+    params = exercise.si(variant.params)
+    wrong = exercise.part(part).in_part_unit(misconception.value(params))
+    assert wrong == pytest.approx(variant.answers[part], rel=1e-9)
+    # ... so it is not tried, and the variant can be handed out
+    assert variant_problems(exercise, variant) == []
+
+
+@pytest.mark.parametrize("exercise_id, part, name, coinciding, distinct", REGIMES)
+def test_elsewhere_the_misconception_still_names_the_mistake(
+        bank, exercise_id, part, name, coinciding, distinct):
+    exercise = bank.get(exercise_id)
+    variant = exercise.variant(0, distinct)
+    misconception = next(m for m in exercise.part(part).misconceptions if m.name == name)
+    wrong = exercise.part(part).in_part_unit(misconception.value(exercise.si(variant.params)))
+    result = grade_variant(exercise, variant, {part: f"{wrong:.6g}"})
+    assert next(r for r in result.parts if r.name == part).misconception == name
+
+
+@pytest.mark.parametrize("exercise_id, low, high", [
+    ("peak-height-by-energy", 41, 49), ("block-sliding-down-incline", 41, 49),
+    ("projectile-range", 56, 64)])
+def test_the_band_around_the_coincidence_is_drawn_again(bank, exercise_id, low, high):
+    exercise = bank.get(exercise_id)
+    angles = {exercise.variant(seed).params["alpha"] for seed in range(300)}
+    assert any(low <= angle <= high and angle not in (45, 60) for angle in angles)
