@@ -45,18 +45,23 @@ EXERCISE = Exercise(
 REGIME = ",\n                       applies=lambda p: stops(p) == 'yes'"
 
 
+def _exam_and_roster(tmp_path, exercise_id: str, students: int):
+    """An exam of the one exercise, and a roster of ``students``."""
+    exam = tmp_path / "exam.toml"
+    exam.write_text(f'id = "q"\ntitle = "Q"\ndate = 2025-01-01\n[[exercise]]\n'
+                    f'id = "{exercise_id}"\npoints = 2\n', encoding="utf-8")
+    roster = tmp_path / "roster.csv"
+    roster.write_text("student_id,name\n" + "".join(f"s{i},S {i}\n" for i in range(students)),
+                      encoding="utf-8")
+    return exam, roster
+
+
 def _exam(tmp_path, regime: bool, students: int = 40):
     folder = tmp_path / "bank"
     folder.mkdir()
     (folder / "stops.py").write_text(STOPS.replace("APPLIES", REGIME if regime else ""),
                                      encoding="utf-8")
-    exam = tmp_path / "exam.toml"
-    exam.write_text('id = "q"\ntitle = "Q"\ndate = 2025-01-01\n[[exercise]]\n'
-                    'id = "block-comes-to-rest"\npoints = 2\n', encoding="utf-8")
-    roster = tmp_path / "roster.csv"
-    roster.write_text("student_id,name\n" + "".join(f"s{i},S {i}\n" for i in range(students)),
-                      encoding="utf-8")
-    return folder, exam, roster
+    return (folder, *_exam_and_roster(tmp_path, "block-comes-to-rest", students))
 
 
 def _share_that_never_stops() -> float:
@@ -122,12 +127,7 @@ def test_a_small_class_sharing_a_choice_is_not_warned_about(tmp_path):
 
 def test_formula_parts_are_the_same_for_everyone_by_design_and_not_warned_about(tmp_path,
                                                                                 bank):
-    exam = tmp_path / "exam.toml"
-    exam.write_text('id = "f"\ntitle = "F"\ndate = 2025-01-01\n[[exercise]]\n'
-                    'id = "projectile-range"\npoints = 2\n', encoding="utf-8")
-    roster = tmp_path / "roster.csv"
-    roster.write_text("student_id,name\n" + "".join(f"s{i},S {i}\n" for i in range(8)),
-                      encoding="utf-8")
+    exam, roster = _exam_and_roster(tmp_path, "projectile-range", 8)
     report = generate_exam(exam, roster, tmp_path / "out", bank=bank, jobs=1, pdf=False,
                            secret="fixed")
     manifest = json.loads((tmp_path / "out" / "manifest.json").read_text(encoding="utf-8"))

@@ -149,15 +149,20 @@ REGIMES = [
 ]
 
 
+def _mistaken(exercise, part: str, name: str, overrides: dict):
+    """The variant with ``overrides`` and the answer the misconception ``name`` gives."""
+    variant = exercise.variant(0, overrides)
+    misconception = next(m for m in exercise.part(part).misconceptions if m.name == name)
+    value = misconception.value(exercise.si(variant.params))
+    return variant, exercise.part(part).in_part_unit(value)
+
+
 @pytest.mark.parametrize("exercise_id, part, name, coinciding, distinct", REGIMES)
 def test_where_the_misconception_equals_the_key_the_variant_is_handed_out(
         bank, exercise_id, part, name, coinciding, distinct):
     exercise = bank.get(exercise_id)
-    variant = exercise.variant(0, coinciding)
-    misconception = next(m for m in exercise.part(part).misconceptions if m.name == name)
+    variant, wrong = _mistaken(exercise, part, name, coinciding)
     # the key and the misconception agree here (sin 45° = cos 45°, sin 60° = sin 120°) ...
-    params = exercise.si(variant.params)
-    wrong = exercise.part(part).in_part_unit(misconception.value(params))
     assert wrong == pytest.approx(variant.answers[part], rel=1e-9)
     # ... so it is not tried, and the variant can be handed out
     assert variant_problems(exercise, variant) == []
@@ -167,9 +172,7 @@ def test_where_the_misconception_equals_the_key_the_variant_is_handed_out(
 def test_elsewhere_the_misconception_still_names_the_mistake(
         bank, exercise_id, part, name, coinciding, distinct):
     exercise = bank.get(exercise_id)
-    variant = exercise.variant(0, distinct)
-    misconception = next(m for m in exercise.part(part).misconceptions if m.name == name)
-    wrong = exercise.part(part).in_part_unit(misconception.value(exercise.si(variant.params)))
+    variant, wrong = _mistaken(exercise, part, name, distinct)
     result = grade_variant(exercise, variant, {part: f"{wrong:.6g}"})
     assert next(r for r in result.parts if r.name == part).misconception == name
 
