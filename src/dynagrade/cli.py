@@ -64,9 +64,8 @@ class _Context:
                                *self.project.exercises]))
 
     def add_folders(self, folders) -> None:
-        """Folders named after the subcommand (searched after those named before it)."""
-        if self._bank is not None:
-            raise RuntimeError("the bank is already open")
+        """Folders named after the subcommand (searched after those named before it;
+        the bank opens only when a command first asks for an exercise)."""
         self.command_line += list(folders)
 
     @property
