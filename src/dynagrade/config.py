@@ -29,7 +29,6 @@ from __future__ import annotations
 
 import os
 import re
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Callable
@@ -93,6 +92,8 @@ def load_project(start: str | os.PathLike | None = None) -> Project:
 
 def read_project(path: str | os.PathLike) -> Project:
     """The project file at ``path``; :class:`ConfigError` for anything wrong in it."""
+    import tomllib  # here: a command run without a project file never parses TOML
+
     path = Path(path)
     try:
         text = path.read_text(encoding="utf-8")
