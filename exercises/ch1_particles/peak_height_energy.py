@@ -62,7 +62,7 @@ Only gravity acts during the flight and gravity is conservative, so $T + V$ is c
 """,
     solve=solve,
     parts=(
-        Numeric("v_top", "speed at the top", unit="m/s", points=1,
+        Numeric("v_top", "speed at the top", question=1, unit="m/s", points=1,
                 misconceptions=(
                     Misconception("at rest at the top", lambda p: 0.0,
                                   "Only the vertical velocity vanishes at the top; v0 cos α remains."),
@@ -70,13 +70,13 @@ Only gravity acts during the flight and gravity is conservative, so $T + V$ is c
                                   "The horizontal component is v0 cos α.",
                                   applies=sin_and_cos_differ),
                 )),
-        Numeric("h", "peak height", unit="m", points=2,
+        Numeric("h", "peak height", question=2, unit="m", points=2,
                 misconceptions=(
                     Misconception("all kinetic energy into height", lambda p: p.v0**2 / (2 * p.g),
                                   "The horizontal motion keeps m (v0 cos α)²/2, eq. (1.105)."),
                 )),
-        Numeric("T_top", "kinetic energy at the top", unit="J", points=1),
-        Symbolic("h_formula", "peak height as a formula", points=1,
+        Numeric("T_top", "kinetic energy at the top", question=3, unit="J", points=1),
+        Symbolic("h_formula", "peak height as a formula", question=4, points=1,
                  expected="v0^2*sin(alpha)^2/(2*g)",
                  variables=("v0", "alpha", "g"),
                  equals="h",

@@ -6,7 +6,9 @@ option) fail, every declared misconception fails, and each symbolic part's expre
 reproduces the numeric part it ``equals`` at the variant's parameters (a cross-check of
 formula against mechanics core). A misconception is tried only where it ``applies``; the
 report counts the variants an exam would redraw and the draws the constraints reject
-(:mod:`.redraws`). What each kind tries is its own
+(:mod:`.redraws`). Once per exercise: every part answers a numbered question of the
+statement and every question has a part, and every variable of a formula is shown in the
+statement under a name the grader accepts (:mod:`.asked`). What each kind tries is its own
 (:mod:`dynagrade.exercise.parts`). The worked solution of every variant is checked too
 (:mod:`.solution_check`), its math once per exercise by ``math_check`` (the render
 layer's, handed in by the command); an exercise without a solution is a finding when
@@ -20,6 +22,7 @@ from dataclasses import dataclass, field
 from typing import Callable, Iterable
 
 from ..grading import grade
+from .asked import question_problems, unshown_variables
 from .model import ConstraintError, Exercise, Variant
 from .redraws import NO_DRAW, RedrawShare
 from .solution import SolutionError, render_solution
@@ -82,10 +85,12 @@ def _solution_math(exercise: Exercise, variant: Variant,
 
 
 def static_problems(exercise: Exercise) -> list[str]:
-    """Problems that do not depend on the seed: parameters the statement never shows."""
+    """Problems that do not depend on the seed: parameters the statement never shows,
+    and what it asks against the parts (:mod:`.asked`)."""
     shown = referenced_names(exercise.statement)
     return [f"the statement never shows the parameter {p.name!r}"
-            for p in exercise.params if p.varies and p.name not in shown]
+            for p in exercise.params if p.varies and p.name not in shown] + \
+        question_problems(exercise) + unshown_variables(exercise)
 
 
 def variant_problems(exercise: Exercise, variant: Variant) -> list[str]:
