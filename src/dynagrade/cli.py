@@ -21,6 +21,7 @@ from pathlib import Path
 
 import click
 
+from .config import FILE_NAME, Project, load_project
 from .errors import DynagradeError
 from .exercise import loader
 
@@ -46,11 +47,26 @@ class _Command(_ReportsErrors, click.Command):
 
 
 class _Context:
-    """What every subcommand shares: where exercises are looked for."""
+    """What every subcommand shares: where exercises are looked for.
 
-    def __init__(self, folders: tuple[str, ...]):
-        self.folders = folders
+    ``folders`` are searched in the order of precedence: the command line's (from
+    ``--exercises`` before and after the subcommand), ``$DYNAGRADE_EXERCISES``'s, then the
+    project file's (:mod:`dynagrade.config`); the shipped bank comes last."""
+
+    def __init__(self, folders: tuple[str, ...], project: Project):
+        self.command_line = list(folders)
+        self.project = project
         self._bank = None
+
+    @property
+    def folders(self) -> tuple[str, ...]:
+        return tuple(map(str, [*self.command_line, *loader.environment_folders(),
+                               *self.project.exercises]))
+
+    def add_folders(self, folders) -> None:
+        """Folders named after the subcommand (searched after those named before it;
+        the bank opens only when a command first asks for an exercise)."""
+        self.command_line += list(folders)
 
     @property
     def bank(self):
@@ -62,10 +78,22 @@ class _Context:
         return self.bank.get(exercise_id)
 
 
-_exercises_option = click.option(
-    "--exercises", "folders", multiple=True, type=click.Path(file_okay=False),
-    help=f"A folder of exercise files, searched before the shipped bank (repeatable; "
-         f"also ${loader.ENVIRONMENT_VARIABLE}).")
+_EXERCISES_HELP = (f"A folder of exercise files, searched before the shipped bank "
+                   f"(repeatable; also ${loader.ENVIRONMENT_VARIABLE} and the "
+                   f"'exercises' of {FILE_NAME}).")
+_exercises_option = click.option("--exercises", "folders", multiple=True,
+                                 type=click.Path(file_okay=False), help=_EXERCISES_HELP)
+
+
+def _more_folders(ctx, param, folders):
+    """``--exercises`` after a subcommand: added to those named before it."""
+    if folders:
+        ctx.find_object(_Context).add_folders(folders)
+
+
+def _subcommand_exercises_option() -> click.Option:
+    return click.Option(["--exercises"], multiple=True, type=click.Path(file_okay=False),
+                        expose_value=False, callback=_more_folders, help=_EXERCISES_HELP)
 
 
 @click.group(cls=_Group, context_settings={"help_option_names": ["-h", "--help"]})
@@ -73,8 +101,13 @@ _exercises_option = click.option(
 @click.version_option(package_name="dynagrade")
 @click.pass_context
 def main(ctx, folders):
-    """Randomized Dynamics exercises and exams, graded with units and feedback."""
-    ctx.obj = _Context(folders)
+    """Randomized Dynamics exercises and exams, graded with units and feedback.
+
+    Settings come from the command line, then the environment, then the project file
+    dynagrade.toml (searched upward from the working folder; see docs/authoring.md)."""
+    project = load_project()
+    ctx.obj = _Context(folders, project)
+    ctx.default_map = project.defaults()
 
 
 # -- exercises ---------------------------------------------------------------------------
@@ -271,7 +304,7 @@ def grade_command(context, files, as_json, manifest, output, jobs, strict, roste
     be graded (a bad manifest, a missing exercise, an unwritable folder) or, with
     --strict, when something was reported as an error."""
     if manifest is None:
-        if output is not None or jobs is not None or strict or roster or platform \
+        if _given("output") or _given("jobs") or strict or roster or platform \
                 or formats or assignment or overrides:
             raise click.UsageError("-o/--output, --jobs, --strict, --roster, --platform, "
                                    "--format, --assignment and --overrides need --manifest")
@@ -324,9 +357,12 @@ def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file, solution
                                solutions=solutions)
     for warning in report.warnings:
         click.echo(f"notice: {warning}", err=True)
+    for warning in report.skew:
+        click.echo(f"warning: {warning}", err=True)
+    warned = f"; {len(report.skew)} warning(s) above" if report.skew else ""
     click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
                f"({report.redraws} draws replaced because they could not discriminate; see "
-               f"manifest.json) in {report.timings['total']:.1f} s", err=True)
+               f"manifest.json{warned}) in {report.timings['total']:.1f} s", err=True)
 
 
 # -- grade exercise.py -------------------------------------------------------------------
@@ -343,7 +379,7 @@ def grade_main(file, as_json, solution, folders):
     The file is read, never run: each answer must be a number, a quoted string, a list
     of numbers or None.
     """
-    _grade_files(_Context(folders), (file,), as_json, solution)
+    _grade_files(_Context(folders, load_project()), (file,), as_json, solution)
 
 
 def _grade_files(context, files, as_json, solution=False):
@@ -440,6 +476,14 @@ def _grade_class(context, manifest, files, output, jobs, as_json, strict, option
 # -- helpers -----------------------------------------------------------------------------
 
 
+def _given(option: str) -> bool:
+    """Whether the running command's ``option`` was set on the command line (or in the
+    environment), not taken from a default or from dynagrade.toml."""
+    source = click.get_current_context().get_parameter_source(option)
+    return source in (click.core.ParameterSource.COMMANDLINE,
+                      click.core.ParameterSource.ENVIRONMENT)
+
+
 def _variant(exercise, seed, student, settings, force=False):
     from .exam.spec import domain_problem
     from .exercise.seeds import student_seed
@@ -514,6 +558,8 @@ from .serve.commands import links as _links, serve as _serve  # noqa: E402  (lig
 
 main.add_command(_serve)
 main.add_command(_links)
+for _subcommand in main.commands.values():  # --exercises after any subcommand, too
+    _subcommand.params.append(_subcommand_exercises_option())
 
 if __name__ == "__main__":
     main()

@@ -43,6 +43,7 @@ from .manifest import (ExamEntry, ExerciseEntry, Generator, Manifest, PartEntry,
 from .outputs import staging_folder, swap_in
 from .points import Rounding, exam_part_points
 from .run import GenerationRun, file_sha256
+from .skew import skew_warnings
 from .solutions import solutions_title
 from .spec import ExamSpec, ExamSpecError, Student, read_exam_spec, read_roster
 from .student import STAGES, StudentResult, student_job
@@ -63,6 +64,7 @@ class GenerationReport:
     redraws: int
     timings: dict[str, float] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    skew: list[str] = field(default_factory=list)  # :func:`.skew.skew_warnings`
 
 
 def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
@@ -93,6 +95,7 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
         manifest = build_manifest(run.spec, run.exercises, run.parts,
                                   [r.entry for r in results])
         report.redraws = manifest.redraw_count
+        report.skew = skew_warnings(manifest)
         _write_key_and_moodle(run, manifest)
         if pdf:
             _write_printing_pdfs(run, pool, manifest, roster, results, progress)

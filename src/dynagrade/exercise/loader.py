@@ -53,14 +53,22 @@ def builtin_bank() -> Path:
     return here.parent.parent / "exercises"
 
 
+def environment_folders() -> list[Path]:
+    """The folders ``$DYNAGRADE_EXERCISES`` names."""
+    return [Path(f) for f in os.environ.get(ENVIRONMENT_VARIABLE, "").split(os.pathsep) if f]
+
+
 def search_path(extra: Iterable[str | os.PathLike] = ()) -> list[Path]:
-    """The folders searched for exercises, first match wins."""
-    folders = [Path(f) for f in extra]
-    folders += [Path(f) for f in os.environ.get(ENVIRONMENT_VARIABLE, "").split(os.pathsep) if f]
+    """The folders searched for exercises, first match wins; a folder named twice is
+    searched at its first place."""
+    folders = [Path(f) for f in extra] + environment_folders()
     for folder in folders:
         if not folder.is_dir():
             raise ExerciseFileError(f"exercise folder {folder} does not exist")
-    return folders + [builtin_bank()]
+    unique = {}
+    for folder in folders:
+        unique.setdefault(folder.resolve(), folder)
+    return list(unique.values()) + [builtin_bank()]
 
 
 def exercise_files(folder: Path) -> Iterator[Path]:
