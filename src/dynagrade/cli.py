@@ -9,6 +9,7 @@ Usage::
     dynagrade verify --variants 200
     dynagrade exam exam.toml --roster roster.csv -o out/
     dynagrade grade --manifest out/manifest.json out/submissions/ -o out/grading/
+    dynagrade moodle projectile-range --variants 50 -o pool.xml
     dynagrade links out/manifest.json -o links.csv --instructor
     dynagrade serve out/manifest.json
 """
