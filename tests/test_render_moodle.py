@@ -162,7 +162,10 @@ def test_text_with_the_separators_reads_back_as_written():
     assert found.answers[1].answer_text == "other"
 
 
-def test_every_declared_misconception_is_a_wrong_answer_with_its_feedback(pool):
+def test_every_misconception_the_grader_tries_is_a_wrong_answer_with_its_feedback(pool):
+    """Every declared misconception that the grader tries in a variant (values in the
+    part's unit) is, wherever the grader can tell it from the right answer, a wrong
+    answer of the part's field with the misconception's feedback and score."""
     bank, checked = pool["bank"], 0
     for exercise_id, questions in pool["questions"].items():
         exercise = bank.get(exercise_id)
@@ -174,9 +177,8 @@ def test_every_declared_misconception_is_a_wrong_answer_with_its_feedback(pool):
                 if part.kind == "symbolic":
                     continue
                 own = [next(fields) for _ in range(part.size if part.kind == "vector" else 1)]
-                for misconception in part.misconceptions:
-                    wrong = part.in_part_unit(misconception.value(params))
-                    wrong = wrong if isinstance(wrong, tuple) else (wrong,)
+                for known in getattr(part.spec(params), "misconceptions", ()):
+                    wrong = known.value if isinstance(known.value, tuple) else (known.value,)
                     right = variant.answers[part.name]
                     right = right if isinstance(right, tuple) else (right,)
                     for found, w, r in zip(own, wrong, right):
@@ -184,9 +186,9 @@ def test_every_declared_misconception_is_a_wrong_answer_with_its_feedback(pool):
                             continue  # the grader cannot tell it from the right answer here
                         matching = [a for a in found.answers[1:]
                                     if abs(a.value - w) <= a.tolerance + 1e-12 * abs(w)]
-                        assert matching, (exercise_id, part.name, misconception.name)
-                        assert matching[0].feedback_text == misconception.feedback
-                        assert matching[0].fraction == misconception.score
+                        assert matching, (exercise_id, part.name, known.name)
+                        assert matching[0].feedback_text == known.feedback
+                        assert matching[0].fraction == known.score
                         checked += 1
     assert checked > 20
 

@@ -38,6 +38,7 @@ from __future__ import annotations
 import base64
 import hashlib
 import json
+import math
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from typing import Callable, Mapping
@@ -119,8 +120,6 @@ def numeric_alternatives(value: float, allowed: float, wrong) -> list[Alternativ
     answer ``(value, tolerance, feedback, score)`` that the grader can tell from it
     (finite, outside the right answer's tolerance), in the grader's order: Moodle takes
     the first alternative an answer falls within."""
-    import math
-
     alternatives = [Alternative(value, 1.0, allowed)]
     for target, around, feedback, score in wrong:
         if math.isfinite(target) and abs(target - value) > allowed:
