@@ -368,3 +368,71 @@ def test_a_partial_credit_misconception_keeps_its_percentage():
     (found,) = read_fields(field(2, "NUMERICAL", [Alternative(1.0, 1.0, 0.01),
                                                    Alternative(2.0, 0.5, 0.02, "half")]))
     assert found.answers[1].fraction == 0.5 and found.answers[1].feedback_text == "half"
+
+
+LONE_NUMBER = '''
+"""A single numeric part with a half-credit misconception, and a formula-only exercise."""
+from dynagrade.exercise import Choice, Exercise, Misconception, Numeric, Symbolic
+
+
+def solve(p):
+    return {"y": 3 * p.x}
+
+
+EXERCISE = Exercise(
+    id="triple-of-x", title="Triple", source="Section 1.1",
+    params=(Choice("x", (1.0, 2.0), unit="m"),),
+    statement="What is three times $x$ = {{ x }}?",
+    solve=solve,
+    parts=(Numeric("y", "triple", unit="m", points=3,
+                   misconceptions=(Misconception("doubled", lambda p: 2 * p.x,
+                                                 "Twice {x} is not # three ~ times", 0.5),)),),
+)
+'''
+
+FORMULA_ONLY = '''
+"""Only a formula: Moodle can check none of it."""
+from dynagrade.exercise import Choice, Exercise, Symbolic
+
+
+EXERCISE = Exercise(
+    id="formula-of-x", title="Formula", source="Section 1.1",
+    params=(Choice("x", (1.0, 2.0), unit="m"),),
+    statement="Write three times $x$.",
+    solve=lambda p: {},
+    parts=(Symbolic("f", "three x", expected="3*x", variables=("x",)),),
+)
+'''
+
+
+def test_a_lone_number_is_a_numerical_question_with_its_misconception_and_points(tmp_path):
+    from dynagrade.exercise.loader import open_bank
+
+    (tmp_path / "triple.py").write_text(LONE_NUMBER, encoding="utf-8")
+    (tmp_path / "formula.py").write_text(FORMULA_ONLY, encoding="utf-8")
+    bank = open_bank([tmp_path])
+    categories, notices = pool_categories([bank.get("triple-of-x"), bank.get("formula-of-x")],
+                                          2, SECRET)
+    export = pool_xml("P", categories)
+    assert notices == []
+    assert export.notices == ["exercise 'formula-of-x' is not in the Moodle export: none of "
+                              "its parts can be checked by Moodle"]
+    root = ET.fromstring(export.xml)
+    assert [q.findtext("category/text") for q in root.findall("question")
+            if q.get("type") == "category"] == ["$course$/top/P/triple-of-x"]
+    questions = [q for q in root.findall("question") if q.get("type") != "category"]
+    assert sorted(_variant_x(q) for q in questions) == [1.0, 2.0]
+    for question in questions:
+        x = _variant_x(question)
+        assert question.get("type") == "numerical"
+        assert question.findtext("defaultgrade") == "3"          # numerical questions use it
+        right, doubled = question.findall("answer")
+        assert (right.get("fraction"), float(right.findtext("text")),
+                float(right.findtext("tolerance"))) == ("100", 3 * x, 0.03 * x)
+        assert (doubled.get("fraction"), float(doubled.findtext("text")),
+                float(doubled.findtext("tolerance"))) == ("50", 2 * x, 0.02 * x)
+        assert doubled.findtext("feedback/text") == "Twice {x} is not # three ~ times"
+
+
+def _variant_x(question) -> float:
+    return float(re.search(r"= ([\d.]+)", question.findtext("questiontext/text")).group(1))

@@ -287,7 +287,6 @@ def _category(quiz: ET.Element, title: str, category: Category, marks: Marks) ->
     element = _sub(quiz, "question", type="category")
     _text(element, "category", f"$course$/top/{_category_name(title)}/{described.id}")
     _text(element, "info", staff_note(title, described, marks), format="html")
-    _sub(element, "idnumber", described.id)
 
 
 def staff_note(title: str, described: ExerciseEntry, marks: Marks) -> str:
