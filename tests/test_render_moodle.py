@@ -16,6 +16,8 @@ from fractions import Fraction
 
 import pytest
 from click.testing import CliRunner
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from dynagrade.cli import main
 from dynagrade.exam.manifest import ExerciseEntry, PartEntry, VariantEntry
@@ -250,8 +252,22 @@ def test_weights_keep_the_parts_proportions_by_hand():
     assert field_weights([2, 2 / 3, 2 / 3, 2 / 3]).weights == (3, 1, 1, 1)
     assert field_weights([5 / 7, 10 / 7]).weights == (1, 2)
     assert field_weights([0.0, 0.0]).weights == (1, 1)
-    rough = field_weights([0.123456789, 0.987654321, 0.55555555])
-    assert sum(rough.weights) <= 1000
+    # thousandths of three primes need weights summing to millions: approximated to 100
+    rough = field_weights([1 / 997, 1 / 991, 1 / 983])
+    assert rough.weights == (33, 33, 34) and not rough.exact
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.integers(1, 10_000), min_size=1, max_size=8))
+def test_points_in_hundredths_get_whole_weights_with_exactly_their_shares(hundredths):
+    """Points rounded to hundredths, as exams round them, get whole-number weights whose
+    shares of the full mark are exactly the points' shares of the exported points."""
+    points = [h / 100 for h in hundredths]
+    found = field_weights(points)
+    assert found.exact
+    assert all(isinstance(w, int) and w > 0 for w in found.weights)
+    assert [Fraction(w, found.total) for w in found.weights] == \
+        [Fraction(h, sum(hundredths)) for h in hundredths]
 
 
 def _exercise_entry(parts, points) -> ExerciseEntry:

@@ -25,7 +25,8 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 #: the largest sum of exact weights written; beyond it the proportions are approximated
-MAX_TOTAL = 1000
+#: (points in hundredths, as exams round them, stay exact up to 1000 points)
+MAX_TOTAL = 100_000
 #: the sum of approximate weights
 APPROXIMATE_TOTAL = 100
 #: the largest denominator a point value is read with (0.714286 is 5/7)
