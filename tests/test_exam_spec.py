@@ -149,7 +149,9 @@ def test_a_canvas_export_takes_the_sis_user_id_not_canvas_internal_id():
     notices = []
     students = parse_roster(raw.encode("utf-8"), "canvas.tsv", notices)
     assert (students[0].student_id, students[0].name) == ("s-2", "Turing, Alan")
-    assert notices == ["canvas.tsv: the columns 'ID', 'SIS Login ID', 'Section' are not used"]
+    # Canvas's internal ID is the user id its submission downloads are named by
+    assert students[0].platform_ids == (("canvas", "88123"),)
+    assert notices == ["canvas.tsv: the columns 'SIS Login ID', 'Section' are not used"]
 
 
 def test_an_exam_id_with_a_trailing_newline_is_refused(tmp_path, bank):

@@ -237,8 +237,14 @@ def compare(context, source):
               help="With --manifest: exit 1 when any submission was skipped (corrupt, "
                    "foreign, impersonating) or any part could not be graded; the "
                    "gradebook is written all the same.")
+@click.option("--roster", type=click.Path(exists=True, dir_okay=False),
+              help="With --manifest: a roster with the students' platform ids (moodle_id, "
+                   "canvas_id) to map a Moodle or Canvas download (a .zip among FILES).")
+@click.option("--platform", type=click.Choice(["moodle", "canvas"]),
+              help="With --manifest: which platform made the .zip download (default: told "
+                   "from its entry names).")
 @click.pass_obj
-def grade_command(context, files, as_json, manifest, output, jobs, strict):
+def grade_command(context, files, as_json, manifest, output, jobs, strict, roster, platform):
     """Grade filled-in exercise files (never executing them); with --manifest, a class.
 
     A class is always graded whole: a bad file or a part that cannot be graded is
@@ -246,15 +252,16 @@ def grade_command(context, files, as_json, manifest, output, jobs, strict):
     be graded (a bad manifest, a missing exercise, an unwritable folder) or, with
     --strict, when something was reported as an error."""
     if manifest is None:
-        if output is not None or jobs is not None or strict:
-            raise click.UsageError("-o/--output, --jobs and --strict need --manifest")
+        if output is not None or jobs is not None or strict or roster or platform:
+            raise click.UsageError("-o/--output, --jobs, --strict, --roster and --platform "
+                                   "need --manifest")
         for file in files:
             if Path(file).is_dir():
                 raise click.BadParameter(f"File {file!r} is a directory.",
                                          param_hint="'FILES...'")
         _grade_files(context, files, as_json)
         return
-    _grade_class(context, manifest, files, output, jobs, as_json, strict)
+    _grade_class(context, manifest, files, output, jobs, as_json, strict, roster, platform)
 
 
 @main.command()
@@ -411,13 +418,14 @@ def _print_self_check(checked: dict) -> None:
         click.echo(f"  {part['name']}: {mark}: {part['message']}")
 
 
-def _grade_class(context, manifest, files, output, jobs, as_json, strict):
+def _grade_class(context, manifest, files, output, jobs, as_json, strict, roster=None,
+                 platform=None):
     from .exam.classgrade import grade_class
     from .render.terminal import progress_reporter
 
     with progress_reporter() as progress:
         outcome = grade_class(manifest, files, output, bank=context.bank, jobs=jobs,
-                              progress=progress)
+                              progress=progress, roster=roster, platform=platform)
     for problem in outcome.problems:
         click.echo(f"{problem.level}: {problem.source}: {problem.message}", err=True)
     if as_json:

@@ -18,8 +18,9 @@ Outputs (built in a staging folder and swapped in whole, :mod:`.outputs`)::
     problems.csv      every submission that was skipped or replaced, every part whose
                       grading failed, and why
     feedback/<student_id>.md, feedback/<student_id>.html
-    report.html       score histogram, difficulty and discrimination per part, common
-                      wrong answers and the misconceptions they matched
+    report.html       score histogram, difficulty and discrimination per part (with a
+                      caution below 30 students), wrong answers grouped by the
+                      mistake that explains them and the unexplained share per part
 
 A re-run with the same inputs writes the same files.
 """
@@ -45,7 +46,7 @@ from .policy import Policy
 from .solution_policy import with_feedback
 from .solutions import feedback_solutions
 from .manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
-from .stats import part_statistics
+from .stats import declared_names, part_statistics
 from .submissions import Problem, Submission, collect
 from .workers import Pool, default_jobs
 
@@ -147,15 +148,18 @@ def _grade_one(run: GradingRun, work: tuple[StudentEntry, dict[str, Submission]]
 
 
 def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
-                jobs: int | None = None, progress=None) -> ClassOutcome:
-    """Grade every submission in ``paths`` and, with ``out_dir``, write the outputs."""
+                jobs: int | None = None, progress=None, roster=None,
+                platform: str | None = None) -> ClassOutcome:
+    """Grade every submission in ``paths`` and, with ``out_dir``, write the outputs; a
+    platform's ``.zip`` download among ``paths`` is mapped to students by the platform
+    ids of ``roster`` (:mod:`.downloads`)."""
     started = time.perf_counter()
     progress = progress or (lambda stage, done, total: None)
     manifest = load(manifest_path)
     problems: list[Problem] = []
     exercises = _exercises(manifest, bank or open_bank(), problems, str(manifest_path))
     manifest_parts = {e.id: e.parts for e in manifest.exercises}
-    chosen, found = collect(paths, manifest)
+    chosen, found = collect(paths, manifest, roster, platform)
     problems += found
     timings = {"collect": time.perf_counter() - started}
     stage = time.perf_counter()
@@ -163,7 +167,7 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
                  if (s.student_id, e) in chosen}) for s in manifest.students]
     graded = _run(work, manifest_parts, exercises, jobs, progress)
     timings["grading"] = time.perf_counter() - stage
-    outcome = _outcome(manifest, graded, problems, timings)
+    outcome = _outcome(manifest, graded, problems, timings, declared_names(exercises))
     solutions = Policy.from_json(manifest.exam.policy).solutions
     if out_dir is not None and with_feedback(solutions):
         _add_solutions(outcome, manifest, exercises)
@@ -178,7 +182,7 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
 
 
 def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
-             timings: dict[str, float]) -> ClassOutcome:
+             timings: dict[str, float], declared: dict | None = None) -> ClassOutcome:
     """The gradebook, the feedback per student and the item statistics."""
     exercise_ids = manifest.exercise_ids
     max_total = sum(float(e.points) for e in manifest.exercises)
@@ -198,7 +202,8 @@ def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
                 (e, p["name"]): p for e in submitted for p in results[e]["parts"]}})
     ordered_parts = [(e.id, p) for e in manifest.exercises for p in e.parts]
     return ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
-                        part_statistics(ordered_parts, analysed), feedback, timings)
+                        part_statistics(ordered_parts, analysed, declared=declared), feedback,
+                        timings)
 
 
 def part_errors(manifest: Manifest, graded: list[dict]) -> list[Problem]:

@@ -8,8 +8,9 @@ Accepted layouts (``docs/exams.md`` lists them for the staff):
 
 A layout is a function ``(relative parts, roster ids) -> student id or None``, where the
 parts are the file's path from the folder given on the command line, starting with that
-folder's own name. :data:`LAYOUTS` are tried in order; a reader for an LMS's download
-names (e.g. Moodle's ``Name_123_assignsubmission_file_``) is added there.
+folder's own name. :data:`LAYOUTS` are tried in order. A Moodle or Canvas bulk download,
+whose names carry the platform's id rather than the student id, is read as the zip it
+comes as, by :mod:`.downloads`.
 """
 
 from __future__ import annotations

@@ -12,7 +12,15 @@ student id    ``student_id``, ``SIS User ID`` (Canvas), ``ID number`` (Moodle),
 name          ``name``, ``Full name``, ``Student`` (Canvas), ``Student name``; or
               ``First name`` with ``Last name`` / ``Surname`` (Moodle)
 email         ``email``, ``Email address`` (Moodle), ``E-mail``, ``Mail``
+Moodle id     ``moodle_id``, ``Participant id``, ``Identifier`` (Moodle's grading
+              worksheet: ``Participant 1234``); the number Moodle puts in the file names
+              of an assignment's "Download all submissions"
+Canvas id     ``canvas_id``, ``Canvas user id``; or ``ID`` beside ``SIS User ID`` (Canvas's
+              gradebook export); the user id in Canvas's "Download Submissions" names
 ============  ==========================================================================
+
+A platform id is optional for every student (empty: the student has none); where given it
+is a whole number, and no two students share one.
 
 Any other column is ignored and named in a notice. Refused, with file, row and column:
 duplicate ids, an id that cannot be a folder name (only letters, digits, ``.``, ``_``,
@@ -45,6 +53,12 @@ FIRST_NAME_COLUMNS = ("first name", "firstname", "given name")
 LAST_NAME_COLUMNS = ("last name", "surname", "lastname", "family name")
 EMAIL_COLUMNS = ("email", "email address", "e-mail", "mail")
 SEPARATORS = (",", ";", "\t")
+#: per learning platform, the columns of the id it names students by in its downloads
+PLATFORM_COLUMNS = {"moodle": ("moodle_id", "participant id", "identifier"),
+                    "canvas": ("canvas_id", "canvas user id")}
+#: Canvas's gradebook export calls its user id just ``ID``, beside ``SIS User ID``
+CANVAS_EXPORT_ID = ("id", "sis user id")
+_PLATFORM_ID = re.compile(r"(?:[^\W\d_]\D*?)?(\d{1,18})")
 
 
 class RosterError(DynagradeError, ValueError):
@@ -58,6 +72,8 @@ class Student:
     student_id: str
     name: str
     email: str = ""
+    #: ``(platform, id)`` pairs: the ids a learning platform names the student by
+    platform_ids: tuple[tuple[str, str], ...] = ()
 
     def to_json(self) -> dict:
         return {"student_id": self.student_id, "name": self.name, "email": self.email}
@@ -71,6 +87,7 @@ class Columns:
     name: tuple[int, ...]
     email: int | None
     extra: tuple[str, ...]
+    platforms: tuple[tuple[str, int], ...] = ()
 
 
 def read_roster(path: str | Path, notices: list[str] | None = None,
@@ -134,14 +151,20 @@ def header_columns(header: list[str], where: str, error=RosterError) -> Columns:
                     f"({', '.join(wanted)}), e.g. the header 'student_id,name' or "
                     "'student_id,name,email'")
     email = first(EMAIL_COLUMNS)
-    used = {student_id, *names, email}
+    platforms = tuple((platform, column) for platform, column in (
+        (platform, first(names)) for platform, names in PLATFORM_COLUMNS.items())
+        if column is not None)
+    if "canvas" not in dict(platforms) and all(c in lowered for c in CANVAS_EXPORT_ID):
+        platforms += (("canvas", lowered.index(CANVAS_EXPORT_ID[0])),)
+    used = {student_id, *names, email, *(column for _, column in platforms)}
     extra = tuple(cell for i, cell in enumerate(header) if i not in used)
-    return Columns(student_id, names, email, extra)
+    return Columns(student_id, names, email, extra, platforms)
 
 
 def _students(rows, header, columns: Columns, where: str, error) -> tuple[Student, ...]:
     students: list[Student] = []
     seen: dict[str, int] = {}
+    taken: dict[tuple[str, str], int] = {}
     id_column = f"column {columns.student_id + 1} ({header[columns.student_id]})"
     for number, row in enumerate(rows[1:], 2):
         if not any(cell.strip() for cell in row):
@@ -162,8 +185,31 @@ def _students(rows, header, columns: Columns, where: str, error) -> tuple[Studen
             raise error(f"{where}, row {number}, column {columns.name[0] + 1} "
                         f"({header[columns.name[0]]}): missing")
         email = row[columns.email].strip() if columns.email is not None else ""
-        students.append(Student(student_id, name, email))
+        platform_ids = tuple(_platform_ids(row, header, columns, number, where, error,
+                                           taken))
+        students.append(Student(student_id, name, email, platform_ids))
     return tuple(students)
+
+
+def _platform_ids(row, header, columns: Columns, number: int, where: str, error,
+                  taken: dict[tuple[str, str], int]):
+    """The row's ``(platform, id)`` pairs; an id that is not a number, or that an earlier
+    row already has, is an error naming row and column."""
+    for platform, column in columns.platforms:
+        cell = row[column].strip()
+        if not cell:
+            continue
+        where_cell = f"{where}, row {number}, column {column + 1} ({header[column]})"
+        match = _PLATFORM_ID.fullmatch(cell)
+        if match is None:
+            raise error(f"{where_cell}: {cell!r} is not a {platform.capitalize()} id (a "
+                        "whole number, e.g. 1234 or 'Participant 1234')")
+        key = (platform, str(int(match.group(1))))
+        if key in taken:
+            raise error(f"{where_cell}: {platform.capitalize()} id {key[1]} is already on "
+                        f"row {taken[key]}")
+        taken[key] = number
+        yield key
 
 
 def id_problem(student_id: str) -> str:

@@ -7,6 +7,16 @@ strong from weak students, and which wrong answers were common.
   either does not vary);
 - upper-lower index: mean fraction in the best 27 % of students (by total) minus the mean
   in the weakest 27 %.
+
+Each of these rests on the students who answered the part; with fewer than
+:data:`MIN_STUDENTS` a single student moves it a lot, and the report says so.
+
+Wrong answers are grouped by what explains them, as the grader's verdict named it (a
+slip the grader tries on every part: sign, factor 2, power of ten, unit, degrees for
+radians ...; or one of the exercise's declared misconceptions; or follow-through from an
+earlier wrong answer), never by raw value: two students' variants have different numbers,
+so equal numbers do not mean equal mistakes. What no explanation covers is counted as the
+part's *unexplained* wrong answers.
 """
 
 from __future__ import annotations
@@ -18,6 +28,24 @@ from dataclasses import dataclass, field
 from .manifest import PartEntry
 
 GROUP_FRACTION = 0.27
+#: below this many students a statistic is a hint, not a measurement (a common rule of
+#: thumb for item analysis; one student more or less can change it by a tenth or more)
+MIN_STUDENTS = 30
+#: verdict statuses that mean "answered, and not right"
+WRONG_STATUSES = ("wrong", "partial", "follow-through")
+FOLLOW_THROUGH = "follow-through from an earlier wrong answer"
+#: kinds of explanation, as the report names them
+DECLARED, SLIP, FOLLOWED = "the exercise's misconception", "slip", "follow-through"
+
+
+@dataclass(frozen=True)
+class Explanation:
+    """Wrong answers to one part that one mistake explains: its name as the grader gave
+    it, its kind (:data:`DECLARED`, :data:`SLIP` or :data:`FOLLOWED`) and how many."""
+
+    name: str
+    kind: str
+    students: int
 
 
 @dataclass
@@ -34,6 +62,19 @@ class PartStats:
     upper_lower: float | None = None
     wrong_answers: list[tuple[str, int, str]] = field(default_factory=list)
     misconceptions: list[tuple[str, int]] = field(default_factory=list)
+    wrong: int = 0
+    explained: list[Explanation] = field(default_factory=list)
+    unexplained: int = 0
+
+    @property
+    def few_students(self) -> bool:
+        """Whether the statistics rest on fewer than :data:`MIN_STUDENTS` students."""
+        return self.answered < MIN_STUDENTS
+
+    @property
+    def unexplained_share(self) -> float | None:
+        """The share of the part's wrong answers that nothing explains (None: none wrong)."""
+        return self.unexplained / self.wrong if self.wrong else None
 
 
 def correlation(xs: list[float], ys: list[float]) -> float | None:
@@ -63,11 +104,14 @@ def upper_lower_index(fractions: list[float], totals: list[float]) -> float | No
 
 
 def part_statistics(exercise_parts: list[tuple[str, PartEntry]], graded: list[dict],
-                    top: int = 5) -> list[PartStats]:
+                    top: int = 5,
+                    declared: dict[tuple[str, str], set[str]] | None = None) -> list[PartStats]:
     """Statistics for each ``(exercise_id, part)``; ``graded`` holds per student
     ``{"total": float, "parts": {(exercise_id, part): {...}}}`` with each part's
     ``fraction``, ``answer``, ``status`` and ``misconception`` (students who did not
-    submit an exercise have no entry for its parts)."""
+    submit an exercise have no entry for its parts). ``declared`` names each part's
+    declared misconceptions, to tell them from the grader's generic slips."""
+    declared = declared or {}
     stats = []
     for exercise_id, part in exercise_parts:
         key = (exercise_id, part.name)
@@ -95,5 +139,31 @@ def part_statistics(exercise_parts: list[tuple[str, PartEntry]], graded: list[di
                                   for text, count in sorted(wrong.items(),
                                                             key=lambda kv: (-kv[1], kv[0]))[:top]]
             item.misconceptions = sorted(named.items(), key=lambda kv: (-kv[1], kv[0]))
+            _explain(item, [entry for entry, _ in entries], declared.get(key, set()))
         stats.append(item)
     return stats
+
+
+def _explain(item: PartStats, entries: list[dict], declared: set[str]) -> None:
+    """Group the part's wrong answers by the mistake the grader named for each."""
+    groups: Counter = Counter()
+    for entry in entries:
+        if entry["status"] not in WRONG_STATUSES or not (entry["answer"] or "").strip():
+            continue
+        item.wrong += 1
+        if entry["status"] == "follow-through":
+            groups[(FOLLOW_THROUGH, FOLLOWED)] += 1
+        elif entry["misconception"]:
+            name = entry["misconception"]
+            groups[(name, DECLARED if name in declared else SLIP)] += 1
+        else:
+            item.unexplained += 1
+    item.explained = [Explanation(name, kind, count) for (name, kind), count
+                      in sorted(groups.items(), key=lambda kv: (-kv[1], kv[0]))]
+
+
+def declared_names(exercises) -> dict[tuple[str, str], set[str]]:
+    """Per ``(exercise_id, part)`` the names of the misconceptions its exercise declares
+    (``exercises`` maps ids to :class:`~dynagrade.exercise.model.Exercise`)."""
+    return {(exercise_id, part.name): {m.name for m in part.misconceptions}
+            for exercise_id, exercise in exercises.items() for part in exercise.parts}

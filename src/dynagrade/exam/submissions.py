@@ -10,8 +10,12 @@ whose ``STUDENT`` line names somebody else is rejected as impersonating and cred
 nobody. A CSV in a student's folder may hold only that student's rows; a CSV outside any
 student's folder is the staff's own export and its ``student_id`` column is trusted.
 
+A platform's bulk download (a Moodle or Canvas ``.zip``, :mod:`.downloads`) may stand in
+for a folder: each file belongs to the roster student whose platform id is in its name.
+
 When one student's exercise arrives twice, the one modified last counts (path order
-breaks ties) and a warning names both files.
+breaks ties) and a warning names both files; in a platform's download, where times say
+nothing, neither counts and both are reported.
 
 Files are data: links are not followed out of the folder given, only regular files are
 read (size checked first), devices and FIFOs are reported, and a message never quotes a
@@ -33,12 +37,12 @@ from pathlib import Path
 
 from ..exercise.datafile import DataFileError, file_kind, read_data_file
 from ..exercise.seeds import token_matches, variant_token
-from ..exercise.sheet import MAX_SHEET_BYTES, Sheet, SheetError, read_sheet
+from ..exercise.sheet import MAX_SHEET_BYTES, Sheet, SheetError, read_sheet, sheet_from_bytes
+from .downloads import MAX_CSV_BYTES, Identities, identities, read_download
 from .layouts import owner
 from .manifest import Manifest
 
 RESPONSE_HEADER = ("student_id", "exercise_id", "part", "answer")
-MAX_CSV_BYTES = 50_000_000
 
 
 @dataclass(frozen=True)
@@ -91,30 +95,59 @@ class _Exam:
 
 @dataclass(frozen=True)
 class Found:
-    """A file among the submissions: where, whose folder it was in, and its order."""
+    """A file among the submissions: where, whose folder it was in, and its order; a
+    file of a platform's download also carries its bytes (it is never written out)."""
 
     path: Path
     owner: str | None
     modified: int  # st_mtime_ns
     order: int
+    content: bytes | None = None
+
+    @property
+    def downloaded(self) -> bool:
+        """Whether the file came out of a platform's download."""
+        return self.content is not None
 
 
 SUFFIXES = (".py", ".csv")
 
 
-def walk(paths, roster, problems: list[Problem]) -> list[Found]:
-    """Every submission file in ``paths`` with its owner (:mod:`.layouts`); what cannot be
+def walk(paths, roster, problems: list[Problem], people: Identities | None = None,
+         platform: str | None = None, exercise_ids=()) -> list[Found]:
+    """Every submission file in ``paths`` with its owner (:mod:`.layouts`, or for a
+    platform's ``.zip`` download the roster's platform ids in ``people``); what cannot be
     a submission (a link out of the folder, a device, a FIFO) is reported."""
     found: list[Found] = []
     for argument in paths:
         argument = Path(argument)
-        if argument.is_dir() and not argument.is_symlink():
+        if argument.suffix.lower() == ".zip" and not argument.is_dir():
+            found += _download_files(argument, people, platform, problems, len(found),
+                                     exercise_ids)
+        elif argument.is_dir() and not argument.is_symlink():
             for path in _folder_files(argument, problems):
                 parts = (argument.resolve().name, *path.relative_to(argument).parts)
                 found.append(_found(path, owner(parts, roster), len(found)))
         else:
             parts = (argument.absolute().parent.name, argument.name)
             found.append(_found(argument, owner(parts, roster), len(found)))
+    return found
+
+
+def _download_files(archive: Path, people: Identities | None, platform: str | None,
+                    problems: list[Problem], start: int, exercise_ids=()) -> list[Found]:
+    """The files of a platform's download, each with its student; every entry refused or
+    unmatched is reported, with the exercise its file name points to (so that a student's
+    feedback says what was handed in and not graded)."""
+    found = []
+    for entry in read_download(archive, people, platform):
+        source = archive / entry.name
+        if entry.problem:
+            named = next((e for e in exercise_ids if e in source.name), "")
+            problems.append(Problem(entry.level, str(source), entry.problem,
+                                    entry.student_id or "", named))
+        else:
+            found.append(Found(source, entry.student_id, 0, start + len(found), entry.content))
     return found
 
 
@@ -157,12 +190,16 @@ def _folder_files(folder: Path, problems: list[Problem]) -> list[Path]:
     return files
 
 
-def collect(paths, manifest: Manifest) -> tuple[dict[tuple[str, str], Submission], list[Problem]]:
-    """The submission that counts for each (student, exercise), and every problem found."""
+def collect(paths, manifest: Manifest, roster=None,
+            platform: str | None = None) -> tuple[dict[tuple[str, str], Submission], list[Problem]]:
+    """The submission that counts for each (student, exercise), and every problem found.
+    ``roster`` (a roster file with platform id columns) maps the students of a
+    platform's download; ``platform`` says which platform made it (default: detected)."""
     exam = _Exam(manifest)
     problems: list[Problem] = []
     accepted: dict[tuple[str, str], list[tuple[Found, Submission]]] = {}
-    for found in walk(paths, exam.students, problems):
+    people = identities(roster, exam.students) if roster is not None else None
+    for found in walk(paths, exam.students, problems, people, platform, list(exam.parts)):
         if found.path.suffix.lower() == ".csv":
             submissions = _read_responses(found, exam, problems)
         else:
@@ -172,6 +209,9 @@ def collect(paths, manifest: Manifest) -> tuple[dict[tuple[str, str], Submission
                                 []).append((found, submission))
     chosen = {}
     for key, candidates in accepted.items():
+        if len(candidates) > 1 and any(found.downloaded for found, _ in candidates):
+            problems += _two_in_a_download(key, [s for _, s in candidates])
+            continue
         candidates.sort(key=lambda pair: (pair[0].modified, pair[0].order))
         for (_, earlier), (_, later) in zip(candidates, candidates[1:]):
             problems.append(Problem(
@@ -180,6 +220,17 @@ def collect(paths, manifest: Manifest) -> tuple[dict[tuple[str, str], Submission
                 "last counts; path order breaks a tie)", *key))
         chosen[key] = candidates[-1][1]
     return chosen, problems
+
+
+def _two_in_a_download(key: tuple[str, str], submissions: list[Submission]) -> list[Problem]:
+    """A student's exercise handed in more than once in a platform's download: which one
+    counts cannot be told (the download's times are not the hand-in times), so none does
+    and each is reported."""
+    sources = [s.source for s in submissions]
+    return [Problem("error", source, f"two files for {key[1]}, not graded: "
+                    f"{', '.join(Path(other).name for other in sources if other != source)} "
+                    "also answers it; keep the one that counts and grade again", *key)
+            for source in sources]
 
 
 def _guess_exercise(path: Path, exam: _Exam) -> str:
@@ -191,7 +242,8 @@ def _read_sheet(found: Found, exam: _Exam, problems: list[Problem]) -> list[Subm
     path, whose = found.path, found.owner or ""
     source = str(path)
     try:
-        sheet = read_sheet(path)
+        sheet = (sheet_from_bytes(found.content, source) if found.downloaded
+                 else read_sheet(path))
     except SheetError as error:
         problems.append(Problem("error", source, "corrupt, skipped: "
                                 + _without_path(error, path), whose,
@@ -239,7 +291,7 @@ def _without_path(error: Exception, path: Path) -> str:
 def _read_responses(found: Found, exam: _Exam, problems: list[Problem]) -> list[Submission]:
     source, whose = str(found.path), found.owner or ""
     try:
-        raw = read_data_file(found.path, MAX_CSV_BYTES)
+        raw = found.content if found.downloaded else read_data_file(found.path, MAX_CSV_BYTES)
     except DataFileError as error:
         problems.append(Problem("error", source, f"corrupt, skipped: {error}", whose))
         return []

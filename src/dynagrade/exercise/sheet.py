@@ -115,11 +115,17 @@ def read_sheet(path: str | Path) -> Sheet:
         raw = read_data_file(path, MAX_SHEET_BYTES)
     except DataFileError as error:
         raise SheetError(f"{path}: {error}") from None
+    return sheet_from_bytes(raw, str(path))
+
+
+def sheet_from_bytes(raw: bytes, where: str) -> Sheet:
+    """The answers of a filled-in file given as its bytes (UTF-8, a byte-order mark
+    dropped); ``where`` names it in error messages."""
     try:
         text = raw.decode("utf-8-sig")
     except UnicodeDecodeError as error:
-        raise SheetError(f"{path}: not UTF-8 text (byte {error.start})") from None
-    return parse_sheet(text, str(path))
+        raise SheetError(f"{where}: not UTF-8 text (byte {error.start})") from None
+    return parse_sheet(text, where)
 
 
 def parse_sheet(text: str, where: str = "<sheet>") -> Sheet:

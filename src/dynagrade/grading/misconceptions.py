@@ -18,6 +18,8 @@ DEGREES = "degrees for radians"
 RADIANS = "radians for degrees"
 TWO_PI = "factor 2π"
 POWER_OF_TEN = "power of ten"
+#: an answer in a unit of the wrong dimension (the verdict names it; no value is tried)
+UNIT = "unit"
 
 
 def numeric_candidates(expected: float, *, angle_unit: str | None = None,

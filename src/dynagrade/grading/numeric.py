@@ -7,7 +7,7 @@ import math
 from . import units
 from .errors import AnswerError, SpecError
 from .feedback import show_number, show_tolerance, show_value
-from .misconceptions import numeric_candidates
+from .misconceptions import UNIT, numeric_candidates
 from .quantity import Quantity, read_quantity, unit_info
 from .spec import NumericSpec
 from .tolerance import count_sigfigs, digits_needed, is_close, round_sig, same_sigfigs
@@ -94,7 +94,7 @@ def _verdict(spec: NumericSpec, e: float, q: Quantity, reading: _Reading) -> Ver
         text = f"Unit problem: {reading.unit_problem}."
         if u is not None:
             text += " The number is right." if value_ok else " The number is not right either."
-        return Verdict(False, score, text + reveal)
+        return Verdict(False, score, text + reveal, misconception=UNIT)
     unit_score = u if u is not None else 0.0
     found = _misconception(spec, e, reading.value, q)
     if found is not None:

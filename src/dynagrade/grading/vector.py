@@ -9,6 +9,7 @@ import numpy as np
 from . import units
 from .errors import AnswerError, SpecError
 from .feedback import show_number, show_value
+from .misconceptions import UNIT
 from .nodes import BinOp
 from .parser import parse_vector
 from .quantity import quantity_from_tree, unit_info
@@ -48,7 +49,7 @@ def grade_vector(spec: VectorSpec, expected, answer: str) -> Verdict:
     except AnswerError as error:
         return unreadable(str(error))
     if problem:
-        return Verdict(False, 0.0, f"Unit problem: {problem}.")
+        return Verdict(False, 0.0, f"Unit problem: {problem}.", misconception=UNIT)
     if len(values) != spec.size:
         return Verdict(False, 0.0, f"Not correct: the answer needs {spec.size} components, you gave {len(values)}.")
     if not np.all(np.isfinite(values)):

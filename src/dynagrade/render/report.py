@@ -18,6 +18,7 @@ from .figures import SVG_SETTINGS, inline_svg
 from ..exercise.numbers import answer_text, format_number
 from ..exercise.units import with_unit
 from .sheets import render_template
+from ..exam.stats import MIN_STUDENTS, PartStats
 
 if TYPE_CHECKING:
     from ..exam.manifest import ExamEntry, ExerciseEntry
@@ -153,10 +154,42 @@ def class_summary(rows) -> dict:
     }
 
 
+def share(part: int, whole: int) -> str:
+    """``part`` as a whole percentage of ``whole`` ("67 %"), or not defined for none."""
+    return NOT_DEFINED if not whole else f"{100 * part / whole:.0f} %"
+
+
+def reliability(stats: PartStats) -> str:
+    """How many students a part's statistics rest on, and whether that is too few."""
+    if not stats.answered:
+        return "no students"
+    if stats.few_students:
+        return f"{stats.answered} students: fewer than {MIN_STUDENTS}, a hint only"
+    return f"{stats.answered} students"
+
+
+def small_class_caution(stats: list[PartStats]) -> str:
+    """A sentence when any part's statistics rest on fewer than :data:`MIN_STUDENTS`
+    students ("" when none does)."""
+    few = [s for s in stats if s.answered and s.few_students]
+    if not few:
+        return ""
+    fewest = min(s.answered for s in few)
+    which = "every part" if len(few) == len([s for s in stats if s.answered]) \
+        else f"{len(few)} of the {len(stats)} parts"
+    return (f"the statistics of {which} rest on fewer than {MIN_STUDENTS} students (the "
+            f"fewest: {fewest}). With so few, one student more or less moves a difficulty, "
+            "a point-biserial correlation or an upper–lower index by a tenth or more: read "
+            "them, and the shares of wrong answers, as hints, not measurements.")
+
+
 def report_html(exam: ExamEntry, outcome) -> str:
-    """The class report: summary, histogram, item statistics and common wrong answers."""
+    """The class report: summary, histogram, item statistics (with a caution where they
+    rest on few students) and the wrong answers grouped by what explains them."""
     percents = [r["percent"] for r in outcome.rows if r["status"] != "absent"]
     return render_template(
         "report.html", exam=exam, outcome=outcome, summary=class_summary(outcome.rows),
         histogram=histogram(percents) if percents else None,
-        items=items_svg(outcome.stats) if percents else "", fmt=_stat)
+        items=items_svg(outcome.stats) if percents else "", fmt=_stat,
+        caution=small_class_caution(outcome.stats), reliability=reliability, share=share,
+        min_students=MIN_STUDENTS, wrong_parts=[s for s in outcome.stats if s.wrong])

@@ -86,8 +86,8 @@ def progress(data: ExamData, stored: list[StoredAnswer]) -> list[dict]:
 
 
 def class_report_html(data: ExamData, stored: list[StoredAnswer], folders=()) -> str:
-    """Class grading's report (histogram, item statistics, common wrong answers) of the
-    counted answers."""
+    """Class grading's report (histogram, item statistics, wrong answers by what explains
+    them) of the counted answers."""
     from ..exercise.loader import open_bank
     from ..render.report import report_html
 
