@@ -185,8 +185,10 @@ def test_symbols_named_without_a_domain_take_their_parameters_domains():
         Symbolic("mixed", expected="v*sin(theta)",
                  variables={"theta": Variable(-1, 1, "rad"), "v": None})))
     formula, mixed = exercise.parts[1], exercise.parts[2]
-    assert formula.variables == {"v": Variable(0.5, 3.5, "km/h")}  # 1..3 km/h, margin 0.5
-    assert mixed.variables == {"theta": Variable(-1, 1, "rad"), "v": Variable(0.5, 3.5, "km/h")}
+    # 1..3 km/h, margin 0.5; the parameter's printed symbol comes along
+    assert formula.variables == {"v": Variable(0.5, 3.5, "km/h", symbol="v")}
+    assert mixed.variables == {"theta": Variable(-1, 1, "rad"),
+                               "v": Variable(0.5, 3.5, "km/h", symbol="v")}
     assert list(mixed.variables) == ["theta", "v"]  # the author's order, as sheets show it
 
 

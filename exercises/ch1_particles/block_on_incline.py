@@ -88,7 +88,7 @@ slides down (eq. (1.74)).
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("a", "acceleration down the slope", unit="m/s^2", points=2,
+        Numeric("a", "acceleration down the slope", question=1, unit="m/s^2", points=2,
                 misconceptions=(
                     Misconception("sin and cos swapped",
                                   lambda p: p.g * (np.cos(p.alpha) - p.mu * np.sin(p.alpha)),
@@ -101,13 +101,13 @@ slides down (eq. (1.74)).
                                   lambda p: p.g * (np.sin(p.alpha) - p.mu),
                                   "On a slope N = m g cos α."),
                 )),
-        Numeric("N", "normal force", unit="N", points=1,
+        Numeric("N", "normal force", question=2, unit="N", points=1,
                 misconceptions=(
                     Misconception("normal force equals the weight", lambda p: p.m * p.g,
                                   "Only the component m g cos α presses on the slope."),
                 )),
-        Options("stops", "comes to rest", options=("yes", "no"), points=1),
-        Symbolic("a_formula", "acceleration as a formula", points=1,
+        Options("stops", "comes to rest", question=3, options=("yes", "no"), points=1),
+        Symbolic("a_formula", "acceleration as a formula", question=4, points=1,
                  expected="g*(sin(alpha) - mu*cos(alpha))",
                  variables=("g", "alpha", "mu"),
                  equals="a",

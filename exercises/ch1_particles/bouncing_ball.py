@@ -61,24 +61,24 @@ floor reverses the normal velocity and scales it by the coefficient of restituti
 """,
     solve=solve,
     parts=(
-        Numeric("v_out", "rebound speed", unit="m/s", points=1),
-        Numeric("h1", "height after the first bounce", unit="m", points=2,
+        Numeric("v_out", "rebound speed", question=1, unit="m/s", points=1),
+        Numeric("h1", "height after the first bounce", question=2, unit="m", points=2,
                 misconceptions=(
                     Misconception("e applied to the height", lambda p: p.e * p.h0,
                                   "e scales the speed; the height goes with the speed squared: "
                                   "h1 = e² h0."),
                 )),
-        Numeric("dT", "kinetic energy lost", unit="J", points=1,
+        Numeric("dT", "kinetic energy lost", question=3, unit="J", points=1,
                 misconceptions=(
                     Misconception("loss fraction 1 - e", lambda p: (1 - p.e) * p.m * p.g * p.h0,
                                   "The kinetic energy keeps the fraction e², so (1 − e²) is lost."),
                 )),
-        Numeric("h3", "height after the third bounce", unit="m", points=1,
+        Numeric("h3", "height after the third bounce", question=4, unit="m", points=1,
                 misconceptions=(
                     Misconception("e^3 instead of e^6", lambda p: p.e**3 * p.h0,
                                   "Each bounce multiplies the height by e²."),
                 )),
-        Symbolic("h1_formula", "height after the first bounce as a formula", points=1,
+        Symbolic("h1_formula", "height after the first bounce as a formula", question=5, points=1,
                  expected="e^2*h0",
                  variables=("e", "h0"),
                  equals="h1",

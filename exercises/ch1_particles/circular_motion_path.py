@@ -64,13 +64,13 @@ towards the centre. The acceleration is $a = \ddot s\, e_t + \frac{v^2}{\rho} e_
 """,
     solve=solve,
     parts=(
-        Numeric("v", "speed", unit="m/s", points=1),
-        Numeric("a_n", "normal acceleration", unit="m/s^2", points=2,
+        Numeric("v", "speed", question=1, unit="m/s", points=1),
+        Numeric("a_n", "normal acceleration", question=2, unit="m/s^2", points=2,
                 misconceptions=(
                     Misconception("initial speed used", lambda p: p.v0**2 / p.R,
                                   "Use the speed at time t: v = v0 + s̈ t."),
                 )),
-        Numeric("a_abs", "magnitude of the acceleration", unit="m/s^2", points=1,
+        Numeric("a_abs", "magnitude of the acceleration", question=3, unit="m/s^2", points=1,
                 misconceptions=(
                     Misconception("components added",
                                   lambda p: p.at + (p.v0 + p.at * p.t) ** 2 / p.R,
@@ -79,7 +79,7 @@ towards the centre. The acceleration is $a = \ddot s\, e_t + \frac{v^2}{\rho} e_
                                   lambda p: (p.v0 + p.at * p.t) ** 2 / p.R,
                                   "The car also speeds up along e_t."),
                 )),
-        Numeric("phi", "angle turned", unit="rad", points=1,
+        Numeric("phi", "angle turned", question=4, unit="rad", points=1,
                 misconceptions=(
                     Misconception("constant speed", lambda p: p.v0 * p.t / p.R,
                                   "s(t) = v0 t + s̈ t²/2, and φ = s/R, eq. (1.53)."),

@@ -80,19 +80,19 @@ $\ddot\varphi = 2c$ = {{ si.phiddot }} rad/s².
 """,
     solve=solve,
     parts=(
-        Vector("v", "velocity", unit="m/s", size=2, points=2,
+        Vector("v", "velocity", question=1, unit="m/s", size=2, points=2,
                misconceptions=(
                    Misconception("angle and rate mixed up",
                                  lambda p: (-p.r * np.sin(p.c * p.t**2), p.r * np.cos(p.c * p.t**2)),
                                  "v = r φ̇ (−sin φ, cos φ): do not forget the factor φ̇, eq. (1.19)."),
                )),
-        Numeric("speed", "speed", unit="m/s", points=1),
-        Vector("a", "acceleration", unit="m/s^2", size=2, points=2,
+        Numeric("speed", "speed", question=2, unit="m/s", points=1),
+        Vector("a", "acceleration", question=3, unit="m/s^2", size=2, points=2,
                misconceptions=(
                    Misconception("tangential part forgotten", _centripetal_only,
                                  "φ̈ ≠ 0: the acceleration also has r φ̈ along e_φ, eq. (1.20)."),
                )),
-        Numeric("a_abs", "magnitude of the acceleration", unit="m/s^2", points=1,
+        Numeric("a_abs", "magnitude of the acceleration", question=4, unit="m/s^2", points=1,
                 misconceptions=(
                     Misconception("centripetal part only",
                                   lambda p: p.r * (2 * p.c * p.t) ** 2,

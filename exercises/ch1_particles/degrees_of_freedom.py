@@ -7,6 +7,8 @@ from dynagrade.mechanics import kinematics
 COUNTS = ("0", "1", "2", "3")
 CASES = ("free particle", "particle sliding on a flat ground", "particle on a rigid link about a fixed point",
          "particle on a spring about a fixed point")
+#: the cases by the words the statement's questions 1-4 give them
+SHORT = ("free", "ground", "link", "spring")
 
 
 def solve(p):
@@ -34,7 +36,8 @@ counted). How many degrees of freedom does it have when it
 2. slides on a flat rigid ground (a line in 2D, a plane in 3D);
 3. is attached to a fixed point O by a rigid, massless link;
 4. is attached to a fixed point O by an elastic spring?
-5. Which of these cases need a constraint (reaction) force to enforce the motion?
+5. Which of these cases need a constraint (reaction) force to enforce the motion? Name
+   the cases by their numbers 1–4.
 """,
     solution=r"""
 A particle in $d$ dimensions has $d$ degrees of freedom (eq. (1.2)); every kinematic
@@ -54,10 +57,11 @@ Here $d$ = {{ d }}.
 """,
     solve=solve,
     parts=(
-        Options("free", "free particle", options=COUNTS, points=1),
-        Options("ground", "on the ground", options=COUNTS, points=1),
-        Options("link", "on a rigid link", options=COUNTS, points=1),
-        Options("spring", "on a spring", options=COUNTS, points=1),
-        Options("reaction", "cases with a reaction force", options=CASES, multiple=True, points=2),
+        Options("free", "free particle", question=1, options=COUNTS, points=1),
+        Options("ground", "on the ground", question=2, options=COUNTS, points=1),
+        Options("link", "on a rigid link", question=3, options=COUNTS, points=1),
+        Options("spring", "on a spring", question=4, options=COUNTS, points=1),
+        Options("reaction", "cases with a reaction force", question=5, options=CASES,
+                multiple=True, points=2, numbered=True, aliases=dict(zip(SHORT, CASES))),
     ),
 )

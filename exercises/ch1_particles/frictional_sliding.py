@@ -50,7 +50,7 @@ $T_2 - T_1 = W_{12}$, eq. (1.87), between the start ($T_1 = \tfrac{1}{2} m v_0^2
 """,
     solve=solve,
     parts=(
-        Numeric("dx", "stopping distance", unit="m", points=2,
+        Numeric("dx", "stopping distance", question=1, unit="m", points=2,
                 misconceptions=(
                     Misconception("factor 1/2 of the kinetic energy forgotten",
                                   lambda p: p.v0**2 / (p.mu * p.g),
@@ -58,15 +58,15 @@ $T_2 - T_1 = W_{12}$, eq. (1.87), between the start ($T_1 = \tfrac{1}{2} m v_0^2
                     Misconception("friction without g", lambda p: p.v0**2 / (2 * p.mu),
                                   "The friction force is µ N = µ m g."),
                 )),
-        Numeric("t_stop", "sliding time", unit="s", points=1),
-        Numeric("W", "work of friction", unit="J", points=1,
+        Numeric("t_stop", "sliding time", question=2, unit="s", points=1),
+        Numeric("W", "work of friction", question=3, unit="J", points=1,
                 misconceptions=(
                     Misconception("sign: friction work positive",
                                   lambda p: 0.5 * p.m * p.v0**2,
                                   "Friction opposes the motion, so its work is negative: "
                                   "W = −µ m g Δx = −m v0²/2."),
                 )),
-        Symbolic("dx_formula", "stopping distance as a formula", points=1,
+        Symbolic("dx_formula", "stopping distance as a formula", question=4, points=1,
                  expected="v0^2/(2*mu*g)",
                  variables=("v0", "mu", "g"),
                  equals="dx",

@@ -71,7 +71,7 @@ $\sum F_i = m a$, eq. (1.63), component by component (Example 1.7):
 """,
     solve=solve,
     parts=(
-        Numeric("N", "normal force", unit="N", points=2,
+        Numeric("N", "normal force", question=1, unit="N", points=2,
                 misconceptions=(
                     Misconception("normal force equals the weight", lambda p: p.m * p.g,
                                   "The rope also pulls upward: N = m g − F sin θ from the "
@@ -79,14 +79,14 @@ $\sum F_i = m a$, eq. (1.63), component by component (Example 1.7):
                     Misconception("rope pushes down", lambda p: p.m * p.g + p.F * np.sin(p.theta),
                                   "The rope pulls upward, which relieves the floor."),
                 )),
-        Numeric("a", "acceleration", unit="m/s^2", points=1,
+        Numeric("a", "acceleration", question=2, unit="m/s^2", points=1,
                 misconceptions=(
                     Misconception("whole rope force along the floor", lambda p: p.F / p.m,
                                   "Only the component F cos θ acts along e1."),
                 )),
-        Numeric("v_t", "speed at t", unit="m/s", points=1),
-        Numeric("N_free", "normal force without the rope", unit="N", points=1),
-        Symbolic("N_formula", "normal force as a formula", points=1,
+        Numeric("v_t", "speed at t", question=3, unit="m/s", points=1),
+        Numeric("N_free", "normal force without the rope", question=4, unit="N", points=1),
+        Symbolic("N_formula", "normal force as a formula", question=5, points=1,
                  expected="m*g - F*sin(theta)",
                  variables=("m", "g", "F", "theta"),
                  equals="N",

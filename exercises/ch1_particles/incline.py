@@ -86,7 +86,7 @@ slides up.
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("delta_x", "distance up the slope", unit="m", points=2,
+        Numeric("delta_x", "distance up the slope", question=1, unit="m", points=2,
                 misconceptions=(
                     Misconception("friction ignored",
                                   lambda p: p.v0**2 / (2 * p.g * np.sin(p.alpha)),
@@ -101,14 +101,14 @@ slides up.
                                   lambda p: p.v0**2 / (2 * p.g * (np.sin(p.alpha) + p.mu)),
                                   "On a slope the normal force is m g cos α, not m g."),
                 )),
-        Numeric("a_up", "deceleration", unit="m/s^2", points=1,
+        Numeric("a_up", "deceleration", question=2, unit="m/s^2", points=1,
                 misconceptions=(
                     Misconception("friction ignored", lambda p: p.g * np.sin(p.alpha),
                                   "Friction µ m g cos α adds to the pull of gravity down the "
                                   "slope."),
                 )),
-        Numeric("t_stop", "time to stop", unit="s", points=1),
-        Symbolic("delta_x_formula", "distance as a formula", points=1,
+        Numeric("t_stop", "time to stop", question=3, unit="s", points=1),
+        Symbolic("delta_x_formula", "distance as a formula", question=4, points=1,
                  expected="v0^2/(2*g*(sin(alpha) + mu*cos(alpha)))",
                  variables=("v0", "alpha", "mu", "g"),
                  equals="delta_x",

@@ -61,28 +61,28 @@ integrate (Example 1.2).
 """,
     solve=solve,
     parts=(
-        Numeric("v_t", "speed at t", unit="m/s", points=1,
+        Numeric("v_t", "speed at t", question=1, unit="m/s", points=1,
                 misconceptions=(
                     Misconception("constant deceleration k v0",
                                   lambda p: p.v0 * (1 - p.k * p.t),
                                   "The deceleration shrinks with the speed: separate variables, "
                                   "dv/v = -k dt, eq. (1.14)."),
                 )),
-        Numeric("t_1", "time to reach v1", unit="s", points=1,
+        Numeric("t_1", "time to reach v1", question=2, unit="s", points=1,
                 misconceptions=(
                     Misconception("constant deceleration k v0",
                                   lambda p: (1 - p.fraction) / p.k,
                                   "Use v(t) = v0 exp(-k t), so t = ln(v0/v1)/k."),
                 )),
-        Numeric("x_1", "distance to reach v1", unit="m", points=2,
+        Numeric("x_1", "distance to reach v1", question=3, unit="m", points=2,
                 misconceptions=(
                     Misconception("distance at the initial speed",
                                   lambda p: p.v0 * np.log(1 / p.fraction) / p.k,
                                   "The speed drops on the way: with a = v dv/dx = -k v, "
                                   "dx = -dv/k, eq. (1.17)."),
                 )),
-        Numeric("x_total", "total distance", unit="m", points=1),
-        Symbolic("v_formula", "v(t) as a formula", points=1, expected="v0*exp(-k*t)",
+        Numeric("x_total", "total distance", question=4, unit="m", points=1),
+        Symbolic("v_formula", "v(t) as a formula", question=5, points=1, expected="v0*exp(-k*t)",
                  variables=("v0", "k", "t"),
                  equals="v_t",
                  misconceptions=(

@@ -118,7 +118,7 @@ $R(1 - \cos\varphi)$ above the entry (Example 1.13).
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("v_min_entry", "smallest entry speed", unit="m/s", points=2,
+        Numeric("v_min_entry", "smallest entry speed", question=1, unit="m/s", points=2,
                 misconceptions=(
                     Misconception("only reaching the top",
                                   lambda p: looping.speed_to_reach_top(p.R, p.g),
@@ -126,21 +126,21 @@ $R(1 - \cos\varphi)$ above the entry (Example 1.13).
                                   "it must also keep N ≥ 0 there, which needs √(5gR), "
                                   "eq. (1.118)."),
                 )),
-        Numeric("N_max", "largest normal force", unit="N", points=1,
+        Numeric("N_max", "largest normal force", question=2, unit="N", points=1,
                 misconceptions=(
                     Misconception("weight forgotten", lambda p: p.m * p.v0**2 / p.R,
                                   "At the bottom the track carries the weight as well as "
                                   "providing the centripetal force."),
                 )),
-        Numeric("v_phi", "speed at phi", unit="m/s", points=1),
-        Numeric("N_phi", "normal force at phi", unit="N", points=1,
+        Numeric("v_phi", "speed at phi", question=3, unit="m/s", points=1),
+        Numeric("N_phi", "normal force at phi", question=4, unit="N", points=1,
                 misconceptions=(
                     Misconception("energy loss of the height ignored",
                                   lambda p: p.m * p.v0**2 / p.R + p.m * p.g * np.cos(p.phi),
                                   "The car is slower at height R(1 − cos φ): use v(φ) from "
                                   "the energy balance, eq. (1.116)."),
                 )),
-        Numeric("M_A", "clamping moment at A", unit="N*m", points=1,
+        Numeric("M_A", "clamping moment at A", question=5, unit="N*m", points=1,
                 misconceptions=(
                     Misconception("static moment",
                                   lambda p: looping.static_support_reactions(
@@ -148,7 +148,7 @@ $R(1 - \cos\varphi)$ above the entry (Example 1.13).
                                   "That is the moment of the car at rest; in motion the track "
                                   "pushes with N(φ), eq. (1.122)."),
                 )),
-        Symbolic("v_min_formula", "smallest entry speed as a formula", points=1,
+        Symbolic("v_min_formula", "smallest entry speed as a formula", question=6, points=1,
                  expected="sqrt(5*g*R)",
                  variables=("g", "R"),
                  equals="v_min_entry",

@@ -75,7 +75,8 @@ with the wall's normal. The coefficient of restitution is $e$ = {{ e }}.
 2. With what speed does it leave?
 3. How much kinetic energy is lost in the impact?
 4. What impulse does the wall give the puck (magnitude)?
-5. Write the rebound angle as a formula in $\\theta$ (`theta`) and $e$.
+5. Write the rebound angle, in radians, as a formula in $\\theta$ (`theta`, in radians)
+   and $e$.
 """,
     solution=r"""
 Split the velocity into the component along the wall's normal and the component along the
@@ -99,7 +100,7 @@ $v_n' = e\,v_n$ = {{ si.v_n_out }} m/s (with $e$ = {{ e }}) and $v_t' = v_t$.
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("theta_out", "rebound angle", unit="deg", points=2,
+        Numeric("theta_out", "rebound angle", question=1, unit="deg", points=2,
                 misconceptions=(
                     Misconception("mirror reflection", lambda p: p.theta,
                                   "Only the normal component is reduced, by e: the puck leaves "
@@ -109,24 +110,24 @@ $v_n' = e\,v_n$ = {{ si.v_n_out }} m/s (with $e$ = {{ e }}) and $v_t' = v_t$.
                                   "The smooth wall keeps the tangential part; the normal part "
                                   "shrinks: tan θ' = tan θ / e."),
                 )),
-        Numeric("v_out", "rebound speed", unit="m/s", points=1,
+        Numeric("v_out", "rebound speed", question=2, unit="m/s", points=1,
                 misconceptions=(
                     Misconception("whole velocity scaled by e", lambda p: p.e * p.v,
                                   "Only the normal component is scaled by e on a smooth wall."),
                 )),
-        Numeric("dT", "kinetic energy lost", unit="J", points=1,
+        Numeric("dT", "kinetic energy lost", question=3, unit="J", points=1,
                 misconceptions=(
                     Misconception("whole kinetic energy scaled",
                                   lambda p: (1 - p.e**2) * 0.5 * p.m * p.v**2,
                                   "Only the normal part's energy m (v cos θ)²/2 is reduced."),
                 )),
-        Numeric("J", "impulse of the wall", unit="N*s", points=1,
+        Numeric("J", "impulse of the wall", question=4, unit="N*s", points=1,
                 misconceptions=(
                     Misconception("factor (1 + e) missing",
                                   lambda p: p.m * p.v * np.cos(p.theta),
                                   "The normal velocity is reversed: Δv_n = (1 + e) v cos θ."),
                 )),
-        Symbolic("theta_formula", "rebound angle as a formula", points=1,
+        Symbolic("theta_formula", "rebound angle as a formula", question=5, points=1,
                  expected="atan(tan(theta)/e)",
                  variables=("theta", "e"),
                  equals="theta_out",

@@ -49,7 +49,7 @@ $\rho = \sqrt{1 + f'^2}^{\,3}/|f''|$ (eq. (1.48)).
 """,
     solve=solve,
     parts=(
-        Numeric("rho", "radius of curvature at x1", unit="m", points=2,
+        Numeric("rho", "radius of curvature at x1", question=1, unit="m", points=2,
                 misconceptions=(
                     Misconception("reciprocal of f''", lambda p: 1 / (2 * p.c),
                                   "Only at the vertex is ρ = 1/f''; elsewhere the slope enters "
@@ -58,13 +58,13 @@ $\rho = \sqrt{1 + f'^2}^{\,3}/|f''|$ (eq. (1.48)).
                                   lambda p: (1 + (2 * p.c * p.x1) ** 2) ** 0.5 / (2 * p.c),
                                   "The numerator is (1 + f'²) to the power 3/2, eq. (1.49)."),
                 )),
-        Numeric("rho_vertex", "radius of curvature at the vertex", unit="m", points=1),
-        Numeric("a_n", "normal acceleration", unit="m/s^2", points=1,
+        Numeric("rho_vertex", "radius of curvature at the vertex", question=2, unit="m", points=1),
+        Numeric("a_n", "normal acceleration", question=3, unit="m/s^2", points=1,
                 misconceptions=(
                     Misconception("vertex radius used", lambda p: p.v**2 * 2 * p.c,
                                   "Use the radius of curvature at the bead's position."),
                 )),
-        Symbolic("rho_formula", "radius of curvature as a formula", points=1,
+        Symbolic("rho_formula", "radius of curvature as a formula", question=4, points=1,
                  expected="(1 + 4*c^2*x1^2)^(3/2)/(2*c)",
                  variables=("c", "x1"),
                  equals="rho",

@@ -95,7 +95,7 @@ $\omega = 2\pi n$ = {{ si.omega }} rad/s (with $n$ in revolutions per second).
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("S", "string force", unit="N", points=2,
+        Numeric("S", "string force", question=1, unit="N", points=2,
                 misconceptions=(
                     Misconception("rpm used as rad/s", lambda p: p.m * p.l * (p.n * 60 / (2 * np.pi)) ** 2,
                                   "Convert: ω = 2π n / 60 in rad/s."),
@@ -106,14 +106,15 @@ $\omega = 2\pi n$ = {{ si.omega }} rad/s (with $n$ in revolutions per second).
                                   lambda p: p.m * p.l * p.n,
                                   "|S| = m l ω², eq. (1.84)."),
                 )),
-        Numeric("v", "speed", unit="m/s", points=1),
-        Numeric("S_double", "string force at twice the rate", unit="N", points=1,
+        Numeric("v", "speed", question=2, unit="m/s", points=1),
+        Numeric("S_double", "string force at twice the rate", question=3, unit="N", points=1,
                 misconceptions=(
                     Misconception("linear in omega",
                                   lambda p: 2 * particle.string_tension(p.m, p.l, p.n),
                                   "The force grows with ω²: twice the rate, four times the force."),
                 )),
-        Symbolic("S_formula", "string force as a formula", points=1, expected="m*l*omega^2",
+        Symbolic("S_formula", "string force as a formula", question=4,
+                 points=1, expected="m*l*omega^2",
                  variables={"m": None, "l": None,
                             "omega": Variable(0.5, 30, "rad/s")},
                  misconceptions=(

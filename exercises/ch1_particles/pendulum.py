@@ -75,7 +75,7 @@ $\ddot\varphi = -\frac{k}{m}\dot\varphi - \frac{g}{R}\sin\varphi$.
 """,
     solve=solve,
     parts=(
-        Numeric("T", "small-angle period", unit="s", points=1,
+        Numeric("T", "small-angle period", question=1, unit="s", points=1,
                 misconceptions=(
                     Misconception("angular frequency given as the period",
                                   lambda p: am.pendulum_natural_frequency(p.g, p.R),
@@ -83,7 +83,7 @@ $\ddot\varphi = -\frac{k}{m}\dot\varphi - \frac{g}{R}\sin\varphi$.
                     Misconception("sqrt(g/R) upside down", lambda p: 2 * np.pi * np.sqrt(p.g / p.R),
                                   "T = 2π √(R/g)."),
                 )),
-        Numeric("phi_ddot", "angular acceleration", unit="rad/s^2", points=2,
+        Numeric("phi_ddot", "angular acceleration", question=2, unit="rad/s^2", points=2,
                 misconceptions=(
                     Misconception("drag forgotten", lambda p: -p.g / p.R * np.sin(p.phi),
                                   "The drag torque −k R² φ̇ adds −(k/m) φ̇, eq. (1.149)."),
@@ -91,12 +91,12 @@ $\ddot\varphi = -\frac{k}{m}\dot\varphi - \frac{g}{R}\sin\varphi$.
                                   lambda p: -p.k / p.m * p.phidot - p.g / p.R * p.phi,
                                   "sin φ ≈ φ only holds for |φ| ≪ 1."),
                 )),
-        Numeric("S", "string force", unit="N", points=1,
+        Numeric("S", "string force", question=3, unit="N", points=1,
                 misconceptions=(
                     Misconception("static string force", lambda p: p.m * p.g * np.cos(p.phi),
                                   "The string also supplies the centripetal force m R φ̇²."),
                 )),
-        Symbolic("eom", "angular acceleration as a formula", points=1,
+        Symbolic("eom", "angular acceleration as a formula", question=4, points=1,
                  expected="-(k/m)*phidot - (g/R)*sin(phi)",
                  variables=("k", "m", "phidot", "g", "R", "phi"),
                  equals="phi_ddot",

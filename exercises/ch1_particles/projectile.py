@@ -93,7 +93,7 @@ $x_2(t) = v_0 t\sin\alpha - g t^2/2$.
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("x_max", "landing distance", unit="m", points=2,
+        Numeric("x_max", "landing distance", question=1, unit="m", points=2,
                 misconceptions=(
                     Misconception("sin(alpha) for sin(2 alpha)",
                                   lambda p: p.v0**2 * np.sin(p.alpha) / p.g,
@@ -104,21 +104,21 @@ $x_2(t) = v_0 t\sin\alpha - g t^2/2$.
                                   "That is where the ball is highest: it lands after twice "
                                   "the time to the peak."),
                 )),
-        Numeric("h_max", "peak height", unit="m", points=1,
+        Numeric("h_max", "peak height", question=2, unit="m", points=1,
                 misconceptions=(
                     Misconception("sin instead of sin squared",
                                   lambda p: p.v0**2 * np.sin(p.alpha) / (2 * p.g),
                                   "Only the vertical component v0 sin α is lost to gravity: "
                                   "h = (v0 sin α)² / (2g), eq. (1.82)."),
                 )),
-        Numeric("t_flight", "flight time", unit="s", points=1,
+        Numeric("t_flight", "flight time", question=3, unit="s", points=1,
                 misconceptions=(
                     Misconception("time to the peak",
                                   lambda p: projectile.peak_time(p.v0, p.alpha, p.g),
                                   "That is the time to the peak; the ball needs as long "
                                   "again to come down, eq. (1.79)."),
                 )),
-        Symbolic("x_max_formula", "landing distance as a formula", points=1,
+        Symbolic("x_max_formula", "landing distance as a formula", question=4, points=1,
                  expected="v0^2*sin(2*alpha)/g", variables=_LAUNCH, equals="x_max",
                  misconceptions=(
                      Misconception("sin(alpha) for sin(2 alpha)", "v0^2*sin(alpha)/g",

@@ -4,7 +4,7 @@ later time (Example 1.1)."""
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform, Vector, per_draw)
+                                Uniform, Variable, Vector, per_draw)
 from dynagrade.mechanics import kinematics
 
 
@@ -56,7 +56,7 @@ $\\boldsymbol e_2$). Gravity $g$ = {{ g }} acts in $-\\boldsymbol e_2$; neglect 
 1. Give the position $(x_1, x_2)$ at $t$ = {{ t }}.
 2. Give the velocity $(v_1, v_2)$ at that time.
 3. What is the height $x_2$ at that time?
-4. Write the height $x_2(t)$ as a formula in $h_0$, $v_{02}$ (the initial upward velocity), $g$ and $t$.
+4. Write the height $x_2(t)$ as a formula in $h_0$, $v_2(0)$ (the initial upward velocity), $g$ and $t$.
 """,
     solution=r"""
 The only force is gravity, so linear momentum balance gives the constant acceleration
@@ -75,12 +75,12 @@ $v_1(0)$ = {{ v01 }}, $v_2(0)$ = {{ v02 }}; $t$ = {{ t }}, $g$ = {{ g }}.
 """,
     solve=solve,
     parts=(
-        Vector("r_t", "position at t", unit="m", size=2, points=2,
+        Vector("r_t", "position at t", question=1, unit="m", size=2, points=2,
                misconceptions=(
                    Misconception("no factor 1/2", lambda p: (p.v01 * p.t, _no_half(p)),
                                  "Integrating a = -g twice gives -g t²/2, eq. (1.12)."),
                )),
-        Vector("v_t", "velocity at t", unit="m/s", size=2, points=2,
+        Vector("v_t", "velocity at t", question=2, unit="m/s", size=2, points=2,
                misconceptions=(
                    Misconception("horizontal velocity lost",
                                  lambda p: (0.0, p.v02 - p.g * p.t),
@@ -88,7 +88,7 @@ $v_1(0)$ = {{ v01 }}, $v_2(0)$ = {{ v02 }}; $t$ = {{ t }}, $g$ = {{ g }}.
                    Misconception("gravity adds upward", lambda p: (p.v01, p.v02 + p.g * p.t),
                                  "Gravity points in -e2: v2 = v2(0) - g t, eq. (1.11)."),
                )),
-        Numeric("x2_t", "height at t", unit="m", points=1,
+        Numeric("x2_t", "height at t", question=3, unit="m", points=1,
                 misconceptions=(
                     Misconception("no factor 1/2", _no_half,
                                   "Integrating a = -g twice gives -g t²/2, eq. (1.12)."),
@@ -96,9 +96,10 @@ $v_1(0)$ = {{ v01 }}, $v_2(0)$ = {{ v02 }}; $t$ = {{ t }}, $g$ = {{ g }}.
                                   lambda p: p.v02 * p.t - p.g * p.t**2 / 2,
                                   "Add the initial position r(0), eq. (1.12)."),
                 )),
-        Symbolic("x2_formula", "height as a formula", points=1,
+        Symbolic("x2_formula", "height as a formula", question=4, points=1,
                  expected="h0 + v02*t - g*t^2/2",
-                 variables=("h0", "v02", "g", "t"),
+                 variables={"h0": None, "v02": Variable(aliases=("v_{02}",)), "g": None,
+                            "t": None},
                  equals="x2_t",
                  misconceptions=(
                      Misconception("no factor 1/2", "h0 + v02*t - g*t^2",

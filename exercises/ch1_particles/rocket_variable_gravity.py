@@ -62,25 +62,25 @@ $\tfrac{1}{2} v^2 - \tfrac{1}{2} v_0^2 = -\int_0^x \frac{gR^2}{(R + \xi)^2}\,\ma
 """,
     solve=solve,
     parts=(
-        Numeric("v_x", "speed at height x", unit="km/s", points=1,
+        Numeric("v_x", "speed at height x", question=1, unit="km/s", points=1,
                 misconceptions=(
                     Misconception("constant gravity",
                                   lambda p: max(p.v0**2 - 2 * p.g * p.x, 0.0) ** 0.5,
                                   "g decreases with height: integrate v dv = a(x) dx, eq. (1.17)."),
                 )),
-        Numeric("h_max", "greatest height", unit="km", points=2,
+        Numeric("h_max", "greatest height", question=2, unit="km", points=2,
                 misconceptions=(
                     Misconception("constant gravity",
                                   lambda p: energy.height_gain(p.v0, 0.0, p.g),
                                   "v0²/(2g) holds only while g is constant; here g(x) falls off "
                                   "with height, eq. (1.17)."),
                 )),
-        Numeric("v_esc", "escape speed", unit="km/s", points=1,
+        Numeric("v_esc", "escape speed", question=3, unit="km/s", points=1,
                 misconceptions=(
                     Misconception("no factor 2", lambda p: (p.g * p.R) ** 0.5,
                                   "v0² = 2 g R x/(R+x) tends to 2 g R as x grows."),
                 )),
-        Symbolic("h_formula", "greatest height as a formula", points=1,
+        Symbolic("h_formula", "greatest height as a formula", question=4, points=1,
                  expected="R*v0^2/(2*g*R - v0^2)",
                  variables=("v0", "g", "R"),
                  equals="h_max",

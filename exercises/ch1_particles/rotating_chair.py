@@ -71,7 +71,7 @@ $r_0$ = {{ r0 }}, $r_1$ = {{ r1 }}).
 """,
     solve=solve,
     parts=(
-        Numeric("omega1", "final angular velocity", unit="rad/s", points=2,
+        Numeric("omega1", "final angular velocity", question=1, unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("chair's inertia forgotten",
                                   lambda p: p.omega0 * (p.r0 / p.r1) ** 2,
@@ -81,13 +81,13 @@ $r_0$ = {{ r0 }}, $r_1$ = {{ r1 }}).
                                   "The person does work; only the angular momentum is conserved "
                                   "(no torque about the axis, eq. 1.135)."),
                 )),
-        Numeric("H", "angular momentum", unit="kg*m^2/s", points=1,
+        Numeric("H", "angular momentum", question=2, unit="kg*m^2/s", points=1,
                 misconceptions=(
                     Misconception("mass only", lambda p: p.m * p.r0**2 * p.omega0,
                                   "Include the person and chair, I0 ω0."),
                 )),
-        Numeric("W", "work done by the person", unit="J", points=1),
-        Symbolic("omega_formula", "final angular velocity as a formula", points=1,
+        Numeric("W", "work done by the person", question=3, unit="J", points=1),
+        Symbolic("omega_formula", "final angular velocity as a formula", question=4, points=1,
                  expected="(I + m*r0^2)*omega0/(I + m*r1^2)",
                  variables=("I", "m", "r0", "r1", "omega0"),
                  equals="omega1",

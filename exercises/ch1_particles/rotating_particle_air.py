@@ -68,12 +68,12 @@ does. Use the angular momentum balance about the axis (Example 1.16).
 """,
     solve=solve,
     parts=(
-        Numeric("M0", "drag torque at t = 0", unit="N*m", points=1,
+        Numeric("M0", "drag torque at t = 0", question=1, unit="N*m", points=1,
                 misconceptions=(
                     Misconception("lever arm forgotten", lambda p: p.k * p.R * p.omega0,
                                   "M = R × F_d with |F_d| = k R φ̇: M = k R² φ̇, eq. (1.143)."),
                 )),
-        Numeric("omega_t", "angular velocity at t", unit="rad/s", points=2,
+        Numeric("omega_t", "angular velocity at t", question=2, unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("decay rate k/(m R^2)",
                                   lambda p: p.omega0 * np.exp(-p.k * p.t / (p.m * p.R**2)),
@@ -82,9 +82,9 @@ does. Use the angular momentum balance about the axis (Example 1.16).
                                   lambda p: p.omega0 * (1 - p.k * p.t / p.m),
                                   "Solve φ̈ = −(k/m) φ̇: the decay is exponential."),
                 )),
-        Numeric("t_half", "half-life of the angular velocity", unit="s", points=1),
-        Numeric("phi_total", "total angle", unit="rad", points=1),
-        Symbolic("omega_formula", "angular velocity as a formula", points=1,
+        Numeric("t_half", "half-life of the angular velocity", question=3, unit="s", points=1),
+        Numeric("phi_total", "total angle", question=4, unit="rad", points=1),
+        Symbolic("omega_formula", "angular velocity as a formula", question=5, points=1,
                  expected="omega0*exp(-k*t/m)",
                  variables=("omega0", "k", "m", "t"),
                  equals="omega_t",

@@ -96,13 +96,13 @@ only force doing work, and it is conservative: the energy $T + V$ is conserved
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("stretch", "stretch of the spring", unit="cm", points=1,
+        Numeric("stretch", "stretch of the spring", question=1, unit="cm", points=1,
                 misconceptions=(
                     Misconception("sideways pull taken as the stretch", lambda p: p.dx,
                                   "The spring's new length is √(Δx² + l0²); subtract l0."),
                 )),
-        Numeric("V1", "stored energy", unit="J", points=1),
-        Numeric("v", "speed below the fixed point", unit="m/s", points=2,
+        Numeric("V1", "stored energy", question=2, unit="J", points=1),
+        Numeric("v", "speed below the fixed point", question=3, unit="m/s", points=2,
                 misconceptions=(
                     Misconception("sideways pull taken as the stretch",
                                   lambda p: np.sqrt(p.k / p.m) * p.dx,
@@ -111,7 +111,7 @@ only force doing work, and it is conservative: the energy $T + V$ is conserved
                                   lambda p: np.sqrt(2 * p.k / p.m) * energy.slingshot_stretch(p.dx, p.l0),
                                   "Both energies carry a factor 1/2: k s²/2 = m v²/2."),
                 )),
-        Symbolic("v_formula", "speed as a formula", points=1,
+        Symbolic("v_formula", "speed as a formula", question=4, points=1,
                  expected="sqrt(k/m)*(sqrt(dx^2 + l0^2) - l0)",
                  variables=("k", "m", "dx", "l0"),
                  equals="v",

@@ -61,7 +61,7 @@ Measure heights from the starting point.
 """,
     solve=solve,
     parts=(
-        Numeric("h", "height above the start", unit="m", points=2,
+        Numeric("h", "height above the start", question=1, unit="m", points=2,
                 misconceptions=(
                     Misconception("factor 1/2 in the spring energy forgotten",
                                   lambda p: p.k * p.dx**2 / (p.m * p.g),
@@ -70,15 +70,17 @@ Measure heights from the starting point.
                                   lambda p: p.k * p.dx / (2 * p.m * p.g),
                                   "V = k Δx²/2: the compression enters squared."),
                 )),
-        Numeric("V_spring", "stored spring energy", unit="J", points=1),
-        Numeric("v_release", "speed at the spring's natural length", unit="m/s", points=1,
+        Numeric("V_spring", "stored spring energy", question=2, unit="J", points=1),
+        Numeric("v_release", "speed at the spring's natural length", question=3,
+                unit="m/s", points=1,
                 misconceptions=(
                     Misconception("gravity over the compression ignored",
                                   lambda p: (p.k / p.m) ** 0.5 * p.dx,
                                   "The particle also rises by Δx while the spring expands: "
                                   "subtract m g Δx."),
                 )),
-        Symbolic("h_formula", "height as a formula", points=1, expected="k*dx^2/(2*m*g)",
+        Symbolic("h_formula", "height as a formula", question=4,
+                 points=1, expected="k*dx^2/(2*m*g)",
                  variables=("k", "dx", "m", "g"),
                  equals="h",
                  misconceptions=(

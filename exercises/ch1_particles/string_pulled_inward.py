@@ -66,7 +66,7 @@ circumferential velocity $v_t = l\omega$ contributes: $H_B = m\,l\,v_t$ (eq. (1.
 """,
     solve=solve,
     parts=(
-        Numeric("omega1", "final angular velocity", unit="rad/s", points=2,
+        Numeric("omega1", "final angular velocity", question=1, unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("speed kept constant", lambda p: p.omega0 * p.l0 / p.l1,
                                   "It is l v_t that is conserved, and v_t = l ω: ω scales "
@@ -75,18 +75,18 @@ circumferential velocity $v_t = l\omega$ contributes: $H_B = m\,l\,v_t$ (eq. (1.
                                   "No torque about B acts: the angular momentum m l² ω is "
                                   "conserved, not ω."),
                 )),
-        Numeric("v_ratio", "speed ratio", points=1,
+        Numeric("v_ratio", "speed ratio", question=2, points=1,
                 misconceptions=(
                     Misconception("squared ratio", lambda p: (p.l0 / p.l1) ** 2,
                                   "v_t ∝ 1/l, eq. (1.154); ω ∝ 1/l²."),
                 )),
-        Numeric("W", "work of the pulling force", unit="J", points=1,
+        Numeric("W", "work of the pulling force", question=3, unit="J", points=1,
                 misconceptions=(
                     Misconception("no work", lambda p: 0.0,
                                   "The kinetic energy grows: the pulling force does work, "
                                   "W = T1 − T0."),
                 )),
-        Symbolic("omega_formula", "final angular velocity as a formula", points=1,
+        Symbolic("omega_formula", "final angular velocity as a formula", question=4, points=1,
                  expected="(l0/l1)^2*omega0",
                  variables=("l0", "l1", "omega0"),
                  equals="omega1",

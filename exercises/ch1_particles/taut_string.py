@@ -61,8 +61,8 @@ Here $l$ = {{ l }}, $\dot\varphi = \omega$ = {{ omega }} and $\ddot\varphi = \do
 """,
     solve=solve,
     parts=(
-        Numeric("v", "speed", unit="m/s", points=1),
-        Numeric("a_r", "radial acceleration", unit="m/s^2", points=2,
+        Numeric("v", "speed", question=1, unit="m/s", points=1),
+        Numeric("a_r", "radial acceleration", question=2, unit="m/s^2", points=2,
                 misconceptions=(
                     Misconception("sign: outward", lambda p: p.l * p.omega**2,
                                   "The centripetal acceleration points inward: a_r = −l φ̇², "
@@ -70,17 +70,17 @@ Here $l$ = {{ l }}, $\dot\varphi = \omega$ = {{ omega }} and $\ddot\varphi = \do
                     Misconception("omega not squared", lambda p: -p.l * p.omega,
                                   "a_r = r̈ − r φ̇² with r̈ = 0, eq. (1.33)."),
                 )),
-        Numeric("a_phi", "circumferential acceleration", unit="m/s^2", points=1,
+        Numeric("a_phi", "circumferential acceleration", question=3, unit="m/s^2", points=1,
                 misconceptions=(
                     Misconception("Coriolis-like term added", lambda p: 2 * p.l * p.alpha,
                                   "With r = l constant, ṙ = 0: a_φ = l φ̈ only."),
                 )),
-        Numeric("a_abs", "magnitude of the acceleration", unit="m/s^2", points=1,
+        Numeric("a_abs", "magnitude of the acceleration", question=4, unit="m/s^2", points=1,
                 misconceptions=(
                     Misconception("centripetal part only", lambda p: p.l * p.omega**2,
                                   "Combine both components: |a| = l √(φ̇⁴ + φ̈²)."),
                 )),
-        Symbolic("a_r_formula", "a_r as a formula", points=1, expected="-l*omega^2",
+        Symbolic("a_r_formula", "a_r as a formula", question=5, points=1, expected="-l*omega^2",
                  variables=("l", "omega"),
                  equals="a_r",
                  misconceptions=(

@@ -101,26 +101,26 @@ are perpendicular to the motion), so mechanical energy is conserved.
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("V", "speed just after the impact", unit="m/s", points=2,
+        Numeric("V", "speed just after the impact", question=1, unit="m/s", points=2,
                 misconceptions=(
                     Misconception("kinetic energy conserved in the impact", _energy_conserving_speed,
                                   "A plastic impact dissipates energy: only momentum is "
                                   "conserved during the impact."),
                 )),
-        Numeric("h", "rise of the block", unit="cm", points=1,
+        Numeric("h", "rise of the block", question=2, unit="cm", points=1,
                 misconceptions=(
                     Misconception("kinetic energy conserved in the impact",
                                   lambda p: p.m * p.v**2 / (2 * (p.m + p.M) * p.g),
                                   "Energy is conserved during the swing, not during the "
                                   "impact."),
                 )),
-        Numeric("fraction_lost", "fraction of kinetic energy lost", points=1,
+        Numeric("fraction_lost", "fraction of kinetic energy lost", question=3, points=1,
                 misconceptions=(
                     Misconception("masses swapped", lambda p: p.m / (p.m + p.M),
                                   "The fraction lost is M/(m + M): nearly all of it for a "
                                   "heavy block."),
                 )),
-        Symbolic("V_formula", "V as a formula", points=1, expected="m*v/(m+M)",
+        Symbolic("V_formula", "V as a formula", question=4, points=1, expected="m*v/(m+M)",
                  variables=("m", "M", "v"),
                  equals="V",
                  misconceptions=(

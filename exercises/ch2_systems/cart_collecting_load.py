@@ -56,7 +56,7 @@ $m(t) = m_0 + qt$ = {{ si.mass }} kg (with $m_0$ = {{ m0 }}, $q$ = {{ q }}, $t$ 
 """,
     solve=solve,
     parts=(
-        Numeric("v_t", "speed after loading for t", unit="m/s", points=2,
+        Numeric("v_t", "speed after loading for t", question=1, unit="m/s", points=2,
                 misconceptions=(
                     Misconception("speed unchanged", lambda p: p.v0,
                                   "The gravel arrives without horizontal momentum: the cart's "
@@ -66,13 +66,14 @@ $m(t) = m_0 + qt$ = {{ si.mass }} kg (with $m_0$ = {{ m0 }}, $q$ = {{ q }}, $t$ 
                                   "Catching the gravel is a plastic impact: momentum, not "
                                   "kinetic energy, is conserved."),
                 )),
-        Numeric("F_keep", "force to keep the speed", unit="N", points=1,
+        Numeric("F_keep", "force to keep the speed", question=2, unit="N", points=1,
                 misconceptions=(
                     Misconception("half the momentum flux", lambda p: 0.5 * p.q * p.v0,
                                   "The force supplies the momentum q v0 per second given to "
                                   "the gravel."),
                 )),
-        Symbolic("v_t_formula", "speed as a formula", points=1, expected="m0*v0/(m0+q*t)",
+        Symbolic("v_t_formula", "speed as a formula", question=3,
+                 points=1, expected="m0*v0/(m0+q*t)",
                  variables=("m0", "v0", "q", "t"),
                  equals="v_t",
                  misconceptions=(

@@ -59,7 +59,7 @@ force $\lambda v \cdot v = \lambda v^2$ (the momentum flux).
 """,
     solve=solve,
     parts=(
-        Numeric("F_x", "reading after x has fallen", unit="N", points=2,
+        Numeric("F_x", "reading after x has fallen", question=1, unit="N", points=2,
                 misconceptions=(
                     Misconception("weight of the piled chain only",
                                   lambda p: p.m / p.L * p.x * p.g,
@@ -69,14 +69,14 @@ force $\lambda v \cdot v = \lambda v^2$ (the momentum flux).
                                   "The arriving links have v² = 2 g x: the flux is λ v², "
                                   "twice the weight of the piled part."),
                 )),
-        Numeric("F_max", "reading just before the last link lands", unit="N", points=1,
+        Numeric("F_max", "reading just before the last link lands", question=2, unit="N", points=1,
                 misconceptions=(
                     Misconception("weight only", lambda p: p.m * p.g,
                                   "Just before the end the pan still stops links arriving with "
                                   "v² = 2 g L."),
                 )),
-        Numeric("F_end", "reading at rest", unit="N", points=1),
-        Symbolic("F_x_formula", "reading as a formula", points=1, expected="3*m*g*x/L",
+        Numeric("F_end", "reading at rest", question=3, unit="N", points=1),
+        Symbolic("F_x_formula", "reading as a formula", question=4, points=1, expected="3*m*g*x/L",
                  variables=("m", "L", "x", "g"),
                  equals="F_x",
                  misconceptions=(

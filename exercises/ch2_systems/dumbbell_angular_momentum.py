@@ -86,13 +86,13 @@ $M = m_1 + m_2$ = {{ si.M }} kg (with $m_1$ = {{ m1 }} and $m_2$ = {{ m2 }}).
 """,
     solve=solve,
     parts=(
-        Numeric("H_C", "angular momentum about C", unit="kg*m^2/s", points=2,
+        Numeric("H_C", "angular momentum about C", question=1, unit="kg*m^2/s", points=2,
                 misconceptions=(
                     Misconception("rotation about the middle of the rod", _geometric_centre_h,
                                   "The dumbbell spins about its centre of mass, which is not "
                                   "the middle of the rod when m1 ≠ m2."),
                 )),
-        Numeric("H_O", "angular momentum about O", unit="kg*m^2/s", points=2,
+        Numeric("H_O", "angular momentum about O", question=2, unit="kg*m^2/s", points=2,
                 misconceptions=(
                     Misconception("transfer term forgotten", lambda p: solve(p)["H_C"],
                                   "About O add r_OC × M v_C, the angular momentum of the "

@@ -80,19 +80,19 @@ $v_0\cos\alpha$ = {{ si.v_apex }} m/s, reached at $t_{\text{top} } = v_0\sin\alp
 """,
     solve=solve,
     parts=(
-        Numeric("v2", "speed of fragment 2 after the explosion", unit="m/s", points=1,
+        Numeric("v2", "speed of fragment 2 after the explosion", question=1, unit="m/s", points=1,
                 misconceptions=(
                     Misconception("speed of the shell kept", lambda p: p.v0 * np.cos(p.alpha),
                                   "Fragment 2 carries all the shell's momentum with only part "
                                   "of its mass."),
                 )),
-        Numeric("x2", "landing distance of fragment 2", unit="m", points=2,
+        Numeric("x2", "landing distance of fragment 2", question=2, unit="m", points=2,
                 misconceptions=(
                     Misconception("lands where the shell would have landed",
                                   lambda p: projectile.horizontal_range(p.v0, p.alpha, p.g),
                                   "That is where the centre of mass lands, not fragment 2."),
                 )),
-        Numeric("x_c", "landing point of the centre of mass", unit="m", points=1,
+        Numeric("x_c", "landing point of the centre of mass", question=3, unit="m", points=1,
                 misconceptions=(
                     Misconception("centre of mass at the point below the apex",
                                   lambda p: projectile.horizontal_range(p.v0, p.alpha, p.g) / 2,

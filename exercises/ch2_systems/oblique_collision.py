@@ -84,20 +84,22 @@ $v_{2,n}'$ = {{ si.v2n }} m/s.
 """,
     solve=solve,
     parts=(
-        Vector("v1_after", "velocity of ball 1 after the impact", unit="m/s", size=2, points=2,
+        Vector("v1_after", "velocity of ball 1 after the impact", question=1,
+               unit="m/s", size=2, points=2,
                misconceptions=(
                    Misconception("treated as a central impact",
                                  lambda p: (_central(p).v1, 0.0),
                                  "Only the component along the line of impact changes; the "
                                  "tangential component is kept."),
                )),
-        Vector("v2_after", "velocity of ball 2 after the impact", unit="m/s", size=2, points=2,
+        Vector("v2_after", "velocity of ball 2 after the impact", question=2,
+               unit="m/s", size=2, points=2,
                misconceptions=(
                    Misconception("treated as a central impact",
                                  lambda p: (_central(p).v2, 0.0),
                                  "Ball 2 is pushed along the line of impact only."),
                )),
-        Numeric("speed2", "speed of ball 2", unit="m/s", points=1,
+        Numeric("speed2", "speed of ball 2", question=3, unit="m/s", points=1,
                 misconceptions=(
                     Misconception("treated as a central impact", lambda p: _central(p).v2,
                                   "Only the normal component v cos(β) takes part in the "

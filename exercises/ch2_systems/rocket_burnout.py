@@ -75,27 +75,27 @@ $m(t)\,\dot v = q u - m(t)\,g, \qquad m(t) = m_0 - qt$.
 """,
     solve=solve,
     parts=(
-        Numeric("F", "thrust", unit="kN", points=1),
-        Numeric("dv_free", "speed gain without gravity", unit="m/s", points=1,
+        Numeric("F", "thrust", question=1, unit="kN", points=1),
+        Numeric("dv_free", "speed gain without gravity", question=2, unit="m/s", points=1,
                 misconceptions=(
                     Misconception("constant mass", lambda p: p.u * p.mf / p.tb * p.tb / p.m0,
                                   "The rocket gets lighter as it burns: integrate "
                                   "m dv = u dm to u ln(m0/m)."),
                 )),
-        Numeric("v_b", "burn-out speed", unit="m/s", points=2,
+        Numeric("v_b", "burn-out speed", question=3, unit="m/s", points=2,
                 misconceptions=(
                     Misconception("gravity ignored",
                                   lambda p: variable_mass.rocket_speed_gain(p.u, p.m0, p.m0 - p.mf),
                                   "Gravity takes g t_b off the speed during the burn."),
                 )),
-        Numeric("h_b", "burn-out height", unit="km", points=1,
+        Numeric("h_b", "burn-out height", question=4, unit="km", points=1,
                 misconceptions=(
                     Misconception("constant acceleration assumed",
                                   lambda p: 0.5 * solve(p)["v_b"] * p.tb,
                                   "The acceleration grows as the rocket gets lighter; "
                                   "integrate v(t)."),
                 )),
-        Symbolic("v_b_formula", "burn-out speed as a formula", points=1,
+        Symbolic("v_b_formula", "burn-out speed as a formula", question=5, points=1,
                  expected="u*ln(m0/(m0-mf)) - g*tb",
                  variables=("m0", "mf", "u", "tb", "g"),
                  equals="v_b",

@@ -69,7 +69,7 @@ $k$ = {{ k }}, $\delta$ = {{ delta }}; work–energy balance, Section 2.2.2).
 """,
     solve=solve,
     parts=(
-        Numeric("v1", "speed of cart 1", unit="m/s", points=2,
+        Numeric("v1", "speed of cart 1", question=1, unit="m/s", points=2,
                 misconceptions=(
                     Misconception("equal share of the energy", lambda p: _equal_share(p, p.m1),
                                   "The carts do not share the energy equally: momentum "
@@ -78,13 +78,13 @@ $k$ = {{ k }}, $\delta$ = {{ delta }}; work–energy balance, Section 2.2.2).
                                   lambda p: np.sqrt(p.k * p.delta**2 / p.m1),
                                   "Both carts move: the centre of mass stays at rest."),
                 )),
-        Numeric("v2", "speed of cart 2", unit="m/s", points=1,
+        Numeric("v2", "speed of cart 2", question=2, unit="m/s", points=1,
                 misconceptions=(
                     Misconception("equal share of the energy", lambda p: _equal_share(p, p.m2),
                                   "Use momentum conservation to split the energy."),
                 )),
-        Numeric("v_rel", "relative speed", unit="m/s", points=1),
-        Symbolic("v1_formula", "speed of cart 1 as a formula", points=1,
+        Numeric("v_rel", "relative speed", question=3, unit="m/s", points=1),
+        Symbolic("v1_formula", "speed of cart 1 as a formula", question=4, points=1,
                  expected="delta*sqrt(k*m2/(m1*(m1+m2)))",
                  variables=("m1", "m2", "k", "delta"),
                  equals="v1",

@@ -122,7 +122,7 @@ $m_2$ = {{ m2 }}).
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("v1_after", "velocity of cart 1 after the impact", unit="m/s", points=2,
+        Numeric("v1_after", "velocity of cart 1 after the impact", question=1, unit="m/s", points=2,
                 misconceptions=(
                     Misconception("elastic impact assumed", lambda p: _after(p, 1.0).v1,
                                   "That is the elastic result (e = 1); the relative velocity "
@@ -130,19 +130,19 @@ $m_2$ = {{ m2 }}).
                     Misconception("plastic impact assumed", lambda p: _after(p, 0.0).v1,
                                   "The carts do not move on together unless e = 0."),
                 )),
-        Numeric("v2_after", "velocity of cart 2 after the impact", unit="m/s", points=2,
+        Numeric("v2_after", "velocity of cart 2 after the impact", question=2, unit="m/s", points=2,
                 misconceptions=(
                     Misconception("elastic impact assumed", lambda p: _after(p, 1.0).v2,
                                   "That is the elastic result (e = 1)."),
                 )),
-        Numeric("dT", "kinetic energy lost", unit="J", points=1,
+        Numeric("dT", "kinetic energy lost", question=3, unit="J", points=1,
                 misconceptions=(
                     Misconception("(1 - e) instead of (1 - e^2)",
                                   lambda p: collisions.kinetic_energy_lost_in_impact(
                                       p.m1, p.m2, p.v1 - p.v2, p.e) / (1 + p.e),
                                   "The loss is ½ μ (1 − e²) v_rel² with the reduced mass μ."),
                 )),
-        Symbolic("dT_formula", "energy lost as a formula", points=1,
+        Symbolic("dT_formula", "energy lost as a formula", question=4, points=1,
                  expected="m1*m2*(1-e^2)*(v1-v2)^2/(2*(m1+m2))",
                  variables=("m1", "m2", "v1", "v2", "e"),
                  equals="dT",

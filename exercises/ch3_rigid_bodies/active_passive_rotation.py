@@ -93,7 +93,7 @@ $(0, -\sin\beta, \cos\beta)$.
 """,
     solve=solve,
     parts=(
-        Vector("a_rotated", "actively rotated vector", size=3, points=2, atol=0.02,
+        Vector("a_rotated", "actively rotated vector", question=1, size=3, points=2, atol=0.02,
                misconceptions=(
                    Misconception("passive instead of active",
                                  lambda p: _rotation(p).T @ _vector(p),
@@ -104,12 +104,12 @@ $(0, -\sin\beta, \cos\beta)$.
                                  "A turn about a fixed axis after another multiplies from "
                                  "the left: R = R1(β) R3(γ)."),
                )),
-        Vector("a_in_B", "components in the body frame", size=3, points=2, atol=0.02,
+        Vector("a_in_B", "components in the body frame", question=2, size=3, points=2, atol=0.02,
                misconceptions=(
                    Misconception("active instead of passive", lambda p: _rotation(p) @ _vector(p),
                                  "Components in a turned frame are R^T a."),
                )),
-        Numeric("angle", "total angle of rotation", unit="deg", points=1,
+        Numeric("angle", "total angle of rotation", question=3, unit="deg", points=1,
                 misconceptions=(
                     Misconception("angles added", lambda p: abs(p.beta) + abs(p.gamma),
                                   "Rotations about different axes do not add: the angle "

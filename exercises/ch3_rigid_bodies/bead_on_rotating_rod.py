@@ -65,20 +65,20 @@ to the rod, in the horizontal plane, the rod must supply the Coriolis term.
 """,
     solve=solve,
     parts=(
-        Numeric("r_t", "distance from O", unit="m", points=2,
+        Numeric("r_t", "distance from O", question=1, unit="m", points=2,
                 misconceptions=(
                     Misconception("uniform acceleration r0 Omega^2",
                                   lambda p: p.r0 + 0.5 * p.r0 * p.Omega**2 * p.t**2,
                                   "The centrifugal term Ω² r grows with r: r'' = Ω² r gives "
                                   "r = r0 cosh(Ω t)."),
                 )),
-        Numeric("rdot_t", "sliding speed", unit="m/s", points=1,
+        Numeric("rdot_t", "sliding speed", question=2, unit="m/s", points=1,
                 misconceptions=(
                     Misconception("speed of the rod point at r0", lambda p: p.r0 * p.Omega,
                                   "That is the circumferential speed at r0, not the speed "
                                   "along the rod."),
                 )),
-        Numeric("N", "force of the rod", unit="N", points=2,
+        Numeric("N", "force of the rod", question=3, unit="N", points=2,
                 misconceptions=(
                     Misconception("centripetal force instead of Coriolis",
                                   lambda p: p.m * p.Omega**2 * solve(p)["r_t"],

@@ -98,7 +98,7 @@ O and the work-energy balance (Section 3.2.2), both with the moment of inertia a
 """,
     solve=solve,
     parts=(
-        Numeric("I_O", "moment of inertia about O", unit="kg*m^2", points=2,
+        Numeric("I_O", "moment of inertia about O", question=1, unit="kg*m^2", points=2,
                 misconceptions=(
                     Misconception("disk not shifted to the pivot",
                                   lambda p: _moment_about_pivot(p, shift_disk=False),
@@ -112,13 +112,13 @@ O and the work-energy balance (Section 3.2.2), both with the moment of inertia a
                                       p.m_d, p.R)[2, 2],
                                   "The disk's own rotation adds ½ m_d R²."),
                 )),
-        Numeric("alpha0", "angular acceleration at release", unit="rad/s^2", points=1,
+        Numeric("alpha0", "angular acceleration at release", question=2, unit="rad/s^2", points=1,
                 misconceptions=(
                     Misconception("disk not shifted to the pivot",
                                   lambda p: _with_moment(p, _moment_about_pivot(p, shift_disk=False)),
                                   "The disk's moment of inertia about O needs m_d L²."),
                 )),
-        Numeric("omega_bottom", "angular speed at the vertical", unit="rad/s", points=1,
+        Numeric("omega_bottom", "angular speed at the vertical", question=3, unit="rad/s", points=1,
                 misconceptions=(
                     Misconception("all mass at the disk's centre",
                                   lambda p: np.sqrt(2 * p.g / p.L),

@@ -58,7 +58,7 @@ $v = g t$ downward.
 """,
     solve=solve,
     parts=(
-        Numeric("d", "eastward deflection", unit="mm", points=2,
+        Numeric("d", "eastward deflection", question=1, unit="mm", points=2,
                 misconceptions=(
                     Misconception("sin of the latitude",
                                   lambda p: frames.eastward_deflection_of_falling_body(
@@ -71,7 +71,7 @@ $v = g t$ downward.
                                   "The Coriolis acceleration 2 Ω_E cos λ g t grows with the "
                                   "fall speed: integrate it twice."),
                 )),
-        Symbolic("d_formula", "deflection as a formula", points=1,
+        Symbolic("d_formula", "deflection as a formula", question=2, points=1,
                  expected="Omega_E*g*cos(lat)*(2*h/g)^(3/2)/3",
                  variables=("Omega_E", "g", "h", "lat"),
                  equals="d",

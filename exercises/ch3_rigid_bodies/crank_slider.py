@@ -148,13 +148,13 @@ $\beta$ = {{ si.beta | deg }}°.
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("v_B", "slider velocity", unit="m/s", points=2,
+        Numeric("v_B", "slider velocity", question=1, unit="m/s", points=2,
                 misconceptions=(
                     Misconception("horizontal velocity of the crank pin", _pin_only,
                                   "The rod turns as well: transfer the velocity from A to B "
                                   "with v_B = v_A + ω_AB × r_AB."),
                 )),
-        Numeric("omega_rod", "angular speed of the rod", unit="rad/s", points=2,
+        Numeric("omega_rod", "angular speed of the rod", question=2, unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("rod turning with r omega / l",
                                   lambda p: p.r * _crank_rate(p) / p.l,

@@ -76,7 +76,8 @@ where $e_1'$ is the line of nodes. To add them we need all three in the body fra
 """,
     solve=solve,
     parts=(
-        Vector("omega_body", "body-frame angular velocity", unit="rad/s", size=3, points=3,
+        Vector("omega_body", "body-frame angular velocity", question=1,
+               unit="rad/s", size=3, points=3,
                atol=0.01,
                misconceptions=(
                    Misconception("rates added about one axis", _rates_added,
@@ -84,7 +85,8 @@ where $e_1'$ is the line of nodes. To add them we need all three in the body fra
                                  "symmetry axis: ψ' e3 has components ψ' (sin θ sin φ, "
                                  "sin θ cos φ, cos θ) in the body frame."),
                )),
-        Numeric("omega_abs", "magnitude of the angular velocity", unit="rad/s", points=1,
+        Numeric("omega_abs", "magnitude of the angular velocity", question=2,
+                unit="rad/s", points=1,
                 misconceptions=(
                     Misconception("rates added about one axis",
                                   lambda p: float(np.linalg.norm(_rates_added(p))),

@@ -71,13 +71,13 @@ change $\dot\psi\,e_3\times H$ equals the moment (gyroscope, Section 3.5.2).
 """,
     solve=solve,
     parts=(
-        Numeric("H", "spin angular momentum", unit="kg*m^2/s", points=1,
+        Numeric("H", "spin angular momentum", question=1, unit="kg*m^2/s", points=1,
                 misconceptions=(
                     Misconception("spin in revolutions, not radians",
                                   lambda p: inertia.inertia_tensor_disk(p.m, p.R)[2, 2] * p.n,
                                   "Convert the spin to rad/s: ω = 2π n."),
                 )),
-        Numeric("psi_dot", "precession rate", unit="rad/s", points=2,
+        Numeric("psi_dot", "precession rate", question=2, unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("transverse moment of inertia used",
                                   lambda p: p.m * p.g * p.l
@@ -87,6 +87,6 @@ change $\dot\psi\,e_3\times H$ equals the moment (gyroscope, Section 3.5.2).
                                   lambda p: p.g * p.l / (p.R**2 * _spin(p)),
                                   "A solid disk has I3 = ½ m R²."),
                 )),
-        Numeric("T", "precession period", unit="s", points=1),
+        Numeric("T", "precession period", question=3, unit="s", points=1),
     ),
 )

@@ -82,18 +82,18 @@ $\theta$ = {{ theta }}, $\omega_3$ = {{ w3 }} and $g$ = {{ g }}.
 """,
     solve=solve,
     parts=(
-        Numeric("w_min", "smallest axial spin", unit="rad/s", points=1),
-        Numeric("psi_slow", "slow precession rate", unit="rad/s", points=2,
+        Numeric("w_min", "smallest axial spin", question=1, unit="rad/s", points=1),
+        Numeric("psi_slow", "slow precession rate", question=2, unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("fast-top approximation", _fast_top,
                                   "Near the smallest spin the approximation m g l/(I3 ω3) is "
                                   "poor: solve the quadratic I1 cos θ ψ'² − I3 ω3 ψ' + m g l = 0."),
                 )),
-        Numeric("psi_fast", "fast precession rate", unit="rad/s", points=2,
+        Numeric("psi_fast", "fast precession rate", question=3, unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("fast-top approximation", _fast_top,
                                   "The fast root is near I3 ω3/(I1 cos θ)."),
                 )),
-        Numeric("psi_approx", "fast-top approximation", unit="rad/s", points=1),
+        Numeric("psi_approx", "fast-top approximation", question=4, unit="rad/s", points=1),
     ),
 )

@@ -90,31 +90,31 @@ $b$ = {{ b }}:
 """,
     solve=solve,
     parts=(
-        Numeric("I11", "I11 about the corner", unit="kg*m^2", points=1,
+        Numeric("I11", "I11 about the corner", question=1, unit="kg*m^2", points=1,
                 misconceptions=(
                     Misconception("centroidal value", lambda p: _centroidal(p)[0, 0],
                                   "Shift to the corner: add m (b/2)²."),
                     Misconception("wrong edge", lambda p: p.m * p.a**2 / 3,
                                   "I11 sums x2² + x3²: the edge b along e2 counts."),
                 )),
-        Numeric("I12", "product of inertia I12", unit="kg*m^2", points=1,
+        Numeric("I12", "product of inertia I12", question=2, unit="kg*m^2", points=1,
                 misconceptions=(
                     Misconception("sign convention", lambda p: p.m * p.a * p.b / 4,
                                   "The tensor carries −∫x1 x2 dm off the diagonal."),
                     Misconception("centroidal product", lambda p: -p.m * p.a * p.b / 12,
                                   "Shifting from the centre adds −m (a/2)(b/2) = −m a b/4."),
                 )),
-        Numeric("I33", "I33 about the corner", unit="kg*m^2", points=1,
+        Numeric("I33", "I33 about the corner", question=3, unit="kg*m^2", points=1,
                 misconceptions=(
                     Misconception("centroidal value", lambda p: _centroidal(p)[2, 2],
                                   "Shift to the corner: add m (a² + b²)/4."),
                 )),
-        Numeric("I_diag", "moment about the diagonal", unit="kg*m^2", points=2,
+        Numeric("I_diag", "moment about the diagonal", question=4, unit="kg*m^2", points=2,
                 misconceptions=(
                     Misconception("products of inertia dropped", _diagonal_without_products,
                                   "n·I n needs the off-diagonal entries too."),
                 )),
-        Numeric("I_min", "smallest principal moment", unit="kg*m^2", points=2,
+        Numeric("I_min", "smallest principal moment", question=5, unit="kg*m^2", points=2,
                 misconceptions=(
                     Misconception("smallest diagonal entry",
                                   lambda p: min(np.diag(_about_corner(p))),

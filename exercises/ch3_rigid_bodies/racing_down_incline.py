@@ -99,7 +99,7 @@ The three bodies differ only in $I_C/(mR^2)$: ½ for the cylinder, 2/5 for the s
 """,
     solve=solve,
     parts=(
-        Numeric("a_cyl", "acceleration of the cylinder", unit="m/s^2", points=2,
+        Numeric("a_cyl", "acceleration of the cylinder", question=1, unit="m/s^2", points=2,
                 misconceptions=(
                     Misconception("sliding without friction", lambda p: p.g * np.sin(p.alpha),
                                   "Part of the weight's work goes into rotation: "
@@ -108,28 +108,29 @@ The three bodies differ only in $I_C/(mR^2)$: ½ for the cylinder, 2/5 for the s
                                   lambda p: p.g * np.sin(p.alpha) / 2,
                                   "A solid cylinder has I_C = ½ m R², so a = (2/3) g sin α."),
                 )),
-        Numeric("t_sphere", "time of the sphere", unit="s", points=1,
+        Numeric("t_sphere", "time of the sphere", question=2, unit="s", points=1,
                 misconceptions=(
                     Misconception("rotation forgotten",
                                   lambda p: np.sqrt(2 * p.s / (p.g * np.sin(p.alpha))),
                                   "The sphere's acceleration is (5/7) g sin α."),
                 )),
-        Numeric("v_hoop", "speed of the hoop", unit="m/s", points=1,
+        Numeric("v_hoop", "speed of the hoop", question=3, unit="m/s", points=1,
                 misconceptions=(
                     Misconception("rotational kinetic energy forgotten",
                                   lambda p: np.sqrt(2 * p.g * p.s * np.sin(p.alpha)),
                                   "The hoop's kinetic energy is half translation, half "
                                   "rotation: m g h = m v²."),
                 )),
-        Numeric("mu_min", "smallest friction coefficient", points=1,
+        Numeric("mu_min", "smallest friction coefficient", question=4, points=1,
                 misconceptions=(
                     Misconception("friction equal to the weight component",
                                   lambda p: np.tan(p.alpha),
                                   "The friction force is I_C a / R², only a third of "
                                   "m g sin α for the cylinder."),
                 )),
-        Options("first", "first to arrive", options=("cylinder", "sphere", "hoop"), points=1),
-        Symbolic("a_cyl_formula", "acceleration of the cylinder as a formula", points=1,
+        Options("first", "first to arrive", question=5,
+                options=("cylinder", "sphere", "hoop"), points=1),
+        Symbolic("a_cyl_formula", "acceleration of the cylinder as a formula", question=6, points=1,
                  expected="2/3*g*sin(alpha)",
                  variables=("g", "alpha"),
                  equals="a_cyl",

@@ -139,21 +139,22 @@ $v$ = {{ v }}, $d$ = {{ d }} and $e$ = {{ e }}: $\hat F$ = {{ si.impulse }} N·s
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("omega", "angular speed of the rod", unit="rad/s", points=2,
+        Numeric("omega", "angular speed of the rod", question=1, unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("centroidal moment of inertia", _centroidal_omega,
                                   "The rod turns about O: use I_O = M L²/3 (parallel-axis "
                                   "theorem), not M L²/12."),
                 )),
-        Numeric("v_after", "velocity of the ball after the impact", unit="m/s", points=2,
+        Numeric("v_after", "velocity of the ball after the impact", question=2,
+                unit="m/s", points=2,
                 misconceptions=(
                     Misconception("rod treated as a free particle of mass M",
                                   lambda p: _free_particle_rebound(p),
                                   "The rod is pinned and turns: its effective mass at the "
                                   "contact is I_O / d²."),
                 )),
-        Numeric("R_pivot", "impulse at the pivot", unit="N*s", points=1),
-        Numeric("d_percussion", "centre of percussion", unit="m", points=1,
+        Numeric("R_pivot", "impulse at the pivot", question=3, unit="N*s", points=1),
+        Numeric("d_percussion", "centre of percussion", question=4, unit="m", points=1,
                 misconceptions=(
                     Misconception("centre of mass", lambda p: p.L / 2,
                                   "A blow at the centre of mass makes the pivot push back; "

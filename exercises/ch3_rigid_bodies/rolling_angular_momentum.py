@@ -69,8 +69,8 @@ $\omega = -\frac{v}{R}\,e_3$. Here $m$ = {{ m }}, $R$ = {{ R }} and $v$ = {{ v }
 """,
     solve=solve,
     parts=(
-        Numeric("H_C", "angular momentum about C", unit="kg*m^2/s", points=1),
-        Numeric("H_P", "angular momentum about P", unit="kg*m^2/s", points=2,
+        Numeric("H_C", "angular momentum about C", question=1, unit="kg*m^2/s", points=1),
+        Numeric("H_P", "angular momentum about P", question=2, unit="kg*m^2/s", points=2,
                 misconceptions=(
                     Misconception("transfer term forgotten", lambda p: _about(p, p.R),
                                   "About P add r_PC × m v_C, here −m R v."),
@@ -79,7 +79,7 @@ $\omega = -\frac{v}{R}\,e_3$. Here $m$ = {{ m }}, $R$ = {{ R }} and $v$ = {{ v }
                                   "C is above P and moves along +e1: r_PC × m v_C points "
                                   "along −e3, like the spin."),
                 )),
-        Numeric("H_A", "angular momentum about A", unit="kg*m^2/s", points=2,
+        Numeric("H_A", "angular momentum about A", question=3, unit="kg*m^2/s", points=2,
                 misconceptions=(
                     Misconception("lever arm h instead of R - h",
                                   lambda p: _about(p, p.R) - p.h * p.m * p.v,

@@ -117,27 +117,27 @@ $\varphi$ = {{ phi }}.
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("omega", "angular speed", unit="rad/s", points=1),
-        Vector("v_P", "velocity of P", unit="m/s", size=2, points=2,
+        Numeric("omega", "angular speed", question=1, unit="rad/s", points=1),
+        Vector("v_P", "velocity of P", question=2, unit="m/s", size=2, points=2,
                misconceptions=(
                    Misconception("rotation about the hub only",
                                  lambda p: rk.velocity_of_point(np.zeros(2), -p.v / p.R,
                                                                 _rim_position(p)),
                                  "Add the hub's velocity: v_P = v_C + ω × r_CP."),
                )),
-        Numeric("speed", "speed of P", unit="m/s", points=1,
+        Numeric("speed", "speed of P", question=3, unit="m/s", points=1,
                 misconceptions=(
                     Misconception("speed of the hub", lambda p: p.v,
                                   "Points of a rolling wheel move with ω times their distance "
                                   "from the contact point, not all with v."),
                 )),
-        Numeric("d_ICR", "distance from the instantaneous centre", unit="m", points=1,
+        Numeric("d_ICR", "distance from the instantaneous centre", question=4, unit="m", points=1,
                 misconceptions=(
                     Misconception("centre of rotation at the hub", lambda p: p.R,
                                   "Rolling without slipping: the contact point is at rest, it "
                                   "is the instantaneous centre of rotation."),
                 )),
-        Symbolic("speed_formula", "speed of P as a formula", points=1,
+        Symbolic("speed_formula", "speed of P as a formula", question=5, points=1,
                  expected="2*v*abs(sin(phi/2))",
                  variables=("v", "phi"),
                  equals="speed",

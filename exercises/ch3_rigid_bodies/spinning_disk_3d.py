@@ -69,18 +69,18 @@ $\Omega$ = {{ Omega }}, $d$ = {{ d }}, $R$ = {{ R }}, $\gamma$ = {{ gamma }}.
 """,
     solve=solve,
     parts=(
-        Vector("omega_vec", "angular velocity", unit="rad/s", size=3, points=1,
+        Vector("omega_vec", "angular velocity", question=1, unit="rad/s", size=3, points=1,
                misconceptions=(
                    Misconception("spin only", lambda p: (p.ws, 0.0, 0.0),
                                  "The disk also turns with the axle: ω = ω_s e1 + Ω e3."),
                )),
-        Vector("v_P", "velocity of P", unit="m/s", size=3, points=2,
+        Vector("v_P", "velocity of P", question=2, unit="m/s", size=3, points=2,
                misconceptions=(
                    Misconception("spin only",
                                  lambda p: rk.velocity_of_point(np.zeros(3), [p.ws, 0, 0], _r(p)),
                                  "Use the total angular velocity ω = ω_s e1 + Ω e3 in ω × r."),
                )),
-        Numeric("speed", "speed of P", unit="m/s", points=1,
+        Numeric("speed", "speed of P", question=3, unit="m/s", points=1,
                 misconceptions=(
                     Misconception("spin only", lambda p: p.ws * p.R,
                                   "The turning axle adds Ω e3 × r_OP."),

@@ -89,15 +89,15 @@ rotation, Section 3.4.4).
 """,
     solve=solve,
     parts=(
-        Numeric("I_max", "largest principal moment", unit="kg*m^2", points=1,
+        Numeric("I_max", "largest principal moment", question=1, unit="kg*m^2", points=1,
                 misconceptions=(
                     Misconception("edges squared of the largest edge only",
                                   lambda p: p.m * max(p.a, p.b, p.c) ** 2 / 12,
                                   "About an axis the box has m (sum of the squares of the "
                                   "two other edges)/12."),
                 )),
-        Options("stable", "stable axes", options=AXES, multiple=True, points=2),
-        Numeric("nu", "wobble frequency", unit="rad/s", points=2,
+        Options("stable", "stable axes", question=2, options=AXES, multiple=True, points=2),
+        Numeric("nu", "wobble frequency", question=3, unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("spin rate", lambda p: p.w,
                                   "The wobble frequency is ω0 √((I_k − I_i)(I_k − I_j)/(I_i I_j))."),

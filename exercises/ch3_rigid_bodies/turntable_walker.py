@@ -77,12 +77,12 @@ $\Omega$ = {{ Omega }} and $\dot\Omega$ = {{ Omega_dot }}.
 """,
     solve=solve,
     parts=(
-        Vector("a", "absolute acceleration", unit="m/s^2", size=2, points=3, atol=0.01,
+        Vector("a", "absolute acceleration", question=1, unit="m/s^2", size=2, points=3, atol=0.01,
                misconceptions=(
                    Misconception("Coriolis term forgotten", lambda p: _without_coriolis(p)[:2],
                                  "Walking in a rotating frame adds 2 Ω × v_rel along e_φ."),
                )),
-        Numeric("F", "horizontal floor force", unit="N", points=1,
+        Numeric("F", "horizontal floor force", question=2, unit="N", points=1,
                 misconceptions=(
                     Misconception("Coriolis term forgotten",
                                   lambda p: p.m * float(np.linalg.norm(_without_coriolis(p))),

@@ -69,7 +69,7 @@ from the axle, so the centre's speed and the spin are tied by $v = \omega r$.
 """,
     solve=solve,
     parts=(
-        Numeric("v", "speed after dropping h", unit="m/s", points=2,
+        Numeric("v", "speed after dropping h", question=1, unit="m/s", points=2,
                 misconceptions=(
                     Misconception("rotational kinetic energy forgotten",
                                   lambda p: np.sqrt(2 * p.g * p.h),
@@ -79,13 +79,13 @@ from the axle, so the centre's speed and the spin are tied by $v = \omega r$.
                                       p.h, p.g, p.m, p.R, _moment(p)),
                                   "The string unwinds from the axle: v = ω r."),
                 )),
-        Numeric("omega", "angular speed", unit="rad/s", points=1),
-        Numeric("S", "string tension", unit="N", points=1,
+        Numeric("omega", "angular speed", question=2, unit="rad/s", points=1),
+        Numeric("S", "string tension", question=3, unit="N", points=1,
                 misconceptions=(
                     Misconception("tension equal to the weight", lambda p: p.m * p.g,
                                   "The yo-yo accelerates downward: S < m g."),
                 )),
-        Symbolic("v_formula", "speed as a formula", points=1,
+        Symbolic("v_formula", "speed as a formula", question=4, points=1,
                  expected="sqrt(2*g*h/(1 + R^2/(2*r^2)))",
                  variables=("g", "h", "R", "r"),
                  equals="v",

@@ -75,13 +75,13 @@ $m\ddot x + c(\dot x - \dot y) + k(x - y) = 0$.
 """,
     solve=solve,
     parts=(
-        Numeric("Omega", "excitation frequency", unit="rad/s", points=1,
+        Numeric("Omega", "excitation frequency", question=1, unit="rad/s", points=1,
                 misconceptions=(Misconception("v / lambda", lambda p: p.v / p.lam,
                                               "v/lambda is in Hz: Omega = 2 pi v / lambda."),)),
-        Numeric("v_res", "resonant driving speed", unit="km/h", points=1,
+        Numeric("v_res", "resonant driving speed", question=2, unit="km/h", points=1,
                 misconceptions=(Misconception("2 pi forgotten", lambda p: _omega_n(p) * p.lam,
                                               "Omega = 2 pi v / lambda = omega_n gives v = omega_n lambda / (2 pi)."),)),
-        Numeric("X", "body amplitude", unit="mm", points=2,
+        Numeric("X", "body amplitude", question=3, unit="mm", points=2,
                 misconceptions=(
                     Misconception("force amplification V instead of transmissibility",
                                   lambda p: p.Y * vibrations.amplification_factor(_eta(p), vibrations.damping_ratio(p.c, p.k, p.m)),

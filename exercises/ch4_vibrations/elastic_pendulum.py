@@ -120,7 +120,7 @@ it (Section 4.1; equilibrium and linearisation, Section 4.2).
 """,
     solve=solve,
     parts=(
-        Symbolic("r_ddot", "radial acceleration", points=2,
+        Symbolic("r_ddot", "radial acceleration", question=1, points=2,
                  expected="r*phidot^2 - k/m*(r - L0) + g*cos(phi)", variables=_VARS,
                  misconceptions=(
                      Misconception("centripetal term missing", "-k/m*(r - L0) + g*cos(phi)",
@@ -128,13 +128,13 @@ it (Section 4.1; equilibrium and linearisation, Section 4.2).
                      Misconception("spring force with r instead of r - L0", "r*phidot^2 - k/m*r + g*cos(phi)",
                                    "The spring is stretched by r - L0, not by r."),
                  )),
-        Numeric("r_static", "static distance", unit="m", points=1,
+        Numeric("r_static", "static distance", question=2, unit="m", points=1,
                 misconceptions=(Misconception("unstretched length", lambda p: p.L0,
                                               "The weight stretches the spring by m g / k."),)),
-        Numeric("omega_r", "frequency of the stretching mode", unit="rad/s", points=1,
+        Numeric("omega_r", "frequency of the stretching mode", question=3, unit="rad/s", points=1,
                 misconceptions=(Misconception("f for omega", lambda p: frequencies(p)[0] / (2 * np.pi),
                                               "omega is in rad/s; f = omega/(2 pi)."),)),
-        Numeric("omega_phi", "frequency of the swinging mode", unit="rad/s", points=2,
+        Numeric("omega_phi", "frequency of the swinging mode", question=3, unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("unstretched length as pendulum length", lambda p: np.sqrt(p.g / p.L0),
                                   "The pendulum swings about the stretched length r_s = L0 + m g/k."),

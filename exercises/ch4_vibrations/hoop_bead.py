@@ -77,10 +77,10 @@ Here $m$ = {{ m }}, $R$ = {{ R }}, $g$ = {{ g }} and $\Omega$ = {{ Omega }} = {{
 """,
     solve=solve,
     parts=(
-        Numeric("Omega_c", "critical spin rate", unit="rad/s", points=1,
+        Numeric("Omega_c", "critical spin rate", question=1, unit="rad/s", points=1,
                 misconceptions=(Misconception("sqrt(R/g)", lambda p: np.sqrt(p.R / p.g),
                                               "Omega_c^2 = g/R: check the dimension (1/s)."),)),
-        Numeric("theta_star", "equilibrium angle", unit="deg", points=2,
+        Numeric("theta_star", "equilibrium angle", question=2, unit="deg", points=2,
                 misconceptions=(
                     Misconception("arcsin for arccos", lambda p: np.arcsin(p.g / (p.R * p.Omega**2)),
                                   "The equilibrium condition is cos(theta*) = g/(R Omega^2)."),
@@ -88,8 +88,10 @@ Here $m$ = {{ m }}, $R$ = {{ R }}, $g$ = {{ g }} and $\Omega$ = {{ Omega }} = {{
                                   lambda p: np.arccos(min(1.0, p.g / (p.R * (p.Omega * 60 / (2 * np.pi))**2))),
                                   "Convert rpm to rad/s: multiply by 2 pi / 60."),
                 )),
-        Options("bottom", "stability of the lowest point", options=("stable", "unstable"), points=1),
-        Numeric("omega", "frequency of small oscillations about theta*", unit="rad/s", points=2,
+        Options("bottom", "stability of the lowest point", question=3,
+                options=("stable", "unstable"), points=1),
+        Numeric("omega", "frequency of small oscillations about theta*", question=4,
+                unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("the spin rate", lambda p: p.Omega,
                                   "Linearize: V*''(theta*) = m R^2 Omega^2 sin^2(theta*), so omega = Omega sin(theta*)."),

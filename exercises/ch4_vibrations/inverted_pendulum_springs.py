@@ -67,7 +67,9 @@ $k$ = {{ k }}, one on each side, are attached to the rod at the height
 $a = {{ a_frac.value }}\\,L$ above the pin; they are relaxed when the rod is upright and
 stay horizontal. Let $\\theta$ be the rod's angle from the vertical; $g$ = {{ g }}.
 
-1. Write the potential energy $V(\\theta)$ as an expression in `theta`, `m`, `g`, `L`, `k`, `a`.
+1. Write the potential energy $V(\\theta)$ as an expression in `theta`, `m`, `g`, `L`, `k`, `a`,
+   with the zero level of gravity's potential at the pin (an additive constant does not
+   matter and is not graded).
 2. Which spring stiffness $k_{\\min}$ is at least needed for the upright position to be stable?
 3. With the given springs, what is the angular frequency of small oscillations about the upright position?
 """,
@@ -93,18 +95,19 @@ $J\ddot\theta + V''(0)\,\theta = 0$ (equilibrium and stability, Section 4.2).
 """,
     solve=solve,
     parts=(
-        Symbolic("V", "potential energy", points=1,
+        Symbolic("V", "potential energy", question=1, points=1, up_to_constant=("theta",),
                  expected="m*g*L/2*cos(theta) + k*a^2*sin(theta)^2",
                  variables={"theta": Variable(-1.5, 1.5, "rad"), "m": None, "g": None, "L": None,
                             "k": None, "a": Variable(0.1, 3, "m")},
                  misconceptions=(Misconception("one spring only", "m*g*L/2*cos(theta) + k*a^2*sin(theta)^2/2",
                                                "Both springs are stretched (one compressed) by a sin(theta)."),)),
-        Numeric("k_min", "minimum spring stiffness", unit="N/m", points=2,
+        Numeric("k_min", "minimum spring stiffness", question=2, unit="N/m", points=2,
                 misconceptions=(
                     Misconception("one spring only", lambda p: p.m * p.g * p.L / (2 * (p.a_frac * p.L) ** 2),
                                   "Each of the two springs adds k a^2 to V''(0)."),
                 )),
-        Numeric("omega", "angular frequency of small oscillations", unit="rad/s", points=2,
+        Numeric("omega", "angular frequency of small oscillations", question=3,
+                unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("gravity forgotten", lambda p: np.sqrt(2 * p.k * (p.a_frac * p.L) ** 2 / (p.m * p.L**2 / 3)),
                                   "Gravity destabilizes: V''(0) = 2 k a^2 - m g L/2."),

@@ -84,6 +84,7 @@ Let $\\theta$ be the angle of the rod from the downward vertical; $g$ = {{ g }}.
    in `theta`, `m`, `L`, `g` and `kt` (valid for large angles).
 2. Linearize about $\\theta = 0$: what is the natural angular frequency $\\omega$?
 3. What is the natural frequency $f$ in Hz, and the period of small oscillations?
+4. Give $\\omega$ of question 2 as a formula in `m`, `L`, `g` and `kt`.
 """,
     solution=r"""
 One generalized coordinate, $\theta$: Lagrange's equation
@@ -104,10 +105,11 @@ hanging position.
    $g$ = {{ g }}: $\omega$ = {{ answers.omega }}.
 3. **Frequency and period.** $f = \omega/(2\pi)$ = {{ answers.f }} and
    $T = 2\pi/\omega$ = {{ answers.T_period }}.
+4. **Formula.** $\omega = \sqrt{g/L + k_t/(mL^2)}$, written as `{{ answers.omega_formula }}`.
 """,
     solve=solve,
     parts=(
-        Symbolic("theta_ddot", "angular acceleration", points=2,
+        Symbolic("theta_ddot", "angular acceleration", question=1, points=2,
                  expected="-g/L*sin(theta) - kt*theta/(m*L^2)", variables=_VARS,
                  misconceptions=(
                      Misconception("linearized too early", "-g/L*theta - kt*theta/(m*L^2)",
@@ -115,7 +117,7 @@ hanging position.
                      Misconception("spring torque not divided by the inertia", "-g/L*sin(theta) - kt*theta",
                                    "d/dt(dT/dtheta') = m L^2 theta'': divide every torque by m L^2."),
                  )),
-        Numeric("omega", "natural angular frequency", unit="rad/s", points=2,
+        Numeric("omega", "natural angular frequency", question=2, unit="rad/s", points=2,
                 misconceptions=(
                     Misconception("spring forgotten", lambda p: np.sqrt(p.g / p.L),
                                   "The torsional spring adds k_t/(m L^2) to omega^2."),
@@ -124,13 +126,13 @@ hanging position.
                     Misconception("f for omega", lambda p: omega(p) / (2 * np.pi),
                                   "omega is in rad/s; f = omega/(2 pi) is in Hz."),
                 )),
-        Numeric("f", "natural frequency", unit="Hz", points=1,
+        Numeric("f", "natural frequency", question=3, unit="Hz", points=1,
                 misconceptions=(Misconception("omega for f", omega,
                                               "f = omega/(2 pi): a frequency in Hz counts cycles per second."),)),
-        Numeric("T_period", "period", unit="s", points=1,
+        Numeric("T_period", "period", question=3, unit="s", points=1,
                 misconceptions=(Misconception("1/omega for the period", lambda p: 1 / omega(p),
                                               "The period is 2 pi / omega."),)),
-        Symbolic("omega_formula", "omega as a formula", points=1,
+        Symbolic("omega_formula", "omega as a formula", question=4, points=1,
                  expected="sqrt(g/L + kt/(m*L^2))", variables={k: v for k, v in _VARS.items() if k != "theta"},
                  equals="omega"),
     ),

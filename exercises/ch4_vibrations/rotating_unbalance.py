@@ -133,17 +133,17 @@ $n$ = {{ n }}, i.e. $\Omega$ = {{ si.n }} rad/s (one revolution is $2\pi$).
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("n_crit", "critical speed", unit="rpm", points=1,
+        Numeric("n_crit", "critical speed", question=1, unit="rpm", points=1,
                 misconceptions=(Misconception("rad/s read as rpm", lambda p: np.sqrt(p.k / p.M) * 2 * np.pi / 60,
                                               "omega_n = sqrt(k/M) is in rad/s: multiply by 60/(2 pi) for rpm."),)),
-        Numeric("X", "vibration amplitude", unit="mm", points=2,
+        Numeric("X", "vibration amplitude", question=2, unit="mm", points=2,
                 misconceptions=(
                     Misconception("rpm used as rad/s", lambda p: amplitude(p, p.n * 60 / (2 * np.pi)),
                                   "Convert the speed to rad/s: Omega = 2 pi n / 60."),
                     Misconception("static deflection m_u e Omega^2 / k", lambda p: p.m_u * p.e * p.n**2 / p.k,
                                   "The force m_u e Omega^2 is amplified by V(eta, zeta)."),
                 )),
-        Numeric("F_T", "transmitted force amplitude", unit="N", points=2,
+        Numeric("F_T", "transmitted force amplitude", question=3, unit="N", points=2,
                 misconceptions=(
                     Misconception("spring force only", lambda p: p.k * amplitude(p),
                                   "The damper also passes c Omega X, out of phase with the spring force."),

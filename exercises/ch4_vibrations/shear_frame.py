@@ -119,7 +119,7 @@ in parallel (column stiffness, Section 5.1).
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("k", "storey stiffness", unit="N/m", points=1,
+        Numeric("k", "storey stiffness", question=1, unit="N/m", points=1,
                 misconceptions=(
                     Misconception("cantilever columns 3EI/h^3",
                                   lambda p: storey_stiffness(p, stiffness.cantilever_tip_stiffness(p.E, p.I, p.h)),
@@ -127,17 +127,17 @@ in parallel (column stiffness, Section 5.1).
                     Misconception("one column", lambda p: stiffness.column_sway_stiffness(p.E, p.I, p.h),
                                   "The columns of a storey act in parallel: their stiffnesses add."),
                 )),
-        Numeric("f1", "first natural frequency", unit="Hz", points=2,
+        Numeric("f1", "first natural frequency", question=2, unit="Hz", points=2,
                 misconceptions=(
                     Misconception("omega for f", lambda p: 2 * np.pi * _f1(p), "f = omega/(2 pi)."),
                     Misconception("cantilever columns", lambda p: _f1(p, stiffness.cantilever_tip_stiffness(p.E, p.I, p.h)),
                                   "Clamped-clamped columns: 12 EI/h^3."),
                 )),
-        Numeric("f2", "second natural frequency", unit="Hz", points=1,
+        Numeric("f2", "second natural frequency", question=2, unit="Hz", points=1,
                 misconceptions=(Misconception("omega for f", lambda p: 2 * np.pi * solve(p)["f2"], "f = omega/(2 pi)."),)),
-        Numeric("r1", "x2/x1 in mode 1", points=1,
+        Numeric("r1", "x2/x1 in mode 1", question=3, points=1,
                 misconceptions=(Misconception("inverted ratio", lambda p: 1 / solve(p)["r1"],
                                               "The ratio asked is roof over first floor, x2/x1."),)),
-        Numeric("r2", "x2/x1 in mode 2", points=1),
+        Numeric("r2", "x2/x1 in mode 2", question=3, points=1),
     ),
 )

@@ -81,18 +81,18 @@ mode ($\omega = 0$) and one torsional mode, in which the total angular momentum 
 """,
     solve=solve,
     parts=(
-        Numeric("kt", "torsional stiffness", unit="N*m", points=1,
+        Numeric("kt", "torsional stiffness", question=1, unit="N*m", points=1,
                 misconceptions=(Misconception("second moment I instead of I_p",
                                               lambda p: stiffness.torsional_stiffness(p.G, stiffness.circle_second_moment(p.d), p.L),
                                               "Torsion uses the polar moment I_p = pi d^4/32."),)),
-        Numeric("f", "torsional natural frequency", unit="Hz", points=2,
+        Numeric("f", "torsional natural frequency", question=2, unit="Hz", points=2,
                 misconceptions=(
                     Misconception("disk 2 clamped", lambda p: vibrations.frequency_in_hertz(
                         vibrations.natural_frequency(_system(p)[0][1, 1], _J(p.m1, p.R1))),
                                   "Both disks turn: omega^2 = k_t (J1 + J2)/(J1 J2)."),
                     Misconception("omega for f", lambda p: 2 * np.pi * solve(p)["f"], "f = omega/(2 pi)."),
                 )),
-        Numeric("node", "distance of the node from disk 1", unit="m", points=2,
+        Numeric("node", "distance of the node from disk 1", question=3, unit="m", points=2,
                 misconceptions=(
                     Misconception("the middle", lambda p: p.L / 2, "The node lies nearer to the heavier disk."),
                     Misconception("J1 and J2 swapped", lambda p: p.L - solve(p)["node"],

@@ -70,9 +70,9 @@ the admissible $\beta$ (flexural vibration, Section 5.3.3).
 """,
     solve=solve,
     parts=(
-        Numeric("beta1L", "first root beta_1 L", points=1, rtol=1e-3,
+        Numeric("beta1L", "first root beta_1 L", question=1, points=1, rtol=1e-3,
                 misconceptions=(Misconception("pi/2", lambda p: np.pi / 2, "pi/2 is the root of cos alone; cosh shifts it to 1.875."),)),
-        Numeric("f1", "first natural frequency", unit="Hz", points=2,
+        Numeric("f1", "first natural frequency", question=2, unit="Hz", points=2,
                 misconceptions=(
                     Misconception("simply supported", lambda p: _f(p, "simply supported")[0],
                                   "The clamped-free beam has beta_1 L = 1.875, not pi."),
@@ -80,7 +80,7 @@ the admissible $\beta$ (flexural vibration, Section 5.3.3).
                     Misconception("b and h swapped in I", lambda p: _f(p, EI=_EI(p, b=p.h, h=p.b))[0],
                                   "Bending across the thickness: I = b h^3/12."),
                 )),
-        Numeric("f2", "second natural frequency", unit="Hz", points=1,
+        Numeric("f2", "second natural frequency", question=2, unit="Hz", points=1,
                 misconceptions=(Misconception("twice f1", lambda p: 2 * _f(p)[0],
                                               "Beam frequencies are not harmonics: f2/f1 = (4.694/1.875)^2 = 6.27."),)),
     ),

@@ -72,20 +72,21 @@ the spring carry the same force (series) or deform by the same amount (parallel)
 """,
     solve=solve,
     parts=(
-        Numeric("k_b", "beam tip stiffness", unit="N/m", points=1,
+        Numeric("k_b", "beam tip stiffness", question=1, unit="N/m", points=1,
                 misconceptions=(
                     Misconception("b and h swapped", lambda p: stiffness.cantilever_tip_stiffness(
                         p.E, stiffness.rectangle_second_moment(p.h, p.b), p.L), "I = b h^3/12 for bending about the width b."),
                     Misconception("simply supported 48EI/L^3", lambda p: stiffness.simply_supported_midspan_stiffness(
                         p.E, stiffness.rectangle_second_moment(p.b, p.h), p.L), "A cantilever tip: k = 3 E I / L^3."),
                 )),
-        Numeric("f_series", "frequency, mass hanging on the spring", unit="Hz", points=2,
+        Numeric("f_series", "frequency, mass hanging on the spring", question=2,
+                unit="Hz", points=2,
                 misconceptions=(
                     Misconception("parallel instead of series", lambda p: solve(p)["f_parallel"],
                                   "Beam and spring carry the same force one after the other: they are in series, 1/k = 1/k_b + 1/k."),
                     Misconception("omega for f", lambda p: 2 * np.pi * solve(p)["f_series"], "f = omega/(2 pi)."),
                 )),
-        Numeric("f_parallel", "frequency, spring to the ground", unit="Hz", points=2,
+        Numeric("f_parallel", "frequency, spring to the ground", question=3, unit="Hz", points=2,
                 misconceptions=(Misconception("series instead of parallel", lambda p: solve(p)["f_series"],
                                               "Beam and spring deflect together with the mass: they act in parallel, k = k_b + k."),)),
     ),

@@ -70,13 +70,13 @@ system is one mass on the tip spring (effective mass and Rayleigh's estimate, Se
 """,
     solve=solve,
     parts=(
-        Numeric("m_eff", "effective beam mass", unit="kg", points=2,
+        Numeric("m_eff", "effective beam mass", question=1, unit="kg", points=2,
                 misconceptions=(
                     Misconception("a third (as for a spring)", lambda p: _m_b(p) / 3,
                                   "The static deflection of a cantilever is cubic: m_eff = 33/140 m_b."),
                     Misconception("the whole beam", _m_b, "Most of the beam moves less than its tip."),
                 )),
-        Numeric("f", "fundamental frequency", unit="Hz", points=2,
+        Numeric("f", "fundamental frequency", question=2, unit="Hz", points=2,
                 misconceptions=(
                     Misconception("beam mass forgotten", lambda p: _f(0.0, p), "Add 33/140 of the beam's mass."),
                     Misconception("whole beam mass", lambda p: _f(_m_b(p), p), "Only 33/140 of the beam's mass is effective."),

@@ -85,14 +85,14 @@ natural modes (longitudinal waves, Section 5.3.1).
     solve=solve,
     figure=figure,
     parts=(
-        Numeric("c", "wave speed", unit="m/s", points=1),
-        Numeric("t_arrival", "arrival time at the far end", unit="ms", points=1,
+        Numeric("c", "wave speed", question=1, unit="m/s", points=1),
+        Numeric("t_arrival", "arrival time at the far end", question=2, unit="ms", points=1,
                 misconceptions=(Misconception("there and back", lambda p: 2 * p.L / c(p),
                                               "The front needs L/c to reach the far end; 2L/c is the round trip."),)),
-        Numeric("sigma", "stress in the wave", unit="MPa", points=2,
+        Numeric("sigma", "stress in the wave", question=3, unit="MPa", points=2,
                 misconceptions=(Misconception("dynamic pressure rho v^2", lambda p: p.rho * p.v**2,
                                               "Behind the front the strain is v/c: sigma = E v / c = rho c v."),)),
-        Vector("f", "first two natural frequencies", unit="Hz", size=2, points=2,
+        Vector("f", "first two natural frequencies", question=4, unit="Hz", size=2, points=2,
                misconceptions=(
                    Misconception("fixed-free", lambda p: tuple(vibrations.frequency_in_hertz(
                        rods.rod_natural_frequencies(c(p), p.L, 2, "fixed-free"))),

@@ -66,13 +66,13 @@ axis: $J\ddot\varphi + k_t\varphi = 0$ (torsional stiffness, Section 5.1).
 """,
     solve=solve,
     parts=(
-        Numeric("kt", "torsional stiffness", unit="N*m", points=2,
+        Numeric("kt", "torsional stiffness", question=1, unit="N*m", points=2,
                 misconceptions=(
                     Misconception("E for G", lambda p: stiffness.torsional_stiffness(p.E, stiffness.circle_polar_moment(p.d), p.L),
                                   "Torsion is resisted by the shear modulus G = E/(2(1 + nu))."),
                     Misconception("I for I_p", lambda p: k_t(p, polar=False), "Use the polar moment I_p = pi d^4/32."),
                 )),
-        Numeric("T", "period", unit="s", points=2,
+        Numeric("T", "period", question=2, unit="s", points=2,
                 misconceptions=(
                     Misconception("J = m R^2", lambda p: vibrations.period(vibrations.natural_frequency(k_t(p), p.m * p.R**2)),
                                   "A solid disk has J = m R^2/2."),

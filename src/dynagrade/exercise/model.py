@@ -18,7 +18,7 @@ from typing import Any, Callable, Mapping
 from ..errors import DefinitionError, DynagradeError, UnknownParameter, UnknownPart
 from .listing import summary
 from .params import Constraint, Parameter, ParamValues, symbol_domain, to_si_values
-from .parts import Part
+from .parts import Part, Variable
 from .solution import check_solution
 from .statement import compile_statement, render_statement
 
@@ -97,6 +97,8 @@ class Exercise:
         _require_earlier_references(self.id, self.parts)
         object.__setattr__(self, "parts", tuple(
             _with_parameter_domains(self.id, part, self.params) for part in self.parts))
+        for part in self.parts:
+            _require_readable_names(self.id, part)
         if self.chapter is None:
             object.__setattr__(self, "chapter", chapter_of(self.source))
         object.__setattr__(self, "topics", tuple(self.topics))
@@ -224,29 +226,55 @@ def _require_unique(what: str, names: list[str], exercise_id: str) -> None:
 
 def _with_parameter_domains(exercise_id: str, part: Part,
                             params: tuple[Parameter, ...]) -> Part:
-    """The part with a domain for each of its symbols that names a parameter without one.
+    """The part with a domain and a printed symbol for each of its symbols that names a
+    parameter.
 
-    A symbolic part's ``variables`` may be a sequence of names, or map a name to ``None``:
-    such a symbol must be a parameter, and takes the parameter's unit and widened bounds
-    (:func:`~dynagrade.exercise.params.symbol_domain`). ``Variable(min, max, unit)`` is
-    written only where the domain differs, or for a symbol that is no parameter.
+    A symbolic part's ``variables`` may be a sequence of names, or map a name to ``None``
+    or to a ``Variable`` without bounds (``Variable(aliases=("v_2(0)",))``): such a symbol
+    must be a parameter, and takes the parameter's unit and widened bounds
+    (:func:`~dynagrade.exercise.params.symbol_domain`). A symbol that names a parameter
+    takes the parameter's printed symbol unless it declares its own. ``Variable(min, max,
+    unit)`` is written only where the domain differs, or for a symbol that is no parameter.
     """
     variables = getattr(part, "variables", None)
     if variables is None:
         return part
     named = dict(variables) if isinstance(variables, Mapping) else dict.fromkeys(variables)
-    if isinstance(variables, dict) and None not in named.values():
-        return part
     by_name = {p.name: p for p in params}
-    missing = [name for name, v in named.items() if v is None and name not in by_name]
+    missing = [name for name, v in named.items()
+               if (v is None or not v.has_domain) and name not in by_name]
     if missing:
         raise DefinitionError(
             f"exercise {exercise_id!r}, part {part.name!r}: the symbols {missing} are no "
             f"parameters, so they need a domain: Variable(min, max, unit); the parameters "
             f"are {list(by_name)}")
     return replace(part, variables={
-        name: symbol_domain(by_name[name]) if variable is None else variable
-        for name, variable in named.items()})
+        name: _with_parameter(variable, by_name.get(name)) for name, variable in named.items()})
+
+
+def _with_parameter(variable: Variable | None, parameter: Parameter | None) -> Variable:
+    """A formula's variable completed from the parameter of the same name (if any)."""
+    if parameter is None:
+        return variable
+    if variable is None:
+        return symbol_domain(parameter)
+    if not variable.has_domain:
+        domain = symbol_domain(parameter)
+        return replace(domain, unit=variable.unit or domain.unit,
+                       symbol=variable.symbol or domain.symbol, aliases=variable.aliases)
+    if variable.symbol is None:
+        return replace(variable, symbol=parameter.symbol)
+    return variable
+
+
+def _require_readable_names(exercise_id: str, part: Part) -> None:
+    """The part's names make a specification the grader accepts: no alias of a formula's
+    variable is another variable, a function or a unit; no number or alias of a choice
+    names two options."""
+    try:
+        part.check_names()
+    except ValueError as error:
+        raise DefinitionError(f"exercise {exercise_id!r}, part {part.name!r}: {error}") from None
 
 
 def _require_earlier_references(exercise_id: str, parts: tuple[Part, ...]) -> None:

@@ -230,7 +230,8 @@ def symbol_domain(parameter: Parameter) -> Variable:
     parameter's unit, and its bounds widened by a quarter of their span on each side (by
     half the value for a constant), without crossing zero: a formula must hold beyond the
     values the variants happen to draw, and a quantity that is never negative stays so
-    (so that ``sqrt(h)`` stays defined).
+    (so that ``sqrt(h)`` stays defined). The parameter's printed symbol comes along: a
+    formula may use it (:func:`dynagrade.grading.names.typed_forms`).
     """
     low, high = parameter.bounds()
     margin = (high - low) / 4 if high > low else abs(low) / 2 or 1.0
@@ -239,7 +240,7 @@ def symbol_domain(parameter: Parameter) -> Variable:
         wide_low = max(wide_low, low / 2)
     if high <= 0:
         wide_high = min(wide_high, high / 2)
-    return Variable(wide_low, wide_high, parameter.unit)
+    return Variable(wide_low, wide_high, parameter.unit, symbol=parameter.symbol)
 
 
 def per_draw(function: Callable[[ParamValues], object]) -> Callable[[ParamValues], object]:

@@ -11,7 +11,9 @@ everything that differs between kinds, behind the small contract of :class:`Part
   and as a person reads it (the one answer formatter, :func:`.numbers.answer_text`);
 - ``near_misses`` / ``misconception_answer`` / ``cross_check``: what ``dynagrade
   verify`` tries against a variant;
-- ``manifest_fields``: the settings the exam manifest stores; ``follows_through``.
+- ``manifest_fields``: the settings the exam manifest stores; ``follows_through``;
+- ``check_names``: refuses, when the exercise is built, names an answer could not use
+  (an alias of a formula's variable that is another name, a number naming two options).
 
 No other module asks which kind a part is; code that needs a new behaviour per kind adds
 a method here. Reference answers arrive from the solver in SI; a part converts them into
@@ -34,6 +36,7 @@ from ..grading.spec import (
     VectorSpec,
 )
 from ..errors import DefinitionError
+from ..grading.names import printed_form
 from ..grading.tolerance import DEFAULT_RTOL
 from .numbers import answer_text, format_number, points_phrase
 from .params import ParamValues
@@ -63,12 +66,15 @@ class Misconception:
 
 @dataclass(frozen=True)
 class Part(ABC):
-    """What every part has: a name (the variable on the student's sheet), a label, points."""
+    """What every part has: a name (the variable on the student's sheet), a label, points,
+    and the number of the statement's question it answers (``question=2``; None only when
+    the statement numbers no questions)."""
 
     name: str
     label: str = ""
     points: float = 1.0
     misconceptions: tuple[Misconception, ...] = ()
+    question: int | None = None
 
     kind = "part"
     #: the settings the exam manifest stores for parts of this kind (attribute names)
@@ -79,6 +85,11 @@ class Part(ABC):
             raise ValueError(f"part name {self.name!r} is not an identifier")
         if self.points < 0:
             raise ValueError(f"part {self.name!r}: points must not be negative")
+        if self.question is not None and (isinstance(self.question, bool) or
+                                          not isinstance(self.question, int) or
+                                          self.question < 1):
+            raise DefinitionError(f"part {self.name!r}: question must be a whole number "
+                                  f"from 1, got {self.question!r}")
 
     def reference(self, solved: Mapping[str, Any]) -> Any:
         """This part's reference answer, in the part's unit, from the solver's SI output."""
@@ -119,12 +130,17 @@ class Part(ABC):
     def describe(self, points: float) -> str:
         """The part's line in a fill-in file; ``points`` as the exam scales them (the
         part's own points outside an exam)."""
-        return textwrap.shorten(f"{self.label or self.name}: {self.asks()} "
-                                f"({points_phrase(points)})", 200)
+        asked = f"question {self.question}, " if self.question is not None else ""
+        return textwrap.shorten(f"{asked}{self.label or self.name}: {self.asks()} "
+                                f"({points_phrase(points)})", 240)
 
     def input_hint(self) -> str:
         """What the answer looks like, for a sheet's part line or an input's placeholder."""
         return ""
+
+    def check_names(self) -> None:
+        """Raise ``ValueError`` when the names an answer may use clash (an alias that is
+        another variable, a function or a unit; a number naming two options)."""
 
     def input_options(self) -> tuple[str, ...]:
         """The values an answer box offers to pick from (none: free text)."""
@@ -240,6 +256,13 @@ class Symbolic(Part):
     ``dynagrade verify`` checks against the mechanics core. ``form`` lists form tests
     (``"no_decimals"``, ``"simplified"``, ``"no_functions"``) graded apart from
     equivalence: an equivalent answer that fails one earns ``form_credit``.
+
+    A variable is accepted under its name and every spelling of its printed symbol and
+    aliases (``Variable(symbol=..., aliases=...)``; a parameter's ``symbol`` by default).
+    ``up_to_constant`` declares that an additive constant does not matter: it names the
+    variables the constant is constant in (``("theta",)`` for a potential V(θ) whose zero
+    level is a convention; ``True`` for all). The answer is then compared by its changes
+    in those variables, and the feedback says the constant was ignored.
     """
 
     expected: str = ""
@@ -247,6 +270,7 @@ class Symbolic(Part):
     equals: str | None = None
     form: tuple[str, ...] = ()
     form_credit: float = 0.5
+    up_to_constant: bool | tuple[str, ...] = ()
 
     kind = "symbolic"
 
@@ -254,7 +278,10 @@ class Symbolic(Part):
         return self.expected
 
     def asks(self) -> str:
-        return "a formula in " + ", ".join(self.variables)
+        """``a formula in h, lat (λ)``: each variable's name, and the symbol the
+        statement prints for it where that reads otherwise."""
+        return "a formula in " + ", ".join(_with_printed_symbol(name, variable)
+                                             for name, variable in self.variables.items())
 
     def input_hint(self) -> str:
         return "in " + ", ".join(self.variables)
@@ -264,6 +291,9 @@ class Symbolic(Part):
 
     def misconception_answer(self, misconception, params):
         return misconception.value
+
+    def check_names(self) -> None:
+        self.spec(None)
 
     def cross_check(self, params, answers, part):
         """The formula, evaluated at the variant's parameters, against the numeric part it
@@ -284,15 +314,29 @@ class Symbolic(Part):
         known = tuple(KnownWrong(m.name, m.value, m.feedback, m.score)
                       for m in self.misconceptions)
         return SymbolicSpec(variables=dict(self.variables), misconceptions=known,
-                            form=tuple(self.form), form_credit=self.form_credit)
+                            form=tuple(self.form), form_credit=self.form_credit,
+                            up_to_constant=self.up_to_constant)
+
+
+def _with_printed_symbol(name: str, variable: Variable | None) -> str:
+    symbol = getattr(variable, "symbol", None)
+    printed = printed_form(symbol) if symbol else name
+    return name if printed in (name, printed_form(name)) else f"{name} ({printed})"
 
 
 @dataclass(frozen=True)
 class Options(Part):
-    """A choice among labelled options; ``multiple=True`` allows several correct ones."""
+    """A choice among labelled options; ``multiple=True`` allows several correct ones.
+
+    ``numbered=True`` says the statement numbers the options' cases in order: option k
+    is then also accepted as the number k and as the k-th letter (``2``, ``b``).
+    ``aliases`` maps further spellings to options (``{"G": "on the ground"}``).
+    """
 
     options: tuple[str, ...] = ()
     multiple: bool = False
+    numbered: bool = False
+    aliases: Mapping[str, str] = field(default_factory=dict)
 
     kind = "choice"
     manifest_fields = ("options", "multiple")
@@ -309,7 +353,9 @@ class Options(Part):
         return self.input_hint()
 
     def input_hint(self) -> str:
-        return ("one or more of " if self.multiple else "one of ") + ", ".join(self.options)
+        numbers = f" (or 1–{len(self.options)})" if self.numbered else ""
+        return ("one or more of " if self.multiple else "one of ") + ", ".join(self.options) \
+            + numbers
 
     def input_options(self) -> tuple[str, ...]:
         return tuple(self.options)
@@ -324,8 +370,21 @@ class Options(Part):
         wrong = expected[:-1] if len(expected) > 1 else expected + tuple(others[:1])
         return [(", ".join(wrong), "a different set of options")]
 
+    def check_names(self) -> None:
+        self.spec(None)
+
+    def option_aliases(self) -> tuple[tuple[str, str], ...]:
+        """Every (spelling, option) besides the labels: the numbers and letters of a
+        numbered part, then the declared ``aliases``."""
+        pairs = []
+        if self.numbered:
+            pairs += [(str(k), o) for k, o in enumerate(self.options, start=1)]
+            pairs += [(chr(ord("a") + k), o) for k, o in enumerate(self.options[:26])]
+        return tuple(pairs) + tuple(dict(self.aliases).items())
+
     def spec(self, params):
-        return ChoiceSpec(options=tuple(self.options), multiple=self.multiple)
+        return ChoiceSpec(options=tuple(self.options), multiple=self.multiple,
+                          aliases=self.option_aliases())
 
 
 #: every part kind by its name (the ``kind`` of a part and of a manifest's part entry)

@@ -4,7 +4,9 @@ For each seed: the constraints can be met, the statement renders, the reference 
 are finite and pass their own part, the part's near misses (an answer 5 % off, another
 option) fail, every declared misconception fails, and each symbolic part's expression
 reproduces the numeric part it ``equals`` at the variant's parameters (a cross-check of
-formula against mechanics core). What each kind tries is its own
+formula against mechanics core). Once per exercise: every part answers a numbered
+question of the statement and every question has a part, and every variable of a formula
+is shown in the statement under a name the grader accepts (:mod:`.asked`). What each kind tries is its own
 (:mod:`dynagrade.exercise.parts`). The worked solution of every variant is checked too
 (:mod:`.solution_check`), its math once per exercise by ``math_check`` (the render
 layer's, handed in by the command); an exercise without a solution is a finding when
@@ -18,6 +20,7 @@ from dataclasses import dataclass, field
 from typing import Callable, Iterable
 
 from ..grading import grade
+from .asked import question_problems, unshown_variables
 from .model import ConstraintError, Exercise, Variant
 from .solution import SolutionError, render_solution
 from .solution_check import missing_solution, solution_problems
@@ -75,10 +78,12 @@ def _solution_math(exercise: Exercise, variant: Variant,
 
 
 def static_problems(exercise: Exercise) -> list[str]:
-    """Problems that do not depend on the seed: parameters the statement never shows."""
+    """Problems that do not depend on the seed: parameters the statement never shows,
+    and what it asks against the parts (:mod:`.asked`)."""
     shown = referenced_names(exercise.statement)
     return [f"the statement never shows the parameter {p.name!r}"
-            for p in exercise.params if p.varies and p.name not in shown]
+            for p in exercise.params if p.varies and p.name not in shown] + \
+        question_problems(exercise) + unshown_variables(exercise)
 
 
 def variant_problems(exercise: Exercise, variant: Variant) -> list[str]:

@@ -1,7 +1,8 @@
 """Grading of choice parts: one option, or a set of options with partial credit.
 
 Labels are matched ignoring case and spaces, and may be written ``b``, ``(b)``,
-``b)``, ``[b]``, ``{b}`` or ``b.``. A multiple-choice answer lists labels separated by
+``b)``, ``[b]``, ``{b}`` or ``b.``; an option may also be named by its aliases (the
+number or letter the statement gives it: ``spec.aliases``). A multiple-choice answer lists labels separated by
 commas, semicolons, spaces or "and" (``a, c``, ``(a) (c)``, ``a) and c)``), in any
 mix of these forms. Answers longer than :data:`lexer.MAX_LENGTH` are refused before
 any other work. Partial credit for multiple
@@ -28,6 +29,14 @@ def _key(label: str) -> str:
     return re.sub(r"\s+", "", str(label)).casefold()
 
 
+def _keys(spec) -> dict[str, str]:
+    """Every way to name an option (its label, its aliases), as keys -> the option's key."""
+    keys = {_key(o): _key(o) for o in spec.options}
+    for alias, option in spec.aliases:
+        keys.setdefault(_key(alias), _key(option))
+    return keys
+
+
 def _expected(spec, expected) -> set[str]:
     labels = (expected,) if isinstance(expected, str) else tuple(expected)
     keys = {_key(o) for o in spec.options}
@@ -43,14 +52,14 @@ def _label(word: str, keys: dict) -> str | None:
     """The option a written label names: ``b``, ``(b)``, ``b)``, ``[b]``, ``{b}`` or ``b.``."""
     for form in (word, word.strip("()[]{}"), word.rstrip(".").strip("()[]{}")):
         if form and _key(form) in keys:
-            return _key(form)
+            return keys[_key(form)]
     return None
 
 
 def _split(spec, answer: str) -> list[str] | str:
     if len(answer) > MAX_LENGTH:
         return f"the answer is too long ({len(answer)} characters; at most {MAX_LENGTH})"
-    keys = {_key(o): o for o in spec.options}
+    keys = _keys(spec)
     text = answer.strip()
     if not text.strip("()[]{}").strip():
         return "the answer is empty: choose " + ("one or more options" if spec.multiple else "an option")
@@ -72,7 +81,8 @@ def _split(spec, answer: str) -> list[str] | str:
             picks.extend(labels)
             continue
         shown = chunk if len(chunk) <= 30 else chunk[:30] + "…"
-        return f"unknown option '{shown}'; the options are: {', '.join(spec.options)}"
+        numbered = f" (or {', '.join(a for a, _ in spec.aliases)})" if spec.aliases else ""
+        return f"unknown option '{shown}'; the options are: {', '.join(spec.options)}{numbered}"
     if not picks:
         return "the answer is empty: choose an option"
     return picks

@@ -4,9 +4,10 @@ Each input line is one record::
 
     {"id": str, "kind": "numeric"|"symbolic"|"vector"|"choice", "expected": ..., "answer": str,
      "rtol"?: number, "atol"?: number, "sigfigs"?: int, "unit"?: str,
-     "variables"?: {name: {"min": number, "max": number, "unit"?: str}},
+     "variables"?: {name: {"min": number, "max": number, "unit"?: str, "symbol"?: str,
+                           "aliases"?: [str]}}, "up_to_constant"?: bool | [str],
      "require_unit"?: bool, "unit_credit"?: number, "reveal"?: bool, "form"?: [str],
-     "size"?: int, "choices"?: [str], "multiple"?: bool,
+     "size"?: int, "choices"?: [str], "multiple"?: bool, "aliases"?: {str: str},
      "misconceptions"?: [{"name": str, "value": ..., "feedback": str, "score"?: number}]}
 
 and gives one output line ``{"id", "correct", "score", "feedback", "error"}``. A
@@ -127,8 +128,26 @@ def _variables(record: dict) -> dict:
             raise RecordError(f"variable '{name}' must be an object with 'min' and 'max'")
         lo = _number(domain, "min", required=True)
         hi = _number(domain, "max", required=True)
-        out[name] = Variable(float(lo), float(hi), _string(domain, "unit"))
+        out[name] = Variable(float(lo), float(hi), _string(domain, "unit"),
+                             symbol=_string(domain, "symbol"),
+                             aliases=tuple(_strings(domain, "aliases", f"variable '{name}'")))
     return out
+
+
+def _strings(record: dict, key: str, where: str) -> list[str]:
+    """An optional list of strings (empty when absent)."""
+    value = record.get(key) or []
+    if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+        raise RecordError(f"field '{key}' of {where} must be a list of strings")
+    return value
+
+
+def _constant_in(record: dict) -> bool | tuple[str, ...]:
+    """``up_to_constant``: true (every variable), or the variables it is constant in."""
+    value = record.get("up_to_constant")
+    if value is None or isinstance(value, bool):
+        return bool(value)
+    return tuple(_strings(record, "up_to_constant", "the record"))
 
 
 @dataclass(frozen=True)
@@ -166,7 +185,7 @@ def _symbolic(record: dict, common: _Common):
         raise RecordError("field 'form' must be a list of strings")
     spec = SymbolicSpec(_variables(record), **common.tolerances(("rtol",)),
                         misconceptions=common.misconceptions, form=tuple(form),
-                        reveal=common.reveal)
+                        reveal=common.reveal, up_to_constant=_constant_in(record))
     return spec, expected
 
 
@@ -191,8 +210,11 @@ def _choice(record: dict, common: _Common):
         expected = tuple(expected)
     if not (isinstance(expected, str) or (isinstance(expected, tuple) and all(isinstance(x, str) for x in expected))):
         raise RecordError("field 'expected' of a choice must be a label or a list of labels")
+    aliases = record.get("aliases") or {}
+    if not isinstance(aliases, dict) or not all(isinstance(v, str) for v in aliases.values()):
+        raise RecordError("field 'aliases' must be an object of labels")
     spec = ChoiceSpec(tuple(choices), multiple=_flag(record, "multiple") or isinstance(expected, tuple),
-                      reveal=common.reveal)
+                      reveal=common.reveal, aliases=tuple(aliases.items()))
     return spec, expected
 
 

@@ -8,8 +8,10 @@ decimal comma is allowed). A number token's value is its literal with ASCII sign
 A number glued to a lone ``e``/``E`` (``2e``, ``1.2e−``) is refused unless that letter
 is a declared name: it is an unfinished exponent, never a product with Euler's number.
 
-A name is a letter (ASCII or Greek) followed by letters, digits and ``_``: ``ω_n`` is
-``omega_n``, ``θ_0`` is ``theta_0``. In number-with-unit answers, where names are
+A name is a letter (ASCII or Greek) followed by letters, digits, ``_`` and subscript
+digits: ``ω_n`` is ``omega_n``, ``θ_0`` is ``theta_0``, ``x₁`` is ``x_1``. A formula's
+variables may also be written as their printed symbols (``v_{02}``, ``v_2(0)``): such a
+spelling, given in ``spellings``, is read whole as the variable's name. In number-with-unit answers, where names are
 units, a Greek letter stands alone (``2πrad`` is 2·pi·rad, ``µm`` a micrometre).
 Everything else is refused with a positioned message.
 """
@@ -20,7 +22,7 @@ import re
 from typing import NamedTuple
 
 from .errors import AnswerError
-from .names import GREEK, MINUS_SIGNS, OPERATOR_CHARS, PLUS_SIGNS, SUPERSCRIPTS
+from .names import GREEK, MINUS_SIGNS, OPERATOR_CHARS, PLUS_SIGNS, SUBSCRIPTS, SUPERSCRIPTS
 
 #: Longest answer accepted, in characters.
 MAX_LENGTH = 2000
@@ -37,7 +39,8 @@ _DIGITS = frozenset("0123456789")
 _LETTERS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ")
 _NAME_CHARS = _LETTERS | _DIGITS | {"_"}
 _NAME_TAIL = re.compile(r"[0-9_]*")
-_FORMULA_NAME = re.compile("[A-Za-z0-9_" + re.escape("".join(GREEK)) + "]+")
+_FORMULA_NAME = re.compile("[A-Za-z0-9_" + re.escape("".join(GREEK) + "".join(SUBSCRIPTS)) + "]+")
+_SUBSCRIPT_DIGITS = re.compile("_?([" + "".join(SUBSCRIPTS) + "]+)")
 _SPELLED_OUT = str.maketrans(GREEK)
 _SUPERSCRIPT_VALUE = re.compile(r"[+-]?[0-9]+")
 
@@ -73,12 +76,14 @@ class Token(NamedTuple):
 
 
 def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False,
-             names: frozenset = frozenset()) -> list[Token]:
+             names: frozenset = frozenset(), spellings: tuple = ()) -> list[Token]:
     """Split ``text`` into tokens.
 
     ``quantity`` selects number-with-unit answers (``°`` is the unit ``deg``, ``µm``
     is a micrometre); ``decimal_comma`` reads ``12,5`` as 12.5; ``names`` are the
-    declared names (a declared ``e`` may follow a number: ``2e``).
+    declared names (a declared ``e`` may follow a number: ``2e``); ``spellings`` are
+    (spelling, name) pairs of printed symbols that are no plain name (``v_2(0)``), each
+    read whole, longest first, as one name token.
     """
     if not isinstance(text, str):
         raise AnswerError("the answer must be text")
@@ -97,6 +102,11 @@ def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False,
         if ch in _DIGITS or (ch == "." and i + 1 < n and text[i + 1] in _DIGITS):
             token, i = _number(text, i, number_re, decimal_comma, names)
             tokens.append(token)
+            continue
+        whole = _spelled_symbol(text, i, spellings) if spellings else None
+        if whole is not None:
+            tokens.append(Token(NAME, whole[0], i))
+            i = whole[1]
             continue
         if ch in _LETTERS or ch == "_" or (ch in GREEK and not quantity):
             word, end = _unit_name(text, i) if quantity else _name(text, i)
@@ -192,10 +202,29 @@ def _number(text: str, i: int, number_re, decimal_comma: bool, names: frozenset)
 
 
 def _name(text: str, i: int) -> tuple[str, int]:
-    """A formula's name at ``i``: a letter, then letters, digits and ``_``; Greek
-    letters are spelled out (``ω_n`` -> ``omega_n``)."""
+    """A formula's name at ``i``: a letter, then letters, digits, ``_`` and subscript
+    digits; Greek letters are spelled out (``ω_n`` -> ``omega_n``) and subscript digits
+    follow an ``_`` (``x₁`` -> ``x_1``)."""
     m = _FORMULA_NAME.match(text, i)
-    return m.group().translate(_SPELLED_OUT), m.end()
+    word = _SUBSCRIPT_DIGITS.sub(lambda s: "_" + "".join(SUBSCRIPTS[c] for c in s.group(1)),
+                                 m.group())
+    return word.translate(_SPELLED_OUT), m.end()
+
+
+def _spelled_symbol(text: str, i: int, spellings: tuple) -> tuple[str, int] | None:
+    """The variable whose printed spelling starts at ``i`` (and where it ends), or None.
+
+    A spelling that ends in a letter or digit must not run on into a longer name."""
+    if i > 0 and (text[i - 1] in _NAME_CHARS or text[i - 1] in GREEK):
+        return None
+    for spelling, name in spellings:
+        if text.startswith(spelling, i):
+            end = i + len(spelling)
+            if spelling[-1] in _NAME_CHARS and end < len(text) and (
+                    text[end] in _NAME_CHARS or text[end] in GREEK or text[end] in SUBSCRIPTS):
+                continue
+            return name, end
+    return None
 
 
 def _unit_name(text: str, i: int) -> tuple[str, int]:

@@ -27,7 +27,7 @@ from . import lexer
 from .errors import AnswerError
 from .lexer import COMMA, END, EQUALS, LPAR, NAME, NUM, OP, ROOT, RPAR, SEMI, SUP, Token
 from .functions import FUNCTIONS
-from .names import CONSTANTS, REFUSED_FUNCTIONS, canonical_function, suggest
+from .names import CONSTANTS, REFUSED_FUNCTIONS, canonical_function, is_plain, suggest
 from .nodes import BinOp, Call, Const, Expr, Name, Neg, Num, Unit, nesting_and_terms
 
 #: Deepest nesting accepted: brackets, function calls, unary signs and powers, and the
@@ -53,11 +53,35 @@ class Vocabulary:
 
     variables: frozenset = frozenset()
     quantity: bool = False
+    #: (spelling, variable) pairs: further names of the variables (:func:`names.alias_table`)
+    aliases: tuple = ()
+
+    @property
+    def plain_aliases(self) -> dict[str, str]:
+        """The aliases that are one name token, resolved in the name lookup."""
+        return _plain(self.aliases)[0]
+
+    @property
+    def spelled_symbols(self) -> tuple:
+        """The aliases the tokenizer reads whole (``v_2(0)``), longest first."""
+        return _plain(self.aliases)[1]
 
 
-def parse_expression(text: str, variables=()) -> Expr:
-    """Parse a formula in the declared ``variables`` (expression mode)."""
-    return _parse(text, Vocabulary(frozenset(variables), quantity=False), decimal_comma=False)
+@lru_cache(maxsize=256)
+def _plain(aliases: tuple) -> tuple[dict, tuple]:
+    plain = {spelling: name for spelling, name in aliases if is_plain(spelling)}
+    spelled = sorted(((s, n) for s, n in aliases if not is_plain(s)), key=lambda p: -len(p[0]))
+    return plain, tuple(spelled)
+
+
+def parse_expression(text: str, variables=(), aliases=None) -> Expr:
+    """Parse a formula in the declared ``variables`` (expression mode).
+
+    ``aliases`` maps further spellings to variable names (``{"lambda": "lat",
+    "v_2(0)": "v02"}``): a spelling is resolved by the name lookup, never evaluated."""
+    pairs = tuple(sorted(dict(aliases or {}).items()))
+    return _parse(text, Vocabulary(frozenset(variables), quantity=False, aliases=pairs),
+                  decimal_comma=False)
 
 
 def parse_quantity(text: str, *, decimal_comma: bool = True) -> Expr:
@@ -133,7 +157,7 @@ def _has_top_level(tokens: list[Token], separator: str) -> bool:
 
 def _parse(text: str, vocabulary: Vocabulary, *, decimal_comma: bool) -> Expr:
     tokens = lexer.tokenize(text, quantity=vocabulary.quantity, decimal_comma=decimal_comma,
-                            names=vocabulary.variables)
+                            names=vocabulary.variables, spellings=vocabulary.spelled_symbols)
     # "v = 12 m/s": the name on the left of a single '=' is ignored.
     if len(tokens) > 2 and tokens[0].kind == NAME and tokens[1].kind == EQUALS:
         tokens = tokens[2:]
@@ -307,6 +331,9 @@ class _Parser:
         variables = self.vocabulary.variables
         if word in variables:
             return Name(word)
+        alias = self.vocabulary.plain_aliases.get(word)
+        if alias is not None:
+            return Name(alias)
         spelled = _without_underscores(variables).get(word.replace("_", ""))
         if spelled and "_" in word:
             return Name(spelled)

@@ -90,7 +90,7 @@ def _symbolic(spec: SymbolicSpec, text: str) -> Readability:
     from .parser import parse_expression
 
     allowed = tuple(spec.variables)
-    tree = parse_expression(text, allowed)
+    tree = parse_expression(text, allowed, spec.spellings)
     unknown = sorted(names_in(tree) - set(allowed))
     if unknown:
         listed = ", ".join(allowed) or "none"

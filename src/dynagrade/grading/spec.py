@@ -11,6 +11,8 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
 
+from .names import NameClash, alias_table
+from .units import BUILTIN as BUILTIN_UNITS
 from .tolerance import DEFAULT_RTOL
 
 #: Form tests a symbolic part may require on top of equivalence.
@@ -68,15 +70,34 @@ class NumericSpec:
 @dataclass(frozen=True)
 class Variable:
     """A symbol of a symbolic answer: the domain [min, max] sampled for equivalence,
-    in ``unit`` (used for dimensional analysis; samples are converted to SI)."""
+    in ``unit`` (used for dimensional analysis; samples are converted to SI).
 
-    min: float
-    max: float
+    ``symbol`` is the symbol as the statement prints it (LaTeX: ``v_{02}``, ``\\lambda``)
+    and ``aliases`` are further spellings a student may type (``"v_2(0)"``); the answer is
+    read with every spelling :func:`.names.spellings_of` derives from both. An exercise
+    may leave ``min`` and ``max`` out for a variable that is one of its parameters: the
+    parameter's domain fills them in.
+    """
+
+    min: float | None = None
+    max: float | None = None
     unit: str | None = None
+    symbol: str | None = None
+    aliases: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
+        if isinstance(self.aliases, str):
+            object.__setattr__(self, "aliases", (self.aliases,))
+        object.__setattr__(self, "aliases", tuple(self.aliases))
+        if self.min is None or self.max is None:
+            return
         if not (float(self.min) <= float(self.max)):
             raise ValueError(f"Variable domain needs min <= max, got [{self.min}, {self.max}]")
+
+    @property
+    def has_domain(self) -> bool:
+        """Whether both bounds are given."""
+        return self.min is not None and self.max is not None
 
 
 @dataclass(frozen=True)
@@ -85,7 +106,9 @@ class SymbolicSpec:
 
     Equivalence is decided by evaluation at seeded random points of the variables'
     domains: relative tolerance ``rtol`` (default 1e-6) with a floor scaled to the
-    reference's magnitude. ``form`` lists extra form tests from :data:`FORM_TESTS`;
+    reference's magnitude. ``up_to_constant`` names the variables an additive constant
+    does not depend on, which the answer may then differ by (``True``: all of them; a
+    potential energy V(θ) takes ``("theta",)``: its zero level is a convention). ``form`` lists extra form tests from :data:`FORM_TESTS`;
     an equivalent answer that fails one earns ``form_credit``.
     """
 
@@ -97,6 +120,9 @@ class SymbolicSpec:
     reveal: bool = False
     points: int = 16
     generic_misconceptions: bool = True
+    up_to_constant: bool | tuple[str, ...] = ()
+    #: spelling -> variable name for every spelling besides the names (:func:`.names.alias_table`)
+    spellings: Mapping[str, str] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         _check_tolerances(self.rtol, None)
@@ -105,8 +131,21 @@ class SymbolicSpec:
             if not isinstance(var, Variable):
                 lo, hi, *rest = var
                 var = Variable(lo, hi, rest[0] if rest else None)
+            if not var.has_domain:
+                raise ValueError(f"the variable {name!r} needs a domain: Variable(min, max)")
             variables[name] = var
         object.__setattr__(self, "variables", MappingProxyType(variables))
+        try:
+            table = alias_table(variables, BUILTIN_UNITS)
+        except NameClash as clash:
+            raise ValueError(str(clash)) from None
+        object.__setattr__(self, "spellings", MappingProxyType(table))
+        constant_in = tuple(variables) if self.up_to_constant is True else \
+            tuple(self.up_to_constant or ())
+        unknown = [n for n in constant_in if n not in variables]
+        if unknown:
+            raise ValueError(f"up_to_constant names {unknown}, which are no variables")
+        object.__setattr__(self, "up_to_constant", constant_in)
         object.__setattr__(self, "misconceptions", tuple(self.misconceptions))
         object.__setattr__(self, "form", tuple(self.form))
         for test in self.form:
@@ -119,7 +158,7 @@ class SymbolicSpec:
 
     def __hash__(self) -> int:
         return hash((tuple(sorted(self.variables.items())), self.rtol, self.misconceptions,
-                     self.form, self.form_credit, self.reveal, self.points))
+                     self.form, self.form_credit, self.reveal, self.points, self.up_to_constant))
 
 
 @dataclass(frozen=True)
@@ -149,17 +188,37 @@ class VectorSpec:
 
 @dataclass(frozen=True)
 class ChoiceSpec:
-    """One option (``multiple=False``) or a set of options out of ``options`` (labels)."""
+    """One option (``multiple=False``) or a set of options out of ``options`` (labels).
+
+    ``aliases`` are (spelling, option) pairs: further ways to name an option, such as
+    the number or letter the statement gives it (``("2", "on the ground")``).
+    """
 
     options: tuple[str, ...]
     multiple: bool = False
     reveal: bool = False
+    aliases: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self) -> None:
         options = tuple(str(o) for o in self.options)
         if not options:
             raise ValueError("a choice part needs at least one option")
         object.__setattr__(self, "options", options)
+        aliases = tuple((str(a), str(o)) for a, o in self.aliases)
+        object.__setattr__(self, "aliases", aliases)
+        named = {_option_key(o): o for o in options}
+        for alias, option in aliases:
+            if option not in options:
+                raise ValueError(f"the alias {alias!r} names {option!r}, which is no option")
+            other = named.setdefault(_option_key(alias), option)
+            if other != option:
+                raise ValueError(f"the alias {alias!r} of the option {option!r} also names "
+                                 f"the option {other!r}")
+
+
+def _option_key(label: str) -> str:
+    """How a label is compared: without spaces, ignoring case."""
+    return "".join(str(label).split()).casefold()
 
 
 def _check_tolerances(rtol: float, atol: float | None) -> None:

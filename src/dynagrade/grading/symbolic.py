@@ -8,6 +8,17 @@ defined is wrong. Point i agrees when ``|a_i - e_i| <= rtol * max(|e_i|, 1e-3*M)
 with M the median of |e| over the points (an absolute 1e-12 when the reference is
 identically 0). Before that, when every variable has a unit, the answer's dimension
 must match the reference's.
+
+A variable may be written under its name or any spelling of its printed symbol and
+aliases (``spec.spellings``), resolved by the parser's name lookup.
+
+When the spec says an additive constant does not matter (``up_to_constant``: the
+variables the constant does not depend on, e.g. the coordinate of a potential energy
+V(θ) whose zero level is a convention), the answer is compared by its differences
+``f(x_i) - f(x_i°)`` with the reference's, where ``x_i°`` is sample point i with those
+variables set to their values at the first point: point i agrees when
+``|Δa_i - Δe_i| <= t_i + t_i°`` (the two points' tolerances). An answer right only up to
+such a constant is correct, and its feedback says the constant was ignored.
 """
 
 from __future__ import annotations
@@ -51,6 +62,9 @@ class _Reference:
     domains: dict
     rtol: float
     extended: tuple | None
+    based: dict | None = None
+    base: np.ndarray | None = None
+    base_tol: np.ndarray | None = None
 
 
 def _parse_reference(text, names, what: str) -> Expr:
@@ -83,13 +97,25 @@ def _reference(spec: SymbolicSpec, expected: str) -> _Reference:
     swapped = None
     if any(isinstance(n, Call) and n.func in ("sin", "cos") for n in walk(tree)):
         swapped = _values(_swap_sin_cos(tree), env, values.shape)
+    based = _based(env, spec.up_to_constant)
     known = []
     for wrong in spec.misconceptions:
         wrong_tree = _parse_reference(wrong.value, names, f"misconception {wrong.name!r}")
-        known.append((wrong, _values(wrong_tree, env, values.shape)))
+        known.append((wrong, _values(wrong_tree, env, values.shape),
+                      None if based is None else _values(wrong_tree, based, values.shape)))
     domains = {n: (v.min * factors[n], v.max * factors[n]) for n, v in spec.variables.items()}
+    base = None if based is None else _values(tree, based, values.shape)
     return _Reference(tree, names, env, values, tol, all_dims, ref_dim, swapped, tuple(known), domains, spec.rtol,
-                      extended(tree, env))
+                      extended(tree, env), based, base,
+                      None if base is None else point_tolerance(base, spec.rtol))
+
+
+def _based(env: dict, constant_in: tuple) -> dict | None:
+    """The sample points with the variables ``constant_in`` moved to their first values
+    (None when no additive constant is ignored)."""
+    if not constant_in:
+        return None
+    return {n: np.full_like(v, v[0]) if n in constant_in else v for n, v in env.items()}
 
 
 def _values(tree: Expr, env: dict, shape) -> np.ndarray:
@@ -144,7 +170,7 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
     ref = _reference(spec, expected)
     deadline = Deadline()  # the reference (and the units it loads) is prepared outside the budget
     try:
-        tree = parse_expression(answer, ref.names)
+        tree = parse_expression(answer, ref.names, spec.spellings)
     except AnswerError as error:
         return unreadable(str(error))
     reveal = f" The expected answer is {to_text(ref.tree)}." if spec.reveal else ""
@@ -166,9 +192,13 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
                                     "number, or a number too large to compute) where the expected one is defined." + reveal)
     if _equivalent(tree, ref, values, deadline):
         return _form_verdict(spec, ref, tree)
+    base = None if ref.based is None else _values(tree, ref.based, values.shape)
+    if base is not None and _same_differences(values, base, ref.values, ref.base,
+                                              ref.tol + ref.base_tol):
+        return _form_verdict(spec, ref, tree, constant_ignored(spec))
     hints = " ".join(reading_hints(tree))
     with np.errstate(all="ignore"):  # ratios of values near the float limit overflow
-        found = _misconception(spec, ref, values)
+        found = _misconception(spec, ref, values, base)
     if found is not None:
         name, feedback, score = found
         return Verdict(False, score, " ".join(x for x in (feedback, hints) if x) + reveal, misconception=name)
@@ -193,7 +223,24 @@ def _equivalent(tree: Expr, ref: _Reference, values: np.ndarray, deadline: Deadl
         bool(exactly_equal(tree, ref.tree, ref.domains, min(0.3, deadline.remaining())))
 
 
-def _form_verdict(spec: SymbolicSpec, ref: _Reference, tree: Expr) -> Verdict:
+def constant_ignored(spec: SymbolicSpec) -> str:
+    """What a formula right up to an additive constant is told."""
+    names = [n for n in spec.variables if n in spec.up_to_constant]
+    detail = "" if len(names) == len(spec.variables) else f" (one independent of {', '.join(names)})"
+    return (f"Your expression differs from the expected one by an additive constant{detail}, "
+            "which this part ignores: only changes of its value matter.")
+
+
+def _same_differences(values: np.ndarray, values_base: np.ndarray, expected: np.ndarray,
+                      expected_base: np.ndarray, tol: np.ndarray) -> bool:
+    """Whether two formulas differ by a constant: their changes from the base points
+    (``values - values_base`` and ``expected - expected_base``) agree within ``tol``."""
+    with np.errstate(all="ignore"):
+        change = (values - values_base) - (expected - expected_base)
+    return bool(np.all(np.isfinite(change)) and np.all(np.abs(change) <= tol))
+
+
+def _form_verdict(spec: SymbolicSpec, ref: _Reference, tree: Expr, note: str = "") -> Verdict:
     problems = []
     if "no_decimals" in spec.form:
         if any(isinstance(n, Num) and n.value != int(n.value) for n in walk(tree)) or \
@@ -207,9 +254,9 @@ def _form_verdict(spec: SymbolicSpec, ref: _Reference, tree: Expr) -> Verdict:
             problems.append("write it without functions (no sin, sqrt, exp, …)")
     if problems:
         return Verdict(False, spec.form_credit,
-                       "Your expression is equivalent, but " + " and ".join(problems) + ".",
-                       misconception="form")
-    return Verdict(True, 1.0, "Correct.")
+                       "Your expression is equivalent, but " + " and ".join(problems) + "." +
+                       (" " + note if note else ""), misconception="form")
+    return Verdict(True, 1.0, "Correct." + (" " + note if note else ""))
 
 
 def _agrees(values: np.ndarray, target: np.ndarray, ref: _Reference) -> bool:
@@ -219,9 +266,16 @@ def _agrees(values: np.ndarray, target: np.ndarray, ref: _Reference) -> bool:
     return bool(np.all(np.abs(values - target) <= point_tolerance(target, ref.rtol)))
 
 
-def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray):
-    for wrong, wrong_values in ref.known:
+def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray,
+                   base: np.ndarray | None = None):
+    """The misconception that explains ``values`` (``base``: the answer at the base points
+    of a part that ignores an additive constant), as (name, feedback, score), or None."""
+    for wrong, wrong_values, wrong_base in ref.known:
         if _agrees(values, wrong_values, ref) and not _agrees(ref.values, wrong_values, ref):
+            return wrong.name, wrong.feedback, wrong.score
+        if base is not None and np.all(np.isfinite(wrong_values)) and _same_differences(
+                values, base, wrong_values, wrong_base,
+                point_tolerance(wrong_values, ref.rtol) + point_tolerance(wrong_base, ref.rtol)):
             return wrong.name, wrong.feedback, wrong.score
     if not spec.generic_misconceptions:
         return None
