@@ -218,8 +218,17 @@ def test_formula_parts_are_left_out_of_the_students_text_and_named_for_the_staff
                 assert f"<li>{part.label}:" not in shown
     info = _category_info(pool["root"], "release-under-gravity")
     assert ("Not in Moodle (grade them from the fill-in files or by hand): height as a "
-            "formula (x2_formula, a formula, 1 point); together 1 point, 16.6667 % of the "
-            "exercise.") in info
+            "formula (question 4, x2_formula, a formula, 1 point); together 1 point, "
+            "16.6667 % of the exercise.") in info
+
+
+def test_each_part_is_numbered_as_the_statements_question_it_answers(pool):
+    """projectile-range asks questions 1-3 for numbers and 4 for the formula: Moodle's
+    list keeps 1, 2, 3, so the numbers match the statement with the formula left out."""
+    for question in pool["questions"]["projectile-range"]:
+        text = question.findtext("questiontext/text")
+        fields_list = text[text.rindex("<ol>"):]
+        assert re.findall(r'<li value="(\d+)">', fields_list) == ["1", "2", "3"]
 
 
 def _category_info(root, exercise_id: str) -> str:

@@ -286,10 +286,12 @@ def _category(quiz: ET.Element, title: str, category: Category, marks: Marks) ->
     described = category.described
     element = _sub(quiz, "question", type="category")
     _text(element, "category", f"$course$/top/{_category_name(title)}/{described.id}")
-    _text(element, "info", staff_note(title, described, marks), format="html")
+    _text(element, "info", staff_note(title, described, marks,
+                                      question_numbers(category.exercise)), format="html")
 
 
-def staff_note(title: str, described: ExerciseEntry, marks: Marks) -> str:
+def staff_note(title: str, described: ExerciseEntry, marks: Marks,
+               numbers: Mapping[str, int | None] | None = None) -> str:
     """The category's description (seen by the staff only): where the questions come
     from, the maximum mark to give the quiz slot, the parts left out and their share."""
     lines = [f"{_html(described.title)} ({_html(described.source)}), {_html(title)}: "
@@ -309,11 +311,17 @@ def staff_note(title: str, described: ExerciseEntry, marks: Marks) -> str:
         whole = marks.exercise_points or 1.0
         lines.append(
             "Not in Moodle (grade them from the fill-in files or by hand): "
-            + "; ".join(f"{_html(p.label)} ({p.name}, {MOODLE_KINDS[p.kind].absent}, "
-                        f"{points_phrase(p.points)})" for p in marks.left_out)
+            + "; ".join(f"{_html(p.label)} ({_asked(p.name, numbers)}{p.name}, "
+                        f"{MOODLE_KINDS[p.kind].absent}, {points_phrase(p.points)})"
+                        for p in marks.left_out)
             + f"; together {points_phrase(share)}, "
               f"{format_number(100 * share / whole)} % of the exercise.")
     return "".join(f"<p>{line}</p>" for line in lines)
+
+
+def _asked(name: str, numbers: Mapping[str, int | None] | None) -> str:
+    number = (numbers or {}).get(name)
+    return f"question {number}, " if number is not None else ""
 
 
 def _question(quiz: ET.Element, category: Category, marks: Marks, variant: VariantEntry,
@@ -328,9 +336,15 @@ def _question(quiz: ET.Element, category: Category, marks: Marks, variant: Varia
     if lone is not None and MOODLE_KINDS[lone.kind].numerical:
         question = _numerical_question(quiz, described, variant, text, wrong[lone.name])
     else:
-        question = _cloze_question(quiz, described, marks, variant, text, wrong)
+        question = _cloze_question(quiz, described, marks, variant, text, wrong,
+                                   question_numbers(exercise))
     if svg is not None:
         _figure_file(question.find("questiontext"), described.id, svg)
+
+
+def question_numbers(exercise: Exercise) -> dict[str, int | None]:
+    """The number of the statement's question each part answers (None: unnumbered)."""
+    return {part.name: part.question for part in exercise.parts}
 
 
 def _wrong_answers(exercise: Exercise, variant: VariantEntry) -> dict[str, tuple]:
@@ -396,16 +410,20 @@ def _numerical_question(quiz: ET.Element, described: ExerciseEntry, variant: Var
 
 
 def _cloze_question(quiz: ET.Element, described: ExerciseEntry, marks: Marks,
-                    variant: VariantEntry, text: str, wrong: dict) -> ET.Element:
+                    variant: VariantEntry, text: str, wrong: dict,
+                    numbers: Mapping[str, int | None]) -> ET.Element:
     """Every part Moodle can check as embedded fields, weighted as :func:`exercise_marks`
-    says; the others are left out of the student's text."""
+    says, each in a list item numbered as the statement's question it answers; the
+    others are left out of the student's text."""
     lines = []
     for part in marks.exported:
         unit = f" {_html(pretty_unit(part.unit))}" if part.unit else ""
         given = PartFields(part, variant.answers[part.name], wrong[part.name])
         fields = MOODLE_KINDS[part.kind].fields(given, marks.weights[part.name])
         shown = fields[0] if len(fields) == 1 else "(" + ", ".join(fields) + ")"
-        lines.append(f"<li>{_html(part.label)}: {shown}{unit}</li>")
+        number = numbers.get(part.name)
+        item = f'<li value="{number}">' if number is not None else "<li>"
+        lines.append(f"{item}{_html(part.label)}: {shown}{unit}</li>")
     return _question_head(quiz, "cloze", described, variant,
                           text + "<ol>" + "".join(lines) + "</ol>", marks.full_mark)
 
