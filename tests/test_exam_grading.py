@@ -48,13 +48,21 @@ def graded(tmp_path_factory, bank, exam_toml):
     return {"out": out, "outcome": outcome, "manifest": manifest}
 
 
+#: each part's points in the exam, split by hand with the largest-remainder method in
+#: hundredths: 6 points over 2:1:1:1 divide exactly; 8 over 2:1:1:1:1:1 gives quotas 228.57
+#: and 114.29 hundredths, cut to 228 + 5 × 114 = 798, the two left going to .571 (the first
+#: part) and the first of the tied .286 (the second)
+PART_POINTS = {"projectile-range": [2.4, 1.2, 1.2, 1.2],
+               "sliding-up-a-slope": [2.4, 1.2, 1.2, 1.2],
+               "car-in-a-looping": [2.29, 1.15, 1.14, 1.14, 1.14, 1.14]}
+
+
 def expected_gradebook(bank, exam_points: dict[str, float]) -> dict[str, dict]:
-    """The gradebook worked out from the submission plan and the exercises' own part points
-    scaled to the exam's points."""
-    def scaled(exercise_id):
-        exercise = bank.get(exercise_id)
-        total = sum(p.points for p in exercise.parts)
-        return [p.points * exam_points[exercise_id] / total for p in exercise.parts]
+    """The gradebook worked out from the submission plan and the parts' points split by
+    hand (:data:`PART_POINTS`); an absent student has no points at all (None)."""
+    for exercise_id, points in PART_POINTS.items():
+        assert len(points) == len(bank.get(exercise_id).parts)
+        assert math.isclose(sum(points), exam_points[exercise_id])
 
     ids = list(exam_points)
     rows = {}
@@ -62,16 +70,25 @@ def expected_gradebook(bank, exam_points: dict[str, float]) -> dict[str, dict]:
         if kind in ("correct", "duplicate", "csv"):
             scores = {e: exam_points[e] for e in ids}
         elif kind == "half":
-            scores = {e: sum(p for i, p in enumerate(scaled(e)) if i % 2 == 0) for e in ids}
+            scores = {e: sum(p for i, p in enumerate(PART_POINTS[e]) if i % 2 == 0)
+                      for e in ids}
         elif kind == "corrupt":
             scores = {e: (0.0 if e == ids[0] else exam_points[e]) for e in ids}
-        else:
+        elif kind == "empty":
             scores = {e: 0.0 for e in ids}
-        status = {"absent": "absent", "corrupt": "incomplete"}.get(kind, "graded")
+        else:
+            rows[student_id] = {**dict.fromkeys(ids), "total": None, "status": "absent",
+                                "percent": None}
+            continue
+        status = {"corrupt": "incomplete"}.get(kind, "graded")
         total = sum(scores.values())
         rows[student_id] = {**scores, "total": total, "status": status,
                             "percent": 100 * total / sum(exam_points.values())}
     return rows
+
+
+def _cell(text: str) -> float | None:
+    return None if text == "" else float(text)
 
 
 def test_the_class_gets_exactly_the_expected_gradebook(graded, bank):
@@ -79,15 +96,22 @@ def test_the_class_gets_exactly_the_expected_gradebook(graded, bank):
     expected = expected_gradebook(bank, exam_points)
     text = (graded["out"] / "grading" / "grades.csv").read_text(encoding="utf-8")
     rows = list(csv.DictReader(io.StringIO(text)))
-    assert list(rows[0]) == ["student_id", *exam_points, "total", "max_total", "percent",
-                             "status"]
+    assert list(rows[0]) == ["student_id", "name", "email", *exam_points, "total",
+                             "max_total", "percent", "status"]
     assert [r["student_id"] for r in rows] == ROSTER_IDS
+    assert [r["name"] for r in rows] == [f"Student {s}" for s in ROSTER_IDS]
     for row in rows:
         want = expected[row["student_id"]]
         for column in (*exam_points, "total"):
-            assert math.isclose(float(row[column]), want[column], abs_tol=1e-6), \
-                (row["student_id"], column, row[column], want[column])
-        assert math.isclose(float(row["percent"]), want["percent"], abs_tol=0.006)
+            if want[column] is None:
+                assert row[column] == "", (row["student_id"], column)
+            else:
+                assert math.isclose(float(row[column]), want[column], abs_tol=1e-9), \
+                    (row["student_id"], column, row[column], want[column])
+        if want["percent"] is None:
+            assert row["percent"] == ""
+        else:
+            assert math.isclose(float(row["percent"]), want["percent"], abs_tol=0.006)
         assert float(row["max_total"]) == 20.0
         assert row["status"] == want["status"], row["student_id"]
 

@@ -2,7 +2,7 @@
 angular momentum balance evaluated along them."""
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import example, given, settings, strategies as st
 
 from dynagrade.mechanics import angular_momentum as am
 from dynagrade.mechanics import particle
@@ -62,6 +62,7 @@ def test_planar_torque_is_the_rate_of_m_r2_phidot(m, r, rd, phd, rdd, phdd):
     assert H3[2] == pytest.approx(am.planar_angular_momentum(m, r, phd))
 
 
+@example(m=0.1015625, k=1.5, R=0.25, w0=1.0, t=3.25)  # omega ~ 1e-21 rad/s: the simulation's noise wins
 @settings(max_examples=20, deadline=None)
 @given(m=st.floats(0.1, 5.0), k=st.floats(0.01, 2.0), R=st.floats(0.2, 3.0), w0=st.floats(0.5, 20.0),
        t=st.floats(0.0, 5.0))
@@ -74,7 +75,9 @@ def test_rotating_particle_in_air_matches_the_simulated_drag_motion(m, k, R, w0,
     traj = particle.simulate(m, [R, 0.0], [0.0, R * w0], force, max(t, 1e-3))
     r_end, v_end = traj.at(t)
     omega_num = np.cross(r_end, v_end) / np.dot(r_end, r_end)
-    assert am.drag_angular_velocity(t, w0, k, m) == pytest.approx(omega_num, rel=1e-6)
+    # once drag has all but stopped the particle (omega ~ 1e-21 rad/s at k t/m ~ 48) the
+    # integrator's own error (~1e-12 rad/s) dominates: compare to a millionth, or to 1e-9 w0
+    assert am.drag_angular_velocity(t, w0, k, m) == pytest.approx(omega_num, rel=1e-6, abs=1e-9 * w0)
     phi_num = np.unwrap(np.arctan2(*traj.at(np.linspace(0, t, 400))[0][:, ::-1].T))[-1]
     assert am.drag_rotation_angle(t, w0, k, m) == pytest.approx(phi_num, rel=1e-6, abs=1e-9)
     assert am.drag_torque(k, R, w0) == pytest.approx(

@@ -120,8 +120,11 @@ def test_the_fill_in_file_states_the_points_the_printed_sheet_shows():
 
 def test_a_generated_exam_prints_the_same_points_on_sheet_fill_in_file_and_key(tmp_path, bank,
                                                                           exam_toml):
-    """car-in-a-looping has parts of 2, 1, 1, 1, 1, 1 points and 8 points in the exam:
-    its first part is worth 8·2/7 = 2.2857 points on the sheet and in the fill-in file."""
+    """car-in-a-looping has parts of 2, 1, 1, 1, 1, 1 points and 8 points in the exam,
+    split in hundredths by largest remainder: shares 2.2857 and 1.1429 cut to 2.28 and
+    1.14 (7.98), the two hundredths left going to the largest remainders (the first part,
+    then the first of the tied others): 2.29, 1.15, 1.14, 1.14, 1.14, 1.14 on the sheet,
+    in the fill-in file and in the key."""
     from dynagrade.exam.generate import generate_exam
 
     exam = tmp_path / "exam.toml"
@@ -132,11 +135,12 @@ def test_a_generated_exam_prints_the_same_points_on_sheet_fill_in_file_and_key(t
     folder = tmp_path / "out" / "students" / "a"
     fill_in = (folder / "car-in-a-looping.py").read_text(encoding="utf-8")
     sheet = (folder / "sheet.md").read_text(encoding="utf-8")
-    assert "(2.2857 points)" in fill_in and "— 2.2857 points" in sheet
-    assert "(1.1429 points)" in fill_in and "— 1.1429 points" in sheet
+    assert "(2.29 points)" in fill_in and "— 2.29 points" in sheet
+    assert "(1.15 points)" in fill_in and "— 1.15 points" in sheet
+    assert fill_in.count("(1.14 points)") == 4 and sheet.count("— 1.14 points") == 4
     key = (tmp_path / "out" / "key.csv").read_text(encoding="utf-8").splitlines()
     looping = [line.rsplit(",", 1)[1] for line in key if ",car-in-a-looping," in line]
-    assert looping == ["2.2857"] + ["1.1429"] * 5  # the key prints points the same way
+    assert looping == ["2.29", "1.15"] + ["1.14"] * 4  # the key prints points the same way
 
 
 @pytest.mark.parametrize("part, value, typed, shown", [

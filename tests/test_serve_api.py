@@ -328,7 +328,8 @@ def test_practice_draws_are_graded_but_not_counted(exam_dir, tmp_path, database)
         stored = db.student_answers(served.app.state.engine, data.exam_id, "s1")
         assert [(a.counted, a.correct, a.seed) for a in stored] == [(False, True, seed)]
         grades = served.staff_get("/api/v1/grades.csv").text
-        assert "s1,0,0,0,10,0.00,absent" in grades
+        # a practice draw counts for nothing: s1 is absent, with empty cells (no grade)
+        assert "s1,Ada One,ada@example.org,,,,10,,absent" in grades
         tampered = served.client.post(f"/s/{token}/submit", data={
             "csrf": csrf, "exercise": "projectile-range", "practice": f"{seed + 1}.00",
             "answer.x_max": "1"})

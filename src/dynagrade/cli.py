@@ -243,8 +243,21 @@ def compare(context, source):
 @click.option("--platform", type=click.Choice(["moodle", "canvas"]),
               help="With --manifest: which platform made the .zip download (default: told "
                    "from its entry names).")
+@click.option("--format", "formats", multiple=True, type=click.Choice(["moodle", "canvas"]),
+              help="With --manifest and -o: also write the gradebook as Moodle's "
+                   "(grades-moodle.csv) or Canvas's (grades-canvas.csv) grade import "
+                   "reads it; repeat for both.")
+@click.option("--assignment", metavar="NAME",
+              help="With --format: the grade column's heading, the Moodle grade item or "
+                   "Canvas assignment (e.g. \"Midterm (12345)\" for an existing Canvas "
+                   "assignment); default: the exam's title.")
+@click.option("--overrides", type=click.Path(exists=True, dir_okay=False),
+              help="With --manifest: a CSV student_id,exercise,part,points,comment of "
+                   "points set by hand; every row is checked before grading and a bad "
+                   "one stops the run before anything is written.")
 @click.pass_obj
-def grade_command(context, files, as_json, manifest, output, jobs, strict, roster, platform):
+def grade_command(context, files, as_json, manifest, output, jobs, strict, roster, platform,
+                  formats, assignment, overrides):
     """Grade filled-in exercise files (never executing them); with --manifest, a class.
 
     A class is always graded whole: a bad file or a part that cannot be graded is
@@ -252,16 +265,26 @@ def grade_command(context, files, as_json, manifest, output, jobs, strict, roste
     be graded (a bad manifest, a missing exercise, an unwritable folder) or, with
     --strict, when something was reported as an error."""
     if manifest is None:
-        if output is not None or jobs is not None or strict or roster or platform:
-            raise click.UsageError("-o/--output, --jobs, --strict, --roster and --platform "
-                                   "need --manifest")
+        if output is not None or jobs is not None or strict or roster or platform \
+                or formats or assignment or overrides:
+            raise click.UsageError("-o/--output, --jobs, --strict, --roster, --platform, "
+                                   "--format, --assignment and --overrides need --manifest")
         for file in files:
             if Path(file).is_dir():
                 raise click.BadParameter(f"File {file!r} is a directory.",
                                          param_hint="'FILES...'")
         _grade_files(context, files, as_json)
         return
-    _grade_class(context, manifest, files, output, jobs, as_json, strict, roster, platform)
+    if (formats or assignment) and output is None:
+        raise click.UsageError("--format and --assignment need -o/--output (the folder "
+                               "the gradebooks are written to)")
+    if assignment and not formats:
+        raise click.UsageError("--assignment heads the grade column of a --format moodle "
+                               "or canvas gradebook; give --format too")
+    _grade_class(context, manifest, files, output, jobs, as_json, strict,
+                 {"roster": roster, "platform": platform,
+                  "formats": tuple(dict.fromkeys(formats)), "assignment": assignment,
+                  "overrides": overrides})
 
 
 @main.command()
@@ -418,14 +441,13 @@ def _print_self_check(checked: dict) -> None:
         click.echo(f"  {part['name']}: {mark}: {part['message']}")
 
 
-def _grade_class(context, manifest, files, output, jobs, as_json, strict, roster=None,
-                 platform=None):
+def _grade_class(context, manifest, files, output, jobs, as_json, strict, options):
     from .exam.classgrade import grade_class
     from .render.terminal import progress_reporter
 
     with progress_reporter() as progress:
         outcome = grade_class(manifest, files, output, bank=context.bank, jobs=jobs,
-                              progress=progress, roster=roster, platform=platform)
+                              progress=progress, **options)
     for problem in outcome.problems:
         click.echo(f"{problem.level}: {problem.source}: {problem.message}", err=True)
     if as_json:
@@ -435,8 +457,11 @@ def _grade_class(context, manifest, files, output, jobs, as_json, strict, roster
 
         gradebook_table(outcome)
     if output:
-        click.echo(f"wrote {output}: grades.csv, problems.csv, feedback/, report.html",
-                   err=True)
+        from .exam.gradebook import GRADEBOOK_FILES
+
+        written = ["grades.csv", *(GRADEBOOK_FILES[f] for f in options["formats"])]
+        click.echo(f"wrote {output}: {', '.join(written)}, problems.csv, feedback/, "
+                   "report.html", err=True)
     errors = sum(p.level == "error" for p in outcome.problems)
     if strict and errors:
         click.echo(f"--strict: {errors} problem(s) reported as errors", err=True)

@@ -1,20 +1,25 @@
 """Grading a class against an exam manifest.
 
 Every roster student gets a row in the gradebook; a student with no submission is
-``absent`` with 0 points, one whose files could none be graded (corrupt, foreign,
+``absent`` with no points (empty cells), one whose files could none be graded (corrupt, foreign,
 impersonating) is ``rejected``. Faults stay where they happen: a part whose grading
 fails is that part's ``error`` (0 points, the message in the feedback and problems.csv)
 and the run goes on. Each submitted exercise is graded against the reference answers
 *stored in the manifest* (never recomputed, so a later numpy or an edited exercise cannot
 change a student's numbers); the exercise file supplies only the parts' grading rules
-(tolerances, units, misconceptions). Part points are those of the manifest, scaled so
-that an exercise's parts sum to its points in the exam.
+(tolerances, units, misconceptions). Part points are those of the manifest, split so
+that an exercise's parts sum to its points in the exam; each part's score is rounded to
+the exam's step (:mod:`.points`) and the staff's overrides (:mod:`.overrides`) replace
+the points of the parts they name.
 
 Outputs (built in a staging folder and swapped in whole, :mod:`.outputs`)::
 
-    grades.csv        student_id, <one column per exercise id: points earned>, total,
-                      max_total, percent, status (graded / incomplete / rejected /
-                      absent)
+    grades.csv        student_id, name, email, <one column per exercise id: points
+                      earned>, total, max_total, percent, status (graded / incomplete /
+                      rejected / absent); points rounded as the exam says
+    grades-moodle.csv, grades-canvas.csv
+                      with ``formats``: the gradebook as Moodle's or Canvas's grade import
+                      reads it (:mod:`.gradebook`)
     problems.csv      every submission that was skipped or replaced, every part whose
                       grading failed, and why
     feedback/<student_id>.md, feedback/<student_id>.html
@@ -36,11 +41,14 @@ from pathlib import Path
 from ..errors import UnknownExercise
 from ..exercise.loader import Bank, open_bank
 from ..exercise.model import Exercise, Variant
-from ..exercise.numbers import GRADEBOOK_DECIMALS, points_text
 from ..exercise.scoring import grade_variant, graded_error
 from ..grading import prepare
 from .files import write_atomic
+from .gradebook import (GRADEBOOK_FILES, gradebook_csv, gradebook_row, platform_gradebook,
+                        round_results)
 from .outputs import staging_folder, swap_in
+from .overrides import Override, apply_overrides, read_overrides
+from .points import Rounding
 from .run import GradingRun, file_sha256
 from .policy import Policy
 from .solution_policy import with_feedback
@@ -64,6 +72,12 @@ class ClassOutcome:
     stats: list = field(default_factory=list)
     feedback: dict[str, dict] = field(default_factory=dict)
     timings: dict[str, float] = field(default_factory=dict)
+    rounding: Rounding = Rounding()
+    max_total: float = 0.0
+    #: the staff's comments on overridden parts, by student (for the platform feedback)
+    comments: dict[str, list[str]] = field(default_factory=dict)
+    #: how many parts the overrides replaced
+    overridden: int = 0
 
     def summary(self) -> dict:
         return {"exam": self.exam_title, "rows": self.rows,
@@ -149,13 +163,23 @@ def _grade_one(run: GradingRun, work: tuple[StudentEntry, dict[str, Submission]]
 
 def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
                 jobs: int | None = None, progress=None, roster=None,
-                platform: str | None = None) -> ClassOutcome:
+                platform: str | None = None, overrides=None,
+                formats: tuple[str, ...] = (), assignment: str | None = None
+                ) -> ClassOutcome:
     """Grade every submission in ``paths`` and, with ``out_dir``, write the outputs; a
     platform's ``.zip`` download among ``paths`` is mapped to students by the platform
-    ids of ``roster`` (:mod:`.downloads`)."""
+    ids of ``roster`` (:mod:`.downloads`).
+
+    ``overrides`` is the path of an overrides file (:mod:`.overrides`), checked before
+    anything is graded; ``formats`` the platform gradebooks to write besides grades.csv
+    (``"moodle"``, ``"canvas"``), their grade column headed ``assignment`` (default: the
+    exam's title)."""
     started = time.perf_counter()
     progress = progress or (lambda stage, done, total: None)
     manifest = load(manifest_path)
+    rounding = Rounding(manifest.exam.rounding)
+    staff = (read_overrides(overrides, manifest, rounding) if overrides is not None
+             else ())
     problems: list[Problem] = []
     exercises = _exercises(manifest, bank or open_bank(), problems, str(manifest_path))
     manifest_parts = {e.id: e.parts for e in manifest.exercises}
@@ -167,14 +191,18 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
                  if (s.student_id, e) in chosen}) for s in manifest.students]
     graded = _run(work, manifest_parts, exercises, jobs, progress)
     timings["grading"] = time.perf_counter() - stage
-    outcome = _outcome(manifest, graded, problems, timings, declared_names(exercises))
+    outcome = _outcome(manifest, graded, problems, timings, declared_names(exercises),
+                       staff, str(overrides))
+    if "moodle" in formats:
+        outcome.problems += missing_emails(manifest)
     solutions = Policy.from_json(manifest.exam.policy).solutions
     if out_dir is not None and with_feedback(solutions):
         _add_solutions(outcome, manifest, exercises)
     if out_dir is not None:
         stage = time.perf_counter()
         staging = staging_folder(out_dir)
-        write_outputs(outcome, manifest, staging, progress)
+        write_outputs(outcome, manifest, staging, progress, formats,
+                      assignment or manifest.exam.title)
         swap_in(staging, out_dir)
         timings["outputs"] = time.perf_counter() - stage
     timings["total"] = time.perf_counter() - started
@@ -182,17 +210,25 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
 
 
 def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
-             timings: dict[str, float], declared: dict | None = None) -> ClassOutcome:
-    """The gradebook, the feedback per student and the item statistics."""
+             timings: dict[str, float], declared: dict | None = None,
+             overrides: tuple[Override, ...] = (), overrides_file: str = "") -> ClassOutcome:
+    """The gradebook, the feedback per student and the item statistics: every part's
+    score rounded to the exam's step, then the staff's overrides applied."""
     exercise_ids = manifest.exercise_ids
-    max_total = sum(float(e.points) for e in manifest.exercises)
+    rounding = Rounding(manifest.exam.rounding)
+    max_total = rounding.total([e.points for e in manifest.exercises])
+    for results in graded:
+        round_results(results, rounding)
+    comments = apply_overrides(overrides, overrides_file, dict(zip(
+        (s.student_id for s in manifest.students), graded)), rounding)
     rows, analysed, feedback = [], [], {}
     rejected = rejected_files(problems)
     problems += part_errors(manifest, graded)
     for student, results in zip(manifest.students, graded):
         handed_in = rejected.get(student.student_id, {})
         row = gradebook_row(student.student_id, results, exercise_ids, max_total,
-                            bool(handed_in))
+                            bool(handed_in), name=student.name, email=student.email,
+                            rounding=rounding)
         rows.append(row)
         feedback[student.student_id] = {"student": student, "results": results, "row": row,
                                         "rejected": handed_in}
@@ -203,7 +239,7 @@ def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
     ordered_parts = [(e.id, p) for e in manifest.exercises for p in e.parts]
     return ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
                         part_statistics(ordered_parts, analysed, declared=declared), feedback,
-                        timings)
+                        timings, rounding, max_total, comments, len(overrides))
 
 
 def part_errors(manifest: Manifest, graded: list[dict]) -> list[Problem]:
@@ -217,6 +253,18 @@ def part_errors(manifest: Manifest, graded: list[dict]) -> list[Problem]:
                                          f"part {part['name']}: {part['feedback']}",
                                          student.student_id, exercise_id))
     return found
+
+
+def missing_emails(manifest: Manifest) -> list[Problem]:
+    """A warning when students of the roster have no email: Moodle's grade import cannot
+    map them by email address (it stops at the first row it cannot match)."""
+    without = [s.student_id for s in manifest.students if not s.email]
+    if not without:
+        return []
+    shown = ", ".join(without[:5]) + (", ..." if len(without) > 5 else "")
+    return [Problem("warning", GRADEBOOK_FILES["moodle"],
+                    f"{len(without)} student(s) have no email on the roster ({shown}); in "
+                    "Moodle's import map users from 'ID number', not 'Email address'")]
 
 
 def rejected_files(problems: list[Problem]) -> dict[str, dict[str, list[str]]]:
@@ -245,25 +293,6 @@ def _add_solutions(outcome: ClassOutcome, manifest: Manifest,
         outcome.feedback[student.student_id]["solutions"] = feedback_solutions(solved, warn)
 
 
-def gradebook_row(student_id: str, results: dict, exercise_ids: list[str],
-                  max_total: float, handed_in: bool = False) -> dict:
-    """A student's row: points per exercise (0 when not submitted), total, percent and
-    status (absent: nothing submitted; rejected: files handed in but none could be
-    graded; incomplete: some exercises missing)."""
-    row = {"student_id": student_id}
-    for exercise_id in exercise_ids:
-        row[exercise_id] = results[exercise_id]["score"] if results[exercise_id] else 0.0
-    submitted = [e for e in exercise_ids if results[e] is not None]
-    total = round(sum(row[e] for e in exercise_ids), 6)
-    status = ("rejected" if not submitted and handed_in else
-              "absent" if not submitted else
-              "graded" if len(submitted) == len(exercise_ids) else "incomplete")
-    row.update(total=total, max_total=max_total,
-               percent=round(100.0 * total / max_total, 2) if max_total else 0.0,
-               status=status)
-    return row
-
-
 def _run(work, manifest_parts, exercises, jobs, progress) -> list[dict]:
     """Every student's results in roster order; a class of fewer than 40 is graded here,
     a larger one in worker processes (in chunks, so that progress moves)."""
@@ -278,23 +307,6 @@ def _run(work, manifest_parts, exercises, jobs, progress) -> list[dict]:
     return results
 
 
-def gradebook_csv(outcome: ClassOutcome) -> str:
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    columns = ["student_id", *outcome.exercise_ids, "total", "max_total", "percent", "status"]
-    writer.writerow(columns)
-    for row in outcome.rows:
-        writer.writerow([row["student_id"],
-                         *(_recorded(row[e]) for e in outcome.exercise_ids),
-                         _recorded(row["total"]), _recorded(row["max_total"]),
-                         f"{row['percent']:.2f}", row["status"]])
-    return buffer.getvalue()
-
-
-def _recorded(points: float) -> str:
-    return points_text(points, GRADEBOOK_DECIMALS)
-
-
 def problems_csv(problems: list[Problem]) -> str:
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
@@ -304,7 +316,8 @@ def problems_csv(problems: list[Problem]) -> str:
     return buffer.getvalue()
 
 
-def write_outputs(outcome: ClassOutcome, manifest: Manifest, out: Path, progress) -> None:
+def write_outputs(outcome: ClassOutcome, manifest: Manifest, out: Path, progress,
+                  formats: tuple[str, ...] = (), assignment: str = "") -> None:
     from ..render.report import feedback_html, feedback_markdown, report_html
 
     exercises = {e.id: e for e in manifest.exercises}
@@ -317,4 +330,7 @@ def write_outputs(outcome: ClassOutcome, manifest: Manifest, out: Path, progress
         progress("feedback", done, total)
     write_atomic(out / "report.html", report_html(manifest.exam, outcome))
     write_atomic(out / "problems.csv", problems_csv(outcome.problems))
-    write_atomic(out / "grades.csv", gradebook_csv(outcome))
+    write_atomic(out / GRADEBOOK_FILES["csv"], gradebook_csv(outcome))
+    for layout in formats:
+        write_atomic(out / GRADEBOOK_FILES[layout],
+                     platform_gradebook(outcome, layout, assignment or manifest.exam.title))

@@ -29,7 +29,7 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Callable
+from typing import Callable, Mapping
 
 from .. import __name__ as _package
 from ..exercise.loader import Bank, open_bank
@@ -41,6 +41,7 @@ from .files import write_atomic
 from .manifest import (ExamEntry, ExerciseEntry, Generator, Manifest, PartEntry,
                        StudentEntry, dump)
 from .outputs import staging_folder, swap_in
+from .points import Rounding, exam_part_points
 from .run import GenerationRun, file_sha256
 from .solutions import solutions_title
 from .spec import ExamSpec, ExamSpecError, Student, read_exam_spec, read_roster
@@ -158,17 +159,23 @@ def open_run(exam_path, roster_path, target: Path, bank: Bank | None, pdf: bool,
     ``target``."""
     spec, roster, exercises = load_exam(exam_path, roster_path, bank, notices)
     spec = replace(spec, secret=secret)
-    parts = {item.id: exercise_parts(exercises[item.id], item.points)
+    parts = {item.id: exercise_parts(exercises[item.id], item.points, item.part_points,
+                                     spec.rounding)
              for item in spec.exercises}
     return GenerationRun(spec, exercises, parts, staging_folder(target), pdf), roster
 
 
-def exercise_parts(exercise: Exercise, points: float) -> tuple[PartEntry, ...]:
-    """The parts of ``exercise`` with points scaled so that they sum to ``points``."""
-    total = sum(p.points for p in exercise.parts)
-    scale = points / total if total else 0.0
+def exercise_parts(exercise: Exercise, points: float,
+                   given: Mapping[str, float] | None = None,
+                   rounding: Rounding = Rounding()) -> tuple[PartEntry, ...]:
+    """The parts of ``exercise`` with their points in the exam: ``given`` by the exam
+    (``[exercise.points]``) or ``points`` split over the parts in proportion to their own
+    points, rounded to the exam's step and summing to ``points`` exactly
+    (:func:`.points.exam_part_points`)."""
+    shares = exam_part_points({p.name: p.points for p in exercise.parts}, points, given,
+                              rounding)
     return tuple(PartEntry(part.name, part.label or part.name, part.kind, part.unit,
-                           part.points * scale,
+                           shares[part.name],
                            **{name: getattr(part, name) for name in part.manifest_fields})
                  for part in exercise.parts)
 
@@ -188,7 +195,7 @@ def _write_key_and_moodle(run: GenerationRun, manifest: Manifest) -> list[str]:
     from ..render.keys import key_csv
     from ..render.moodle import moodle_xml
 
-    write_atomic(run.out_dir / "key.csv", key_csv(manifest))
+    write_atomic(run.out_dir / "key.csv", key_csv(manifest, run.exercises))
     export = moodle_xml(manifest, run.exercises, _staged_figures(run, manifest))
     write_atomic(run.out_dir / "moodle.xml", export.xml)
     return export.notices
@@ -215,7 +222,8 @@ def _write_printing_pdfs(run: GenerationRun, pool: Pool, manifest: Manifest,
 
     title = f"{run.spec.title}: answer key"
     key_job = pool.submit(_compile_key,
-                          typst_preamble(run.spec.to_json(), title) + key_typst(manifest))
+                          typst_preamble(run.spec.to_json(), title)
+                          + key_typst(manifest, run.exercises))
     steps = 3 if run.solutions else 2
     _write_combined_pdf(run, roster, "sheet.pdf", [r.body for r in results],
                         f"{run.spec.title}: all sheets", "sheets.pdf")
@@ -266,7 +274,8 @@ def build_manifest(spec: ExamSpec, exercises: dict[str, Exercise],
         for item in spec.exercises)
     exam = ExamEntry(spec.id, spec.title, spec.date, spec.instructions, spec.total_points,
                      spec.policy.to_json() if spec.policy != type(spec.policy)() else None,
-                     language=spec.language, secret=spec.secret or None)
+                     language=spec.language, secret=spec.secret or None,
+                     rounding=spec.rounding.step)
     return Manifest(Generator(_version(), numpy.__version__), exam, described,
                     tuple(students))
 

@@ -16,7 +16,7 @@ Shape (``docs/exams.md`` shows a whole file)::
 
     Manifest        format, version, generator, exam, exercises[], students[]
     ExamEntry       id, title, date, instructions, [policy], [language], points,
-                    [secret]
+                    [secret], [round]
     ExerciseEntry   id, title, source, points, set, file, sha256, parts[]
     PartEntry       name, label, kind, unit, points, and the settings its kind
                     stores (``Part.manifest_fields``: rtol/atol, size, options/multiple)
@@ -51,6 +51,7 @@ from typing import Any, Callable, Mapping
 
 from ..errors import DynagradeError
 from ..exercise.parts import PART_KINDS
+from .points import DEFAULT_STEP
 
 FORMAT = "dynagrade-exam-manifest"
 VERSION = 1
@@ -155,6 +156,9 @@ class ExamEntry:
     policy: Mapping[str, Any] | None = None
     language: str = "en"  # written only when not "en"
     secret: str | None = None
+    #: points are multiples of this step (exam.toml's ``round``/``decimals``); written as
+    #: ``round`` only when not the default hundredths
+    rounding: float = DEFAULT_STEP
 
 
 @dataclass(frozen=True)
@@ -215,6 +219,8 @@ def _exam_dict(exam: ExamEntry) -> dict:
     entry["points"] = exam.points
     if exam.secret is not None:
         entry["secret"] = exam.secret
+    if exam.rounding != DEFAULT_STEP:
+        entry["round"] = exam.rounding
     return entry
 
 
@@ -291,7 +297,8 @@ def from_dict(data: Any) -> Manifest:
                        exam.string("instructions"), exam.number("points"),
                        exam.mapping("policy", optional=True),
                        exam.string("language") if "language" in exam.data else "en",
-                       exam.string("secret") if "secret" in exam.data else None),
+                       exam.string("secret") if "secret" in exam.data else None,
+                       _step(exam) if "round" in exam.data else DEFAULT_STEP),
         exercises=tuple(_exercise(item) for item in root.objects("exercises")),
         students=tuple(_student(item) for item in root.objects("students")),
         version=version)
@@ -360,6 +367,13 @@ class _Object:
         values = self._typed(key, lambda v: isinstance(v, list), "a list")
         return [_Object(value, f"{self.path(key)}[{index}]")
                 for index, value in enumerate(values)]
+
+
+def _step(exam: _Object) -> float:
+    step = exam.number("round")
+    if not step > 0:
+        raise ManifestError(f"{exam.path('round')}: expected a positive number, got {step!r}")
+    return float(step)
 
 
 def _is_number(value) -> bool:

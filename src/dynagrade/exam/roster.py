@@ -105,17 +105,7 @@ def read_roster(path: str | Path, notices: list[str] | None = None,
 def parse_roster(raw: bytes, where: str = "<roster>", notices: list[str] | None = None,
                  error: type[Exception] = RosterError) -> tuple[Student, ...]:
     """The students of a roster given as bytes; ``where`` names it in errors."""
-    try:
-        text = raw.decode("utf-8-sig")
-    except UnicodeDecodeError as problem:
-        line = raw[:problem.start].count(b"\n") + 1
-        raise error(f"{where}, row {line}: not UTF-8 text") from None
-    first_line = text.split("\n", 1)[0]
-    separator = max(SEPARATORS, key=first_line.count)
-    try:
-        rows = list(csv.reader(io.StringIO(text, newline=""), delimiter=separator))
-    except csv.Error as problem:
-        raise error(f"{where}: not a CSV file ({problem})") from None
+    rows = csv_rows(raw, where, error)
     if not rows or not any(cell.strip() for cell in rows[0]):
         raise error(f"{where}: the roster is empty; it needs the header "
                     "student_id,name[,email] and one row per student")
@@ -128,6 +118,23 @@ def parse_roster(raw: bytes, where: str = "<roster>", notices: list[str] | None 
     if not students:
         raise error(f"{where}: the roster is empty (a header and no students)")
     return students
+
+
+def csv_rows(raw: bytes, where: str, error: type[Exception] = RosterError) -> list[list[str]]:
+    """The rows of a CSV file as people save it: UTF-8 with or without a byte-order mark,
+    the separator its header row uses (``,``, ``;`` or a tab), CRLF or LF; ``error`` (with
+    ``where`` and the row) when it is not UTF-8 or not CSV."""
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError as problem:
+        line = raw[:problem.start].count(b"\n") + 1
+        raise error(f"{where}, row {line}: not UTF-8 text") from None
+    first_line = text.split("\n", 1)[0]
+    separator = max(SEPARATORS, key=first_line.count)
+    try:
+        return list(csv.reader(io.StringIO(text, newline=""), delimiter=separator))
+    except csv.Error as problem:
+        raise error(f"{where}: not a CSV file ({problem})") from None
 
 
 def header_columns(header: list[str], where: str, error=RosterError) -> Columns:

@@ -18,6 +18,17 @@
     [exercise.set]                   # optional: fixed values, in the parameter's unit
     R = 5.0
 
+    [[exercise]]
+    id = "sliding-up-a-slope"
+    [exercise.points]                # optional: every part's points instead of a total
+    delta_x = 3
+    a_up = 1
+    t_stop = 1
+    delta_x_formula = 1
+
+Points are rounded as the top-level ``round = 0.5`` (multiples of a step) or ``decimals =
+2`` (the default) says; :mod:`.points` splits an exercise's points over its parts.
+
 The roster: a CSV with the header ``student_id,name`` or ``student_id,name,email``, one
 student per row, or as Excel, Moodle and Canvas save it (:mod:`.roster`).
 
@@ -37,12 +48,15 @@ from typing import Callable
 
 from ..errors import DynagradeError
 from . import roster
+from .points import Rounding
 from .policy import POLICY_KEYS, Policy, PolicyError, read_policy
 from .roster import Student
 
 _EXAM_ID = re.compile(r"[a-z0-9]+(-[a-z0-9]+)*")  # fullmatch: `$` would take "x\n"
 MAX_POINTS = 1000.0  # more for one exercise is a typo, and sums must stay exact
-_TOP_KEYS = {"id", "title", "date", "instructions", "language", "exercise"} | POLICY_KEYS
+_TOP_KEYS = ({"id", "title", "date", "instructions", "language", "exercise", "round",
+              "decimals"} | POLICY_KEYS)
+MAX_DECIMALS = 6
 _LANGUAGE = re.compile(r"[a-z]{2,3}(-[A-Za-z0-9]{2,8})*")
 _EXERCISE_KEYS = {"id", "points", "set"}
 
@@ -53,12 +67,14 @@ class ExamSpecError(DynagradeError, ValueError):
 
 @dataclass(frozen=True)
 class ExamExercise:
-    """One exercise of the exam: its id, the points it is worth and fixed parameters."""
+    """One exercise of the exam: its id, the points it is worth, fixed parameters and,
+    when the exam gives them (``[exercise.points]``), every part's points by name."""
 
     id: str
     points: float
     set: dict[str, float] = field(default_factory=dict)
     line: int = 0
+    part_points: dict[str, float] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -74,6 +90,7 @@ class ExamSpec:
     policy: Policy = Policy()  # delivery by `dynagrade serve` (exam/policy.py)
     language: str = "en"  # a BCP 47 tag: HTML lang and the PDFs' language
     secret: str = ""  # set by the generation; never on a sheet (not in to_json)
+    rounding: Rounding = Rounding()  # `round = 0.5` or `decimals = 2` (the default)
 
     @property
     def mode(self) -> str:
@@ -83,7 +100,7 @@ class ExamSpec:
 
     @property
     def total_points(self) -> float:
-        return sum(e.points for e in self.exercises)
+        return self.rounding.total([e.points for e in self.exercises])
 
     def to_json(self) -> dict:
         return {"id": self.id, "title": self.title, "date": self.date,
@@ -139,6 +156,7 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
         raise ExamSpecError(f"{where}, line {_key_line(text, 'language')}, field 'language': "
                             f"{language!r} is not a language tag; give e.g. \"en\" or \"de\"")
 
+    rounding = _rounding(data, where, text)
     tables = data.get("exercise")
     if not isinstance(tables, list) or not tables:
         raise ExamSpecError(f"{where}: no [[exercise]] tables; an exam needs at least one")
@@ -147,16 +165,38 @@ def read_exam_spec(path: str | Path, known: Callable[[str], object] | None = Non
     for index, table in enumerate(tables):
         line = lines[index] if index < len(lines) else 0
         at = f"{where}, line {line}, [[exercise]] #{index + 1}"
-        exercises.append(_exercise(table, at, line, seen, known))
+        exercises.append(_exercise(table, at, line, seen, known, rounding))
     try:
         policy = read_policy(data, where, lambda key: _key_line(text, key))
     except PolicyError as error:
         raise ExamSpecError(str(error)) from None
     return ExamSpec(exam_id, title, date, instructions, tuple(exercises), str(path), policy,
-                    language)
+                    language, rounding=rounding)
 
 
-def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExercise:
+def _rounding(data: dict, where: str, text: str) -> Rounding:
+    """The exam's rounding of points: ``round = STEP`` or ``decimals = N`` (not both);
+    hundredths when neither is given."""
+    if "round" in data and "decimals" in data:
+        raise ExamSpecError(f"{where}, line {_key_line(text, 'decimals')}: give 'round' or "
+                            "'decimals', not both")
+    if "round" in data:
+        step = data["round"]
+        if isinstance(step, bool) or not isinstance(step, (int, float)) \
+                or not math.isfinite(step) or not 0 < step <= MAX_POINTS:
+            raise ExamSpecError(f"{where}, line {_key_line(text, 'round')}, field 'round': "
+                                f"{step!r}; give the step points are rounded to, e.g. 0.5")
+        return Rounding(float(step))
+    decimals = data.get("decimals", 2)
+    if isinstance(decimals, bool) or not isinstance(decimals, int) \
+            or not 0 <= decimals <= MAX_DECIMALS:
+        raise ExamSpecError(f"{where}, line {_key_line(text, 'decimals')}, field 'decimals': "
+                            f"{decimals!r}; give a whole number from 0 to {MAX_DECIMALS}")
+    return Rounding.to_decimals(decimals)
+
+
+def _exercise(table, at: str, line: int, seen: dict[str, int], known,
+              rounding: Rounding = Rounding()) -> ExamExercise:
     if not isinstance(table, dict):
         raise ExamSpecError(f"{at}: not a table")
     unknown = sorted(set(table) - _EXERCISE_KEYS)
@@ -177,11 +217,20 @@ def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExe
         except DynagradeError as error:
             raise ExamSpecError(f"{at}, field 'id': {error}") from None
     points = table.get("points")
+    part_points = {}
+    if isinstance(points, dict):
+        part_points = _part_points(points, f"{at} ({exercise_id})", exercise, rounding)
+        points = rounding.total(list(part_points.values()))
     if isinstance(points, bool) or not isinstance(points, (int, float)) \
             or not math.isfinite(points) or not 0 < points <= MAX_POINTS:
         raise ExamSpecError(f"{at} ({exercise_id}), field 'points': "
                             f"{'missing' if points is None else repr(points)}; "
-                            f"give a positive number up to {MAX_POINTS:g}")
+                            f"give a positive number up to {MAX_POINTS:g}, or a table "
+                            "[exercise.points] of every part's points")
+    if not rounding.is_multiple(points):
+        raise ExamSpecError(f"{at} ({exercise_id}), field 'points': {points:g} cannot be split "
+                            f"into the exam's rounding ({rounding.describe()}); give a "
+                            "multiple of it or change 'round'/'decimals'")
     overrides = table.get("set", {})
     if not isinstance(overrides, dict):
         raise ExamSpecError(f"{at} ({exercise_id}), field 'set': must be a table "
@@ -202,7 +251,34 @@ def _exercise(table, at: str, line: int, seen: dict[str, int], known) -> ExamExe
             if outside:
                 raise ExamSpecError(f"{at} ({exercise_id}), field 'set.{name}': {outside}")
         values[name] = float(value)
-    return ExamExercise(exercise_id, float(points), values, line)
+    return ExamExercise(exercise_id, float(points), values, line, part_points)
+
+
+def _part_points(table: dict, at: str, exercise, rounding: Rounding) -> dict[str, float]:
+    """``[exercise.points]``: every part of the exercise (when known) with its points, a
+    non-negative multiple of the exam's rounding step."""
+    given = {}
+    for name, value in table.items():
+        if isinstance(value, bool) or not isinstance(value, (int, float)) \
+                or not math.isfinite(value) or not 0 <= value <= MAX_POINTS:
+            raise ExamSpecError(f"{at}, field 'points.{name}': {value!r}; give the part's "
+                                f"points, a number from 0 to {MAX_POINTS:g}")
+        if not rounding.is_multiple(value):
+            raise ExamSpecError(f"{at}, field 'points.{name}': {value:g} is not one of the "
+                                f"exam's {rounding.describe()}")
+        given[name] = float(value)
+    if exercise is not None:
+        names = [part.name for part in exercise.parts]
+        unknown = [name for name in given if name not in names]
+        if unknown:
+            raise ExamSpecError(f"{at}, field 'points.{unknown[0]}': the exercise has no "
+                                f"part {unknown[0]!r}; its parts are {', '.join(names)}")
+        missing = [name for name in names if name not in given]
+        if missing:
+            raise ExamSpecError(f"{at}, field 'points': give every part's points; missing "
+                                f"{', '.join(missing)}")
+        given = {name: given[name] for name in names}
+    return given
 
 
 def _string(data, key, where, text, required) -> str:

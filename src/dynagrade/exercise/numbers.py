@@ -6,10 +6,9 @@ from __future__ import annotations
 from ..grading.feedback import show_number
 
 #: points are shown to people rounded to this many decimals (sheets, fill-in files, keys,
-#: feedback, the terminal)
+#: feedback, the terminal); an exam's points are multiples of its rounding step
+#: (``dynagrade.exam.points``), which the gradebooks write exactly
 POINTS_DECIMALS = 4
-#: the gradebook (grades.csv) records points to this many decimals, for further computing
-GRADEBOOK_DECIMALS = 6
 
 
 def format_number(value: float, digits: int = 6) -> str:
@@ -18,10 +17,21 @@ def format_number(value: float, digits: int = 6) -> str:
     return show_number(value, digits)
 
 
-def points_text(points: float, decimals: int = POINTS_DECIMALS) -> str:
+#: what stands for "no points" (an absent student's exercise or total)
+NO_POINTS = "—"
+
+
+def points_text(points: float | None, decimals: int = POINTS_DECIMALS) -> str:
     """Points as a number: rounded to ``decimals`` decimals, no trailing zeros (``2.4``,
-    ``2.2857``, ``6``)."""
+    ``2.2857``, ``6``); :data:`NO_POINTS` for None (no grade)."""
+    if points is None:
+        return NO_POINTS
     return format_number(round(float(points), decimals), 15)
+
+
+def percent_text(value: float | None, empty: str = NO_POINTS) -> str:
+    """A percentage with two decimals; ``empty`` when there is none (an absent student)."""
+    return empty if value is None else f"{value:.2f}"
 
 
 def points_phrase(points: float) -> str:

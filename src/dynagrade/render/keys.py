@@ -1,64 +1,90 @@
-"""Answer keys from an exam manifest: a CSV for machines and a PDF for people."""
+"""Answer keys from an exam manifest: a CSV for machines and a PDF for people.
+
+Beside each variant's answers the keys show its given values, the parameters the
+statement prints, as it prints them (``v0 = 12 m/s; alpha = 40°; g = 9.81 m/s²``), so
+that a written solution can be checked by hand against the numbers the student had.
+"""
 
 from __future__ import annotations
 
 import csv
 import io
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Mapping
 
 from ..exercise.numbers import answer_text, points_text
+from ..exercise.statement import ShownValue, referenced_names
 from ..exercise.units import pretty_unit
 
 if TYPE_CHECKING:
     from ..exam.manifest import Manifest
+    from ..exercise.model import Exercise
 
-KEY_COLUMNS = ("student_id", "name", "exercise_id", "seed", "part", "answer", "unit", "points")
+KEY_COLUMNS = ("student_id", "name", "exercise_id", "seed", "given", "part", "answer", "unit",
+               "points")
 
 
-def key_rows(manifest: Manifest):
-    """One row per student, exercise and part (the columns of :data:`KEY_COLUMNS`)."""
+def given_values(exercise: Exercise | None, params: Mapping[str, float]) -> str:
+    """The variant's given values as its statement prints them, ``name = value unit``
+    separated by ``; `` (the parameters the statement shows, in declaration order); ""
+    when the exercise is not at hand."""
+    if exercise is None:
+        return ""
+    shown = referenced_names(exercise.statement)
+    return "; ".join(f"{p.name} = {ShownValue(p, params[p.name])}"
+                     for p in exercise.params if p.name in shown and p.name in params)
+
+
+def key_rows(manifest: Manifest, exercises: Mapping[str, Exercise] | None = None):
+    """One row per student, exercise and part (the columns of :data:`KEY_COLUMNS`); the
+    given values need the exercises (by id)."""
     parts = {e.id: e.parts for e in manifest.exercises}
+    exercises = exercises or {}
     for student in manifest.students:
         for variant in student.variants:
+            given = given_values(exercises.get(variant.exercise), variant.params)
             for part in parts[variant.exercise]:
                 yield {"student_id": student.student_id, "name": student.name,
                        "exercise_id": variant.exercise, "seed": variant.seed,
-                       "part": part.name, "value": variant.answers[part.name],
-                       "unit": part.unit or "", "points": part.points}
+                       "given": given, "part": part.name,
+                       "value": variant.answers[part.name], "unit": part.unit or "",
+                       "points": part.points}
 
 
-def key_csv(manifest: Manifest) -> str:
-    """The answer key as CSV, answers to 10 significant figures."""
+def key_csv(manifest: Manifest, exercises: Mapping[str, Exercise] | None = None) -> str:
+    """The answer key as CSV, answers to 10 significant figures, each row with its
+    variant's given values."""
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(KEY_COLUMNS)
-    for row in key_rows(manifest):
+    for row in key_rows(manifest, exercises):
         writer.writerow([row["student_id"], row["name"], row["exercise_id"], row["seed"],
-                         row["part"], answer_text(row["value"], 10), row["unit"],
+                         row["given"], row["part"], answer_text(row["value"], 10), row["unit"],
                          points_text(row["points"])])
     return buffer.getvalue()
 
 
-def key_typst(manifest: Manifest) -> str:
-    """The body of the answer key PDF: per student a line per exercise with its seed and
-    every part's answer, unit and points (compact: a class of 500 compiles in seconds)."""
+def key_typst(manifest: Manifest, exercises: Mapping[str, Exercise] | None = None) -> str:
+    """The body of the answer key PDF: per student a line per exercise with its seed, its
+    given values and every part's answer, unit and points (compact: a class of 500
+    compiles in seconds)."""
     from .sheets import render_template
 
     students = []
     titles = {e.id: e.title for e in manifest.exercises}
     rows_by_student: dict[str, list] = {}
-    for row in key_rows(manifest):
+    for row in key_rows(manifest, exercises):
         shown = answer_text(row["value"])
         unit = pretty_unit(row["unit"]) if row["unit"] else ""
         rows_by_student.setdefault(row["student_id"], []).append(
             {**row, "shown": shown, "shown_unit": unit,
              "title": titles[row["exercise_id"]]})
     for student in manifest.students:
-        exercises: dict[str, dict] = {}
+        lines: dict[str, dict] = {}
         for row in rows_by_student.get(student.student_id, []):
-            exercises.setdefault(row["exercise_id"], {"id": row["exercise_id"],
-                                                      "seed": row["seed"], "rows": []})
-            exercises[row["exercise_id"]]["rows"].append(row)
+            lines.setdefault(row["exercise_id"], {"id": row["exercise_id"],
+                                                  "seed": row["seed"], "given": row["given"],
+                                                  "rows": []})
+            lines[row["exercise_id"]]["rows"].append(row)
         students.append({"id": student.student_id, "name": student.name,
-                         "exercises": list(exercises.values())})
+                         "exercises": list(lines.values())})
     return render_template("key.typ", exam=manifest.exam, students=students)

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 
 from .accessible_svg import accessible_svg, sentence_list
 from .figures import SVG_SETTINGS, inline_svg
-from ..exercise.numbers import answer_text, format_number
+from ..exercise.numbers import answer_text, format_number, percent_text
 from ..exercise.units import with_unit
 from .sheets import render_template
 from ..exam.stats import MIN_STUDENTS, PartStats
@@ -51,8 +51,8 @@ def _feedback_context(exam, exercises, data) -> dict:
                          "points": described.points, "result": result, "parts": parts,
                          "rejected": data.get("rejected", {}).get(exercise_id, []),
                          "solution": data.get("solutions", {}).get(exercise_id)})
-    return {"exam": exam, "student": data["student"], "row": data["row"],
-            "sections": sections}
+    row = {**data["row"], "percent": percent_text(data["row"]["percent"])}
+    return {"exam": exam, "student": data["student"], "row": row, "sections": sections}
 
 
 def feedback_markdown(exam: ExamEntry, exercises: dict[str, ExerciseEntry], data: dict) -> str:

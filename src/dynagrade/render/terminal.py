@@ -9,7 +9,7 @@ from rich.panel import Panel
 from rich.progress import Progress
 from rich.table import Table
 
-from ..exercise.numbers import points_text
+from ..exercise.numbers import percent_text, points_text
 
 _STATUS_STYLE = {"correct": "green", "follow-through": "yellow", "partial": "yellow",
                  "wrong": "red", "not answered": "dim"}
@@ -135,5 +135,5 @@ def gradebook_table(outcome) -> None:
     for row in outcome.rows:
         table.add_row(row["student_id"], *(points_text(row[e]) for e in outcome.exercise_ids),
                       f"{points_text(row['total'])} / {points_text(row['max_total'])}",
-                      f"{row['percent']:.2f}", row["status"])
+                      percent_text(row["percent"]), row["status"])
     _console().print(table)

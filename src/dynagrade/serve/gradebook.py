@@ -16,6 +16,7 @@ import tempfile
 from pathlib import Path
 
 from ..exam.classgrade import ClassOutcome, grade_class, gradebook_csv, gradebook_row
+from ..exam.points import Rounding
 from ..exam.submissions import RESPONSE_HEADER
 from .db import StoredAnswer
 from .exam_data import ExamData
@@ -46,14 +47,23 @@ def gradebook_rows(data: ExamData, chosen: dict) -> list[dict]:
                       for p in data.parts(exercise_id)
                       if (student_id, exercise_id, p.name) in chosen]
             results[exercise_id] = {"score": round(sum(scores), 6)} if scores else None
-        rows.append(gradebook_row(student_id, results, data.exercise_ids, max_total))
+        student = data.students[student_id]
+        rows.append(gradebook_row(student_id, results, data.exercise_ids, max_total,
+                                  name=student.name, email=student.email,
+                                  rounding=_rounding(data)))
     return rows
 
 
 def grades_csv(data: ExamData, stored: list[StoredAnswer]) -> str:
     """The gradebook as class grading writes it."""
     rows = gradebook_rows(data, counted_answers(data, stored))
-    return gradebook_csv(ClassOutcome(data.title, data.exercise_ids, rows, []))
+    return gradebook_csv(ClassOutcome(data.title, data.exercise_ids, rows, [],
+                                      rounding=_rounding(data)))
+
+
+def _rounding(data: ExamData) -> Rounding:
+    """The exam's rounding of points, as class grading rounds them."""
+    return Rounding(data.manifest.exam.rounding)
 
 
 def responses_csv(data: ExamData, stored: list[StoredAnswer]) -> str:
