@@ -87,3 +87,15 @@ def test_a_formula_is_typeset_back_as_it_was_read(text, names, tex):
     assert to_tex(parse_expression(text, names)) == tex
     assert formula_mathml(text, names).startswith('<math display="inline"')
     assert formula_mathml("sqrt(2 g x)", ("g", "h")) is None  # not readable: nothing shown
+
+
+def test_the_preview_typesets_a_formula_written_with_the_statements_symbol():
+    # release-under-gravity prints v_2(0) for the variable v02: a student who types the
+    # printed form sees it typeset, as the grader reads it, instead of no preview at all
+    from dynagrade.grading.spec import Variable
+    from dynagrade.serve.formula import formula_mathml
+
+    spec = SymbolicSpec(variables={"v02": Variable(0, 10, symbol="v_2(0)"), "t": Variable(0, 5)})
+    assert formula_mathml("v_2(0)*t", ("v02", "t")) is None
+    shown = formula_mathml("v_2(0)*t", ("v02", "t"), spec.spellings)
+    assert shown is not None and "<msub>" in shown and "<mi>t</mi>" in shown

@@ -13,7 +13,7 @@ def figure(p):
     """Top view: the smooth wall, its normal at the point of impact and the puck coming in
     at the angle theta to the normal with speed v (Section 1.2.4). The rebound is left for
     the student to find."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     drawing, axes = new_drawing(4.2, 3.6)
     wall(axes, 0.0, -1.15, 0.25, side=1.0, hatch=0.06)

@@ -13,7 +13,7 @@ def figure(p):
     """The slingshot to scale in centimetres: the fixed point at height l0 above the floor,
     the particle pulled sideways by dx on the spring, and its position below the fixed point
     (dashed) that it passes after the release (Example 1.14)."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     l0, dx = 100 * p.l0, 100 * p.dx
     size = max(l0, dx)

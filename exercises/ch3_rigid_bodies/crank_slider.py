@@ -20,7 +20,7 @@ def figure(p):
     angle of Section 3.1.1 (l sin beta = r sin theta) and the slider B on the line through O.
     The crank is short beside the rod, so the drawing names r, l, theta and n and lists
     their values underneath."""
-    from matplotlib.patches import Circle, Polygon
+    from dynagrade.exercise.figure import Circle, Polygon
 
     beta = rk.connecting_rod_angle(p.r, p.l, p.theta)
     a = p.r * np.array([np.cos(p.theta), np.sin(p.theta)])
@@ -48,8 +48,9 @@ def figure(p):
     axes.text(*(a / 2 + 2.2 * pin * away), "r", ha="center", va="center", fontsize=10,
               color="C0")
     along = (b - a) / p.l
+    # the rod's green (C2) darkened for its label, which needs 4.5:1 on white
     axes.text(*(a + 0.55 * (b - a) + 2.2 * pin * np.array([-along[1], along[0]])), "l",
-              ha="center", va="center", fontsize=10, color="C2")
+              ha="center", va="center", fontsize=10, color="#23802a")
     angle_arc(axes, (0.0, 0.0), 0.3 * p.r, 0.0, p.theta)
     bisector = np.array([np.cos(p.theta / 2), np.sin(p.theta / 2)])
     # where the bisector of theta meets the rod: label inside the angle when there is room

@@ -20,7 +20,7 @@ def _impulse(p, moment):
 def figure(p):
     """The rod to scale hanging from its pivot O and the ball arriving horizontally at the
     depth d below O (Section 3.3)."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     L = p.L
     drawing, axes = new_drawing(4.0, 3.6)

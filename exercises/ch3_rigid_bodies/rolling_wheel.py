@@ -19,7 +19,7 @@ def _rim_position(p):
 def figure(p):
     """The wheel to scale on the ground with the hub's velocity, the contact point and the
     rim point P at the angle phi from it, counter-clockwise about the hub (Section 3.1.1)."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     R = p.R
     hub = np.array([0.0, R])

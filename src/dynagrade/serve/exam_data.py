@@ -124,8 +124,12 @@ class ExamData:
         from .formula import formula_mathml
 
         readable, message = self.read(student_id, exercise_id, part, text, seed)
-        variables = getattr(self.exercises[exercise_id].part(part), "variables", None)
-        shown = formula_mathml(text, tuple(variables)) if readable and variables else None
+        asked = self.exercises[exercise_id].part(part)
+        variables = getattr(asked, "variables", None)
+        shown = None
+        if readable and variables:
+            spellings = asked.spec(None).spellings  # a formula's spec needs no parameters
+            shown = formula_mathml(text, tuple(variables), spellings)
         return {"readable": readable, "message": message, "formula": shown}
 
     def grade(self, student_id: str, exercise_id: str, answers: dict[str, str],

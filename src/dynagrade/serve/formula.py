@@ -19,15 +19,16 @@ _FUNCTIONS = {"sin", "cos", "tan", "cot", "sec", "csc", "arcsin", "arccos", "arc
               "cosh", "tanh", "exp", "ln", "log"}
 
 
-def formula_mathml(text: str, variables: tuple[str, ...]) -> str | None:
+def formula_mathml(text: str, variables: tuple[str, ...], spellings=None) -> str | None:
     """The formula ``text`` in ``variables`` as a MathML element, or None when it cannot
-    be read."""
+    be read. ``spellings`` maps the further spellings the grader accepts (``λ``,
+    ``v_2(0)``) to variable names, so they typeset as the variable they stand for."""
     from ..grading.errors import AnswerError
     from ..grading.parser import parse_expression
     from ..render.mathtex import to_mathml
 
     try:
-        return to_mathml(to_tex(parse_expression(text, variables)))
+        return to_mathml(to_tex(parse_expression(text, variables, spellings)))
     except (AnswerError, RecursionError, ValueError):
         return None
 
