@@ -9,6 +9,7 @@ Usage::
     dynagrade verify --variants 200
     dynagrade exam exam.toml --roster roster.csv -o out/
     dynagrade grade --manifest out/manifest.json out/submissions/ -o out/grading/
+    dynagrade moodle projectile-range --variants 50 -o pool.xml
     dynagrade links out/manifest.json -o links.csv --instructor
     dynagrade serve out/manifest.json
 """
@@ -363,6 +364,43 @@ def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file, solution
     click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
                f"({report.redraws} draws replaced because they could not discriminate; see "
                f"manifest.json{warned}) in {report.timings['total']:.1f} s", err=True)
+
+
+@main.command()
+@click.argument("exercise_ids", nargs=-1, required=True)
+@click.option("--variants", type=click.IntRange(1, 1000), default=20, show_default=True,
+              help="Distinct variants per exercise.")
+@click.option("-o", "--output", required=True, type=click.Path(dir_okay=False),
+              help="The Moodle XML file to write.")
+@click.option("--title", default="dynagrade pool", show_default=True,
+              help="The question category the exercises' categories go under.")
+@click.option("--secret-file", type=click.Path(dir_okay=False),
+              help="Key the variants with the secret in this file (created when "
+                   "missing): the same secret gives the same pool. Default: a new "
+                   "random pool every run.")
+@click.pass_obj
+def moodle(context, exercise_ids, variants, output, title, secret_file):
+    """Write a Moodle question pool: --variants variants of each exercise, a category
+    per exercise, for a quiz's random questions (no roster needed)."""
+    from .exam.files import write_atomic
+    from .exam.pool import pool_categories
+    from .exam.secret import load_secret
+    from .exercise.seeds import new_secret
+    from .render.moodle import pool_xml
+
+    exercises = [context.exercise(exercise_id) for exercise_id in exercise_ids]
+    secret = load_secret(secret_file) if secret_file else new_secret()
+    categories, notices = pool_categories(exercises, variants, secret)
+    export = pool_xml(title, categories)
+    try:
+        write_atomic(output, export.xml)
+    except OSError as error:
+        raise click.ClickException(f"{output}: cannot write the pool ({error.strerror})")
+    for notice in notices + export.notices:
+        click.echo(f"notice: {notice}", err=True)
+    written = sum(len(c.variants) for c in categories)
+    click.echo(f"wrote {output}: {written} questions in {len(categories)} categories",
+               err=True)
 
 
 # -- grade exercise.py -------------------------------------------------------------------
