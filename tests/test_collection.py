@@ -1,6 +1,8 @@
 """Collecting the suite imports none of the heavy libraries: the tests that need sympy,
 scipy, matplotlib, mpmath or SQLAlchemy import them when they run (tests/deferred.py),
-so that `pytest --collect-only` and `pytest -k one_test` do not pay for them."""
+so that `pytest --collect-only` and `pytest -k one_test` do not pay for them; nor does
+it import what only some commands use (typst for PDFs, pint's units, rich's terminal
+output, the web server's framework)."""
 
 import json
 import subprocess
@@ -10,7 +12,8 @@ from pathlib import Path
 import pytest
 
 TESTS = Path(__file__).resolve().parent
-HEAVY = ("sympy", "scipy", "matplotlib", "mpmath", "sqlalchemy", "alembic")
+HEAVY = ("sympy", "scipy", "matplotlib", "mpmath", "sqlalchemy", "alembic", "typst", "pint",
+         "rich", "fastapi", "starlette", "httpx")
 
 COLLECT_AND_LIST_MODULES = """
 import json, sys, pytest

@@ -3,6 +3,7 @@ Moodle export with the right tolerances, and variants that cannot discriminate r
 
 from __future__ import annotations
 
+import base64
 import hashlib
 import json
 import math
@@ -17,10 +18,13 @@ from pathlib import Path
 import pytest
 
 from dynagrade.exam.generate import generate_exam
+from dynagrade.exam.manifest import VariantEntry
 from dynagrade.exercise.loader import open_bank
 from dynagrade.exercise.numbers import format_number
 from dynagrade.exercise.seeds import exam_seed, variant_token
 from dynagrade.render.figures import figure_svg
+from dynagrade.render.moodle import variant_idnumber
+from moodle_reader import read_fields
 
 ROOT = Path(__file__).resolve().parent.parent
 SECRET = "0123456789abcdef" * 4  # fixed, so that two runs can be compared
@@ -145,29 +149,51 @@ def test_every_pdf_opens_and_shows_the_students_own_numbers(exam, bank):
     assert combined.count("Exercise 1:") == len(exam["manifest"]["students"])
 
 
+def _by_idnumber(manifest: dict) -> dict:
+    """Every variant of a manifest under the idnumber the Moodle export gives it."""
+    return {variant_idnumber(VariantEntry(v["exercise"], v["seed"], v["params"], {})): v
+            for s in manifest["students"] for v in s["variants"]}
+
+
 def test_the_moodle_export_has_one_question_per_variant_with_its_tolerance(exam, bank):
     tree = ET.parse(exam["out"] / "moodle.xml")
     questions = tree.getroot().findall("question")
     categories = [q for q in questions if q.get("type") == "category"]
     assert [c.findtext("category/text").rsplit("/", 1)[1] for c in categories] == \
         [e["id"] for e in exam["manifest"]["exercises"]]
-    variants = {(v["exercise"], v["seed"]): v for s in exam["manifest"]["students"]
-                for v in s["variants"]}
+    variants = _by_idnumber(exam["manifest"])
     graded = [q for q in questions if q.get("type") != "category"]
     assert len(graded) == len(variants)
-    cloze = re.compile(r"\{(\d+):NUMERICAL:=([^:}]+):([^}]+)\}")
     for question in graded:
         assert question.findtext("penalty") == "0"
-        exercise_id, seed = question.findtext("idnumber").rsplit("-", 1)
-        variant = variants[(exercise_id, int(seed))]
-        exercise = bank.get(exercise_id)
+        variant = variants[question.findtext("idnumber")]
+        exercise = bank.get(variant["exercise"])
         numeric = [p for p in exercise.parts if p.kind == "numeric"]
-        fields = cloze.findall(question.findtext("questiontext/text"))
+        fields = read_fields(question.findtext("questiontext/text"))
         assert question.get("type") == "cloze" and len(fields) == len(numeric)
-        for part, (_, value, tolerance) in zip(numeric, fields):
+        for part, found in zip(numeric, fields):
             expected = variant["answers"][part.name]
-            assert float(value) == expected
-            assert math.isclose(float(tolerance), part.rtol * abs(expected), rel_tol=1e-12)
+            right = found.answers[0]
+            assert found.kind == "NUMERICAL" and right.fraction == 1.0
+            assert math.isclose(right.value, expected, rel_tol=1e-9)  # 10 figures written
+            assert math.isclose(right.tolerance, part.rtol * abs(expected), rel_tol=1e-9)
+
+
+def test_the_moodle_export_embeds_the_figure_each_student_got(exam):
+    root = ET.parse(exam["out"] / "moodle.xml").getroot()
+    variants = _by_idnumber(exam["manifest"])
+    holders = {(v["exercise"], v["seed"]): s["student_id"]
+               for s in exam["manifest"]["students"] for v in s["variants"]}
+    for question in root.findall("question"):
+        if question.get("type") == "category":
+            continue
+        variant = variants[question.findtext("idnumber")]
+        drawn = (exam["out"] / "students" / holders[(variant["exercise"], variant["seed"])]
+                 / "figures" / f"{variant['exercise']}.svg")
+        files = question.findall("questiontext/file")
+        assert len(files) == (1 if drawn.exists() else 0)
+        for file in files:
+            assert base64.b64decode(file.text) == drawn.read_bytes()
 
 
 REDRAW_EXERCISE = '''
@@ -228,16 +254,23 @@ def test_vector_and_choice_parts_become_cloze_fields_with_their_answers(tmp_path
     questions = {q.findtext("idnumber"): q.findtext("questiontext/text")
                  for q in root.findall("question") if q.get("type") == "cloze"}
     assert len(questions) == 4
-    for student in manifest["students"]:
-        for variant in student["variants"]:
-            text = questions[f"{variant['exercise']}-{variant['seed']}"]
-            exercise = bank.get(variant["exercise"])
-            for part in exercise.parts:
-                value = variant["answers"][part.name]
-                if part.kind == "vector":
-                    for component in value:
-                        tolerance = part.rtol * abs(component)
-                        assert f"NUMERICAL:={component!r}:{tolerance:.15g}}}" in text
-                elif part.kind == "choice":
-                    wanted = "~".join(f"={o}" if o == value else o for o in part.options)
-                    assert f"MULTICHOICE:{wanted}}}" in text
+    variants = _by_idnumber(manifest)
+    for idnumber, text in questions.items():
+        variant = variants[idnumber]
+        exercise = bank.get(variant["exercise"])
+        fields = iter(read_fields(text))
+        for part in exercise.parts:
+            value = variant["answers"][part.name]
+            if part.kind == "vector":
+                for component in value:
+                    right = next(fields).answers[0]
+                    assert math.isclose(right.value, component, rel_tol=1e-9)
+                    assert math.isclose(right.tolerance, part.rtol * abs(component),
+                                        rel_tol=1e-9)
+            elif part.kind == "choice":
+                found = next(fields)
+                assert found.kind == "MULTICHOICE"
+                assert [(a.answer_text, a.fraction == 1.0) for a in found.answers] == \
+                    [(o, o == value) for o in part.options]
+            elif part.kind == "numeric":
+                assert math.isclose(next(fields).answers[0].value, value, rel_tol=1e-9)

@@ -1,76 +1,35 @@
 """Every exercise figure in the bank renders to well-formed SVG, the same bytes each time,
-and labels no reference answer of its variant."""
+and labels no reference answer of its variant; its caption says "drawn to scale" only
+when its exercise declares it so."""
 
 from __future__ import annotations
 
 import dataclasses
-import io
-import math
-import re
 import xml.etree.ElementTree as ET
 
 import pytest
 
 from dynagrade.exercise import open_bank
-from dynagrade.render.figures import SVG_SETTINGS, figure_svg
+from dynagrade.exercise.figure_checks import given_away
+from dynagrade.render.figures import figure_svg, figure_title
 from dynagrade.exercise.numbers import format_number
-from deferred import deferred
-
-matplotlib = deferred("matplotlib")
 
 SEEDS = (0, 1, 2)
-_NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e-?\d+)?")
 _FIGURED = sorted(e.id for e in open_bank().listing() if e.figured)  # no file is run
 
 
-@pytest.fixture(autouse=True, scope="module")
-def agg_backend():
-    """Figures are drawn without a display (the backend chosen when the tests run, so
-    that collecting this module does not import matplotlib)."""
-    matplotlib.use("Agg")
-
-
 def _label_texts(exercise, variant) -> list[str]:
-    """The strings of the figure's <text> and <title> elements: rendered with the glyphs
-    kept as text, which the sheets' SVG (glyphs as paths) does not carry."""
-    figure = exercise.figure(exercise.si(variant.params))
-    buffer = io.StringIO()
-    with matplotlib.rc_context({**SVG_SETTINGS, "svg.fonttype": "none"}):
-        figure.savefig(buffer, format="svg", metadata={"Date": None})
-    root = ET.fromstring(buffer.getvalue())
+    """The strings of the figure's <text> elements (its labels, written as SVG text), read
+    from the SVG the sheets embed."""
+    root = ET.fromstring(figure_svg(exercise, variant).encode())
     return ["".join(element.itertext()) for element in root.iter()
-            if element.tag.rsplit("}", 1)[-1] in ("text", "title")]
-
-
-def _answer_numbers(exercise, variant) -> set[str]:
-    """Every numeric reference answer of the variant, printed as the sheets print numbers,
-    both in the part's unit and in SI."""
-    in_si = exercise.solve(exercise.si(variant.params))
-    printed = set()
-    for answers in (variant.answers, in_si):
-        for name, value in answers.items():
-            values = value if isinstance(value, (tuple, list)) else (value,)
-            for number in values:
-                if isinstance(number, (int, float)) and not isinstance(number, bool) \
-                        and math.isfinite(number):
-                    printed.add(format_number(float(number)))
-    return printed
-
-
-def _given_numbers(exercise, variant) -> set[str]:
-    """The parameters as the statement prints them (declared units) and in SI: a label
-    showing one of them gives nothing away, even when an answer happens to share it."""
-    in_si = exercise.si(variant.params)
-    return {format_number(float(value)) for name, value in variant.params.items()} \
-        | {format_number(float(getattr(in_si, name))) for name in variant.params}
+            if element.tag.rsplit("}", 1)[-1] == "text"]
 
 
 def _given_away(exercise, variant) -> set[str]:
-    """The answers that appear as a number in one of the figure's labels, other than the
-    given values."""
-    shown = {number for text in _label_texts(exercise, variant)
-             for number in _NUMBER.findall(text.replace("\u2212", "-"))}
-    return _answer_numbers(exercise, variant) & (shown - _given_numbers(exercise, variant))
+    """The answers that the rendered figure's text shows as a number, other than the
+    given values: the check ``dynagrade verify`` makes of any exercise's figure."""
+    return given_away(exercise, variant, figure_svg(exercise, variant))
 
 
 def test_a_dozen_or_more_exercises_across_the_chapters_have_figures():
@@ -110,3 +69,43 @@ def test_a_figure_that_prints_an_answer_is_caught(bank):
 
     assert _given_away(dataclasses.replace(exercise, figure=telling), variant) \
         == {format_number(exercise.solve(exercise.si(variant.params))["a"])}
+
+
+#: the figures whose given lengths and angles are drawn at their values on one scale, so
+#: that a proportion or an angle of the variant can be read off (docs/authoring.md); the
+#: others are schematics: nothing geometric given (two-cart, ballistic pendulum, the
+#: oscillators), or one given length with everything else in fixed proportion to it
+DRAWN_TO_SCALE = {
+    "oblique-wall-impact", "block-sliding-down-incline", "projectile-range",
+    "car-in-a-looping", "elastic-slingshot", "sliding-up-a-slope", "crank-slider-velocity",
+    "rolling-wheel-rim-velocity", "rod-struck-by-particle", "dumbbell-angular-momentum",
+    "pucks-centre-of-mass"}
+
+
+def test_the_bank_says_which_figures_are_drawn_to_scale(bank):
+    assert {exercise.id for exercise in bank.all() if exercise.figure is not None
+            and exercise.figure_to_scale} == DRAWN_TO_SCALE
+
+
+@pytest.mark.parametrize("exercise_id, words", [
+    ("car-in-a-looping", "drawn to scale"), ("ballistic-pendulum", "schematic, not to scale")])
+def test_the_figures_name_and_the_sheets_caption_follow_the_scale_flag(bank, exercise_id,
+                                                                        words):
+    from dynagrade.render.sheets import SheetExercise, StudentSheet, sheet_html, \
+        sheet_typst_body
+
+    exercise = bank.get(exercise_id)
+    variant = exercise.variant(0)
+    svg = figure_svg(exercise, variant)
+    assert figure_title(exercise) == f"{exercise.title}: figure, {words}"
+    assert f"<title id=\"figure-title\">{exercise.title}: figure, {words}</title>" in svg
+    entry = SheetExercise(1, exercise.id, exercise.title, exercise.source, 1.0,
+                          variant.statement, (), f"{exercise.id}.py", svg,
+                          f"figures/{exercise.id}.svg", exercise.figure_to_scale)
+    sheet = StudentSheet({"id": "e", "title": "E", "date": "2025-04-14",
+                          "instructions": "", "language": "en"}, "s1", "S", (entry,))
+    assert f"<figcaption>Figure 1: {exercise.title}, {words}.</figcaption>" in \
+        sheet_html(sheet)
+    assert f"caption: [{exercise.title}, {words}.]" in sheet_typst_body(sheet)
+    other = "schematic" if words == "drawn to scale" else "drawn to scale"
+    assert other not in sheet_html(sheet)

@@ -312,13 +312,16 @@ def test_a_figure_description_names_every_value_and_direction_it_shows(outputs):
 
 
 def _drawn_labels(svg: str) -> list[str]:
-    """The text matplotlib drew, read from the comment it writes before each text's
-    glyphs (an independent route to the labels: the SVG itself)."""
+    """The text a figure draws, read from its SVG ``<text>`` elements (an independent
+    route to the labels: the SVG itself)."""
+    import xml.etree.ElementTree as ET
+
     labels = []
-    for comment in re.findall(r"<!-- (.*?) -->", svg, re.S):
-        words = " ".join(comment.split())
-        if words and not words.startswith(("Created with", "http")):
-            labels.append(words)
+    for element in ET.fromstring(svg.encode()).iter():
+        if element.tag.rsplit("}", 1)[-1] == "text":
+            words = " ".join("".join(element.itertext()).split())
+            if words:
+                labels.append(words)
     return labels
 
 
@@ -387,13 +390,15 @@ def test_every_text_colour_of_the_pages_has_at_least_4_5_to_1_on_white(outputs):
 
 
 def _svg_colours(svg: str):
-    """``(fill, stroke, is_text)`` of every styled element of a matplotlib SVG; glyphs are
-    ``<use>`` elements inside a styled text group."""
+    """``(fill, stroke, is_text)`` of every styled element of an SVG: a figure's labels
+    are ``<text>`` elements, a matplotlib chart's glyphs ``<use>`` elements inside a
+    styled text group."""
     for match in re.finditer(r'<(\w+)\b([^>]*?)style="([^"]*)"[^>]*>', svg):
         style = dict(part.split(":", 1) for part in match.group(3).split(";") if ":" in part)
         style = {k.strip(): v.strip() for k, v in style.items()}
         following = svg[match.end():match.end() + 400]
-        is_text = match.group(1) == "g" and following.lstrip().startswith("<use")
+        is_text = match.group(1) == "text" or (match.group(1) == "g"
+                                               and following.lstrip().startswith("<use"))
         yield style.get("fill"), style.get("stroke"), is_text
 
 

@@ -8,11 +8,8 @@ import math
 
 import pytest
 
+from dynagrade.exercise.figure import Circle, Polygon
 from dynagrade.render.figures import figure_svg, inline_svg
-from deferred import deferred
-
-Circle = deferred("matplotlib.patches", "Circle")
-Polygon = deferred("matplotlib.patches", "Polygon")
 
 
 @pytest.mark.parametrize("seed", [0, 7, 31])

@@ -84,7 +84,7 @@ slides up.
 4. **Formula.** $\Delta x$ = `{{ answers.delta_x_formula }}`.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("delta_x", "distance up the slope", question=1, unit="m", points=2,
                 misconceptions=(

@@ -12,7 +12,7 @@ from dynagrade.mechanics.examples import looping
 def figure(p):
     """The looping to scale in metres: the circle of radius R clamped at A, the car at the
     angle phi travelled from the bottom, and the entry velocity (Example 1.13)."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     R = p.R
     drawing, axes = new_drawing(4.6, 4.0)
@@ -116,7 +116,7 @@ $R(1 - \cos\varphi)$ above the entry (Example 1.13).
 6. **Formula.** $v_{0,\min}$ = `{{ answers.v_min_formula }}`.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("v_min_entry", "smallest entry speed", question=1, unit="m/s", points=2,
                 misconceptions=(

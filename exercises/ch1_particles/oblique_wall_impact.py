@@ -13,7 +13,7 @@ def figure(p):
     """Top view: the smooth wall, its normal at the point of impact and the puck coming in
     at the angle theta to the normal with speed v (Section 1.2.4). The rebound is left for
     the student to find."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     drawing, axes = new_drawing(4.2, 3.6)
     wall(axes, 0.0, -1.15, 0.25, side=1.0, hatch=0.06)
@@ -98,7 +98,7 @@ $v_n' = e\,v_n$ = {{ si.v_n_out }} m/s (with $e$ = {{ e }}) and $v_t' = v_t$.
 5. **Formula.** $\theta'$ = `{{ answers.theta_formula }}`.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("theta_out", "rebound angle", question=1, unit="deg", points=2,
                 misconceptions=(

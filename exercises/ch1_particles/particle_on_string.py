@@ -13,7 +13,7 @@ from dynagrade.mechanics import kinematics, particle
 def figure(p):
     """Top view of the table to scale: the fixed point O, the string of length l and the
     particle on its circle, turning counter-clockwise at n (Example 1.10)."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     l = p.l
     rpm = p.n * 60 / (2 * np.pi)

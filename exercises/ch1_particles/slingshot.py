@@ -14,7 +14,7 @@ def figure(p):
     floor, the particle in the slot pulled sideways by dx on the spring, and its position
     below the fixed point (dashed) that it passes after the release (Example 1.14). The
     slot's upper lip is drawn light, behind the spring."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     l0, dx = 100 * p.l0, 100 * p.dx
     size = max(l0, dx)
@@ -100,7 +100,7 @@ force is the only force doing work, and it is conservative: the energy $T + V$ i
 4. **Formula.** $v$ = `{{ answers.v_formula }}`.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("stretch", "stretch of the spring", question=1, unit="cm", points=1,
                 misconceptions=(

@@ -18,7 +18,7 @@ def _energy_conserving_speed(p):
 def figure(p):
     """The block hanging at rest on its two strings and the bullet flying at it
     horizontally (Section 2.3.1); the strings' length is not given and is drawn long."""
-    from matplotlib.patches import Ellipse
+    from dynagrade.exercise.figure import Ellipse
 
     drawing, axes = new_drawing(5.0, 2.6)
     width, height, hang = 0.5, 0.25, 1.0

@@ -26,7 +26,7 @@ def figure(p):
     puts them about the centre of mass C (their distances from C in the ratio m2 : m1,
     Section 2.2.1), C at the height d above O with its velocity v along e1, the spin
     omega and the angle phi of the rod; the unit vectors e1, e2 at O."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     _, r, _ = _state(p)
     size = max(p.L, p.d)
@@ -57,12 +57,12 @@ def figure(p):
     start, end = p.phi + np.pi / 2 - 0.5, p.phi + np.pi / 2 + 0.5   # beside the rod
     axes.annotate("", xy=tuple(centre + spin * np.array([np.cos(end), np.sin(end)])),
                   xytext=tuple(centre + spin * np.array([np.cos(start), np.sin(start)])),
-                  arrowprops={"arrowstyle": "-|>", "color": "C2", "lw": 1.3,
+                  arrowprops={"arrowstyle": "-|>", "color": "#23802a", "lw": 1.3,
                               "connectionstyle": "arc3,rad=0.3", "shrinkA": 0,
                               "shrinkB": 0})
     middle = (start + end) / 2
     axes.text(*(centre + (spin + 0.08 * size) * np.array([np.cos(middle), np.sin(middle)])),
-              "ω", color="C2", ha="center", va="center", fontsize=10)
+              "ω", color="#23802a", ha="center", va="center", fontsize=10)
     below = p.phi - np.pi / 2 - 0.4             # the side of the rod away from omega
     axes.text(*(centre + 0.08 * size * np.array([np.cos(below), np.sin(below)])), "C",
               ha="center", va="center", fontsize=10)
@@ -146,6 +146,7 @@ $M = m_1 + m_2$ = {{ si.M }} kg (with $m_1$ = {{ m1 }} and $m_2$ = {{ m2 }}).
 """,
     solve=solve,
     figure=figure,
+    figure_to_scale=True,
     parts=(
         Numeric("H_C", "angular momentum about C", question=1, unit="kg*m^2/s", points=2,
                 misconceptions=(

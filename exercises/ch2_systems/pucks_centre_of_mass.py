@@ -84,7 +84,7 @@ def figure(p):
     position (its area grows with its mass), its velocity as an arrow (0.25 m per m/s),
     and the frame's origin O with its x and y directions. The centre of mass is not drawn:
     it is asked for."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     r, v = _positions(p), _velocities(p)
     drawing, axes = new_drawing(5.0, 4.0)
@@ -202,6 +202,7 @@ $m_3$ = {{ m3 }}).
 """,
     solve=solve,
     figure=figure,
+    figure_to_scale=True,
     parts=(
         Vector("r_C", "position of the centre of mass", question=1, unit="m", size=2, points=2,
                atol=0.005,

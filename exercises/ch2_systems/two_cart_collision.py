@@ -13,7 +13,7 @@ def _after(p, e):
 
 def _cart(axes, left, width, name):
     """A cart: a body of ``width`` with two wheels, standing on the track at ``left``."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     wheel = 0.06
     for x in (left + 0.22 * width, left + 0.78 * width):

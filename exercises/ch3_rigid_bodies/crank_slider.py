@@ -20,7 +20,7 @@ def figure(p):
     angle of Section 3.1.1 (l sin beta = r sin theta) and the slider B on the line through O.
     The crank is short beside the rod, so the drawing names r, l, theta and n and lists
     their values underneath."""
-    from matplotlib.patches import Circle, Polygon
+    from dynagrade.exercise.figure import Circle, Polygon
 
     beta = rk.connecting_rod_angle(p.r, p.l, p.theta)
     a = p.r * np.array([np.cos(p.theta), np.sin(p.theta)])
@@ -48,8 +48,9 @@ def figure(p):
     axes.text(*(a / 2 + 2.2 * pin * away), "r", ha="center", va="center", fontsize=10,
               color="C0")
     along = (b - a) / p.l
+    # the rod's green (C2) darkened for its label, which needs 4.5:1 on white
     axes.text(*(a + 0.55 * (b - a) + 2.2 * pin * np.array([-along[1], along[0]])), "l",
-              ha="center", va="center", fontsize=10, color="C2")
+              ha="center", va="center", fontsize=10, color="#23802a")
     _theta_label(axes, p.r, p.theta, a, b, pin)
     turn = p.r + 0.08 * size
     start, end = p.theta + 0.4, p.theta + 1.1
@@ -175,7 +176,7 @@ $\beta$ = {{ si.beta | deg }}°.
    and the rod turns at $|\omega_{AB}|$ = {{ answers.omega_rod }}.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("v_B", "slider velocity", question=1, unit="m/s", points=2,
                 misconceptions=(

@@ -20,7 +20,7 @@ def _impulse(p, moment):
 def figure(p):
     """The rod to scale hanging from its pivot O and the ball arriving horizontally at the
     depth d below O (Section 3.3)."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     L = p.L
     drawing, axes = new_drawing(4.0, 3.6)
@@ -137,7 +137,7 @@ $v$ = {{ v }}, $d$ = {{ d }} and $e$ = {{ e }}: $\hat F$ = {{ si.impulse }} N·s
    so $d_P$ = {{ answers.d_percussion }}, whatever the ball and its speed.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("omega", "angular speed of the rod", question=1, unit="rad/s", points=2,
                 misconceptions=(

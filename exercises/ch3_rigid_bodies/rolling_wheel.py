@@ -19,7 +19,7 @@ def _rim_position(p):
 def figure(p):
     """The wheel to scale on the ground with the hub's velocity, the contact point and the
     rim point P at the angle phi from it, counter-clockwise about the hub (Section 3.1.1)."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     R = p.R
     hub = np.array([0.0, R])
@@ -115,7 +115,7 @@ $\varphi$ = {{ phi }}.
 5. **As a formula.** From step 3, $|v_P|$ = `{{ answers.speed_formula }}`.
 """,
     solve=solve,
-    figure=figure,
+    figure=figure, figure_to_scale=True,
     parts=(
         Numeric("omega", "angular speed", question=1, unit="rad/s", points=1),
         Vector("v_P", "velocity of P", question=2, unit="m/s", size=2, points=2,

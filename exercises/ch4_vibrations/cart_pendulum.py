@@ -47,7 +47,7 @@ def figure(p):
     it, with the positive senses of the coordinates: x to the right from where the spring
     is relaxed (dashed), phi counter-clockwise from the downward vertical, drawn at 25°.
     Lengths in units of L; the cart's displacement and the angle are examples."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     width, height, wheel = 0.8, 0.3, 0.07
     rest, shift = 0.9, 0.3                    # the cart's left side: relaxed, and displaced

@@ -27,7 +27,7 @@ def figure(p):
     """The machine on its mounting: springs and dampers under the frame and the rotor with
     the unbalance at the eccentricity e, turning at n (Section 4.3.3). Only e is a given
     length: the rotor is drawn with radius 3 e and the machine around it."""
-    from matplotlib.patches import Circle
+    from dynagrade.exercise.figure import Circle
 
     e = p.e
     width, height, mount = 16 * e, 9 * e, 6 * e

@@ -15,7 +15,7 @@ def figure(p):
     """The free rod of length L on soft supports and the hammer blow giving its left end the
     velocity v along the rod (Section 5.3.1); the rod's thickness is not given and is drawn
     as a fortieth of its length."""
-    from matplotlib.patches import Rectangle
+    from dynagrade.exercise.figure import Rectangle
 
     L = p.L
     thick = L / 40

@@ -9,6 +9,7 @@ Usage::
     dynagrade verify --variants 200
     dynagrade exam exam.toml --roster roster.csv -o out/
     dynagrade grade --manifest out/manifest.json out/submissions/ -o out/grading/
+    dynagrade moodle projectile-range --variants 50 -o pool.xml
     dynagrade links out/manifest.json -o links.csv --instructor
     dynagrade serve out/manifest.json
 """
@@ -21,6 +22,7 @@ from pathlib import Path
 
 import click
 
+from .config import FILE_NAME, Project, load_project
 from .errors import DynagradeError
 from .exercise import loader
 
@@ -46,11 +48,26 @@ class _Command(_ReportsErrors, click.Command):
 
 
 class _Context:
-    """What every subcommand shares: where exercises are looked for."""
+    """What every subcommand shares: where exercises are looked for.
 
-    def __init__(self, folders: tuple[str, ...]):
-        self.folders = folders
+    ``folders`` are searched in the order of precedence: the command line's (from
+    ``--exercises`` before and after the subcommand), ``$DYNAGRADE_EXERCISES``'s, then the
+    project file's (:mod:`dynagrade.config`); the shipped bank comes last."""
+
+    def __init__(self, folders: tuple[str, ...], project: Project):
+        self.command_line = list(folders)
+        self.project = project
         self._bank = None
+
+    @property
+    def folders(self) -> tuple[str, ...]:
+        return tuple(map(str, [*self.command_line, *loader.environment_folders(),
+                               *self.project.exercises]))
+
+    def add_folders(self, folders) -> None:
+        """Folders named after the subcommand (searched after those named before it;
+        the bank opens only when a command first asks for an exercise)."""
+        self.command_line += list(folders)
 
     @property
     def bank(self):
@@ -62,10 +79,22 @@ class _Context:
         return self.bank.get(exercise_id)
 
 
-_exercises_option = click.option(
-    "--exercises", "folders", multiple=True, type=click.Path(file_okay=False),
-    help=f"A folder of exercise files, searched before the shipped bank (repeatable; "
-         f"also ${loader.ENVIRONMENT_VARIABLE}).")
+_EXERCISES_HELP = (f"A folder of exercise files, searched before the shipped bank "
+                   f"(repeatable; also ${loader.ENVIRONMENT_VARIABLE} and the "
+                   f"'exercises' of {FILE_NAME}).")
+_exercises_option = click.option("--exercises", "folders", multiple=True,
+                                 type=click.Path(file_okay=False), help=_EXERCISES_HELP)
+
+
+def _more_folders(ctx, param, folders):
+    """``--exercises`` after a subcommand: added to those named before it."""
+    if folders:
+        ctx.find_object(_Context).add_folders(folders)
+
+
+def _subcommand_exercises_option() -> click.Option:
+    return click.Option(["--exercises"], multiple=True, type=click.Path(file_okay=False),
+                        expose_value=False, callback=_more_folders, help=_EXERCISES_HELP)
 
 
 @click.group(cls=_Group, context_settings={"help_option_names": ["-h", "--help"]})
@@ -73,8 +102,13 @@ _exercises_option = click.option(
 @click.version_option(package_name="dynagrade")
 @click.pass_context
 def main(ctx, folders):
-    """Randomized Dynamics exercises and exams, graded with units and feedback."""
-    ctx.obj = _Context(folders)
+    """Randomized Dynamics exercises and exams, graded with units and feedback.
+
+    Settings come from the command line, then the environment, then the project file
+    dynagrade.toml (searched upward from the working folder; see docs/authoring.md)."""
+    project = load_project()
+    ctx.obj = _Context(folders, project)
+    ctx.default_map = project.defaults()
 
 
 # -- exercises ---------------------------------------------------------------------------
@@ -103,12 +137,17 @@ def list_command(context, as_json):
 @click.option("--answers", is_flag=True, help="Show the reference answers too.")
 @click.option("--solution", is_flag=True, help="Show the worked solution too.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@click.option("--figure", "figure_file", type=click.Path(dir_okay=False, writable=True),
+              help="Also write the variant's figure to this SVG file.")
 @click.pass_obj
-def show(context, exercise_id, seed, student, settings, answers, solution, as_json):
-    """Show an exercise's variant: its statement, and on request its answers and worked
-    solution."""
+def show(context, exercise_id, seed, student, settings, answers, solution, as_json,
+         figure_file):
+    """Show an exercise's variant: its statement, and on request its answers, worked
+    solution and figure."""
     exercise = context.exercise(exercise_id)
     variant = _variant(exercise, seed, student, settings, force=None)
+    if figure_file:
+        _write_figure(exercise, variant, figure_file)
     worked = _solution(exercise, variant) if solution else None
     if as_json:
         data = variant.to_json()
@@ -204,10 +243,11 @@ def sheet(context, exercise_id, student, output, solution):
                    "(default: it fails once every exercise of the shipped bank has one).")
 @click.pass_obj
 def verify(context, exercise_ids, variants, require_solutions):
-    """Check exercises for variants that cannot tell right from wrong, and their worked
-    solutions."""
+    """Check exercises for variants that cannot tell right from wrong, their worked
+    solutions and every variant's figure."""
     from .exercise.solution_check import bank_is_complete
     from .exercise.verify import verify_exercise
+    from .render.figures import figure_svg
     from .render.solutions import math_problems
     from .render.terminal import verify_progress
 
@@ -216,7 +256,8 @@ def verify(context, exercise_ids, variants, require_solutions):
     if require_solutions is None:
         require_solutions = bank_is_complete()
     reports = verify_progress(exercises, lambda e: verify_exercise(
-        e, range(variants), require_solution=require_solutions, math_check=math_problems))
+        e, range(variants), require_solution=require_solutions, math_check=math_problems,
+        render_figure=figure_svg))
     if any(not r.ok for r in reports):
         sys.exit(1)
 
@@ -275,7 +316,7 @@ def grade_command(context, files, as_json, manifest, output, jobs, strict, roste
     be graded (a bad manifest, a missing exercise, an unwritable folder) or, with
     --strict, when something was reported as an error."""
     if manifest is None:
-        if output is not None or jobs is not None or strict or roster or platform \
+        if _given("output") or _given("jobs") or strict or roster or platform \
                 or formats or assignment or overrides:
             raise click.UsageError("-o/--output, --jobs, --strict, --roster, --platform, "
                                    "--format, --assignment and --overrides need --manifest")
@@ -328,9 +369,49 @@ def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file, solution
                                solutions=solutions)
     for warning in report.warnings:
         click.echo(f"notice: {warning}", err=True)
+    for warning in report.skew:
+        click.echo(f"warning: {warning}", err=True)
+    warned = f"; {len(report.skew)} warning(s) above" if report.skew else ""
     click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
                f"({report.redraws} draws replaced because they could not discriminate; see "
-               f"manifest.json) in {report.timings['total']:.1f} s", err=True)
+               f"manifest.json{warned}) in {report.timings['total']:.1f} s", err=True)
+
+
+@main.command()
+@click.argument("exercise_ids", nargs=-1, required=True)
+@click.option("--variants", type=click.IntRange(1, 1000), default=20, show_default=True,
+              help="Distinct variants per exercise.")
+@click.option("-o", "--output", required=True, type=click.Path(dir_okay=False),
+              help="The Moodle XML file to write.")
+@click.option("--title", default="dynagrade pool", show_default=True,
+              help="The question category the exercises' categories go under.")
+@click.option("--secret-file", type=click.Path(dir_okay=False),
+              help="Key the variants with the secret in this file (created when "
+                   "missing): the same secret gives the same pool. Default: a new "
+                   "random pool every run.")
+@click.pass_obj
+def moodle(context, exercise_ids, variants, output, title, secret_file):
+    """Write a Moodle question pool: --variants variants of each exercise, a category
+    per exercise, for a quiz's random questions (no roster needed)."""
+    from .exam.files import write_atomic
+    from .exam.pool import pool_categories
+    from .exam.secret import load_secret
+    from .exercise.seeds import new_secret
+    from .render.moodle import pool_xml
+
+    exercises = [context.exercise(exercise_id) for exercise_id in exercise_ids]
+    secret = load_secret(secret_file) if secret_file else new_secret()
+    categories, notices = pool_categories(exercises, variants, secret)
+    export = pool_xml(title, categories)
+    try:
+        write_atomic(output, export.xml)
+    except OSError as error:
+        raise click.ClickException(f"{output}: cannot write the pool ({error.strerror})")
+    for notice in notices + export.notices:
+        click.echo(f"notice: {notice}", err=True)
+    written = sum(len(c.variants) for c in categories)
+    click.echo(f"wrote {output}: {written} questions in {len(categories)} categories",
+               err=True)
 
 
 # -- grade exercise.py -------------------------------------------------------------------
@@ -347,7 +428,7 @@ def grade_main(file, as_json, solution, folders):
     The file is read, never run: each answer must be a number, a quoted string, a list
     of numbers or None.
     """
-    _grade_files(_Context(folders), (file,), as_json, solution)
+    _grade_files(_Context(folders, load_project()), (file,), as_json, solution)
 
 
 def _grade_files(context, files, as_json, solution=False):
@@ -444,6 +525,14 @@ def _grade_class(context, manifest, files, output, jobs, as_json, strict, option
 # -- helpers -----------------------------------------------------------------------------
 
 
+def _given(option: str) -> bool:
+    """Whether the running command's ``option`` was set on the command line (or in the
+    environment), not taken from a default or from dynagrade.toml."""
+    source = click.get_current_context().get_parameter_source(option)
+    return source in (click.core.ParameterSource.COMMANDLINE,
+                      click.core.ParameterSource.ENVIRONMENT)
+
+
 def _variant(exercise, seed, student, settings, force=False):
     from .exam.spec import domain_problem
     from .exercise.seeds import student_seed
@@ -469,6 +558,22 @@ def _variant(exercise, seed, student, settings, force=False):
     for warning in variant.warnings:
         click.echo(f"warning: the values set break the constraint '{warning}'", err=True)
     return variant
+
+
+def _write_figure(exercise, variant, figure_file) -> None:
+    """Write the variant's figure as SVG to ``figure_file``; an error when the exercise
+    draws none."""
+    from .render.figures import figure_svg
+
+    svg = figure_svg(exercise, variant)
+    if svg is None:
+        raise click.ClickException(f"{exercise.id} draws no figure (it has no figure=)")
+    try:
+        Path(figure_file).write_text(svg, encoding="utf-8")
+    except OSError as error:
+        raise click.ClickException(f"cannot write {figure_file}: {error.strerror}") from None
+    click.echo(f"wrote {figure_file}: the figure of {exercise.id}, seed {variant.seed}",
+               err=True)
 
 
 def _solution(exercise, variant) -> str | None:
@@ -502,6 +607,8 @@ from .serve.commands import links as _links, serve as _serve  # noqa: E402  (lig
 
 main.add_command(_serve)
 main.add_command(_links)
+for _subcommand in main.commands.values():  # --exercises after any subcommand, too
+    _subcommand.params.append(_subcommand_exercises_option())
 
 if __name__ == "__main__":
     main()

@@ -43,6 +43,7 @@ from .manifest import (ExamEntry, ExerciseEntry, Generator, Manifest, PartEntry,
 from .outputs import staging_folder, swap_in
 from .points import Rounding, exam_part_points
 from .run import GenerationRun, file_sha256
+from .skew import skew_warnings
 from .solutions import solutions_title
 from .spec import ExamSpec, ExamSpecError, Student, read_exam_spec, read_roster
 from .student import STAGES, StudentResult, student_job
@@ -63,6 +64,7 @@ class GenerationReport:
     redraws: int
     timings: dict[str, float] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    skew: list[str] = field(default_factory=list)  # :func:`.skew.skew_warnings`
 
 
 def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
@@ -93,7 +95,8 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
         manifest = build_manifest(run.spec, run.exercises, run.parts,
                                   [r.entry for r in results])
         report.redraws = manifest.redraw_count
-        _write_key_and_moodle(run, manifest)
+        report.skew = skew_warnings(manifest)
+        report.warnings += _write_key_and_moodle(run, manifest)
         if pdf:
             _write_printing_pdfs(run, pool, manifest, roster, results, progress)
         report.timings["keys, moodle, combined PDFs"] = time.perf_counter() - stage
@@ -189,12 +192,29 @@ def _students(pool: Pool, roster: list[Student], progress: Progress) -> list[Stu
     return results
 
 
-def _write_key_and_moodle(run: GenerationRun, manifest: Manifest) -> None:
+def _write_key_and_moodle(run: GenerationRun, manifest: Manifest) -> list[str]:
+    """key.csv and moodle.xml (its figures read from the students' folders, where they
+    were drawn); returns the Moodle export's notices."""
     from ..render.keys import key_csv
     from ..render.moodle import moodle_xml
 
     write_atomic(run.out_dir / "key.csv", key_csv(manifest, run.exercises))
-    write_atomic(run.out_dir / "moodle.xml", moodle_xml(manifest, run.exercises))
+    export = moodle_xml(manifest, run.exercises, _staged_figures(run, manifest))
+    write_atomic(run.out_dir / "moodle.xml", export.xml)
+    return export.notices
+
+
+def _staged_figures(run: GenerationRun, manifest: Manifest):
+    """A variant's figure as a student who has it got it (``figures/<exercise>.svg``)."""
+    holder = {(v.exercise, v.seed): s.student_id
+              for s in manifest.students for v in s.variants}
+
+    def figure(exercise: Exercise, variant) -> str | None:
+        path = (run.out_dir / "students" / holder[(variant.exercise, variant.seed)]
+                / "figures" / f"{variant.exercise}.svg")
+        return path.read_text(encoding="utf-8") if path.is_file() else None
+
+    return figure
 
 
 def _write_printing_pdfs(run: GenerationRun, pool: Pool, manifest: Manifest,

@@ -96,7 +96,8 @@ def _exercise_files(run: GenerationRun, student: Student, number: int, item: Exa
                             entry.points, part.input_hint())
                   for entry, part in zip(scaled, exercise.parts))
     return SheetExercise(number, exercise.id, exercise.title, exercise.source, item.points,
-                         variant.statement, parts, fill_in, svg, figure_file)
+                         variant.statement, parts, fill_in, svg, figure_file,
+                         exercise.figure_to_scale)
 
 
 def _write_sheets(run: GenerationRun, student: Student, sheet: StudentSheet,

@@ -1,9 +1,13 @@
-"""Drawing helpers for exercise figures, drawn to scale with matplotlib.
+"""Drawing helpers for exercise figures, drawn to scale.
 
 An exercise may declare ``figure=draw``, where ``draw(p)`` receives the parameters in SI
-and returns a :class:`matplotlib.figure.Figure`; these helpers draw the usual parts of a
-mechanics sketch (arrows, angle arcs, ground, blocks, springs, dampers, dimensions).
-Rendering the figure to SVG is :func:`dynagrade.render.figures.figure_svg`.
+and returns the drawing made by :func:`new_drawing` (see :mod:`dynagrade.exercise.drawing`:
+its axes take matplotlib's ``plot``, ``text``, ``annotate`` and ``add_patch`` calls);
+these helpers draw the usual parts of a mechanics sketch (arrows, angle arcs, ground,
+blocks, springs, dampers, dimensions) and :class:`Circle`, :class:`Ellipse`,
+:class:`Rectangle` and :class:`Polygon` are the shapes to add. Rendering the figure to
+SVG is :func:`dynagrade.render.figures.figure_svg`. (A figure function may still return
+a matplotlib figure, for a real plot; it is rendered by matplotlib.)
 
 Every helper also notes, in words, what it drew (an arrow "pointing up and to the
 right", an angle "turning counter-clockwise from the downward direction"); the renderer
@@ -23,6 +27,10 @@ Usage::
 """
 
 from __future__ import annotations
+
+__all__ = ["Circle", "Ellipse", "Polygon", "Rectangle", "angle_arc", "arrow", "block",
+           "ceiling", "damper", "describe", "dimension", "direction_words", "figure_notes",
+           "ground", "inclined_plane", "new_drawing", "pivot", "spring", "wall"]
 
 
 # -- the figure's description in words ------------------------------------------------------
@@ -70,64 +78,26 @@ def _named(kind: str, label: str) -> str:
 
 
 def new_drawing(width: float = 5.0, height: float = 3.0):
-    """A figure with one borderless axes of equal scale in x and y: ``(figure, axes)``.
+    """A drawing of ``width`` x ``height`` inches with one borderless axes of equal scale
+    in x and y: ``(drawing, axes)``. The axes take matplotlib's drawing calls (``plot``,
+    ``text``, ``annotate``, ``add_patch``, ``set_xlim`` …, see
+    :mod:`dynagrade.exercise.drawing`) and record them; the SVG is written from the record
+    (:func:`dynagrade.render.figures.figure_svg`)."""
+    from .drawing import Drawing
 
-    Built as a plain :class:`matplotlib.figure.Figure` (no pyplot state to leak). Making
-    a figure and its axes costs more than drawing a schematic on it, so a drawing given
-    back with :func:`recycle` is emptied and handed out again, the same as a new one."""
-    from matplotlib.figure import Figure
-
-    if _SPARE:
-        figure, axes = _SPARE.pop()
-        figure.set_size_inches(width, height)
-        return figure, axes
-    figure = Figure(figsize=(width, height))
-    axes = figure.add_axes(_AXES_BOX)
-    axes.set_aspect("equal")
-    axes.set_axis_off()
-    setattr(figure, _OWN_AXES, axes)
-    return figure, axes
+    drawing = Drawing(width, height)
+    return drawing, drawing.axes[0]
 
 
-#: where :func:`new_drawing` puts its axes in the figure (fractions of width and height)
-_AXES_BOX = (0.01, 0.01, 0.98, 0.98)
-_OWN_AXES = "dynagrade_drawing_axes"
-#: emptied drawings of this process, ready to hand out again (at most one is kept)
-_SPARE: list = []
+def __getattr__(name: str):
+    """The shapes (:class:`Circle`, :class:`Ellipse`, :class:`Polygon`,
+    :class:`Rectangle`), imported when first asked for: an exercise file that only names
+    the helpers loads no drawing code until it draws."""
+    if name in ("Circle", "Ellipse", "Polygon", "Rectangle"):
+        from . import shapes
 
-
-def recycle(figure) -> None:
-    """Give back a figure made by :func:`new_drawing` once it has been saved: it is
-    emptied to the state of a new drawing (its artists removed, limits, colour cycle and
-    notes reset) and handed out by the next :func:`new_drawing`. A figure that was given
-    more axes or figure-level artists than a drawing has, or that was not made here, is
-    left alone."""
-    axes = getattr(figure, _OWN_AXES, None)
-    if (axes is None or _SPARE or figure.axes != [axes] or figure.texts or figure.lines
-            or figure.patches or figure.images or figure.legends or axes.get_legend()
-            or axes.child_axes or axes.get_title() or axes.get_xlabel()
-            or axes.get_ylabel()):
-        return
-    from matplotlib import rcParams
-    from matplotlib.transforms import Bbox
-
-    for artist in (*axes.lines, *axes.patches, *axes.texts, *axes.collections,
-                   *axes.images, *axes.artists, *axes.tables):
-        artist.remove()
-    axes.dataLim.set(Bbox.null())
-    axes.ignore_existing_data_limits = True
-    axes.set_xlim(0.0, 1.0, auto=True)
-    axes.set_ylim(0.0, 1.0, auto=True)
-    axes.set_xscale("linear")
-    axes.set_yscale("linear")
-    axes.set_prop_cycle(None)
-    axes.margins(x=rcParams["axes.xmargin"], y=rcParams["axes.ymargin"])
-    axes.set_aspect("equal", adjustable="box", anchor="C")
-    axes.set_axis_off()
-    axes.set_position(_AXES_BOX)
-    if hasattr(figure, NOTES_ATTRIBUTE):
-        delattr(figure, NOTES_ATTRIBUTE)
-    _SPARE.append((figure, axes))
+        return getattr(shapes, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def arrow(axes, start, end, label: str = "", offset=(0.0, 0.0), color="C0") -> None:
@@ -269,7 +239,8 @@ def block(axes, center, width: float, height: float, label: str = "", angle: flo
     """A rigid block: a ``width`` x ``height`` rectangle centred at ``center``, turned by
     ``angle`` (rad, counter-clockwise), with ``label`` written inside."""
     import numpy as np
-    from matplotlib.patches import Polygon
+
+    from .shapes import Polygon
 
     c, s = np.cos(angle), np.sin(angle)
     corners = [(-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5)]
@@ -286,7 +257,7 @@ def block(axes, center, width: float, height: float, label: str = "", angle: flo
 def _label_colour(face) -> str:
     """White or black, whichever contrasts more with the colour ``face`` (WCAG 2.1
     relative luminance), for a label written on it."""
-    from matplotlib.colors import to_rgb
+    from .colours import to_rgb
 
     def linear(c):
         return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
@@ -300,7 +271,8 @@ def pivot(axes, point, size: float) -> None:
     """A fixed pin support at ``point``: the pin as a small circle on a triangle of height
     ``size`` hanging from a hatched base above it (for bodies hanging from the pin)."""
     import numpy as np
-    from matplotlib.patches import Circle, Polygon
+
+    from .shapes import Circle, Polygon
 
     x, y = point
     axes.add_patch(Polygon([(x, y), (x - 0.6 * size, y + size), (x + 0.6 * size, y + size)],
@@ -337,9 +309,9 @@ def inclined_plane(alpha: float, length: float = 1.0):
     Returns ``(figure, axes, along, normal)``: the unit vectors up the slope and normal
     to it, for placing a block or labels on the slope. The caller sets the y-limits."""
     import numpy as np
-    from matplotlib.patches import Polygon
 
     from .numbers import format_number
+    from .shapes import Polygon
 
     along = np.array([np.cos(alpha), np.sin(alpha)])
     normal = np.array([-np.sin(alpha), np.cos(alpha)])

@@ -43,6 +43,9 @@ class ExerciseListing:
     parts: tuple[Part, ...]
     figured: bool
     path: str | None = None
+    #: the Symbolic parts' formulas as the file writes them, for the loader's check
+    #: (:mod:`.formula_check`: part name, what, text, variable names)
+    formulas: tuple[tuple[str, str, str, tuple[str, ...]], ...] = ()
 
     @classmethod
     def of(cls, exercise) -> "ExerciseListing":
@@ -91,14 +94,16 @@ def read_listing(path: str | Path) -> ExerciseListing | None:
         source = _literal(fields["source"], names)
         chapter = (_literal(fields["chapter"], names) if "chapter" in fields
                    else chapter_of(source))
+        part_calls = _calls(fields["parts"], names)
         return ExerciseListing(
             id=_literal(fields["id"], names), title=_literal(fields["title"], names),
             source=source, chapter=chapter,
             topics=tuple(_literal(fields["topics"], names)) if "topics" in fields else (),
             params=tuple(_parameter(c, names) for c in _calls(fields["params"], names)),
-            parts=tuple(_part(c, names) for c in _calls(fields["parts"], names)),
+            parts=tuple(_part(c, names) for c in part_calls),
             figured=_states_figure(fields.get("figure")),
-            path=str(path.resolve()))
+            path=str(path.resolve()),
+            formulas=tuple(f for c in part_calls for f in _written_formula(c, names)))
     except (KeyError, TypeError, ValueError, _NotLiteral):
         return None
 
@@ -181,6 +186,34 @@ def _part(call: ast.Call, names) -> Part:
         raise _NotLiteral("not a part kind")
     written = _arguments(call, cls, ("name", "label", "points", "unit"))
     return cls(**{k: _literal(v, names) for k, v in written.items()})
+
+
+def _written_formula(call: ast.Call, names) -> list[tuple[str, str, str, tuple[str, ...]]]:
+    """The formulas of a Symbolic part's call (:mod:`.formula_check`): its expected
+    formula and its misconceptions, with its variables' names; empty for another kind.
+    A Symbolic part that writes any of them otherwise is :class:`_NotLiteral` (the file
+    is loaded, and the loaded exercise checked)."""
+    cls = getattr(_parts, _callee(call) or "")
+    if "expected" not in _signature(cls).parameters:
+        return []
+    written = _arguments(call, cls, ("name", "expected", "variables", "misconceptions"))
+    name = _literal(written["name"], names)
+    variables = _resolved(written.get("variables", ast.Tuple(elts=[])), names)
+    keys = variables.keys if isinstance(variables, ast.Dict) else [variables]
+    variable_names = tuple(n for key in keys for n in _flat(_literal(key, names)))
+    formulas = [(name, "expected formula", _literal(written["expected"], names),
+                 variable_names)]
+    for wrong in _calls(written.get("misconceptions", ast.Tuple(elts=[])), names):
+        label, value = (_arguments(wrong, _parts.Misconception, ("name", "value"))[k]
+                        for k in ("name", "value"))
+        formulas.append((name, f"misconception {_literal(label, names)!r}",
+                         _literal(value, names), variable_names))
+    return formulas
+
+
+def _flat(value) -> tuple:
+    """A name, or the names of a tuple or list, as a tuple."""
+    return tuple(value) if isinstance(value, (tuple, list)) else (value,)
 
 
 def _states_figure(node: ast.expr | None) -> bool:

@@ -6,6 +6,15 @@ the ``DYNAGRADE_EXERCISES`` environment variable (folders separated by ``os.path
 user's exercise with the id of a shipped one takes its place, so a course can adapt a
 shipped exercise by copying it; two files with one id in the same folder tree are an error.
 
+Every ``.py`` file below an exercise folder is an exercise file, except ``__init__.py``
+and any file whose name starts with ``_`` (helper modules an exercise may import). A
+file that defines no exercise, an id that is not kebab-case, two files with one id: each
+is an :class:`ExerciseFileError` of one line naming the file and line, raised by every
+command that looks at the bank (nothing is skipped in silence). A Symbolic formula that
+names what is not one of its part's variables is one too, raised when the file is loaded,
+and by ``dynagrade list`` (which reads files without running them) where the file writes
+the formula and the variables' names as literals.
+
 Exercise files are the authors' code and are imported; students' files never are.
 """
 
@@ -17,17 +26,18 @@ import importlib.util
 import os
 import re
 import sys
-import traceback
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable, Iterator
 
 from ..errors import DynagradeError, UnknownExercise
+from .formula_check import formula_problems, written_formula_problems
 from .listing import ExerciseListing, read_listing
 from .model import Exercise
+from .source_lines import line_of_error, line_of_string
 
 ENVIRONMENT_VARIABLE = "DYNAGRADE_EXERCISES"
-_DECLARED_ID = re.compile(r"""\bid\s*=\s*["']([a-z0-9-]+)["']""")
+_DECLARED_ID = re.compile(r"""\bid\s*=\s*["']([a-z0-9]+(?:-[a-z0-9]+)*)["']""")
 
 
 class ExerciseFileError(DynagradeError):
@@ -43,14 +53,22 @@ def builtin_bank() -> Path:
     return here.parent.parent / "exercises"
 
 
+def environment_folders() -> list[Path]:
+    """The folders ``$DYNAGRADE_EXERCISES`` names."""
+    return [Path(f) for f in os.environ.get(ENVIRONMENT_VARIABLE, "").split(os.pathsep) if f]
+
+
 def search_path(extra: Iterable[str | os.PathLike] = ()) -> list[Path]:
-    """The folders searched for exercises, first match wins."""
-    folders = [Path(f) for f in extra]
-    folders += [Path(f) for f in os.environ.get(ENVIRONMENT_VARIABLE, "").split(os.pathsep) if f]
+    """The folders searched for exercises, first match wins; a folder named twice is
+    searched at its first place."""
+    folders = [Path(f) for f in extra] + environment_folders()
     for folder in folders:
         if not folder.is_dir():
             raise ExerciseFileError(f"exercise folder {folder} does not exist")
-    return folders + [builtin_bank()]
+    unique = {}
+    for folder in folders:
+        unique.setdefault(folder.resolve(), folder)
+    return list(unique.values()) + [builtin_bank()]
 
 
 def exercise_files(folder: Path) -> Iterator[Path]:
@@ -88,17 +106,32 @@ def load_file(path: str | os.PathLike) -> Exercise:
     except SyntaxError as error:
         raise ExerciseFileError(f"{path}, line {error.lineno}: {error.msg}") from None
     except Exception as error:
-        raise ExerciseFileError(f"{path}, line {_line_in(path, error)}: "
-                                f"{type(error).__name__}: {error}") from None
+        kind = "" if isinstance(error, DynagradeError) else f"{type(error).__name__}: "
+        raise ExerciseFileError(f"{path}, line {line_of_error(path, error)}: {kind}{error}") \
+            from None
     exercise = getattr(module, "EXERCISE", None)
     if not isinstance(exercise, Exercise):
-        raise ExerciseFileError(f"{path}: defines no EXERCISE = Exercise(...)")
+        raise ExerciseFileError(
+            f"{path}: defines no EXERCISE = Exercise(...); a helper module of an exercise "
+            "folder has a name starting with '_'")
+    _require_readable_formulas(path, exercise.id, formula_problems(exercise))
     object.__setattr__(exercise, "path", str(path))
     object.__setattr__(exercise, "fingerprint", fingerprint)
     for stale in [name for name in sys.modules if name.startswith(f"dynagrade_exercise_{place}_")]:
         del sys.modules[stale]
     sys.modules[module_name] = module
     return exercise
+
+
+def _require_readable_formulas(path: Path, exercise_id: str, problems) -> None:
+    """Raise the first of ``problems`` (``(part name, problem)``) as the file's error,
+    at the line where the part's name is written."""
+    unreadable = next(iter(problems), None)
+    if unreadable is not None:
+        part_name, problem = unreadable
+        line = line_of_string(path.read_bytes(), part_name) or "?"
+        raise ExerciseFileError(f"{path}, line {line}: exercise {exercise_id!r}, part "
+                                f"{part_name!r}: {problem}")
 
 
 class _SourceLoader(importlib.abc.SourceLoader):
@@ -125,19 +158,23 @@ class Bank:
         self._files: dict[str, Path] | None = None
 
     def _index(self) -> dict[str, Path]:
-        """Candidate file for each id, from the ids the files declare as text."""
+        """Candidate file for each id, from the ids the files declare as text; a file
+        that declares none as a literal (a computed or malformed id, or no exercise at
+        all) is loaded to learn its id, so that it fails loudly or is found."""
         if self._files is None:
             self._files = {}
             for folder in reversed(self.folders):  # earlier folders override later ones
-                found: dict[str, Path] = {}
+                found: dict[str, tuple[Path, int | str]] = {}
                 for path in exercise_files(folder):
-                    for exercise_id in _DECLARED_ID.findall(path.read_text(encoding="utf-8")):
+                    for exercise_id, line in _declared_ids(path):
                         if exercise_id in found:
+                            first, first_line = found[exercise_id]
                             raise ExerciseFileError(
-                                f"exercise id {exercise_id!r} is declared by both "
-                                f"{found[exercise_id]} and {path}")
-                        found[exercise_id] = path
-                self._files.update(found)
+                                f"{path}, line {line}: exercise id {exercise_id!r} is "
+                                f"declared by both {first}, line {first_line} and {path}, "
+                                f"line {line}; ids are unique within a folder")
+                        found[exercise_id] = (path, line)
+                self._files.update({i: path for i, (path, _) in found.items()})
         return self._files
 
     def get(self, exercise_id: str) -> Exercise:
@@ -158,10 +195,14 @@ class Bank:
 
     def all(self) -> list[Exercise]:
         """Every exercise, sorted by chapter, source and id (every file is loaded)."""
-        exercises = {}
+        exercises: dict[str, Exercise] = {}
         for path in sorted(set(self._index().values())):
             exercise = load_file(path)
-            exercises.setdefault(exercise.id, exercise)
+            if exercise.id in exercises:  # an id its file does not declare as a literal
+                raise ExerciseFileError(
+                    f"{path}: exercise id {exercise.id!r} is also the id of "
+                    f"{exercises[exercise.id].path}; ids are unique")
+            exercises[exercise.id] = exercise
         return sorted(exercises.values(), key=_listing_order)
 
     def ids(self) -> list[str]:
@@ -175,8 +216,26 @@ class Bank:
         listings = {}
         for path in sorted(set(self._index().values())):
             listing = read_listing(path) or ExerciseListing.of(load_file(path))
+            _require_readable_formulas(Path(path), listing.id,
+                                       written_formula_problems(listing.formulas))
             listings.setdefault(listing.id, listing)
         return sorted(listings.values(), key=_listing_order)
+
+
+def _declared_ids(path: Path) -> list[tuple[str, int | str]]:
+    """``(id, line)`` for each id the file at ``path`` declares as a literal; when it
+    declares none, the id of the exercise the file defines (the file is loaded, which
+    raises a clear error for a file that defines none or a malformed one)."""
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as error:
+        raise ExerciseFileError(f"{path}: cannot read the file ({error})") from None
+    declared = [(match.group(1), text.count("\n", 0, match.start()) + 1)
+                for match in _DECLARED_ID.finditer(text)]
+    if declared:
+        return declared
+    exercise = load_file(path)
+    return [(exercise.id, line_of_string(text, exercise.id) or "?")]
 
 
 def open_bank(extra_folders: Iterable[str | os.PathLike] = ()) -> Bank:
@@ -189,10 +248,3 @@ def _listing_order(exercise) -> tuple:
     numbers = tuple(int(n) for n in re.findall(r"\d+", exercise.source))
     return exercise.chapter, numbers, exercise.id
 
-
-def _line_in(path: Path, error: BaseException) -> str:
-    """The line of ``path`` where ``error`` was raised, or '?'."""
-    for frame in reversed(traceback.extract_tb(error.__traceback__)):
-        if Path(frame.filename).resolve() == path:
-            return str(frame.lineno)
-    return "?"

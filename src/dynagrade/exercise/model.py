@@ -17,7 +17,8 @@ from typing import Any, Callable, Mapping
 
 from ..errors import DefinitionError, DynagradeError, UnknownParameter, UnknownPart
 from .listing import summary
-from .params import Constraint, Parameter, ParamValues, symbol_domain, to_si_values
+from .params import (Constraint, DrawTally, Parameter, ParamValues, symbol_domain,
+                     to_si_values)
 from .parts import Part, Variable
 from .solution import check_solution
 from .statement import compile_statement, render_statement
@@ -61,7 +62,9 @@ class Exercise:
     reference answer of every non-symbolic part, in SI, by calling the mechanics core;
     it may return extra keys beside the parts' names (intermediate quantities for the
     worked ``solution``, never graded). ``solution`` is a jinja2 template of Markdown
-    (:mod:`.solution`).
+    (:mod:`.solution`). ``figure(p)`` draws the variant; ``figure_to_scale`` says whether
+    its lengths and angles are those of the variant (the caption says "drawn to scale"
+    only then) or it is a schematic.
 
     The loader sets ``path`` (the file it came from) and ``fingerprint`` (the SHA-256 of
     that file's bytes): the exercise's identity, the key for anything cached about it.
@@ -78,6 +81,7 @@ class Exercise:
     constraints: tuple[Constraint, ...] = ()
     chapter: int | None = None
     figure: Callable[[ParamValues], Any] | None = None
+    figure_to_scale: bool = False
     solution: str | None = None
     path: str | None = field(default=None, compare=False)
     fingerprint: str | None = field(default=None, compare=False)
@@ -122,12 +126,14 @@ class Exercise:
                           f"it has {[p.name for p in self.parts]}")
 
     def draw(self, seed: int, overrides: Mapping[str, float] | None = None,
-             strict: bool = True) -> tuple[dict[str, float], tuple[str, ...]]:
+             strict: bool = True, tally: DrawTally | None = None,
+             ) -> tuple[dict[str, float], tuple[str, ...]]:
         """Parameter values (declared units) for ``seed`` that meet every constraint.
 
         Values in ``overrides`` are fixed; the others are redrawn until the constraints
         hold. With ``strict=False`` a draw whose overridden values break a constraint is
-        returned with the broken constraints' descriptions instead of raising.
+        returned with the broken constraints' descriptions instead of raising. ``tally``,
+        when given, counts every draw taken and the constraints it broke.
         """
         import numpy as np  # here, not at import: listing the bank builds no draw
 
@@ -141,6 +147,8 @@ class Exercise:
             values = {p.name: p.draw(rng) for p in self.params}
             values.update(overrides)
             broken = self.broken_constraints(values)
+            if tally is not None:
+                tally.record(broken)
             if not broken:
                 return values, ()
             first = first or (values, broken)
@@ -186,9 +194,10 @@ class Exercise:
         return answers
 
     def variant(self, seed: int, overrides: Mapping[str, float] | None = None,
-                strict: bool = True) -> Variant:
-        """The variant for ``seed`` (with ``overrides`` fixed, in declared units)."""
-        values, warnings = self.draw(seed, overrides, strict=strict)
+                strict: bool = True, tally: DrawTally | None = None) -> Variant:
+        """The variant for ``seed`` (with ``overrides`` fixed, in declared units);
+        ``tally`` counts the draws it takes (:meth:`draw`)."""
+        values, warnings = self.draw(seed, overrides, strict=strict, tally=tally)
         return self.variant_from_params(seed, values, warnings)
 
     def variant_from_params(self, seed: int, values: Mapping[str, float],

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import functools
 import math
-from dataclasses import dataclass
+from collections import Counter
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Callable, Mapping
 
 from ..errors import DefinitionError
@@ -186,6 +187,25 @@ class Constraint:
 
     description: str
     check: Callable[["ParamValues"], bool]
+
+
+@dataclass
+class DrawTally:
+    """Parameter draws counted as an exercise takes them: how many were taken, how many
+    broke a constraint, and how often each constraint was broken (a draw that breaks two
+    counts once in ``rejected`` and once for each). ``dynagrade verify`` reports from it
+    the share of draws the constraints throw away (:mod:`.redraws`)."""
+
+    draws: int = 0
+    rejected: int = 0
+    broken: Counter = field(default_factory=Counter)
+
+    def record(self, broken: list[str]) -> None:
+        """One draw, with the descriptions of the constraints it broke (none: accepted)."""
+        self.draws += 1
+        if broken:
+            self.rejected += 1
+            self.broken.update(broken)
 
 
 class ParamValues(Mapping[str, float]):

@@ -55,13 +55,21 @@ class Misconception:
     """A known wrong answer and the feedback it earns.
 
     ``value`` is a function of the parameters (in SI) returning the wrong answer in SI for
-    numeric and vector parts, or an expression string for symbolic parts.
+    numeric and vector parts, or an expression string for symbolic parts. ``applies``, a
+    predicate of the parameters (in SI), limits the misconception to the regime where it
+    is a mistake at all (e.g. "the block slides" only while ``mu < tan(alpha)``):
+    elsewhere it is neither tried on an answer nor able to make a variant be redrawn.
     """
 
     name: str
     value: Callable[[ParamValues], Any] | str
     feedback: str
     score: float = 0.0
+    applies: Callable[[ParamValues], bool] | None = None
+
+    def applies_to(self, params: ParamValues) -> bool:
+        """Whether this misconception is tried in the variant with ``params``."""
+        return self.applies is None or bool(self.applies(params))
 
 
 @dataclass(frozen=True)
@@ -79,6 +87,8 @@ class Part(ABC):
     kind = "part"
     #: the settings the exam manifest stores for parts of this kind (attribute names)
     manifest_fields: ClassVar[tuple[str, ...]] = ()
+    #: whether the reference answer follows the parameters (a formula is one for all)
+    answer_varies: ClassVar[bool] = True
 
     def __post_init__(self):
         if not self.name.isidentifier():
@@ -107,10 +117,14 @@ class Part(ABC):
         """A value the solver gives in SI, as this part states and grades it."""
         return value
 
+    def misconceptions_for(self, params: ParamValues) -> tuple[Misconception, ...]:
+        """The declared misconceptions that apply in the variant with ``params``."""
+        return tuple(m for m in self.misconceptions if m.applies_to(params))
+
     def _known_wrong(self, params: ParamValues) -> tuple[KnownWrong, ...]:
         return tuple(
             KnownWrong(m.name, self.in_part_unit(m.value(params)), m.feedback, m.score)
-            for m in self.misconceptions
+            for m in self.misconceptions_for(params)
         )
 
     @property
@@ -273,6 +287,7 @@ class Symbolic(Part):
     up_to_constant: bool | tuple[str, ...] = ()
 
     kind = "symbolic"
+    answer_varies = False
 
     def reference(self, solved):
         return self.expected
@@ -312,7 +327,7 @@ class Symbolic(Part):
 
     def spec(self, params):
         known = tuple(KnownWrong(m.name, m.value, m.feedback, m.score)
-                      for m in self.misconceptions)
+                      for m in self.misconceptions_for(params))
         return SymbolicSpec(variables=dict(self.variables), misconceptions=known,
                             form=tuple(self.form), form_credit=self.form_credit,
                             up_to_constant=self.up_to_constant)

@@ -4,14 +4,19 @@ For each seed: the constraints can be met, the statement renders, the reference 
 are finite and pass their own part, the part's near misses (an answer 5 % off, another
 option) fail, every declared misconception fails, and each symbolic part's expression
 reproduces the numeric part it ``equals`` at the variant's parameters (a cross-check of
-formula against mechanics core). Once per exercise: every part answers a numbered
-question of the statement and every question has a part, and every variable of a formula
-is shown in the statement under a name the grader accepts (:mod:`.asked`). What each kind tries is its own
+formula against mechanics core). A misconception is tried only where it ``applies``; the
+report counts the variants an exam would redraw and the draws the constraints reject
+(:mod:`.redraws`). Once per exercise: every part answers a numbered question of the
+statement and every question has a part, and every variable of a formula is shown in the
+statement under a name the grader accepts (:mod:`.asked`). What each kind tries is its own
 (:mod:`dynagrade.exercise.parts`). The worked solution of every variant is checked too
 (:mod:`.solution_check`), its math once per exercise by ``math_check`` (the render
 layer's, handed in by the command); an exercise without a solution is a finding when
 ``require_solution`` is set (the command sets it once the shipped bank is complete, or
-on request), otherwise a note.
+on request), otherwise a note. With ``render_figure`` (the render layer's SVG writer,
+handed in by the command as ``math_check`` is), every variant's figure is drawn and
+checked (:mod:`.figure_checks`): it does not fail, its SVG is well formed, and its text
+shows no reference answer.
 """
 
 from __future__ import annotations
@@ -21,7 +26,9 @@ from typing import Callable, Iterable
 
 from ..grading import grade
 from .asked import question_problems, unshown_variables
+from .figure_checks import figure_problems
 from .model import ConstraintError, Exercise, Variant
+from .redraws import NO_DRAW, RedrawShare
 from .solution import SolutionError, render_solution
 from .solution_check import missing_solution, solution_problems
 from .statement import referenced_names
@@ -35,6 +42,7 @@ class VerifyReport:
     variants: int = 0
     failures: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    redraws: RedrawShare = field(default_factory=RedrawShare)
 
     @property
     def ok(self) -> bool:
@@ -42,7 +50,9 @@ class VerifyReport:
 
 
 def verify_exercise(exercise: Exercise, seeds: Iterable[int], require_solution: bool = False,
-                    math_check: Callable[[str], list[str]] | None = None) -> VerifyReport:
+                    math_check: Callable[[str], list[str]] | None = None,
+                    render_figure: Callable[[Exercise, Variant], str | None] | None = None
+                    ) -> VerifyReport:
     """Every check of the module docstring, for each of ``seeds``."""
     report = VerifyReport(exercise.id)
     report.failures += static_problems(exercise)
@@ -53,15 +63,20 @@ def verify_exercise(exercise: Exercise, seeds: Iterable[int], require_solution: 
     for seed in seeds:
         report.variants += 1
         try:
-            variant = exercise.variant(seed)
+            variant = exercise.variant(seed, tally=report.redraws.tally)
         except ConstraintError as error:
+            report.redraws.record([NO_DRAW])
             report.failures.append(str(error))
             continue
         except Exception as error:  # an author's solver or template failing is a finding
             report.failures.append(f"seed {seed}: {type(error).__name__}: {error}")
             continue
-        report.failures += [f"seed {seed}: {p}" for p in variant_problems(exercise, variant)]
+        problems = variant_problems(exercise, variant)
+        report.redraws.record(problems)
+        report.failures += [f"seed {seed}: {p}" for p in problems]
         report.failures += [f"seed {seed}: {p}" for p in solution_problems(exercise, variant)]
+        if render_figure is not None:
+            report.failures += figure_problems(exercise, variant, render_figure)
         if not math_checked:
             math_checked = True
             report.failures += [f"seed {seed}: solution: {p}"
@@ -98,7 +113,7 @@ def variant_problems(exercise: Exercise, variant: Variant) -> list[str]:
         for wrong, what in part.near_misses(expected):
             if grade(spec, expected, wrong).correct:
                 problems.append(f"part {part.name}: {what} is accepted")
-        for misconception in part.misconceptions:
+        for misconception in part.misconceptions_for(params):
             wrong = part.misconception_answer(misconception, params)
             if grade(spec, expected, wrong).correct:
                 problems.append(f"part {part.name}: the misconception "

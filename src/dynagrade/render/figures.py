@@ -1,11 +1,12 @@
 """A variant's figure as SVG text, the same bytes on every run.
 
-The exercise's ``figure(p)`` (drawn with :mod:`dynagrade.exercise.figure`) is rendered
-with matplotlib's SVG writer (the Agg backend selected, no display needed), a fixed hash
-salt (so element ids do not change from run to run), glyphs as paths (so every viewer,
-typst included, shows the same letters) and no date in the metadata. The SVG is an image
-with a title (the exercise's title) and a description in words
-(:mod:`dynagrade.render.accessible_svg`).
+The exercise's ``figure(p)`` (drawn with :mod:`dynagrade.exercise.figure`) gives a
+recorded drawing, written straight to SVG by :mod:`dynagrade.render.svg_figure` (labels
+as SVG text). A figure function that returns a matplotlib figure instead (a real plot)
+is rendered with matplotlib's SVG writer (the Agg backend selected, no display needed), a
+fixed hash salt (so element ids do not change from run to run), glyphs as paths and no
+date in the metadata. Either way the SVG is an image with a title (the exercise's title)
+and a description in words (:mod:`dynagrade.render.accessible_svg`).
 
 Usage::
 
@@ -18,9 +19,11 @@ from __future__ import annotations
 import io
 import re
 
-from ..exercise.figure import recycle
+from ..exercise.drawing import Drawing
+from ..exercise.figure_checks import reported_figure_failure
 from ..exercise.model import Exercise, Variant
 from .accessible_svg import accessible_svg, figure_description, prefixed_ids
+from .svg_figure import drawing_svg
 
 SVG_SETTINGS = {"svg.hashsalt": "dynagrade", "svg.fonttype": "path", "svg.image_inline": True,
                 "path.simplify": False}
@@ -30,24 +33,34 @@ _HEADER = re.compile(r"^\s*<\?xml[^>]*>\s*(<!DOCTYPE[^>]*>\s*)?", re.S)
 
 
 def figure_svg(exercise: Exercise, variant: Variant) -> str | None:
-    """The variant's figure as a standalone SVG document, or ``None`` without a figure."""
+    """The variant's figure as a standalone SVG document, or ``None`` without a figure.
+    A figure function that fails raises a one-line
+    :class:`~dynagrade.exercise.figure_checks.FigureError` (exercise, file, line)."""
     if exercise.figure is None:
         return None
+    with reported_figure_failure(exercise, variant.seed):
+        figure = exercise.figure(exercise.si(variant.params))
+        if isinstance(figure, Drawing):
+            svg = drawing_svg(figure)
+        else:
+            svg = matplotlib_svg(figure)
+        return accessible_svg(svg, figure_title(exercise), figure_description(figure))
+
+
+def matplotlib_svg(figure) -> str:
+    """A matplotlib figure (a plot) as SVG, cropped to what is drawn on it."""
     import sys
 
     import matplotlib
 
     if "matplotlib.pyplot" not in sys.modules:
         matplotlib.use("Agg")
-    figure = exercise.figure(exercise.si(variant.params))
     buffer = io.StringIO()
     with matplotlib.rc_context(SVG_SETTINGS):
         figure.savefig(buffer, format="svg", bbox_inches=tight_box(figure, PAD_INCHES),
                        metadata={"Date": None, "Creator": "dynagrade"})
-    description = figure_description(figure)
     _close(figure)
-    recycle(figure)
-    return accessible_svg(buffer.getvalue(), figure_title(exercise), description)
+    return buffer.getvalue()
 
 
 def tight_box(figure, pad: float):
@@ -71,8 +84,15 @@ def tight_box(figure, pad: float):
 
 
 def figure_title(exercise: Exercise) -> str:
-    """The name of an exercise's figure, as a screen reader announces it."""
-    return f"{exercise.title}: figure drawn to scale"
+    """The name of an exercise's figure, as a screen reader announces it: whether it is
+    drawn to scale is the exercise's ``figure_to_scale``."""
+    return f"{exercise.title}: figure, {scale_phrase(exercise.figure_to_scale)}"
+
+
+def scale_phrase(to_scale: bool) -> str:
+    """What a caption says of a figure's scale: "drawn to scale" only for a figure whose
+    exercise declares ``figure_to_scale=True``."""
+    return "drawn to scale" if to_scale else "schematic, not to scale"
 
 
 def inline_svg(svg: str, id_prefix: str = "") -> str:

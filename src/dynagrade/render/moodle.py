@@ -1,36 +1,62 @@
-"""The exam as Moodle XML: a question category per exercise, a question per variant.
+"""Variants as Moodle XML: a question category per exercise, a question per variant.
 
-A quiz then draws a random question from each category, so every student meets one of
-the exam's variants. An exercise whose only gradable part is numeric becomes a
-``numerical`` question; any other becomes a ``cloze`` question with one embedded answer
-per part (``{2:NUMERICAL:=4.43:0.0443}``; a vector has one field per component, a
-choice part a drop-down; :data:`MOODLE_KINDS` holds each kind's form). Moodle's
-numerical answers take an absolute tolerance: it comes from the grader's own tolerance
-functions, so Moodle accepts what ``dynagrade grade`` accepts (``max(atol, rtol*|answer|)``
-with the grader's absolute floor; a vector's zero component judged against its length).
-Symbolic parts cannot be checked by Moodle and are listed as not part of the quiz.
-``penalty`` is set to 0 (no deduction per retry) on every question.
+A quiz draws a random question from each category, so every student meets one variant.
+Two writers share everything below: :func:`moodle_xml` (an exam's variants, from its
+manifest) and :func:`pool_xml` (a pool of variants independent of any roster,
+:mod:`dynagrade.exam.pool`).
 
-The XML is written by :mod:`xml.etree.ElementTree`, which escapes all text; the math of
-the statements stays TeX between ``\\(`` and ``\\)`` for Moodle's MathJax filter.
+What a question holds (Moodle's XML import format, ``question/format/xml/format.php``):
+
+- the statement (Markdown as HTML, math as TeX between ``\\(`` and ``\\)`` for Moodle's
+  MathJax filter) and the variant's figure embedded as a file of the question text
+  (``<file name="F.svg" path="/" encoding="base64">``, shown by
+  ``<img src="@@PLUGINFILE@@/F.svg">``);
+- an exercise with one numeric part: a ``numerical`` question; any other: a ``cloze``
+  question with an embedded field per part (:mod:`.cloze`; a vector has one field per
+  component, a choice part a drop-down of its options' text, several options check
+  boxes; :data:`MOODLE_KINDS` holds each kind's form). Numeric answers carry the
+  grader's own tolerance, then every declared misconception as a wrong answer with its
+  feedback (and its partial credit, if any);
+- marks as Moodle computes them: a cloze question's full mark is the sum of its fields'
+  weights (:mod:`.cloze_marks`), in the proportions of the exam's part points;
+- parts Moodle cannot check (formulas) are left out of the question; the category's
+  description, which only the staff see, names them and the points they carry, and
+  says which maximum mark to give the quiz slot;
+- an ``idnumber`` made from the exercise id and a hash of the variant's parameters
+  (values the statement shows anyway): the same variant has the same id in every
+  export, and no id holds a seed or anything else that leads to a key. Moodle matches
+  nothing on import: importing a file again adds every question again, without its
+  idnumber where the category already holds it (docs/exams.md says how to replace an
+  import).
+
+``penalty`` is 0 (no deduction per retry) on every question. The XML is written by
+:mod:`xml.etree.ElementTree`, which escapes all text.
 """
 
 from __future__ import annotations
 
+import base64
+import hashlib
+import json
+import math
 import xml.etree.ElementTree as ET
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable, Mapping
 
 from ..exam.manifest import ExerciseEntry, Manifest, PartEntry, VariantEntry
 from ..exercise.model import Exercise
+from ..exercise.numbers import format_number, points_phrase
 from ..exercise.statement import render_statement
 from ..exercise.units import pretty_unit
 from ..grading.spec import VectorSpec
 from ..grading.tolerance import allowed_error
+from .cloze import Alternative, choice_field, field as cloze_field, number_text
+from .cloze_marks import Weights, field_points, field_weights
 from .markup import markdown_to_html
 
 PENALTY = "0"
-_CLOZE_SPECIAL = str.maketrans({c: "\\" + c for c in "}#~/\"\\"})
+#: a variant's figure as SVG text (None: the exercise draws none)
+Figure = Callable[[Exercise, VariantEntry], "str | None"]
 
 
 def tolerance(value: float, rtol: float, atol: float | None) -> float:
@@ -51,14 +77,362 @@ def vector_tolerances(values, rtol: float, atol: float | None) -> list[float]:
     return [float(t) for t in component_tolerance(spec, np.asarray(values, dtype=float))]
 
 
-def _number(value: float) -> str:
-    """A number as Moodle reads it, exactly (the shortest text that round-trips)."""
-    return repr(float(value))
+# -- the fields of each part kind ---------------------------------------------------------
 
 
-def _tolerance_text(value: float) -> str:
-    """A tolerance to 15 significant figures (``0.1725``, not ``0.17250000000000001``)."""
-    return f"{float(value):.15g}"
+@dataclass(frozen=True)
+class PartFields:
+    """What a part's fields are written from: the manifest's part, the variant's
+    reference answer and the misconceptions' wrong answers in the part's unit (name,
+    value, feedback, score)."""
+
+    part: PartEntry
+    value: object
+    wrong: tuple = ()
+
+
+def _numeric_fields(given: PartFields, weights: list[int]) -> list[str]:
+    return [cloze_field(weights[0], "NUMERICAL", _number_alternatives(given))]
+
+
+def _number_alternatives(given: PartFields) -> list[Alternative]:
+    """A numeric part's alternatives; a misconception is recognised within the part's
+    tolerance around its own value, as the grader recognises it."""
+    part, value = given.part, float(given.value)
+    wrong = [(float(v), tolerance(float(v), part.rtol, part.atol), feedback, score)
+             for _, v, feedback, score in given.wrong]
+    return numeric_alternatives(value, tolerance(value, part.rtol, part.atol), wrong)
+
+
+def _vector_fields(given: PartFields, weights: list[int]) -> list[str]:
+    """A field per component; a misconception's vector gives each component a wrong
+    answer, judged with the component's tolerance as dynagrade judges it."""
+    part, values = given.part, [float(v) for v in given.value]
+    tolerances = vector_tolerances(values, part.rtol, part.atol)
+    return [cloze_field(w, "NUMERICAL", numeric_alternatives(
+                value, allowed, [(float(v[i]), allowed, feedback, score)
+                                 for _, v, feedback, score in given.wrong]))
+            for i, (w, value, allowed) in enumerate(zip(weights, values, tolerances))]
+
+
+def numeric_alternatives(value: float, allowed: float, wrong) -> list[Alternative]:
+    """A number's alternatives: the right answer within ``allowed``, then each wrong
+    answer ``(value, tolerance, feedback, score)`` that the grader can tell from it
+    (finite, outside the right answer's tolerance), in the grader's order: Moodle takes
+    the first alternative an answer falls within."""
+    alternatives = [Alternative(value, 1.0, allowed)]
+    for target, around, feedback, score in wrong:
+        if math.isfinite(target) and abs(target - value) > allowed:
+            alternatives.append(Alternative(target, score, around, feedback))
+    return alternatives
+
+
+def _choice_fields(given: PartFields, weights: list[int]) -> list[str]:
+    part, value = given.part, given.value
+    right = set(value) if isinstance(value, (list, tuple)) else {value}
+    return [choice_field(weights[0], tuple(part.options), right, bool(part.multiple))]
+
+
+@dataclass(frozen=True)
+class MoodleKind:
+    """How a kind of part goes into Moodle: ``fields(part_fields, weights)`` writes its
+    embedded cloze fields, ``count(part)`` of them (``fields`` None: Moodle cannot check
+    the part, and it is left out, for the staff note to name as ``absent``);
+    ``numerical``: a lone part of this kind becomes a ``numerical`` question."""
+
+    fields: Callable[[PartFields, list[int]], list[str]] | None
+    count: Callable[[PartEntry], int] = lambda part: 1
+    numerical: bool = False
+    absent: str = ""
+
+
+#: every part kind's Moodle form (a test holds it complete)
+MOODLE_KINDS: dict[str, MoodleKind] = {
+    "numeric": MoodleKind(_numeric_fields, numerical=True),
+    "vector": MoodleKind(_vector_fields, count=lambda part: int(part.size)),
+    "choice": MoodleKind(_choice_fields),
+    "symbolic": MoodleKind(None, absent="a formula"),
+}
+
+
+# -- marks --------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Marks:
+    """How an exercise's points go into Moodle: the exported parts, each part's field
+    weights, and the parts left out."""
+
+    exercise_points: float
+    exported: tuple[PartEntry, ...]
+    weights: dict[str, list[int]]
+    left_out: tuple[PartEntry, ...]
+    exact: bool = True
+
+    @property
+    def full_mark(self) -> int:
+        """Moodle's full mark of a cloze question: the sum of its weights."""
+        return sum(sum(w) for w in self.weights.values())
+
+    @property
+    def exported_points(self) -> float:
+        return sum(p.points for p in self.exported)
+
+
+def exercise_marks(described: ExerciseEntry) -> Marks:
+    """The fields' weights of ``described``'s parts, proportional to the points the exam
+    gives them (a vector's split over its components)."""
+    exported = tuple(p for p in described.parts if MOODLE_KINDS[p.kind].fields is not None)
+    left_out = tuple(p for p in described.parts if MOODLE_KINDS[p.kind].fields is None)
+    counts = [MOODLE_KINDS[p.kind].count(p) for p in exported]
+    points = [share for p, n in zip(exported, counts) for share in field_points(p.points, n)]
+    found: Weights = field_weights(points)
+    weights, start = {}, 0
+    for part, n in zip(exported, counts):
+        weights[part.name] = list(found.weights[start:start + n])
+        start += n
+    return Marks(described.points, exported, weights, left_out, found.exact)
+
+
+# -- the document -------------------------------------------------------------------------
+
+
+@dataclass
+class MoodleExport:
+    """The XML document (UTF-8 bytes) and notices for the staff (exercises left out)."""
+
+    xml: bytes
+    notices: list[str] = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class Category:
+    """An exercise's category: the exercise, its parts with the exam's points and the
+    variants to write, in order."""
+
+    exercise: Exercise
+    described: ExerciseEntry
+    variants: tuple[VariantEntry, ...]
+
+
+def moodle_xml(manifest: Manifest, exercises: Mapping[str, Exercise],
+               figure: Figure | None = None) -> MoodleExport:
+    """Every distinct variant of ``manifest`` (by parameters), under
+    ``$course$/top/<exam title>/<exercise id>``; ``figure`` gives a variant's figure (by
+    default it is drawn)."""
+    categories = []
+    for described in manifest.exercises:
+        variants = [v for s in manifest.students for v in s.variants
+                    if v.exercise == described.id]
+        categories.append(Category(exercises[described.id], described, distinct(variants)))
+    return _document(manifest.exam.title, categories, figure or drawn_figure)
+
+
+def pool_xml(title: str, categories: list[Category],
+             figure: Figure | None = None) -> MoodleExport:
+    """A pool of variants, a category ``$course$/top/<title>/<exercise id>`` each."""
+    return _document(title, categories, figure or drawn_figure)
+
+
+def distinct(variants) -> tuple[VariantEntry, ...]:
+    """``variants`` without repeats of the same parameters, in order."""
+    seen, kept = set(), []
+    for variant in variants:
+        key = variant_idnumber(variant)
+        if key not in seen:
+            seen.add(key)
+            kept.append(variant)
+    return tuple(kept)
+
+
+def variant_idnumber(variant: VariantEntry) -> str:
+    """``<exercise id>-<12 hex digits>``: a hash of the exercise id and the variant's
+    parameters, the same in every export of that variant, and no way to its seed."""
+    canonical = json.dumps({"exercise": variant.exercise,
+                            "params": {k: float(v) for k, v in variant.params.items()}},
+                           sort_keys=True)
+    return f"{variant.exercise}-{hashlib.sha256(canonical.encode()).hexdigest()[:12]}"
+
+
+def drawn_figure(exercise: Exercise, variant: VariantEntry) -> str | None:
+    """The variant's figure, drawn now."""
+    if exercise.figure is None:
+        return None
+    from .figures import figure_svg
+
+    return figure_svg(exercise, exercise.variant_from_params(variant.seed, variant.params))
+
+
+def _document(title: str, categories: list[Category], figure: Figure) -> MoodleExport:
+    quiz = ET.Element("quiz")
+    export = MoodleExport(b"")
+    for category in categories:
+        marks = exercise_marks(category.described)
+        if not marks.exported:
+            export.notices.append(
+                f"exercise {category.described.id!r} is not in the Moodle export: none of "
+                "its parts can be checked by Moodle")
+            continue
+        _category(quiz, title, category, marks)
+        for variant in category.variants:
+            _question(quiz, category, marks, variant, figure(category.exercise, variant))
+    ET.indent(quiz, space=" ")
+    export.xml = (b'<?xml version="1.0" encoding="UTF-8"?>\n'
+                  + ET.tostring(quiz, encoding="utf-8", xml_declaration=False) + b"\n")
+    return export
+
+
+def _category(quiz: ET.Element, title: str, category: Category, marks: Marks) -> None:
+    described = category.described
+    element = _sub(quiz, "question", type="category")
+    _text(element, "category", f"$course$/top/{_category_name(title)}/{described.id}")
+    _text(element, "info", staff_note(title, described, marks,
+                                      question_numbers(category.exercise)), format="html")
+
+
+def staff_note(title: str, described: ExerciseEntry, marks: Marks,
+               numbers: Mapping[str, int | None] | None = None) -> str:
+    """The category's description (seen by the staff only): where the questions come
+    from, the maximum mark to give the quiz slot, the parts left out and their share."""
+    lines = [f"{_html(described.title)} ({_html(described.source)}), {_html(title)}: "
+             f"one question per variant, idnumber {_html(described.id)}-&lt;hash of the "
+             "variant's parameters&gt;."]
+    points = format_number(marks.exported_points)
+    lines.append(
+        f"The exercise carries {points_phrase(marks.exercise_points)}. Set "
+        f"the quiz slot's maximum mark to {points} (the points of the parts in Moodle); "
+        f"the questions' own full mark is {marks.full_mark}, the sum of the field weights "
+        + ", ".join(f"{p.name} {'+'.join(map(str, marks.weights[p.name]))}"
+                    for p in marks.exported) + ".")
+    if not marks.exact:
+        lines.append("The weights only approximate the parts' shares of the points.")
+    if marks.left_out:
+        share = sum(p.points for p in marks.left_out)
+        whole = marks.exercise_points or 1.0
+        lines.append(
+            "Not in Moodle (grade them from the fill-in files or by hand): "
+            + "; ".join(f"{_html(p.label)} ({_asked(p.name, numbers)}{p.name}, "
+                        f"{MOODLE_KINDS[p.kind].absent}, {points_phrase(p.points)})"
+                        for p in marks.left_out)
+            + f"; together {points_phrase(share)}, "
+              f"{format_number(100 * share / whole)} % of the exercise.")
+    return "".join(f"<p>{line}</p>" for line in lines)
+
+
+def _asked(name: str, numbers: Mapping[str, int | None] | None) -> str:
+    number = (numbers or {}).get(name)
+    return f"question {number}, " if number is not None else ""
+
+
+def _question(quiz: ET.Element, category: Category, marks: Marks, variant: VariantEntry,
+              svg: str | None) -> None:
+    exercise, described = category.exercise, category.described
+    statement = render_statement(exercise.statement, exercise.params, variant.params)
+    text = markdown_to_html(statement, math="tex")
+    if svg is not None:
+        text += _figure_html(exercise, described.id)
+    wrong = _wrong_answers(exercise, variant)
+    lone = described.parts[0] if len(described.parts) == 1 else None
+    if lone is not None and MOODLE_KINDS[lone.kind].numerical:
+        question = _numerical_question(quiz, described, variant, text, wrong[lone.name])
+    else:
+        question = _cloze_question(quiz, described, marks, variant, text, wrong,
+                                   question_numbers(exercise))
+    if svg is not None:
+        _figure_file(question.find("questiontext"), described.id, svg)
+
+
+def question_numbers(exercise: Exercise) -> dict[str, int | None]:
+    """The number of the statement's question each part answers (None: unnumbered)."""
+    return {part.name: part.question for part in exercise.parts}
+
+
+def _wrong_answers(exercise: Exercise, variant: VariantEntry) -> dict[str, tuple]:
+    """Each part's declared misconceptions in this variant, as the grader sees them
+    (values in the part's unit)."""
+    params = exercise.si(variant.params)
+    wrong = {}
+    for part in exercise.parts:
+        known = getattr(part.spec(params), "misconceptions", ()) \
+            if MOODLE_KINDS[part.kind].fields is not None else ()
+        wrong[part.name] = tuple((k.name, k.value, k.feedback, k.score) for k in known)
+    return wrong
+
+
+def _figure_html(exercise: Exercise, exercise_id: str) -> str:
+    from .figures import figure_title
+
+    return (f'<p><img src="@@PLUGINFILE@@/{exercise_id}.svg" '
+            f'alt="{_html(figure_title(exercise), quote=True)}"></p>')
+
+
+def _figure_file(questiontext: ET.Element, exercise_id: str, svg: str) -> None:
+    """The figure as a file of the question text, which the ``<img>`` names."""
+    encoded = base64.b64encode(svg.encode("utf-8")).decode("ascii")
+    _sub(questiontext, "file", encoded, name=f"{exercise_id}.svg", path="/",
+         encoding="base64")
+
+
+def _question_head(quiz: ET.Element, kind: str, described: ExerciseEntry,
+                   variant: VariantEntry, text: str, grade: float) -> ET.Element:
+    """A question's name, text, grade and ids, the same for every type."""
+    idnumber = variant_idnumber(variant)
+    question = _sub(quiz, "question", type=kind)
+    _text(question, "name", f"{described.title} [{idnumber}]")
+    _text(question, "questiontext", text, format="html")
+    _text(question, "generalfeedback", "", format="html")
+    _sub(question, "defaultgrade", number_text(grade))
+    _sub(question, "penalty", PENALTY)
+    _sub(question, "hidden", "0")
+    _sub(question, "idnumber", idnumber)
+    return question
+
+
+def _numerical_question(quiz: ET.Element, described: ExerciseEntry, variant: VariantEntry,
+                        text: str, wrong: tuple) -> ET.Element:
+    """A lone numeric part: a ``numerical`` question (its ``defaultgrade`` counts) with
+    the grader's tolerance and the misconceptions as wrong answers with feedback."""
+    (part,) = described.parts
+    unit = f" (in {pretty_unit(part.unit)})" if part.unit else ""
+    question = _question_head(quiz, "numerical", described, variant,
+                              text + f"<p>{_html(part.label)}{_html(unit)}</p>", part.points)
+    alternatives = _number_alternatives(PartFields(part, variant.answers[part.name], wrong))
+    for alternative in alternatives:
+        answer = _sub(question, "answer", fraction=number_text(100 * alternative.fraction),
+                      format="moodle_auto_format")
+        _sub(answer, "text", number_text(alternative.answer))
+        _sub(answer, "tolerance", number_text(alternative.tolerance))
+        _text(answer, "feedback", _html(alternative.feedback), format="html")
+    for tag, setting in (("unitgradingtype", "0"), ("unitpenalty", "0"), ("showunits", "3"),
+                         ("unitsleft", "0")):
+        _sub(question, tag, setting)
+    return question
+
+
+def _cloze_question(quiz: ET.Element, described: ExerciseEntry, marks: Marks,
+                    variant: VariantEntry, text: str, wrong: dict,
+                    numbers: Mapping[str, int | None]) -> ET.Element:
+    """Every part Moodle can check as embedded fields, weighted as :func:`exercise_marks`
+    says, each in a list item numbered as the statement's question it answers; the
+    others are left out of the student's text."""
+    lines = []
+    for part in marks.exported:
+        unit = f" {_html(pretty_unit(part.unit))}" if part.unit else ""
+        given = PartFields(part, variant.answers[part.name], wrong[part.name])
+        fields = MOODLE_KINDS[part.kind].fields(given, marks.weights[part.name])
+        shown = fields[0] if len(fields) == 1 else "(" + ", ".join(fields) + ")"
+        number = numbers.get(part.name)
+        item = f'<li value="{number}">' if number is not None else "<li>"
+        lines.append(f"{item}{_html(part.label)}: {shown}{unit}</li>")
+    return _question_head(quiz, "cloze", described, variant,
+                          text + "<ol>" + "".join(lines) + "</ol>", marks.full_mark)
+
+
+# -- XML helpers --------------------------------------------------------------------------
+
+
+def _category_name(title: str) -> str:
+    return title.replace("/", "//")
 
 
 def _sub(parent: ET.Element, tag: str, text: str | None = None, **attributes) -> ET.Element:
@@ -74,141 +448,7 @@ def _text(parent: ET.Element, tag: str, text: str, format: str | None = None) ->
     return element
 
 
-def _numeric_field(part: PartEntry, value, weight: int) -> str:
-    tol = tolerance(value, part.rtol, part.atol)
-    return f"{{{weight}:NUMERICAL:={_number(value)}:{_tolerance_text(tol)}}}"
-
-
-def _vector_field(part: PartEntry, value, weight: int) -> str:
-    fields = [f"{{{weight}:NUMERICAL:={_number(v)}:{_tolerance_text(tol)}}}"
-              for v, tol in zip(value, vector_tolerances(value, part.rtol, part.atol))]
-    return "[" + ", ".join(fields) + "]"
-
-
-def _choice_field(part: PartEntry, value, weight: int) -> str:
-    correct = set(value) if isinstance(value, (list, tuple)) else {value}
-    options = [str(o).translate(_CLOZE_SPECIAL) for o in part.options]
-    if part.multiple:
-        share = 100 / max(1, len(correct))
-        marks = [f"%{share:g}%{o}" if raw in correct else f"%-100%{o}"
-                 for raw, o in zip(part.options, options)]
-        return f"{{{weight}:MULTIRESPONSE:" + "~".join(marks) + "}"
-    marks = [f"={o}" if raw in correct else o for raw, o in zip(part.options, options)]
-    return f"{{{weight}:MULTICHOICE:" + "~".join(marks) + "}"
-
-
-@dataclass(frozen=True)
-class MoodleKind:
-    """How a kind of part goes into Moodle: ``field(part, value, weight)`` writes its
-    embedded cloze answer (None: Moodle cannot check it, and the part is listed as not in
-    the quiz, saying ``absent``); ``numerical``: a lone part of this kind becomes a
-    ``numerical`` question."""
-
-    field: Callable[[PartEntry, object, int], str] | None
-    numerical: bool = False
-    absent: str = ""
-
-
-#: every part kind's Moodle form (a test holds it complete)
-MOODLE_KINDS: dict[str, MoodleKind] = {
-    "numeric": MoodleKind(_numeric_field, numerical=True),
-    "vector": MoodleKind(_vector_field),
-    "choice": MoodleKind(_choice_field),
-    "symbolic": MoodleKind(None, absent="a formula, graded from the fill-in file"),
-}
-
-
-def moodle_xml(manifest: Manifest, exercises: Mapping[str, Exercise]) -> bytes:
-    """The Moodle XML document (UTF-8 bytes) for every variant in ``manifest``."""
-    quiz = ET.Element("quiz")
-    exam = manifest.exam
-    for described in manifest.exercises:
-        exercise = exercises[described.id]
-        category = _sub(quiz, "question", type="category")
-        _text(category, "category",
-              f"$course$/top/{_category_name(exam.title)}/{described.id}")
-        _text(category, "info", f"{described.title} ({described.source}), "
-              f"{exam.title}", format="html")
-        seen = set()
-        for student in manifest.students:
-            for variant in student.variants:
-                if variant.exercise != described.id or variant.seed in seen:
-                    continue
-                seen.add(variant.seed)
-                _question(quiz, exercise, described, variant)
-    ET.indent(quiz, space=" ")
-    return (b'<?xml version="1.0" encoding="UTF-8"?>\n'
-            + ET.tostring(quiz, encoding="utf-8", xml_declaration=False) + b"\n")
-
-
-def _category_name(title: str) -> str:
-    return title.replace("/", "//")
-
-
-def _question(quiz: ET.Element, exercise: Exercise, described: ExerciseEntry,
-              variant: VariantEntry) -> None:
-    statement = render_statement(exercise.statement, exercise.params, variant.params)
-    text = markdown_to_html(statement, math="tex")
-    parts = described.parts
-    if len(parts) == 1 and MOODLE_KINDS[parts[0].kind].numerical:
-        _numerical_question(quiz, described, variant, text)
-    else:
-        _cloze_question(quiz, described, variant, text)
-
-
-def _question_head(quiz: ET.Element, kind: str, described: ExerciseEntry,
-                   variant: VariantEntry, text: str) -> ET.Element:
-    """A question's name, text, grade and ids, the same for every type."""
-    question = _sub(quiz, "question", type=kind)
-    _text(question, "name", f"{described.id} (seed {variant.seed})")
-    _text(question, "questiontext", text, format="html")
-    _text(question, "generalfeedback", "", format="html")
-    _sub(question, "defaultgrade", _number(described.points))
-    _sub(question, "penalty", PENALTY)
-    _sub(question, "hidden", "0")
-    _sub(question, "idnumber", f"{described.id}-{variant.seed}")
-    return question
-
-
-def _numerical_question(quiz: ET.Element, described: ExerciseEntry, variant: VariantEntry,
-                        text: str) -> None:
-    """A lone numeric part: a ``numerical`` question with the grader's tolerance."""
-    (part,) = described.parts
-    unit = f" (in {pretty_unit(part.unit)})" if part.unit else ""
-    question = _question_head(quiz, "numerical", described, variant,
-                              text + f"<p>{_html(part.label)}{_html(unit)}</p>")
-    value = variant.answers[part.name]
-    answer = _sub(question, "answer", fraction="100", format="moodle_auto_format")
-    _sub(answer, "text", _number(value))
-    _sub(answer, "tolerance", _tolerance_text(tolerance(value, part.rtol, part.atol)))
-    _text(answer, "feedback", "", format="html")
-    for tag, setting in (("unitgradingtype", "0"), ("unitpenalty", "0"), ("showunits", "3"),
-                         ("unitsleft", "0")):
-        _sub(question, tag, setting)
-
-
-def _cloze_question(quiz: ET.Element, described: ExerciseEntry, variant: VariantEntry,
-                    text: str) -> None:
-    """Every part as an embedded field (weights: the parts' relative points), or as a line
-    saying why Moodle cannot check it."""
-    gradable = [p for p in described.parts if MOODLE_KINDS[p.kind].field is not None]
-    smallest = min((p.points for p in gradable if p.points > 0), default=1.0)
-    lines = []
-    for part in described.parts:
-        label = _html(part.label)
-        unit = f" {_html(pretty_unit(part.unit))}" if part.unit else ""
-        form = MOODLE_KINDS[part.kind]
-        if form.field is None:
-            lines.append(f"<li>{label}: not part of this quiz ({form.absent})</li>")
-            continue
-        weight = max(1, round(part.points / smallest))  # Moodle wants integers
-        lines.append(f"<li>{label}: {form.field(part, variant.answers[part.name], weight)}"
-                     f"{unit}</li>")
-    _question_head(quiz, "cloze", described, variant,
-                   text + "<ol>" + "".join(lines) + "</ol>")
-
-
-def _html(text: str) -> str:
+def _html(text: str, quote: bool = False) -> str:
     import html
 
-    return html.escape(text, quote=False)
+    return html.escape(text, quote=quote)

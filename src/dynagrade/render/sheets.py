@@ -23,7 +23,7 @@ import jinja2
 from markupsafe import Markup
 
 from .accessible_svg import svg_text_alternative
-from .figures import inline_svg
+from .figures import inline_svg, scale_phrase
 from ..exercise.numbers import format_number, points_phrase, points_text
 from .markup import inline_html, inline_typst, markdown_to_html, markdown_to_typst, typst_text
 from .mathtex import typst_string
@@ -57,6 +57,12 @@ class SheetExercise:
     fill_in: str  # the name of the fill-in file
     svg: str | None = None
     figure_file: str | None = None  # relative to the sheet, for the Markdown link
+    to_scale: bool = False  # the exercise's figure_to_scale
+
+    @property
+    def scale_phrase(self) -> str:
+        """The caption's words on the figure's scale."""
+        return scale_phrase(self.to_scale)
 
 
 @dataclass(frozen=True)

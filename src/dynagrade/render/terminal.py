@@ -92,6 +92,8 @@ def verify_progress(exercises: Sequence, check: Callable) -> list:
         else:
             out.print(f"[red]FAIL[/]  {report.exercise_id}: {len(report.failures)} problems "
                       f"in {report.variants} variants")
+        out.print(f"        {report.redraws.describe()}", soft_wrap=True, markup=False)
+        if not report.ok:
             for failure in report.failures[:10]:
                 out.print(f"        {failure}", soft_wrap=True)
             if len(report.failures) > 10:
