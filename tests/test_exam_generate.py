@@ -22,6 +22,7 @@ from dynagrade.exam.manifest import VariantEntry
 from dynagrade.exercise.loader import open_bank
 from dynagrade.exercise.numbers import format_number
 from dynagrade.exercise.seeds import exam_seed, variant_token
+from dynagrade.render.figures import figure_svg
 from dynagrade.render.moodle import variant_idnumber
 from moodle_reader import read_fields
 
@@ -109,9 +110,16 @@ def test_every_student_gets_sheets_fill_in_files_and_figures(exam, bank):
             assert f"VARIANT = {token!r}" in fill_in and "SEED" not in fill_in
             assert str(entry["seed"]) not in fill_in and SECRET not in fill_in
             assert f"STUDENT = {student['student_id']!r}" in fill_in
-            assert f"figures/{entry['exercise']}.svg" in markdown
-            svg = (folder / "figures" / f"{entry['exercise']}.svg").read_text(encoding="utf-8")
+            # the figure is beside the fill-in file, named in its header and linked
+            # from the sheet: the same drawing the exam's sheets show
+            figure = f"{entry['exercise']}.svg"
+            assert f"]({figure})" in markdown
+            assert f"Figure: {figure}, in the folder of this file." in fill_in
+            svg = (folder / figure).read_text(encoding="utf-8")
             assert svg.lstrip().startswith("<?xml") and "<svg" in svg
+            exercise = bank.get(entry["exercise"])
+            assert svg == figure_svg(exercise, exercise.variant_from_params(
+                entry["seed"], entry["params"]))
         assert html.count("<svg") == 3 and "<math" in html
         assert "<script" not in html and "http://cdn" not in html and "https://" not in html
 

@@ -78,7 +78,8 @@ def test_a_figure_that_prints_an_answer_is_caught(bank):
 DRAWN_TO_SCALE = {
     "oblique-wall-impact", "block-sliding-down-incline", "projectile-range",
     "car-in-a-looping", "elastic-slingshot", "sliding-up-a-slope", "crank-slider-velocity",
-    "rolling-wheel-rim-velocity", "rod-struck-by-particle"}
+    "rolling-wheel-rim-velocity", "rod-struck-by-particle", "dumbbell-angular-momentum",
+    "pucks-centre-of-mass"}
 
 
 def test_the_bank_says_which_figures_are_drawn_to_scale(bank):

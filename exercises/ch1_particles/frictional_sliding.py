@@ -28,7 +28,7 @@ The coefficient of kinetic friction is $\\mu$ = {{ mu }}; $g$ = {{ g }}.
 
 1. How far does it slide before it stops?
 2. How long does it slide?
-3. How much work does friction do on it over that distance?
+3. What is the work $W$ that friction does on the crate over that distance, with its sign?
 4. Write the stopping distance as a formula in $v_0$, $\\mu$ and $g$.
 """,
     solution=r"""

@@ -70,8 +70,8 @@ EXERCISE = Exercise(
     ),
     statement="""
 A particle of mass $m$ = {{ m }} on a taut string of length $l$ = {{ l }} is swung around
-a fixed point on a smooth horizontal table at a constant $n$ = {{ n }} revolutions per
-minute. Gravity acts perpendicular to the table.
+a fixed point on a smooth horizontal table at the constant rate $n$ = {{ n }} (revolutions
+per minute). Gravity acts perpendicular to the table.
 
 1. What is the force in the string?
 2. What is the particle's speed?

@@ -44,7 +44,8 @@ with $k$ = {{ k }}. At $t = 0$ it turns at $\\dot\\varphi_0$ = {{ omega0 }}.
 1. What is the magnitude of the drag torque about the axis at $t = 0$?
 2. What is the angular velocity at $t$ = {{ t }}?
 3. After what time has the angular velocity halved?
-4. Through what total angle (in rad) does the particle turn before it stops?
+4. Through what total angle (in rad) does the particle turn as $t \\to \\infty$, while it slows
+   down towards rest (it never quite stops)?
 5. Write $\\dot\\varphi(t)$ as a formula in $\\dot\\varphi_0$ (write `omega0`), $k$, $m$ and $t$.
 """,
     solution=r"""

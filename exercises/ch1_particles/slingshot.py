@@ -4,15 +4,16 @@ eqs. 1.124-1.125)."""
 import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
-from dynagrade.exercise.figure import dimension, ground, new_drawing, spring
+from dynagrade.exercise.figure import describe, dimension, ground, new_drawing, spring
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import energy
 
 
 def figure(p):
-    """The slingshot to scale in centimetres: the fixed point at height l0 above the floor,
-    the particle pulled sideways by dx on the spring, and its position below the fixed point
-    (dashed) that it passes after the release (Example 1.14)."""
+    """The slingshot to scale in centimetres: the fixed point at height l0 above the slot's
+    floor, the particle in the slot pulled sideways by dx on the spring, and its position
+    below the fixed point (dashed) that it passes after the release (Example 1.14). The
+    slot's upper lip is drawn light, behind the spring."""
     from dynagrade.exercise.figure import Circle
 
     l0, dx = 100 * p.l0, 100 * p.dx
@@ -24,6 +25,10 @@ def figure(p):
                           zorder=3))
     axes.plot([-0.06 * size, 0.06 * size], [l0 + 0.025 * size] * 2, color="0.1", lw=1.6)
     radius = 0.04 * size
+    lip = 2.4 * radius
+    axes.plot([-0.35 * size, dx + 0.2 * size], [lip, lip], color="0.55", lw=1.0, zorder=0)
+    describe(axes, "The particle slides in a smooth horizontal slot, between its floor and "
+             "its upper lip drawn in light grey.")
     spring(axes, top, (dx, radius), coils=7, width=0.06 * size)
     axes.add_patch(Circle((dx, radius), radius, facecolor="C0", edgecolor="0.1", lw=1.0,
                           zorder=3))
@@ -65,9 +70,10 @@ EXERCISE = Exercise(
     ),
     statement="""
 A linear spring of stiffness $k$ = {{ k }} and natural length $l_0$ = {{ l0 }} is fixed at
-one end to a point at height $l_0$ above a smooth floor; its other end holds a particle of
-mass $m$ = {{ m }} on the floor, directly below the fixed point. The particle is pulled
-sideways along the floor by $\\Delta x$ = {{ dx }} and released from rest.
+one end to a point at height $l_0$ above a straight horizontal slot; its other end holds a
+particle of mass $m$ = {{ m }} that slides without friction in the slot, which holds it
+down against the spring's upward pull. The particle starts directly below the fixed
+point, is pulled sideways along the slot by $\\Delta x$ = {{ dx }} and released from rest.
 
 1. By how much is the spring stretched before release?
 2. How much energy does the spring store then?
@@ -75,8 +81,8 @@ sideways along the floor by $\\Delta x$ = {{ dx }} and released from rest.
 4. Write that speed as a formula in $k$, $m$, $\\Delta x$ (write `dx`) and $l_0$.
 """,
     solution=r"""
-The floor is smooth and gravity is perpendicular to the motion, so the spring force is the
-only force doing work, and it is conservative: the energy $T + V$ is conserved
+The slot is smooth and, like gravity, pushes perpendicular to the motion, so the spring
+force is the only force doing work, and it is conservative: the energy $T + V$ is conserved
 (eq. (1.102), Example 1.14).
 
 1. **Stretch.** Pulled aside by $\Delta x$, the spring reaches from the fixed point at height

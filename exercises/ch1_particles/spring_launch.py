@@ -34,9 +34,10 @@ EXERCISE = Exercise(
         Constraint("the height stays below 100 m", lambda p: solve(p)["h"] < 100),
     ),
     statement="""
-A particle of mass $m$ = {{ m }} rests on a vertical spring (stiffness $k$ = {{ k }})
-that is compressed by $\\Delta x$ = {{ dx }}. The spring is released and launches the
-particle straight up; $g$ = {{ g }}, no air drag, the spring is massless.
+A particle of mass $m$ = {{ m }} sits on a vertical spring (stiffness $k$ = {{ k }}),
+and both are held with the spring compressed by $\\Delta x$ = {{ dx }}. They are released
+from rest, and the spring launches the particle straight up; $g$ = {{ g }}, no air drag,
+the spring is massless.
 
 1. How high above its starting point does the particle rise?
 2. How much energy was stored in the spring?

@@ -4,6 +4,7 @@ fixed point (Section 2.2.3)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.figure import angle_arc, arrow, describe, dimension, new_drawing
 from dynagrade.mechanics import systems
 
 
@@ -18,6 +19,63 @@ def _state(p):
     rot = p.omega * np.array([[0.0, -1.0], [1.0, 0.0]])
     v = np.array([[p.v, 0.0] + rot @ (ri - centre) for ri in r])
     return masses, r, v
+
+
+def figure(p):
+    """The dumbbell to scale at the instant considered: the balls where :func:`_state`
+    puts them about the centre of mass C (their distances from C in the ratio m2 : m1,
+    Section 2.2.1), C at the height d above O with its velocity v along e1, the spin
+    omega and the angle phi of the rod; the unit vectors e1, e2 at O."""
+    from dynagrade.exercise.figure import Circle
+
+    _, r, _ = _state(p)
+    size = max(p.L, p.d)
+    drawing, axes = new_drawing(5.0, 3.2)
+    unit = 0.22 * size
+    arrow(axes, (0.0, 0.0), (unit, 0.0), "e₁", offset=(0.0, -0.06 * size), color="0.3")
+    arrow(axes, (0.0, 0.0), (0.0, unit), "e₂", offset=(-0.07 * size, 0.0), color="0.3")
+    axes.add_patch(Circle((0.0, 0.0), 0.02 * size, facecolor="0.1", zorder=3))
+    axes.text(-0.04 * size, -0.05 * size, "O", ha="right", va="top", fontsize=10)
+    centre = np.array([0.0, p.d])
+    axes.plot(*zip(*r), color="0.3", lw=2.5, solid_capstyle="round")
+    heavier = max(p.m1, p.m2)
+    for point, mass, name in zip(r, (p.m1, p.m2), ("m₁", "m₂")):
+        radius = 0.07 * size * (mass / heavier) ** (1 / 3)
+        axes.add_patch(Circle(tuple(point), radius, facecolor="C0", edgecolor="0.1",
+                              lw=1.0, zorder=3))
+        outward = (point - centre) / np.linalg.norm(point - centre)
+        axes.text(*(point + outward * (radius + 0.07 * size)), name, ha="center",
+                  va="center", fontsize=10)
+    axes.add_patch(Circle(tuple(centre), 0.025 * size, facecolor="white", edgecolor="0.1",
+                          lw=1.0, zorder=4))
+    axes.plot([0.0, 0.0], [unit, p.d], color="0.5", lw=0.6, ls=":")
+    arrow(axes, tuple(centre), tuple(centre + [0.35 * size, 0.0]), "v",
+          offset=(0.0, 0.05 * size), color="C3")
+    axes.plot([0.0, 0.2 * size], [p.d, p.d], color="0.5", lw=0.6, ls="-.")
+    angle_arc(axes, tuple(centre), 0.12 * size, 0.0, p.phi, "φ", label_radius=0.2 * size)
+    spin = 0.3 * size
+    start, end = p.phi + np.pi / 2 - 0.5, p.phi + np.pi / 2 + 0.5   # beside the rod
+    axes.annotate("", xy=tuple(centre + spin * np.array([np.cos(end), np.sin(end)])),
+                  xytext=tuple(centre + spin * np.array([np.cos(start), np.sin(start)])),
+                  arrowprops={"arrowstyle": "-|>", "color": "#23802a", "lw": 1.3,
+                              "connectionstyle": "arc3,rad=0.3", "shrinkA": 0,
+                              "shrinkB": 0})
+    middle = (start + end) / 2
+    axes.text(*(centre + (spin + 0.08 * size) * np.array([np.cos(middle), np.sin(middle)])),
+              "ω", color="#23802a", ha="center", va="center", fontsize=10)
+    below = p.phi - np.pi / 2 - 0.4             # the side of the rod away from omega
+    axes.text(*(centre + 0.08 * size * np.array([np.cos(below), np.sin(below)])), "C",
+              ha="center", va="center", fontsize=10)
+    dimension(axes, (0.0, 0.0), tuple(centre), "d", offset=0.45 * size, tick=0.03 * size,
+              side=-1.0)
+    describe(axes, "The centre of mass C is straight above O and moves to the right; the "
+             "dumbbell spins counter-clockwise. The angle φ is measured counter-clockwise "
+             "from the horizontal to the rod, which points from m₁ to m₂.")
+    reach = max(0.55 * size, p.L)
+    axes.set_xlim(-reach - 0.15 * size, reach + 0.15 * size)
+    axes.set_ylim(min(-0.15 * size, float(r[:, 1].min()) - 0.15 * size),
+                  p.d + max(0.45 * size, float(r[:, 1].max() - p.d) + 0.15 * size))
+    return drawing
 
 
 @per_draw
@@ -59,11 +117,13 @@ EXERCISE = Exercise(
     ),
     statement=r"""
 Two small balls, $m_1$ = {{ m1 }} and $m_2$ = {{ m2 }}, are joined by a light rod of length
-$L$ = {{ L }} and fly in a vertical plane. At the instant considered the centre of mass
-C is at height $d$ = {{ d }} above the point O on the ground, it moves horizontally
-(along $e_1$) with speed $v$ = {{ v }}, and the dumbbell spins counter-clockwise (seen
-from $+e_3$) with $\omega$ = {{ omega }}; the rod makes the angle $\varphi$ = {{ phi }}
-with $e_1$.
+$L$ = {{ L }} and fly in a vertical plane, in which $e_1$ points horizontally to the right
+and $e_2$ vertically up; $e_3 = e_1 \times e_2$ points out of the plane, toward the viewer.
+At the instant considered the centre of mass C is at the height $d$ = {{ d }} straight
+above a fixed point O (so $r_{OC} = d\,e_2$), it moves horizontally along $+e_1$ with
+speed $v$ = {{ v }}, and the dumbbell spins counter-clockwise (seen from $+e_3$) with
+$\omega$ = {{ omega }}; the rod, pointing from $m_1$ to $m_2$, makes the angle
+$\varphi$ = {{ phi }} with $e_1$ (counter-clockwise).
 
 1. What is the angular momentum of the dumbbell about its centre of mass ($e_3$ component)?
 2. What is its angular momentum about the fixed point O ($e_3$ component)?
@@ -85,6 +145,8 @@ $M = m_1 + m_2$ = {{ si.M }} kg (with $m_1$ = {{ m1 }} and $m_2$ = {{ m2 }}).
    Hence $H_O = H_C - M d v$ = {{ answers.H_O }}.
 """,
     solve=solve,
+    figure=figure,
+    figure_to_scale=True,
     parts=(
         Numeric("H_C", "angular momentum about C", question=1, unit="kg*m^2/s", points=2,
                 misconceptions=(

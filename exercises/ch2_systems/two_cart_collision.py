@@ -23,8 +23,8 @@ def _cart(axes, left, width, name):
 
 def figure(p):
     """The two carts on their track just before the impact, with velocity arrows drawn to a
-    common scale in the direction of motion (Section 2.3.1). A cart's width grows with the
-    cube root of its mass, like that of a solid body."""
+    common scale in the direction of motion and labelled with the speed (Section 2.3.1).
+    A cart's width grows with the cube root of its mass, like that of a solid body."""
     w1, w2 = 0.5 * p.m1 ** (1 / 3), 0.5 * p.m2 ** (1 / 3)
     scale = 0.12                                   # arrow length per m/s
     gap = 1.2
@@ -37,10 +37,14 @@ def figure(p):
         centre = left + width / 2
         axes.text(centre, 0.52, f"m{name} = {format_number(m)} kg", ha="center",
                   va="bottom", fontsize=10)
+        # the arrow gives the direction, its label the speed: a left arrow labelled with
+        # a negative velocity would read as a double negative
         if abs(v) > 1e-12:
             arrow(axes, (centre, 0.9), (centre + scale * v, 0.9), color="C3")
-        axes.text(centre, 1.0, f"v{name} = {format_number(v)} m/s", color="C3",
-                  ha="center", va="bottom", fontsize=10)
+            speed = f"|v{name}| = {format_number(abs(v))} m/s"
+        else:
+            speed = f"v{name} = 0"
+        axes.text(centre, 1.0, speed, color="C3", ha="center", va="bottom", fontsize=10)
     arrow(axes, (x2 + w2 + 0.3, 0.25), (x2 + w2 + 0.75, 0.25), color="0.3")
     axes.text(x2 + w2 + 0.52, 0.32, "+", ha="center", va="bottom", fontsize=10, color="0.3")
     axes.text(x1 + w1 + gap / 2, -0.2, f"e = {format_number(p.e)}", ha="center", va="top",

@@ -51,13 +51,7 @@ def figure(p):
     # the rod's green (C2) darkened for its label, which needs 4.5:1 on white
     axes.text(*(a + 0.55 * (b - a) + 2.2 * pin * np.array([-along[1], along[0]])), "l",
               ha="center", va="center", fontsize=10, color="#23802a")
-    angle_arc(axes, (0.0, 0.0), 0.3 * p.r, 0.0, p.theta)
-    bisector = np.array([np.cos(p.theta / 2), np.sin(p.theta / 2)])
-    # where the bisector of theta meets the rod: label inside the angle when there is room
-    rod = b - a
-    reach = (a[0] * rod[1] - a[1] * rod[0]) / (bisector[0] * rod[1] - bisector[1] * rod[0])
-    label_at = 0.6 * p.r if reach > 0.9 * p.r else reach + 3 * pin
-    axes.text(*(label_at * bisector), "θ", ha="center", va="center", fontsize=10)
+    _theta_label(axes, p.r, p.theta, a, b, pin)
     turn = p.r + 0.08 * size
     start, end = p.theta + 0.4, p.theta + 1.1
     axes.annotate("", xy=(turn * np.cos(end), turn * np.sin(end)),
@@ -74,6 +68,38 @@ def figure(p):
     axes.set_xlim(-turn - 4 * pin, b[0] + 0.26 * size)
     axes.set_ylim(low, turn + 4 * pin)
     return drawing
+
+
+def _distance_to_rod(direction, a, b) -> float:
+    """How far from O the ray along ``direction`` meets the rod AB (inf if it misses)."""
+    rod = b - a
+    det = direction[0] * -rod[1] + rod[0] * direction[1]
+    if abs(det) < 1e-12:
+        return np.inf
+    s = (a[0] * -rod[1] + rod[0] * a[1]) / det
+    t = (direction[0] * a[1] - direction[1] * a[0]) / det
+    return s if s > 0 and 0.0 <= t <= 1.0 else np.inf
+
+
+def _theta_label(axes, r, theta, a, b, pin) -> None:
+    """The arc of theta at O with its label beside it: inside the angle, just past the
+    arc, where the wedge between OB and the crank leaves room below the rod; otherwise
+    just outside the angle, tied to the arc's middle by a thin leader line."""
+    bisector = np.array([np.cos(theta / 2), np.sin(theta / 2)])
+    reach = _distance_to_rod(bisector, a, b)
+    radius = max(min(0.3 * r, 0.5 * reach), 1.6 * pin)
+    angle_arc(axes, (0.0, 0.0), radius, 0.0, theta)
+    inside = radius + 1.8 * pin
+    if inside * np.sin(theta / 2) >= 1.1 * pin and inside + 1.4 * pin < reach:
+        axes.text(*(inside * bisector), "θ", ha="center", va="center", fontsize=10)
+        return
+    if theta <= np.pi / 2:      # a narrow angle: the label below the line OB
+        label = np.array([radius * np.cos(theta / 2) + 2.5 * pin, -2.0 * pin])
+    else:                       # the rod runs close above O: the label above the rod
+        label = (reach + 2.2 * pin) * bisector
+    axes.plot(*zip(radius * bisector, label - 0.8 * pin * (label - radius * bisector)
+                   / np.linalg.norm(label - radius * bisector)), color="0.2", lw=0.6)
+    axes.text(*label, "θ", ha="center", va="center", fontsize=10)
 
 
 @per_draw
@@ -118,12 +144,15 @@ EXERCISE = Exercise(
                    and _distinct(solve(p)["omega_rod"], p.r * _crank_rate(p) / p.l)),
     ),
     statement=r"""
-In a crank-slider mechanism the crank OA (length $r$ = {{ r }}) turns counter-clockwise about
-the fixed pivot O at $n$ = {{ n }}. The connecting rod AB (length $l$ = {{ l }}) drives the
-slider B along the horizontal line through O. At the instant considered the crank makes
-the angle $\theta$ = {{ theta }} with the line OB (measured from OB, toward the side of A).
+In a crank-slider mechanism the crank OA (length $r$ = {{ r }}) turns about the fixed
+pivot O at $n$ = {{ n }}. The connecting rod AB (length $l$ = {{ l }}) drives the slider B
+along the horizontal line through O; B is to the right of O. At the instant considered
+the crank pin A is above that line and the crank makes the angle $\theta$ = {{ theta }}
+with OB, measured counter-clockwise from OB; the crank turns counter-clockwise too, so
+$\theta$ grows.
 
-1. What is the velocity of the slider (positive away from O)?
+1. What is the velocity of the slider, positive to the right (away from O) and negative
+   toward O?
 2. What is the angular speed of the connecting rod?
 """,
     solution=r"""

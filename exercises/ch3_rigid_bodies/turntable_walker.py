@@ -53,7 +53,7 @@ $\dot\Omega$ = {{ Omega_dot }}. Use the turntable's radial and circumferential u
 vectors $e_r$, $e_\varphi$ at the person's position.
 
 1. What is the person's absolute acceleration (components along $e_r$, $e_\varphi$)?
-2. Which horizontal force must the floor exert on the person?
+2. What is the magnitude of the horizontal force the floor must exert on the person?
 """,
     solution=r"""
 The person's motion is known relative to the turning turntable, so the absolute

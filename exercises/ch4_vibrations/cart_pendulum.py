@@ -7,6 +7,8 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Uniform,
                                 per_draw)
+from dynagrade.exercise.figure import angle_arc, arrow, block, describe, ground, new_drawing, \
+    spring, wall
 from dynagrade.mechanics import multi_dof
 
 
@@ -34,6 +36,55 @@ def matrices(p):
     stiffness, mass = _linearized()
     args = (p.M, p.m, p.L, p.k, p.g)
     return np.array(stiffness(*args), dtype=float), np.array(mass(*args), dtype=float)
+
+
+#: the angle at which the figure draws the pendulum, to show the positive sense of phi
+_SHOWN_PHI = np.radians(25)
+
+
+def figure(p):
+    """The cart on its track tied to the wall by the spring, and the pendulum hanging from
+    it, with the positive senses of the coordinates: x to the right from where the spring
+    is relaxed (dashed), phi counter-clockwise from the downward vertical, drawn at 25°.
+    Lengths in units of L; the cart's displacement and the angle are examples."""
+    from dynagrade.exercise.figure import Circle
+
+    width, height, wheel = 0.8, 0.3, 0.07
+    rest, shift = 0.9, 0.3                    # the cart's left side: relaxed, and displaced
+    left = rest + shift
+    drawing, axes = new_drawing(4.2, 3.4)
+    slot = left + width / 2                   # the track is open where the rod passes
+    ground(axes, -0.1, slot - 0.2, hatch=0.05)
+    ground(axes, slot + 0.2, left + width + 0.9, hatch=0.05)
+    wall(axes, 0.0, 0.0, 0.75, side=-1.0, hatch=0.05)
+    for x in (left + 0.2 * width, left + 0.8 * width):
+        axes.add_patch(Circle((x, wheel), wheel, facecolor="0.3", edgecolor="0.1", lw=0.8))
+    top = 2 * wheel + height
+    block(axes, (left + width / 2, 2 * wheel + height / 2), width, height, "M")
+    spring(axes, (0.0, 2 * wheel + height / 2), (left, 2 * wheel + height / 2), coils=6,
+           width=0.1)
+    axes.text(left / 2, 2 * wheel + height / 2 + 0.1, "k", ha="center", va="bottom",
+              fontsize=10)
+    axes.plot([rest + width / 2] * 2, [top + 0.05, top + 0.45], color="0.5", lw=0.8, ls="--")
+    arrow(axes, (rest + width / 2, top + 0.35), (left + width / 2, top + 0.35), "x",
+          offset=(0.0, 0.08), color="C3")
+    pivot = np.array([left + width / 2, 2 * wheel + 0.05])     # under the cart's label
+    bob = pivot + np.array([np.sin(_SHOWN_PHI), -np.cos(_SHOWN_PHI)])
+    axes.plot([pivot[0], pivot[0]], [pivot[1], pivot[1] - 1.1], color="0.5", lw=0.6, ls="-.")
+    axes.plot(*zip(pivot, bob), color="0.2", lw=1.8, zorder=2)
+    axes.add_patch(Circle(tuple(pivot), 0.03, facecolor="white", edgecolor="0.1", zorder=4))
+    axes.add_patch(Circle(tuple(bob), 0.08, facecolor="C0", edgecolor="0.1", zorder=3))
+    axes.text(bob[0] + 0.13, bob[1], "m", ha="left", va="center", fontsize=10)
+    middle = pivot + 0.5 * (bob - pivot)
+    axes.text(middle[0] + 0.1, middle[1] + 0.05, "L", ha="left", va="center", fontsize=10)
+    angle_arc(axes, tuple(pivot), 0.45, -np.pi / 2, -np.pi / 2 + _SHOWN_PHI, "φ",
+              label_radius=0.6)
+    describe(axes, "The cart is drawn displaced to the right of the dashed line where the "
+             "spring is relaxed; the arrow x points to the right. The pendulum is drawn "
+             "swung counter-clockwise from the downward vertical, the positive sense of φ.")
+    axes.set_xlim(-0.2, left + width + 0.95)
+    axes.set_ylim(pivot[1] - 1.2, top + 0.6)
+    return drawing
 
 
 def solve(p):
@@ -70,8 +121,10 @@ EXERCISE = Exercise(
 A cart of mass $M$ = {{ M }} rolls without friction on a horizontal track and is tied to
 a wall by a spring of stiffness $k$ = {{ k }}. From the cart hangs a pendulum: a point
 mass $m$ = {{ m }} on a massless rod of length $L$ = {{ L }}; $g$ = {{ g }}. Use the
-cart's displacement $x$ and the pendulum's angle $\\varphi$ from the vertical as
-generalized coordinates.
+cart's displacement $x$ from the position where the spring is relaxed (positive to the
+right) and the pendulum's angle $\\varphi$ from the downward vertical as generalized
+coordinates, $\\varphi$ positive counter-clockwise: the bob is then at
+$(x + L\\sin\\varphi,\\; -L\\cos\\varphi)$ from where the pivot is when the spring is relaxed.
 
 1. Linearize the Lagrange equations about $x = 0$, $\\varphi = 0$ into
    $\\mathbf M\\ddot{\\mathbf q} + \\mathbf K\\mathbf q = \\mathbf 0$ with $\\mathbf q = (x, \\varphi)$.
@@ -103,6 +156,7 @@ linearise the Lagrange equations about the rest position and solve the eigenvalu
    coupling moves both.
 """,
     solve=solve,
+    figure=figure,
     parts=(
         Numeric("M11", "mass matrix entry M11", question=1, unit="kg", points=1,
                 misconceptions=(Misconception("cart only", lambda p: p.M, "The bob moves with the cart: M11 = M + m."),)),

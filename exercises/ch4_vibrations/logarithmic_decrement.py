@@ -51,7 +51,8 @@ the peak $n$ = {{ n.value }} periods later is $x_n$ = {{ xn }}. The time between
 successive peaks is $T_d$ = {{ Td }}.
 
 1. What is the logarithmic decrement $\\delta$?
-2. What is the damping ratio $\\zeta$?
+2. What is the damping ratio $\\zeta$ (exactly, from $\\delta$, without the small-damping
+   approximation)?
 3. What is the undamped natural angular frequency $\\omega_n$?
 4. What are the stiffness $k$ and the damping coefficient $c$ of the mounting?
 """,

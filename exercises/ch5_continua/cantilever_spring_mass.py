@@ -40,7 +40,7 @@ EXERCISE = Exercise(
         Constraint("spring and beam are comparable (ratio 0.2 to 5)", lambda p: 0.2 <= p.k / k_beam(p) <= 5),
     ),
     statement="""
-A horizontal steel-like cantilever (Young's modulus $E$ = {{ E }}, length $L$ = {{ L }},
+A horizontal metal cantilever (Young's modulus $E$ = {{ E }}, length $L$ = {{ L }},
 rectangular section of width $b$ = {{ b }} and height $h$ = {{ h }}, bent about the width)
 is used to support a mass $m$ = {{ m }}. Neglect the beam's mass.
 

@@ -33,7 +33,8 @@ EXERCISE = Exercise(
     statement="""
 A long beam with a rectangular section (width $b$ = {{ b }}, height $h$ = {{ h }},
 $E$ = {{ E }}, $\\rho$ = {{ rho }}) is shaken transversely at one point with the frequency
-$f$ = {{ f }}, so that bending waves run along it (Euler–Bernoulli theory).
+$f$ = {{ f }}, in the direction of its height $h$, so that it bends about the axis along
+its width and bending waves run along it (Euler–Bernoulli theory).
 
 1. What is the wavelength of the bending waves?
 2. What is their phase speed?

@@ -37,9 +37,11 @@ linearly from the fixed end to the mass.
 
 1. What effective mass does the spring add to $m$?
 2. What are the natural frequency (in Hz) and the natural angular frequency of vertical vibrations?
-3. Treating the spring as a continuous elastic bar, the exact lowest frequency follows
-   from $\\kappa L\\tan(\\kappa L) = m_s/m$. By what relative amount does your estimate
-   exceed it ($\\omega_{\\text{est}}/\\omega_{\\text{exact}} - 1$)?
+3. Treating the spring as a continuous elastic bar of length $L$, along which longitudinal
+   waves travel at $c = L\\sqrt{k/m_s}$, the exact lowest angular frequency is
+   $\\omega_{\\text{exact}} = c\\,\\kappa$, where $\\kappa$ (the wavenumber) is the smallest
+   positive root of $\\kappa L\\tan(\\kappa L) = m_s/m$. By what relative amount does your
+   estimate exceed it ($\\omega_{\\text{est}}/\\omega_{\\text{exact}} - 1$)?
 4. Give $\\omega$ of part 2 as a formula in `k`, `m`, `m_s`.
 """,
     solution=r"""

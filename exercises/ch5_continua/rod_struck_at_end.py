@@ -62,7 +62,8 @@ velocity $v$ = {{ v }} along the rod by a hammer blow.
 1. With which speed does the disturbance travel along the rod?
 2. When does it reach the far end?
 3. What compressive stress does the wave carry?
-4. Give the first two natural frequencies (in Hz) of longitudinal vibration of the free rod as a vector $[f_1, f_2]$.
+4. Give the first two non-zero natural frequencies (in Hz) of longitudinal vibration of the
+   free rod as a vector $[f_1, f_2]$.
 """,
     solution=r"""
 Longitudinal motion of a slender rod obeys the wave equation $u_{tt} = c^2 u_{xx}$ with

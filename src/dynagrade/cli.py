@@ -200,27 +200,38 @@ def solve(context, exercise_id, seed, settings, as_json, force):
 @click.argument("exercise_id")
 @click.option("--student", required=True, help="The student's id.")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
-              help="Where to write the file (default: print it).")
+              help="Where to write the file (default: print it). The exercise's figure, "
+                   "if it draws one, is written beside it as <exercise-id>.svg.")
 @click.option("--solution", is_flag=True,
               help="End the file with the worked solution, as comments (for practice).")
 @click.pass_obj
 def sheet(context, exercise_id, student, output, solution):
-    """Write a student's fill-in file for an exercise."""
+    """Write a student's fill-in file for an exercise, and its figure beside it."""
     from .exercise.seeds import student_seed
-    from .exercise.sheet import write_sheet
+    from .exercise.sheet import figure_file_name, write_sheet
     from .exercise.solution import as_comments
 
     exercise = context.exercise(exercise_id)
     variant = exercise.variant(student_seed(exercise.id, student))
     filename = Path(output).name if output else "exercise.py"
-    text = write_sheet(exercise, variant, student, filename)
+    figure = figure_file_name(exercise) if output and exercise.figure is not None else None
+    text = write_sheet(exercise, variant, student, filename, figure=figure)
     if solution:
         text += as_comments(exercise, _solution(exercise, variant))
-    if output:
-        Path(output).write_text(text, encoding="utf-8")
-        click.echo(f"wrote {output}: {exercise.title}, variant of {student}", err=True)
-    else:
+    if not output:
         click.echo(text)
+        if exercise.figure is not None:
+            click.echo(f"note: {exercise.id} has a figure; write the sheet with -o FILE to "
+                       f"get it beside the file as {figure_file_name(exercise)}", err=True)
+        return
+    Path(output).write_text(text, encoding="utf-8")
+    click.echo(f"wrote {output}: {exercise.title}, variant of {student}", err=True)
+    if figure is not None:
+        from .render.figures import figure_svg
+
+        figure_path = Path(output).parent / figure
+        figure_path.write_text(figure_svg(exercise, variant), encoding="utf-8")
+        click.echo(f"wrote {figure_path}: its figure", err=True)
 
 
 @main.command()

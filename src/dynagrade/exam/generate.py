@@ -5,8 +5,8 @@ Output folder::
 
     manifest.json                   the exam, exercises (file hash, parts, points) and every
                                     student's variants: seed, parameters, reference answers
-    students/<student_id>/sheet.pdf, sheet.html, sheet.md, <exercise-id>.py,
-                          figures/<exercise-id>.svg
+    students/<student_id>/sheet.pdf, sheet.html, sheet.md, <exercise-id>.py and
+                          beside it <exercise-id>.svg (its figure, if it draws one)
     sheets.pdf                      every student's sheet, for printing (the students' PDFs
                                     embedded page by page)
     students/<student_id>/solution.md, solution.html, solution.pdf

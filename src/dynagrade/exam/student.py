@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 from ..exercise.model import Exercise, Variant
 from ..exercise.seeds import variant_token
-from ..exercise.sheet import write_sheet
+from ..exercise.sheet import figure_file_name, write_sheet
 from ..exercise.units import pretty_unit
 from ..render.pdf import ACCESSIBLE
 from ..render.sheets import (SheetExercise, SheetPart, StudentSheet, sheet_html,
@@ -74,22 +74,24 @@ def student_job(run: GenerationRun, student: Student) -> StudentResult:
 def _exercise_files(run: GenerationRun, student: Student, number: int, item: ExamExercise,
                     exercise: Exercise, variant: Variant,
                     timings: dict[str, float]) -> SheetExercise:
-    """The fill-in file and figure of one exercise; its section of the sheet."""
+    """The fill-in file and, beside it, the figure of one exercise; its section of the
+    sheet (whose Markdown links the same figure file)."""
     folder = run.out_dir / "students" / student.student_id
     scaled = run.parts[exercise.id]
     fill_in = f"{exercise.id}.py"
     token = (variant_token(run.spec.secret, run.spec.id, student.student_id, exercise.id,
                            variant.seed) if run.spec.mode == "exam" else None)
-    write_atomic(folder / fill_in, write_sheet(exercise, variant, student.student_id, fill_in,
-                                               {entry.name: entry.points for entry in scaled},
-                                               token=token, exam_id=run.spec.id))
     started = time.process_time()
     svg = run.figures(exercise, variant)
     timings["figures"] += time.process_time() - started
     figure_file = None
     if svg is not None:
-        figure_file = f"figures/{exercise.id}.svg"
+        figure_file = figure_file_name(exercise)
         write_atomic(folder / figure_file, svg)
+    write_atomic(folder / fill_in, write_sheet(exercise, variant, student.student_id, fill_in,
+                                               {entry.name: entry.points for entry in scaled},
+                                               token=token, exam_id=run.spec.id,
+                                               figure=figure_file))
     parts = tuple(SheetPart(entry.name, entry.label, entry.kind, pretty_unit(entry.unit),
                             entry.points, part.input_hint())
                   for entry, part in zip(scaled, exercise.parts))

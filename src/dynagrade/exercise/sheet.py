@@ -77,21 +77,31 @@ class Sheet:
         return self.token is not None
 
 
+def figure_file_name(exercise: Exercise) -> str:
+    """The name of the exercise's figure written beside its fill-in file."""
+    return f"{exercise.id}.svg"
+
+
 def write_sheet(exercise: Exercise, variant: Variant, student: str | None,
                 filename: str = "exercise.py", points: Mapping[str, float] | None = None,
-                token: str | None = None, exam_id: str | None = None) -> str:
+                token: str | None = None, exam_id: str | None = None,
+                figure: str | None = None) -> str:
     """The text of a fill-in file for ``variant``; ``points`` gives each part's points as
     an exam scales them (the printed sheet shows the same), else the part's own.
 
     With ``token`` (an exam's variant token) the file carries that token instead of the
     seed, and its guide says that ``grade`` only checks that the answers can be read;
-    ``exam_id`` names the exam (or homework) the file belongs to."""
+    ``exam_id`` names the exam (or homework) the file belongs to; ``figure`` names the
+    variant's figure written beside the file (see :func:`figure_file_name`), which the
+    header then points to."""
     points = points or {}
     guide = GUIDE.format(filename=filename)
     if token is not None:
         guide = guide.replace(f"then run `grade {filename}`.", EXAM_CHECK.format(
             filename=filename))
     lines = ['"""', f"{exercise.title} ({exercise.source})", ""]
+    if figure is not None:
+        lines += [f"Figure: {figure}, in the folder of this file.", ""]
     lines += _docstring_safe(variant.statement).rstrip().splitlines()
     lines += ["", *guide.rstrip().splitlines(), '"""', ""]
     lines += [f"EXAM = {exam_id!r}"] if exam_id is not None else []

@@ -26,6 +26,21 @@ def centre_of_mass(masses: ArrayLike, positions: ArrayLike) -> Quantity:
     return (m[:, None] * r).sum(axis=0) / m.sum()
 
 
+def centre_of_mass_velocity(masses: ArrayLike, velocities: ArrayLike) -> Quantity:
+    """Velocity of the centre of mass, v_C = dr_C/dt = (1/M) sum m_i v_i, the mass-weighted
+    mean of the particles' velocities (the time derivative of r_C, Section 2.1)."""
+    return centre_of_mass(masses, velocities)
+
+
+def positions_relative_to_centre_of_mass(masses: ArrayLike, positions: ArrayLike) -> Quantity:
+    """Each particle's position relative to the centre of mass, rho_i = r_i - r_C, so that
+    r_i = r_C + rho_i and sum m_i rho_i = 0 (relative coordinates, Section 2.1). Applied to
+    velocities it gives the velocities relative to the centre of mass, v_i - v_C."""
+    m = as_floats(masses)
+    r = as_vectors(positions, m.size)
+    return r - centre_of_mass(m, r)
+
+
 def total_momentum(masses: ArrayLike, velocities: ArrayLike) -> Quantity:
     """Total linear momentum P = sum m_i v_i = M v_C of a system (Section 2.2.1)."""
     m = as_floats(masses)

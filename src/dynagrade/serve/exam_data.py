@@ -98,11 +98,14 @@ class ExamData:
         """The figure ``dynagrade exam`` drew for the student's variant, inline."""
         from ..render.figures import inline_svg
 
-        path = self.path.parent / "students" / student_id / "figures" / f"{exercise_id}.svg"
-        try:
-            return inline_svg(path.read_text(encoding="utf-8"), f"figure-{exercise_id}-")
-        except (OSError, UnicodeDecodeError):
-            return None
+        folder = self.path.parent / "students" / student_id
+        # beside the fill-in file; exams generated before kept figures in figures/
+        for path in (folder / f"{exercise_id}.svg", folder / "figures" / f"{exercise_id}.svg"):
+            try:
+                return inline_svg(path.read_text(encoding="utf-8"), f"figure-{exercise_id}-")
+            except (OSError, UnicodeDecodeError):
+                continue
+        return None
 
     # -- reading and grading --------------------------------------------------------------
 
