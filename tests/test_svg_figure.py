@@ -44,8 +44,9 @@ def test_data_are_drawn_at_equal_scale_in_points():
     drawing, axes = _wide_drawing()
     axes.plot([0.0, 10.0, 10.0], [0.0, 0.0, 2.0], color="0.1", lw=1.2)
     path = _root(drawing).find(f".//{SVG}path")
-    assert _path_points(path.get("d")) == pytest.approx(
-        [(3.6, 143.28), (356.4, 143.28), (356.4, 72.72)], abs=0.006)
+    drawn = [coordinate for point in _path_points(path.get("d")) for coordinate in point]
+    # pytest.approx compares flat sequences only: the points as x0, y0, x1, y1, ...
+    assert drawn == pytest.approx([3.6, 143.28, 356.4, 143.28, 356.4, 72.72], abs=0.006)
     assert "stroke:#1a1a1a" in path.get("style") and "stroke-width:1.2" in path.get("style")
 
 
