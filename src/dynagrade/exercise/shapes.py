@@ -16,6 +16,7 @@ Usage::
 from __future__ import annotations
 
 import math
+from abc import ABC, abstractmethod
 
 from ..errors import DefinitionError
 
@@ -43,7 +44,7 @@ def _point(value, where: str) -> tuple[float, float]:
         raise DefinitionError(f"{where}: expected a point (x, y), got {value!r}") from None
 
 
-class Shape:
+class Shape(ABC):
     """A filled or outlined shape: its fill and outline colours (``None`` for none), the
     outline's width (pt) and style, and its zorder (matplotlib's default 1)."""
 
@@ -51,18 +52,10 @@ class Shape:
 
     def __init__(self, *, facecolor=None, edgecolor=None, color=None, fill=True,
                  linewidth=None, linestyle="-", zorder=1.0, name="shape", **aliases):
-        for alias, full in (("fc", "facecolor"), ("ec", "edgecolor"), ("lw", "linewidth"),
-                            ("ls", "linestyle")):
-            if alias in aliases:
-                value = aliases.pop(alias)
-                if full == "facecolor":
-                    facecolor = value
-                elif full == "edgecolor":
-                    edgecolor = value
-                elif full == "linewidth":
-                    linewidth = value
-                else:
-                    linestyle = value
+        facecolor = aliases.pop("fc", facecolor)  # matplotlib's short keyword names
+        edgecolor = aliases.pop("ec", edgecolor)
+        linewidth = aliases.pop("lw", linewidth)
+        linestyle = aliases.pop("ls", linestyle)
         if aliases:
             raise DefinitionError(f"{name}: unknown keyword {sorted(aliases)[0]!r}")
         if color is not None:
@@ -88,9 +81,9 @@ class Shape:
     def get_zorder(self) -> float:
         return self.zorder
 
+    @abstractmethod
     def outline(self) -> list[tuple[float, float]]:
         """Points on the shape's outline, in data coordinates (for its extent)."""
-        raise NotImplementedError
 
 
 class Polygon(Shape):
