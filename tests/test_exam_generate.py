@@ -149,6 +149,44 @@ def test_every_pdf_opens_and_shows_the_students_own_numbers(exam, bank):
     assert combined.count("Exercise 1:") == len(exam["manifest"]["students"])
 
 
+def _page_texts(pdf: Path) -> list[str]:
+    from dynagrade.render.pdf import page_count
+
+    return [subprocess.run(["pdftotext", "-layout", "-f", str(n), "-l", str(n), str(pdf), "-"],
+                           check=True, capture_output=True, text=True, timeout=60).stdout
+            for n in range(1, page_count(pdf.read_bytes()) + 1)]
+
+
+def _header(page: str) -> str:
+    return " ".join(page.strip().splitlines()[0].split())
+
+
+@pytest.mark.skipif(shutil.which("pdftotext") is None,
+                    reason="pdftotext missing: install the apt package poppler-utils")
+def test_every_page_of_a_sheet_names_its_student_in_the_header_the_first_too(exam):
+    title = exam["manifest"]["exam"]["title"]
+    for student in exam["manifest"]["students"]:
+        pages = _page_texts(exam["out"] / "students" / student["student_id"] / "sheet.pdf")
+        assert len(pages) >= 2
+        for page in pages:
+            assert _header(page) == f"{title} {student['name']} ({student['student_id']})"
+
+
+@pytest.mark.skipif(shutil.which("pdftotext") is None,
+                    reason="pdftotext missing: install the apt package poppler-utils")
+def test_sheets_laid_out_in_one_document_name_each_pages_own_student(tmp_path):
+    from dynagrade.render.pdf import compile_pdf
+    from dynagrade.render.sheets import StudentSheet, sheet_typst_body, typst_preamble
+
+    exam = {"id": "e", "title": "Midterm", "date": "2025-01-01", "instructions": ""}
+    owners = [("a-1", "Ada Lovelace"), ("b-2", "Emmy Noether"), ("c-3", "Sophie Germain")]
+    bodies = [sheet_typst_body(StudentSheet(exam, sid, name, ())) for sid, name in owners]
+    pdf = tmp_path / "all.pdf"
+    pdf.write_bytes(compile_pdf(typst_preamble(exam) + "\n#pagebreak(weak: true)\n".join(bodies)))
+    assert [_header(page) for page in _page_texts(pdf)] == [
+        f"Midterm {name} ({sid})" for sid, name in owners]
+
+
 def _by_idnumber(manifest: dict) -> dict:
     """Every variant of a manifest under the idnumber the Moodle export gives it."""
     return {variant_idnumber(VariantEntry(v["exercise"], v["seed"], v["params"], {})): v

@@ -15,9 +15,11 @@ Output folder::
     key.csv, key.pdf                answer keys
     moodle.xml                      a question category per exercise, a question per variant
 
-This module is the driver: it loads the exam into a run (:mod:`.run`), has each
-student's work done in a pool of processes (:mod:`.student`, :mod:`.workers`), then
-writes the keys, the Moodle export, the printing PDF and the manifest. Results are put
+This module is the driver: it loads the exam into a run (:mod:`.run`), has a pool of
+processes (:mod:`.workers`) choose every student's variants (:mod:`.student`), which
+gives the manifest and the answer keys; while one worker compiles the key's PDF, the
+pool writes each student's folder; then the Moodle export (in a worker) and the printing
+PDFs, and the manifest. Results are put
 together in roster order, so the files do not depend on the pool. Everything is built in
 a staging folder beside the output folder and swapped in when complete
 (:mod:`.outputs`): the output folder holds exactly one whole exam, the one before it is
@@ -46,7 +48,8 @@ from .run import GenerationRun, file_sha256
 from .skew import skew_warnings
 from .solutions import solutions_title
 from .spec import ExamSpec, ExamSpecError, Student, read_exam_spec, read_roster
-from .student import STAGES, StudentResult, student_job
+from .student import (STAGES, StudentResult, StudentVariants, student_files,
+                      student_variants)
 from .workers import Pool, default_jobs
 
 Progress = Callable[[str, int, int], None]
@@ -86,20 +89,25 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
     report.timings["load"] = time.perf_counter() - started
     with Pool(run, default_jobs(jobs)) as pool:
         stage = time.perf_counter()
-        results = _students(pool, roster, progress)
+        chosen = _variants(pool, roster, progress)
+        manifest = build_manifest(run.spec, run.exercises, run.parts,
+                                  [c.entry for c in chosen])
+        report.redraws = manifest.redraw_count
+        report.skew = skew_warnings(manifest)
+        report.timings["variants"] = time.perf_counter() - stage
+        stage = time.perf_counter()
+        key_pdf = pool.submit(_write_key_pdf, manifest) if pdf else None  # meanwhile
+        _write_key_csv(run, manifest)
+        results = _students(pool, chosen, progress)
         report.timings["students"] = time.perf_counter() - stage
         for name in STAGES:
             report.timings[f"students: {name} (worker CPU s)"] = sum(
                 r.timings.get(name, 0.0) for r in results)
         stage = time.perf_counter()
-        manifest = build_manifest(run.spec, run.exercises, run.parts,
-                                  [r.entry for r in results])
-        report.redraws = manifest.redraw_count
-        report.skew = skew_warnings(manifest)
-        report.warnings += _write_key_and_moodle(run, manifest)
-        if pdf:
-            _write_printing_pdfs(run, pool, manifest, roster, results, progress)
-        report.timings["keys, moodle, combined PDFs"] = time.perf_counter() - stage
+        report.warnings += _write_exports(run, pool, manifest, roster, results, progress)
+        if key_pdf is not None:
+            key_pdf.result()
+        report.timings["moodle, combined PDFs, key.pdf"] = time.perf_counter() - stage
     dump(manifest, run.out_dir / "manifest.json")
     report.out_dir = swap_in(run.out_dir, target)
     report.timings["total"] = time.perf_counter() - started
@@ -183,22 +191,47 @@ def exercise_parts(exercise: Exercise, points: float,
                  for part in exercise.parts)
 
 
-def _students(pool: Pool, roster: list[Student], progress: Progress) -> list[StudentResult]:
-    """Every student's job, in roster order."""
+def _variants(pool: Pool, roster: list[Student], progress: Progress) -> list[StudentVariants]:
+    """Every student's variants, in roster order."""
+    chosen = []
+    for done, variants in enumerate(pool.map(student_variants, roster, chunksize=4), 1):
+        chosen.append(variants)
+        progress("variants", done, len(roster))
+    return chosen
+
+
+def _students(pool: Pool, chosen: list[StudentVariants],
+              progress: Progress) -> list[StudentResult]:
+    """Every student's files and sheets, in roster order."""
     results = []
-    for done, result in enumerate(pool.map(student_job, roster, chunksize=4), 1):
+    for done, result in enumerate(pool.map(student_files, chosen, chunksize=4), 1):
         results.append(result)
-        progress("students", done, len(roster))
+        progress("students", done, len(chosen))
     return results
 
 
-def _write_key_and_moodle(run: GenerationRun, manifest: Manifest) -> list[str]:
-    """key.csv and moodle.xml (its figures read from the students' folders, where they
-    were drawn); returns the Moodle export's notices."""
+def _write_key_csv(run: GenerationRun, manifest: Manifest) -> None:
     from ..render.keys import key_csv
-    from ..render.moodle import moodle_xml
 
     write_atomic(run.out_dir / "key.csv", key_csv(manifest, run.exercises))
+
+
+def _write_exports(run: GenerationRun, pool: Pool, manifest: Manifest,
+                   roster: list[Student], results: list[StudentResult],
+                   progress: Progress) -> list[str]:
+    """moodle.xml (in a worker) and, with PDFs, sheets.pdf and (with solutions)
+    solutions.pdf; returns the Moodle export's notices."""
+    moodle = pool.submit(_write_moodle, manifest)
+    if run.pdf:
+        _write_printing_pdfs(run, roster, results, progress)
+    return moodle.result()
+
+
+def _write_moodle(run: GenerationRun, manifest: Manifest) -> list[str]:
+    """moodle.xml (its figures read from the students' folders, where they were drawn);
+    returns the export's notices."""
+    from ..render.moodle import moodle_xml
+
     export = moodle_xml(manifest, run.exercises, _staged_figures(run, manifest))
     write_atomic(run.out_dir / "moodle.xml", export.xml)
     return export.notices
@@ -217,17 +250,18 @@ def _staged_figures(run: GenerationRun, manifest: Manifest):
     return figure
 
 
-def _write_printing_pdfs(run: GenerationRun, pool: Pool, manifest: Manifest,
-                         roster: list[Student], results: list[StudentResult],
-                         progress: Progress) -> None:
-    """key.pdf (in a worker, meanwhile), sheets.pdf and, with solutions, solutions.pdf."""
+def _write_key_pdf(run: GenerationRun, manifest: Manifest) -> None:
     from ..render.keys import key_typst
 
-    title = f"{run.spec.title}: answer key"
-    key_job = pool.submit(_compile_key,
-                          typst_preamble(run.spec.to_json(), title)
-                          + key_typst(manifest, run.exercises))
-    steps = 3 if run.solutions else 2
+    source = (typst_preamble(run.spec.to_json(), f"{run.spec.title}: answer key")
+              + key_typst(manifest, run.exercises))
+    write_atomic(run.out_dir / "key.pdf", run.compiler.compile(source))
+
+
+def _write_printing_pdfs(run: GenerationRun, roster: list[Student],
+                         results: list[StudentResult], progress: Progress) -> None:
+    """sheets.pdf and, with solutions, solutions.pdf."""
+    steps = 2 if run.solutions else 1
     _write_combined_pdf(run, roster, "sheet.pdf", [r.body for r in results],
                         f"{run.spec.title}: all sheets", "sheets.pdf")
     progress("combined PDFs", 1, steps)
@@ -235,8 +269,6 @@ def _write_printing_pdfs(run: GenerationRun, pool: Pool, manifest: Manifest,
         _write_combined_pdf(run, roster, "solution.pdf", [r.solution_body for r in results],
                             solutions_title(run.spec.title), "solutions.pdf")
         progress("combined PDFs", 2, steps)
-    key_job.result()
-    progress("combined PDFs", steps, steps)
 
 
 def _write_combined_pdf(run: GenerationRun, roster: list[Student], student_pdf: str,
@@ -257,10 +289,6 @@ def _write_combined_pdf(run: GenerationRun, roster: list[Student], student_pdf: 
     except Exception:  # a typst without PDF images: lay the pages out again
         pdf = run.compiler.compile(laid_out())
     write_atomic(run.out_dir / combined_pdf, pdf)
-
-
-def _compile_key(run: GenerationRun, source: str) -> None:
-    write_atomic(run.out_dir / "key.pdf", run.compiler.compile(source))
 
 
 def build_manifest(spec: ExamSpec, exercises: dict[str, Exercise],

@@ -1,9 +1,11 @@
 """The work of one student in an exam generation: their variant of every exercise, the
 fill-in files and figures, and the sheet as Markdown, HTML and PDF.
 
-:func:`student_job` runs in a worker process (:mod:`.workers`) with the generation's
-run; it writes the student's folder and returns the student's manifest entry and the
-typst body of their sheet (for the printing PDF, should the PDFs not embed).
+It comes in two steps, each run in a worker process (:mod:`.workers`) with the
+generation's run: :func:`student_variants` chooses the variants (what the manifest and
+the answer keys need), :func:`student_files` writes the student's folder and returns the
+manifest entry and the typst body of their sheet (for the printing PDF, should the PDFs
+not embed). :func:`student_job` does both at once.
 """
 
 from __future__ import annotations
@@ -39,24 +41,49 @@ class StudentResult:
     timings: dict[str, float] = field(default_factory=dict)
 
 
-#: the stages of a student's job, as :attr:`StudentResult.timings` names them: drawing
-#: the figures, writing the sheets (Markdown, HTML, typst source), compiling the PDF and
-#: everything else (variants, fill-in files, the solution sheet)
-STAGES = ("figures", "sheets", "PDFs", "the rest")
+#: the stages of a student's work, as :attr:`StudentResult.timings` names them: choosing
+#: and checking the variants, drawing the figures, writing the sheets (Markdown, HTML,
+#: typst source), compiling the PDF and everything else (fill-in files, the solution
+#: sheet)
+STAGES = ("variants", "figures", "sheets", "PDFs", "the rest")
 
 
-def student_job(run: GenerationRun, student: Student) -> StudentResult:
-    """Variants, fill-in files, figures, sheets and the PDF of ``student``."""
+@dataclass(frozen=True)
+class StudentVariants:
+    """A student's variants, one per exercise of the exam in its order, with the manifest
+    entry that records them and the CPU seconds choosing them took."""
+
+    student: Student
+    variants: tuple[Variant, ...]
+    entry: StudentEntry
+    seconds: float
+
+
+def student_variants(run: GenerationRun, student: Student) -> StudentVariants:
+    """The variant of every exercise handed to ``student`` (:func:`.variants.exam_variant`:
+    redrawn while it cannot tell right from wrong)."""
     started = time.process_time()
-    timings = dict.fromkeys(STAGES, 0.0)
-    entries, sheet_exercises, solved = [], [], []
-    for number, item in enumerate(run.spec.exercises, 1):
+    variants, entries = [], []
+    for item in run.spec.exercises:
         exercise = run.exercises[item.id]
         variant, redraws = exam_variant(exercise, run.spec.secret, run.spec.id,
-                                        student.student_id, item.set,
-                                        run.problems)
+                                        student.student_id, item.set, run.problems)
+        variants.append(variant)
         entries.append(VariantEntry(exercise.id, variant.seed, variant.params,
                                     dict(variant.answers), redraws))
+    entry = StudentEntry(student.student_id, student.name, student.email, tuple(entries))
+    return StudentVariants(student, tuple(variants), entry, time.process_time() - started)
+
+
+def student_files(run: GenerationRun, chosen: StudentVariants) -> StudentResult:
+    """The fill-in files, figures, sheets and the PDF of a student whose variants are
+    ``chosen``."""
+    started = time.process_time()
+    student = chosen.student
+    timings = dict.fromkeys(STAGES, 0.0)
+    sheet_exercises, solved = [], []
+    for number, (item, variant) in enumerate(zip(run.spec.exercises, chosen.variants), 1):
+        exercise = run.exercises[item.id]
         sheet_exercises.append(_exercise_files(run, student, number, item, exercise, variant,
                                                timings))
         solved.append((exercise, variant))
@@ -66,9 +93,14 @@ def student_job(run: GenerationRun, student: Student) -> StudentResult:
     solution_body = None
     if run.solutions:
         solution_body = write_solution_sheet(run, student, solved)
-    entry = StudentEntry(student.student_id, student.name, student.email, tuple(entries))
     timings["the rest"] = time.process_time() - started - sum(timings.values())
-    return StudentResult(entry, body, solution_body, timings)
+    timings["variants"] = chosen.seconds
+    return StudentResult(chosen.entry, body, solution_body, timings)
+
+
+def student_job(run: GenerationRun, student: Student) -> StudentResult:
+    """Variants, fill-in files, figures, sheets and the PDF of ``student``, in one go."""
+    return student_files(run, student_variants(run, student))
 
 
 def _exercise_files(run: GenerationRun, student: Student, number: int, item: ExamExercise,

@@ -18,30 +18,39 @@ from ..exercise.units import pretty_unit
 if TYPE_CHECKING:
     from ..exam.manifest import Manifest
     from ..exercise.model import Exercise
+    from ..exercise.params import Parameter
 
 KEY_COLUMNS = ("student_id", "name", "exercise_id", "seed", "given", "part", "answer", "unit",
                "points")
 
 
-def given_values(exercise: Exercise | None, params: Mapping[str, float]) -> str:
-    """The variant's given values as its statement prints them, ``name = value unit``
-    separated by ``; `` (the parameters the statement shows, in declaration order); ""
-    when the exercise is not at hand."""
+def shown_parameters(exercise: Exercise | None) -> tuple[Parameter, ...]:
+    """The parameters ``exercise``'s statement shows, in declaration order (none when the
+    exercise is not at hand)."""
     if exercise is None:
-        return ""
+        return ()
     shown = referenced_names(exercise.statement)
+    return tuple(p for p in exercise.params if p.name in shown)
+
+
+def given_values(shown: tuple[Parameter, ...], params: Mapping[str, float]) -> str:
+    """A variant's given values as its statement prints them, ``name = value unit``
+    separated by ``; ``: the ``shown`` parameters (:func:`shown_parameters`) at
+    ``params``."""
     return "; ".join(f"{p.name} = {ShownValue(p, params[p.name])}"
-                     for p in exercise.params if p.name in shown and p.name in params)
+                     for p in shown if p.name in params)
 
 
 def key_rows(manifest: Manifest, exercises: Mapping[str, Exercise] | None = None):
     """One row per student, exercise and part (the columns of :data:`KEY_COLUMNS`); the
-    given values need the exercises (by id)."""
+    given values need the exercises (by id). Each statement is read once, not once per
+    variant."""
     parts = {e.id: e.parts for e in manifest.exercises}
     exercises = exercises or {}
+    shown = {e.id: shown_parameters(exercises.get(e.id)) for e in manifest.exercises}
     for student in manifest.students:
         for variant in student.variants:
-            given = given_values(exercises.get(variant.exercise), variant.params)
+            given = given_values(shown[variant.exercise], variant.params)
             for part in parts[variant.exercise]:
                 yield {"student_id": student.student_id, "name": student.name,
                        "exercise_id": variant.exercise, "seed": variant.seed,
