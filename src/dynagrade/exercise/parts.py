@@ -308,7 +308,7 @@ class Symbolic(Part):
         return misconception.value
 
     def check_names(self) -> None:
-        self.spec(None)
+        self._spec(self.misconceptions)
 
     def cross_check(self, params, answers, part):
         """The formula, evaluated at the variant's parameters, against the numeric part it
@@ -326,8 +326,13 @@ class Symbolic(Part):
         return []
 
     def spec(self, params):
+        return self._spec(self.misconceptions_for(params))
+
+    def _spec(self, misconceptions: tuple[Misconception, ...]) -> SymbolicSpec:
+        """The spec with ``misconceptions`` (when the part is built, every one: no
+        variant's parameters say which apply)."""
         known = tuple(KnownWrong(m.name, m.value, m.feedback, m.score)
-                      for m in self.misconceptions_for(params))
+                      for m in misconceptions)
         return SymbolicSpec(variables=dict(self.variables), misconceptions=known,
                             form=tuple(self.form), form_credit=self.form_credit,
                             up_to_constant=self.up_to_constant)
