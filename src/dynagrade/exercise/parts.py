@@ -10,7 +10,8 @@ everything that differs between kinds, behind the small contract of :class:`Part
 - ``answer_text`` / ``shown_answer``: a reference answer as a student would type it
   and as a person reads it (the one answer formatter, :func:`.numbers.answer_text`);
 - ``near_misses`` / ``misconception_answer`` / ``cross_check``: what ``dynagrade
-  verify`` tries against a variant;
+  verify`` tries against a variant; ``own_checks_key``: what the first two depend on,
+  where that is less than the whole variant (an exam remembers their outcome under it);
 - ``manifest_fields``: the settings the exam manifest stores; ``follows_through``;
 - ``check_names``: refuses, when the exercise is built, names an answer could not use
   (an alias of a formula's variable that is another name, a number naming two options).
@@ -181,6 +182,15 @@ class Part(ABC):
         """Disagreements with the variant's other answers (``part(name)`` looks one up)."""
         return []
 
+    def own_checks_key(self, params: ParamValues, expected) -> tuple | None:
+        """Everything the part's own checks in the variant with ``params`` and reference
+        ``expected`` depend on besides the part itself: the reference graded against its
+        own spec, its near misses and its misconceptions
+        (:func:`dynagrade.exercise.verify.part_own_problems`). Their outcome may be
+        remembered under this key (with the exercise's identity and the part's name).
+        None, as here, when they depend on the whole variant: nothing is remembered."""
+        return None
+
 
 @dataclass(frozen=True)
 class Numeric(Part):
@@ -306,6 +316,13 @@ class Symbolic(Part):
 
     def misconception_answer(self, misconception, params):
         return misconception.value
+
+    def own_checks_key(self, params, expected):
+        """The reference, and which misconceptions apply: a formula's spec, its near miss
+        and its misconceptions' answers are text fixed by the exercise, so only the
+        ``applies`` predicates let its own checks differ between variants."""
+        return (expected, tuple(index for index, misconception in enumerate(self.misconceptions)
+                                if misconception.applies_to(params)))
 
     def check_names(self) -> None:
         self._spec(self.misconceptions)
