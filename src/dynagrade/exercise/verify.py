@@ -24,7 +24,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Callable, Iterable
 
-from ..grading import grade
+from ..grading.dispatch import accepts
 from .asked import question_problems, unshown_variables
 from .figure_checks import figure_problems
 from .model import ConstraintError, Exercise, Variant
@@ -130,14 +130,14 @@ def part_own_problems(exercise: Exercise, part: Part, params: ParamValues,
     the part itself, which ``exercise`` holds)."""
     spec = part.spec(params)
     problems = []
-    if not grade(spec, expected, part.answer_text(expected)).correct:
+    if not accepts(spec, expected, part.answer_text(expected)):
         problems.append(f"part {part.name}: the reference answer fails its own part")
     for wrong, what in part.near_misses(expected):
-        if grade(spec, expected, wrong).correct:
+        if accepts(spec, expected, wrong):
             problems.append(f"part {part.name}: {what} is accepted")
     for misconception in part.misconceptions_for(params):
         wrong = part.misconception_answer(misconception, params)
-        if grade(spec, expected, wrong).correct:
+        if accepts(spec, expected, wrong):
             problems.append(f"part {part.name}: the misconception "
                             f"'{misconception.name}' gives the right answer")
     return tuple(problems)
