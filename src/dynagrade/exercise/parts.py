@@ -146,8 +146,8 @@ class Part(ABC):
         """The part's line in a fill-in file; ``points`` as the exam scales them (the
         part's own points outside an exam)."""
         asked = f"question {self.question}, " if self.question is not None else ""
-        return textwrap.shorten(f"{asked}{self.label or self.name}: {self.asks()} "
-                                f"({points_phrase(points)})", 240)
+        return shortened(f"{asked}{self.label or self.name}: {self.asks()} "
+                         f"({points_phrase(points)})", 240)
 
     def input_hint(self) -> str:
         """What the answer looks like, for a sheet's part line or an input's placeholder."""
@@ -422,6 +422,13 @@ class Options(Part):
     def spec(self, params):
         return ChoiceSpec(options=tuple(self.options), multiple=self.multiple,
                           aliases=self.option_aliases())
+
+
+def shortened(text: str, width: int) -> str:
+    """``textwrap.shorten(text, width)``: the words of ``text`` one space apart, cut with
+    " [...]" to fit ``width``; a line that fits as it is (most) skips the wrapper."""
+    words = " ".join(text.split())
+    return words if len(words) <= width else textwrap.shorten(words, width)
 
 
 #: every part kind by its name (the ``kind`` of a part and of a manifest's part entry)
