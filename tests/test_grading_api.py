@@ -108,6 +108,17 @@ def test_a_number_is_accepted_exactly_when_its_verdict_is_correct(e, offset, uni
     assert accepts(spec, e, answer) is grade(spec, e, answer).correct
 
 
+@settings(max_examples=200, deadline=None)
+@given(st.floats(min_value=-1e4, max_value=1e4), st.floats(min_value=-0.03, max_value=0.03),
+       st.sampled_from(["", " m", " cm", " s"]), st.sampled_from([2, 3]))
+def test_a_vector_is_accepted_exactly_when_its_verdict_is_correct(x, offset, unit, size):
+    """A component near the tolerance, zero components, other units, a wrong count."""
+    e = (x, 0.0, -2.0 * x)[:size]
+    spec = VectorSpec(2, unit="m", misconceptions=(KnownWrong("flipped", (-x, 0.0), "Flip."),))
+    answer = "[" + ", ".join(repr(c * (1 + offset)) for c in e) + "]" + unit
+    assert accepts(spec, e[:2], answer) is grade(spec, e[:2], answer).correct
+
+
 def test_an_unreadable_or_infinite_number_is_not_accepted():
     for answer in ("2 +* 3", "1e999", "", "((((", "2 kg"):
         assert not accepts(NumericSpec(unit="m"), 2.0, answer)

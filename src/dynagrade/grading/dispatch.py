@@ -57,7 +57,8 @@ def accepts(spec, expected, answer: str) -> bool:
 GRADERS = {NumericSpec: ("numeric", "grade_numeric"), SymbolicSpec: ("symbolic", "grade_symbolic"),
            VectorSpec: ("vector", "grade_vector"), ChoiceSpec: ("choice", "grade_choice")}
 #: the kinds that decide :func:`accepts` on their own (the others ask :func:`grade`)
-ACCEPTERS = {NumericSpec: ("numeric", "accepts_numeric")}
+ACCEPTERS = {NumericSpec: ("numeric", "accepts_numeric"),
+             VectorSpec: ("vector", "accepts_vector")}
 
 
 def _grader(spec):
