@@ -141,4 +141,3 @@ def part_own_problems(exercise: Exercise, part: Part, params: ParamValues,
             problems.append(f"part {part.name}: the misconception "
                             f"'{misconception.name}' gives the right answer")
     return tuple(problems)
-

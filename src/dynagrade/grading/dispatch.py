@@ -37,8 +37,8 @@ def accepts(spec, expected, answer: str) -> bool:
     """Whether :func:`grade` calls ``answer`` correct: the same decision, made faster
     where a kind can skip what only a wrong answer needs (the misconception behind it,
     the feedback). For checking a part's own reference, near misses and misconceptions.
-    Raises :class:`SpecError` as :func:`grade` does, but for a misconception that only
-    the feedback of a wrong answer would have read."""
+    Raises :class:`SpecError` where :func:`grade` does, except for a misconception whose
+    value is unusable: only a wrong answer's feedback reads those."""
     found = next((ACCEPTERS[c] for c in type(spec).__mro__ if c in ACCEPTERS), None)
     if found is None or not isinstance(answer, str):
         return grade(spec, expected, answer).correct

@@ -53,7 +53,7 @@ def accepts_numeric(spec: NumericSpec, expected, answer: str) -> bool:
     return _accepted(spec, e, reading)
 
 
-def _read(spec: NumericSpec, answer: str) -> tuple[Quantity, "_Reading"]:
+def _read(spec: NumericSpec, answer: str) -> tuple[Quantity, _Reading]:
     """The answer as typed and in the part's unit; :class:`AnswerError` when it cannot
     be read or is no finite number."""
     part_factor, part_dim = unit_info(spec.unit)
