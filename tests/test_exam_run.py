@@ -111,3 +111,84 @@ def test_an_exam_generated_by_two_workers_has_the_files_of_one_process(tmp_path,
         return found + [f for sub in node.subdirs.values() for f in differences(sub)]
 
     assert differences(compared) == []
+
+
+FORMULA_EXERCISE = textwrap.dedent('''\
+    from dynagrade.exercise import Exercise, Misconception, Symbolic, Uniform
+
+    EXERCISE = Exercise(
+        id="same-id", title="Doubling", source="Example 1.1",
+        params=(Uniform("h", 1, 6, step=1, unit="m", symbol="h"),),
+        statement="A rod of length $h = {{ h }}$.\\n\\n1. Write twice its length in $h$.",
+        solve=lambda p: {},
+        parts=(Symbolic("y", "twice the length", question=1, expected="2*h",
+                        variables=("h",),
+                        misconceptions=(Misconception("slip", SLIP, "Check the factor.",
+                                                      applies=lambda p: p.h > 3),)),),
+    )
+    ''')
+SLIP_ACCEPTED = "part y: the misconception 'slip' gives the right answer"
+
+
+def _write_formula(folder, slip: str):
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / "same_id.py"
+    path.write_text(f"SLIP = {slip!r}\n" + FORMULA_EXERCISE, encoding="utf-8")
+    return load_file(path)
+
+
+def test_a_formula_checked_from_the_cache_gets_the_problems_an_unchecked_one_gets(tmp_path):
+    """The misconception 'slip' is the formula itself written otherwise (h + h), so it is
+    accepted wherever it applies: for h > 3 m, never below. The run checks the formula
+    once per set of misconceptions that apply, and every variant still gets its own
+    verdict."""
+    from dynagrade.exam.variants import check_variant
+
+    exercise = _write_formula(tmp_path, "h + h")
+    run = GenerationRun(None, {exercise.id: exercise}, {}, tmp_path)
+    seen = set()
+    for seed in range(40):
+        variant = exercise.variant(seed)
+        expected = (SLIP_ACCEPTED,) if variant.params["h"] > 3 else ()
+        assert check_variant(exercise, variant, run.part_problems) == expected
+        assert check_variant(exercise, variant) == expected
+        seen.add(expected)
+    assert seen == {(), (SLIP_ACCEPTED,)}
+    assert len(run.part_problems._values) == 2
+
+
+def test_an_edited_formula_is_not_answered_from_the_old_ones_cached_checks(tmp_path):
+    """Two files declare exercise 'same-id' with the same formula and parameters; in the
+    corrected one the misconception is a real mistake (3 h), so its variants pass."""
+    old = _write_formula(tmp_path / "old", "h + h")
+    new = _write_formula(tmp_path / "new", "3*h")
+    run = GenerationRun(None, {}, {}, tmp_path)
+    variant = next(old.variant(seed) for seed in range(40)
+                   if old.variant(seed).params["h"] > 3)
+    assert new.variant(variant.seed).params == variant.params
+    assert run.problems(old, variant) == (SLIP_ACCEPTED,)
+    assert run.problems(new, new.variant(variant.seed)) == ()
+    assert run.problems(old, variant) == (SLIP_ACCEPTED,)
+
+
+def test_the_example_exams_variants_get_the_same_problems_with_and_without_the_cache(
+        tmp_path, bank):
+    """Every part kind of the example exam's exercises, 30 seeds each: the run's cached
+    checks list the problems, in order, that checking each variant anew lists."""
+    from dynagrade.exam.variants import check_variant
+    from dynagrade.exercise.model import ConstraintError
+
+    ids = ("projectile-range", "sliding-up-a-slope", "car-in-a-looping",
+           "release-under-gravity", "block-sliding-down-incline", "particle-on-a-string")
+    exercises = {i: bank.get(i) for i in ids}
+    run = GenerationRun(None, exercises, {}, tmp_path)
+    checked = 0
+    for exercise in exercises.values():
+        for seed in range(30):
+            try:
+                variant = exercise.variant(seed)
+            except ConstraintError:
+                continue
+            assert run.problems(exercise, variant) == check_variant(exercise, variant)
+            checked += 1
+    assert checked >= 150 and run.part_problems._values

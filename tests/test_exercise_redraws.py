@@ -57,6 +57,27 @@ def test_outside_its_regime_a_misconception_is_not_tried_on_an_answer():
     assert result.parts[0].misconception != "not squared"
 
 
+def test_a_formula_misconception_limited_to_a_regime_is_tried_only_there():
+    """A formula part checks its names when it is built, before any variant: the
+    predicate, which reads the parameters, is not called then. The slip h + h is the
+    formula itself, so it makes exactly the variants with x > 2 m unusable."""
+    from dynagrade.exercise import Symbolic
+
+    exercise = Exercise(
+        id="twice-x", title="Twice", source="Section 1.1",
+        params=(Choice("x", (1.0, 2.0, 3.0), unit="m"),),
+        statement="A length $x$ = {{ x }}. Write twice it as a formula in $x$.",
+        solve=lambda p: {},
+        parts=(Symbolic("y", "twice x", expected="2*x", variables=("x",),
+                        misconceptions=(Misconception("slip", "x + x", "Check it.",
+                                                      applies=lambda p: p.x > 2),)),),
+    )
+    for x, expected in ((2.0, []), (3.0, ["part y: the misconception 'slip' gives the "
+                                          "right answer"])):
+        variant = exercise.variant(_seed_with(exercise, x))
+        assert variant_problems(exercise, variant) == expected
+
+
 def test_the_predicate_receives_the_parameters_in_si():
     seen = []
     exercise = _square(applies=lambda p: seen.append(p.x) or True, values=(200.0,))

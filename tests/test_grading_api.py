@@ -5,6 +5,7 @@ import dataclasses
 import pytest
 
 from dynagrade.grading import AnswerError, Verdict, grade
+from dynagrade.grading.dispatch import accepts
 from dynagrade.grading.spec import ChoiceSpec, KnownWrong, NumericSpec, SymbolicSpec, Variable, VectorSpec
 
 
@@ -93,6 +94,35 @@ def test_a_vector_component_is_right_exactly_when_the_same_number_would_be(e, of
     as_number = grade(NumericSpec(), e, answer).correct
     verdict = grade(VectorSpec(2), (e, e), f"[{answer}, {e!r}]")
     assert ("1: ✓" in verdict.feedback or verdict.correct) is as_number
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(min_value=1e-3, max_value=1e6), st.floats(min_value=-0.06, max_value=0.06),
+       st.sampled_from(["", " m/s", " km/h", " m", " 1/s"]), st.booleans())
+def test_a_number_is_accepted_exactly_when_its_verdict_is_correct(e, offset, unit, strict):
+    """Near the tolerance, in other units and with misconceptions declared: ``accepts``
+    says what ``grade`` says, without the feedback."""
+    spec = NumericSpec(unit="m/s", require_unit=strict, unit_credit=0.5 if strict else None,
+                       misconceptions=(KnownWrong("half", e / 2, "Half."),))
+    answer = repr(e * (1 + offset)) + unit
+    assert accepts(spec, e, answer) is grade(spec, e, answer).correct
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(min_value=-1e4, max_value=1e4), st.floats(min_value=-0.03, max_value=0.03),
+       st.sampled_from(["", " m", " cm", " s"]), st.sampled_from([2, 3]))
+def test_a_vector_is_accepted_exactly_when_its_verdict_is_correct(x, offset, unit, size):
+    """A component near the tolerance, zero components, other units, a wrong count."""
+    e = (x, 0.0, -2.0 * x)[:size]
+    spec = VectorSpec(2, unit="m", misconceptions=(KnownWrong("flipped", (-x, 0.0), "Flip."),))
+    answer = "[" + ", ".join(repr(c * (1 + offset)) for c in e) + "]" + unit
+    assert accepts(spec, e[:2], answer) is grade(spec, e[:2], answer).correct
+
+
+def test_an_unreadable_or_infinite_number_is_not_accepted():
+    for answer in ("2 +* 3", "1e999", "", "((((", "2 kg"):
+        assert not accepts(NumericSpec(unit="m"), 2.0, answer)
+    assert accepts(NumericSpec(unit="m"), 2.0, "200 cm")
 
 
 # -- choice labels in every documented form -------------------------------------------------

@@ -12,6 +12,7 @@ from pathlib import Path
 import pytest
 
 from dynagrade.grading import grade
+from dynagrade.grading.dispatch import accepts
 from dynagrade.grading.compare import build, compare_record
 
 FIXTURES = Path(__file__).parent / "fixtures" / "grading.jsonl"
@@ -75,3 +76,11 @@ def test_compare_gives_the_same_verdict_as_grade(case):
     assert out["id"] == case["why"]
     assert out["correct"] is case["want"]
     assert out["score"] == pytest.approx(case.get("score", 1.0 if case["want"] else 0.0))
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_accepts_decides_as_the_hand_worked_table(case):
+    """``accepts``, which skips the feedback where a kind can, is right exactly where the
+    table's verdict is."""
+    spec, expected, answer = build(_record(case))
+    assert accepts(spec, expected, answer) is case["want"]

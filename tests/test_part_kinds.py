@@ -5,12 +5,15 @@ part is, every table keyed by kind names every kind, and what a kind says about 
 from __future__ import annotations
 
 import ast
+import textwrap
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from dynagrade.exercise import Exercise, Numeric, Options, Symbolic, Vector
-from dynagrade.exercise.parts import PART_KINDS
+from dynagrade.exercise.parts import PART_KINDS, shortened
 from dynagrade.exercise.sheet import parse_sheet, write_sheet
 
 SRC = Path(__file__).resolve().parent.parent / "src" / "dynagrade"
@@ -174,3 +177,23 @@ def test_input_hooks_give_a_placeholder_and_the_options_to_pick_from():
     options = Options("c", options=("a", "b"))
     assert options.input_hint() == "one of a, b" and options.input_options() == ("a", "b")
     assert Numeric("v").input_options() == ()
+
+
+def test_a_part_line_too_long_for_a_fill_in_file_is_cut_at_a_word():
+    label = "the horizontal distance from the launch point " * 6
+    line = Numeric("x", label, unit="m", question=1).describe(2)
+    assert len(line) <= 240 and line.endswith(" [...]")
+    assert line.startswith("question 1, the horizontal distance from the launch point")
+    assert Numeric("x", "a  label\twith\nbreaks", unit="m").describe(1) == \
+        "a label with breaks: a number in m (1 point)"
+
+
+_TEXTS = st.lists(st.sampled_from(["word", "a-b", " ", "  ", "\t", "\n", "\xa0", "x" * 50,
+                                   "é", "[...]", "-", "(2 points)"]),
+                  max_size=40).map("".join)
+
+
+@settings(max_examples=300, deadline=None)
+@given(_TEXTS, st.sampled_from([12, 40, 240]))
+def test_a_shortened_line_is_what_textwrap_shorten_gives(text, width):
+    assert shortened(text, width) == textwrap.shorten(text, width)

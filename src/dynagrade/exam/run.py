@@ -1,8 +1,9 @@
 """The state of one exam generation and of one class grading, held by the run itself.
 
-A run owns its exercises, its caches (each variant's problems and figure) and its PDF
-compiler; it is handed to worker processes explicitly (:mod:`.workers`), where it is
-rebuilt from what pickles (the exercises' files; caches and compilers start empty).
+A run owns its exercises, its caches (each variant's problems and figure, a part's own
+checks where they depend on less than the variant) and its PDF compiler; it is handed to
+worker processes explicitly (:mod:`.workers`), where it is rebuilt from what pickles
+(the exercises' files; caches and compilers start empty).
 Nothing about an exercise is cached under its id alone: the key is the exercise's
 identity, its file's content hash, so a corrected exercise with the same id is never
 answered from an older one's cache, and two runs never share state.
@@ -17,6 +18,8 @@ from pathlib import Path
 from typing import Callable, Generic, TypeVar
 
 from ..exercise.model import Exercise, Variant
+from ..exercise.params import ParamValues
+from ..exercise.parts import Part
 from ..render.pdf import PdfCompiler
 from .manifest import PartEntry
 from .spec import ExamSpec
@@ -41,21 +44,30 @@ def exercise_identity(exercise: Exercise) -> str:
     return f"object-{id(exercise)}"
 
 
+class Identities:
+    """Each exercise's :func:`exercise_identity`, worked out once per exercise object (the
+    object is kept, so its ``id`` is never another's)."""
+
+    def __init__(self):
+        self._known: dict[int, tuple[Exercise, str]] = {}
+
+    def __call__(self, exercise: Exercise) -> str:
+        known = self._known.get(id(exercise))
+        if known is None or known[0] is not exercise:
+            known = (exercise, exercise_identity(exercise))
+            self._known[id(exercise)] = known
+        return known[1]
+
+
 class VariantCache(Generic[T]):
     """``compute(exercise, variant)`` remembered per (exercise identity, parameters), up
     to ``limit`` entries (then forgotten all at once, which keeps memory bounded)."""
 
-    def __init__(self, compute: Callable[[Exercise, Variant], T], limit: int):
+    def __init__(self, compute: Callable[[Exercise, Variant], T], limit: int,
+                 identities: Identities | None = None):
         self.compute, self.limit = compute, limit
         self._values: dict[tuple, T] = {}
-        self._identities: dict[int, tuple[Exercise, str]] = {}
-
-    def _identity(self, exercise: Exercise) -> str:
-        known = self._identities.get(id(exercise))
-        if known is None or known[0] is not exercise:
-            known = (exercise, exercise_identity(exercise))
-            self._identities[id(exercise)] = known
-        return known[1]
+        self._identity = identities or Identities()
 
     def __call__(self, exercise: Exercise, variant: Variant) -> T:
         key = (self._identity(exercise), tuple(sorted(variant.params.items())))
@@ -66,10 +78,30 @@ class VariantCache(Generic[T]):
         return self._values[key]
 
 
-def _variant_problems(exercise: Exercise, variant: Variant) -> tuple[str, ...]:
-    from .variants import check_variant
+class PartProblemsCache:
+    """:func:`~dynagrade.exercise.verify.part_own_problems` remembered per (exercise
+    identity, part name, :meth:`~dynagrade.exercise.parts.Part.own_checks_key`), for the
+    parts that give such a key (a formula's checks are the same in most variants); the
+    others' are computed every time. Up to ``limit`` entries, then forgotten at once."""
 
-    return check_variant(exercise, variant)
+    def __init__(self, limit: int, identities: Identities | None = None):
+        self.limit = limit
+        self._values: dict[tuple, tuple[str, ...]] = {}
+        self._identity = identities or Identities()
+
+    def __call__(self, exercise: Exercise, part: Part, params: ParamValues,
+                 expected) -> tuple[str, ...]:
+        from ..exercise.verify import part_own_problems
+
+        depends_on = part.own_checks_key(params, expected)
+        if depends_on is None:
+            return part_own_problems(exercise, part, params, expected)
+        key = (self._identity(exercise), part.name, depends_on)
+        if key not in self._values:
+            if len(self._values) >= self.limit:
+                self._values.clear()
+            self._values[key] = part_own_problems(exercise, part, params, expected)
+        return self._values[key]
 
 
 def _figure(exercise: Exercise, variant: Variant) -> str | None:
@@ -95,11 +127,21 @@ class GenerationRun:
     out_dir: Path
     pdf: bool = True
     solutions: bool = False  # write each student's worked solutions (``--solutions``)
-    problems: VariantCache[tuple[str, ...]] = field(
-        default_factory=lambda: VariantCache(_variant_problems, 50_000))
-    figures: VariantCache[str | None] = field(
-        default_factory=lambda: VariantCache(_figure, 2_000))
     compiler: PdfCompiler = field(default_factory=PdfCompiler)
+    part_problems: PartProblemsCache = field(init=False)
+    problems: VariantCache[tuple[str, ...]] = field(init=False)
+    figures: VariantCache[str | None] = field(init=False)
+
+    def __post_init__(self):
+        identities = Identities()
+        self.part_problems = PartProblemsCache(10_000, identities)
+        self.problems = VariantCache(self._variant_problems, 50_000, identities)
+        self.figures = VariantCache(_figure, 2_000, identities)
+
+    def _variant_problems(self, exercise: Exercise, variant: Variant) -> tuple[str, ...]:
+        from .variants import check_variant
+
+        return check_variant(exercise, variant, self.part_problems)
 
     def __getstate__(self):
         paths = {i: e.path for i, e in self.exercises.items()}

@@ -15,7 +15,7 @@ from typing import Callable, Mapping
 from ..errors import DynagradeError
 from ..exercise.model import ConstraintError, Exercise, Variant
 from ..exercise.seeds import exam_seed
-from ..exercise.verify import variant_problems
+from ..exercise.verify import OwnProblems, variant_problems
 from .manifest import Redraw
 
 MAX_ATTEMPTS = 25
@@ -25,11 +25,12 @@ class NoUsableVariant(DynagradeError, RuntimeError):
     """Every seed tried gave a variant that cannot discriminate."""
 
 
-
-
-def check_variant(exercise: Exercise, variant: Variant) -> tuple[str, ...]:
-    """Why ``variant`` cannot be handed out (:func:`variant_problems`); empty when it can."""
-    return tuple(variant_problems(exercise, variant))
+def check_variant(exercise: Exercise, variant: Variant,
+                  own_problems: OwnProblems | None = None) -> tuple[str, ...]:
+    """Why ``variant`` cannot be handed out (:func:`variant_problems`); empty when it can.
+    ``own_problems``: a run's cache of each part's own checks
+    (:attr:`dynagrade.exam.run.GenerationRun.part_problems`), or None to compute them."""
+    return tuple(variant_problems(exercise, variant, own_problems))
 
 
 def exam_variant(exercise: Exercise, secret: str, exam_id: str, student_id: str,

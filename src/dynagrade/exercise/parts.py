@@ -10,7 +10,8 @@ everything that differs between kinds, behind the small contract of :class:`Part
 - ``answer_text`` / ``shown_answer``: a reference answer as a student would type it
   and as a person reads it (the one answer formatter, :func:`.numbers.answer_text`);
 - ``near_misses`` / ``misconception_answer`` / ``cross_check``: what ``dynagrade
-  verify`` tries against a variant;
+  verify`` tries against a variant; ``own_checks_key``: what the first two depend on,
+  where that is less than the whole variant (an exam remembers their outcome under it);
 - ``manifest_fields``: the settings the exam manifest stores; ``follows_through``;
 - ``check_names``: refuses, when the exercise is built, names an answer could not use
   (an alias of a formula's variable that is another name, a number naming two options).
@@ -145,8 +146,8 @@ class Part(ABC):
         """The part's line in a fill-in file; ``points`` as the exam scales them (the
         part's own points outside an exam)."""
         asked = f"question {self.question}, " if self.question is not None else ""
-        return textwrap.shorten(f"{asked}{self.label or self.name}: {self.asks()} "
-                                f"({points_phrase(points)})", 240)
+        return shortened(f"{asked}{self.label or self.name}: {self.asks()} "
+                         f"({points_phrase(points)})", 240)
 
     def input_hint(self) -> str:
         """What the answer looks like, for a sheet's part line or an input's placeholder."""
@@ -180,6 +181,15 @@ class Part(ABC):
                     part: Callable[[str], Part]) -> list[str]:
         """Disagreements with the variant's other answers (``part(name)`` looks one up)."""
         return []
+
+    def own_checks_key(self, params: ParamValues, expected) -> tuple | None:
+        """Everything the part's own checks in the variant with ``params`` and reference
+        ``expected`` depend on besides the part itself: the reference graded against its
+        own spec, its near misses and its misconceptions
+        (:func:`dynagrade.exercise.verify.part_own_problems`). Their outcome may be
+        remembered under this key (with the exercise's identity and the part's name).
+        None, as here, when they depend on the whole variant: nothing is remembered."""
+        return None
 
 
 @dataclass(frozen=True)
@@ -307,8 +317,15 @@ class Symbolic(Part):
     def misconception_answer(self, misconception, params):
         return misconception.value
 
+    def own_checks_key(self, params, expected):
+        """The reference, and which misconceptions apply: a formula's spec, its near miss
+        and its misconceptions' answers are text fixed by the exercise, so only the
+        ``applies`` predicates let its own checks differ between variants."""
+        return (expected, tuple(index for index, misconception in enumerate(self.misconceptions)
+                                if misconception.applies_to(params)))
+
     def check_names(self) -> None:
-        self.spec(None)
+        self._spec(self.misconceptions)
 
     def cross_check(self, params, answers, part):
         """The formula, evaluated at the variant's parameters, against the numeric part it
@@ -326,8 +343,13 @@ class Symbolic(Part):
         return []
 
     def spec(self, params):
+        return self._spec(self.misconceptions_for(params))
+
+    def _spec(self, misconceptions: tuple[Misconception, ...]) -> SymbolicSpec:
+        """The spec with ``misconceptions`` (when the part is built, every one: no
+        variant's parameters say which apply)."""
         known = tuple(KnownWrong(m.name, m.value, m.feedback, m.score)
-                      for m in self.misconceptions_for(params))
+                      for m in misconceptions)
         return SymbolicSpec(variables=dict(self.variables), misconceptions=known,
                             form=tuple(self.form), form_credit=self.form_credit,
                             up_to_constant=self.up_to_constant)
@@ -400,6 +422,13 @@ class Options(Part):
     def spec(self, params):
         return ChoiceSpec(options=tuple(self.options), multiple=self.multiple,
                           aliases=self.option_aliases())
+
+
+def shortened(text: str, width: int) -> str:
+    """``textwrap.shorten(text, width)``: the words of ``text`` one space apart, cut with
+    " [...]" to fit ``width``; a line that fits as it is (most) skips the wrapper."""
+    words = " ".join(text.split())
+    return words if len(words) <= width else textwrap.shorten(words, width)
 
 
 #: every part kind by its name (the ``kind`` of a part and of a manifest's part entry)

@@ -22,12 +22,14 @@ shows no reference answer.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Callable, Iterable
+from typing import Any, Callable, Iterable
 
-from ..grading import grade
+from ..grading.dispatch import accepts
 from .asked import question_problems, unshown_variables
 from .figure_checks import figure_problems
 from .model import ConstraintError, Exercise, Variant
+from .params import ParamValues
+from .parts import Part
 from .redraws import NO_DRAW, RedrawShare
 from .solution import SolutionError, render_solution
 from .solution_check import missing_solution, solution_problems
@@ -101,22 +103,41 @@ def static_problems(exercise: Exercise) -> list[str]:
         question_problems(exercise) + unshown_variables(exercise)
 
 
-def variant_problems(exercise: Exercise, variant: Variant) -> list[str]:
-    """Why ``variant`` cannot be handed out; empty when it can."""
+#: the signature of :func:`part_own_problems`, which a cache of it shares
+OwnProblems = Callable[[Exercise, Part, ParamValues, Any], tuple[str, ...]]
+
+
+def variant_problems(exercise: Exercise, variant: Variant,
+                     own_problems: OwnProblems | None = None) -> list[str]:
+    """Why ``variant`` cannot be handed out; empty when it can. ``own_problems`` is
+    :func:`part_own_problems` (the default) or a run's cache of it."""
+    if own_problems is None:
+        own_problems = part_own_problems
     params = exercise.si(variant.params)
     problems = []
     for part in exercise.parts:
-        expected = variant.answers[part.name]
-        spec = part.spec(params)
-        if not grade(spec, expected, part.answer_text(expected)).correct:
-            problems.append(f"part {part.name}: the reference answer fails its own part")
-        for wrong, what in part.near_misses(expected):
-            if grade(spec, expected, wrong).correct:
-                problems.append(f"part {part.name}: {what} is accepted")
-        for misconception in part.misconceptions_for(params):
-            wrong = part.misconception_answer(misconception, params)
-            if grade(spec, expected, wrong).correct:
-                problems.append(f"part {part.name}: the misconception "
-                                f"'{misconception.name}' gives the right answer")
+        problems += own_problems(exercise, part, params, variant.answers[part.name])
         problems += part.cross_check(params, variant.answers, exercise.part)
     return problems
+
+
+def part_own_problems(exercise: Exercise, part: Part, params: ParamValues,
+                      expected) -> tuple[str, ...]:
+    """What is wrong with ``part`` on its own in the variant with ``params`` (in SI) and
+    reference ``expected``: the reference fails its own part, a near miss or a
+    misconception that applies is accepted. The outcome depends on no more than
+    :meth:`Part.own_checks_key <dynagrade.exercise.parts.Part.own_checks_key>` says (with
+    the part itself, which ``exercise`` holds)."""
+    spec = part.spec(params)
+    problems = []
+    if not accepts(spec, expected, part.answer_text(expected)):
+        problems.append(f"part {part.name}: the reference answer fails its own part")
+    for wrong, what in part.near_misses(expected):
+        if accepts(spec, expected, wrong):
+            problems.append(f"part {part.name}: {what} is accepted")
+    for misconception in part.misconceptions_for(params):
+        wrong = part.misconception_answer(misconception, params)
+        if accepts(spec, expected, wrong):
+            problems.append(f"part {part.name}: the misconception "
+                            f"'{misconception.name}' gives the right answer")
+    return tuple(problems)

@@ -35,15 +35,32 @@ def expected_value(expected) -> float:
 def grade_numeric(spec: NumericSpec, expected, answer: str) -> Verdict:
     """The verdict on a number answer (see :func:`dynagrade.grading.grade`)."""
     e = expected_value(expected)
-    part_factor, part_dim = unit_info(spec.unit)
     try:
-        q = read_quantity(answer)
+        q, reading = _read(spec, answer)
     except AnswerError as error:
         return unreadable(str(error))
-    if not math.isfinite(q.value):
-        return unreadable("your answer is not a finite number (it overflows or is undefined)")
-    reading = _read_in_part_unit(spec, q, part_factor, part_dim)
     return _verdict(spec, e, q, reading)
+
+
+def accepts_numeric(spec: NumericSpec, expected, answer: str) -> bool:
+    """Whether :func:`grade_numeric` calls ``answer`` correct, decided without looking
+    for the misconception behind a wrong answer or writing its feedback."""
+    e = expected_value(expected)
+    try:
+        _, reading = _read(spec, answer)
+    except AnswerError:
+        return False
+    return _accepted(spec, e, reading)
+
+
+def _read(spec: NumericSpec, answer: str) -> tuple[Quantity, _Reading]:
+    """The answer as typed and in the part's unit; :class:`AnswerError` when it cannot
+    be read or is no finite number."""
+    part_factor, part_dim = unit_info(spec.unit)
+    q = read_quantity(answer)
+    if not math.isfinite(q.value):
+        raise AnswerError("your answer is not a finite number (it overflows or is undefined)")
+    return q, _read_in_part_unit(spec, q, part_factor, part_dim)
 
 
 class _Reading:
@@ -81,12 +98,17 @@ def _close(spec: NumericSpec, value: float, e: float) -> bool:
     return is_close(value, e, spec.rtol, spec.atol)
 
 
+def _accepted(spec: NumericSpec, e: float, reading: _Reading) -> bool:
+    """A right answer: its value within the tolerance and its unit right."""
+    return _close(spec, reading.value, e) and reading.unit_ok
+
+
 def _verdict(spec: NumericSpec, e: float, q: Quantity, reading: _Reading) -> Verdict:
     value_ok = _close(spec, reading.value, e)
     u = spec.unit_credit
     shown = show_value(reading.value, spec.unit)
     reveal = f" The expected answer is {show_value(e, spec.unit)}." if spec.reveal else ""
-    if value_ok and reading.unit_ok:
+    if _accepted(spec, e, reading):
         note = f" (read as {shown})" if reading.converted else ""
         return Verdict(True, 1.0, f"Correct{note}.")
     if not reading.unit_ok:
@@ -151,4 +173,4 @@ def _digits_hint(spec: NumericSpec, e: float, q: Quantity, reading: _Reading) ->
     return ""
 
 
-__all__ = ["grade_numeric", "expected_value", "show_number"]
+__all__ = ["grade_numeric", "accepts_numeric", "expected_value", "show_number"]

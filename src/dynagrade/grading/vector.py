@@ -42,18 +42,9 @@ def component_tolerance(spec: VectorSpec, e: np.ndarray) -> np.ndarray:
 
 def grade_vector(spec: VectorSpec, expected, answer: str) -> Verdict:
     e = _expected(spec, expected)
-    part_factor, part_dim = unit_info(spec.unit)
-    try:
-        components, unit_tree = parse_vector(answer)
-        values, problem = _read(spec, components, unit_tree, answer, part_factor, part_dim)
-    except AnswerError as error:
-        return unreadable(str(error))
-    if problem:
-        return Verdict(False, 0.0, f"Unit problem: {problem}.", misconception=UNIT)
-    if len(values) != spec.size:
-        return Verdict(False, 0.0, f"Not correct: the answer needs {spec.size} components, you gave {len(values)}.")
-    if not np.all(np.isfinite(values)):
-        return unreadable("a component of your answer is not a finite number")
+    values = _answer_values(spec, answer)
+    if isinstance(values, Verdict):
+        return values
     scale = component_scale(e)
     right = is_close(values, e, spec.rtol, spec.atol, scale)
     reveal = ""
@@ -70,6 +61,33 @@ def grade_vector(spec: VectorSpec, expected, answer: str) -> Verdict:
     score = float(right.sum()) / spec.size
     return Verdict(False, score, f"Not correct: {int(right.sum())} of {spec.size} components are right ({marks})."
                    + reveal)
+
+
+def accepts_vector(spec: VectorSpec, expected, answer: str) -> bool:
+    """Whether :func:`grade_vector` calls ``answer`` correct, decided without looking
+    for the misconception behind a wrong answer or writing its feedback."""
+    e = _expected(spec, expected)
+    values = _answer_values(spec, answer)
+    return not isinstance(values, Verdict) and \
+        bool(is_close(values, e, spec.rtol, spec.atol, component_scale(e)).all())
+
+
+def _answer_values(spec: VectorSpec, answer: str) -> np.ndarray | Verdict:
+    """The answer's components in the part's unit, or the verdict on an answer that
+    gives none to compare (unreadable, a unit problem, a wrong count, not finite)."""
+    part_factor, part_dim = unit_info(spec.unit)
+    try:
+        components, unit_tree = parse_vector(answer)
+        values, problem = _read(spec, components, unit_tree, answer, part_factor, part_dim)
+    except AnswerError as error:
+        return unreadable(str(error))
+    if problem:
+        return Verdict(False, 0.0, f"Unit problem: {problem}.", misconception=UNIT)
+    if len(values) != spec.size:
+        return Verdict(False, 0.0, f"Not correct: the answer needs {spec.size} components, you gave {len(values)}.")
+    if not np.all(np.isfinite(values)):
+        return unreadable("a component of your answer is not a finite number")
+    return values
 
 
 def _read(spec, components, unit_tree, text, part_factor, part_dim):

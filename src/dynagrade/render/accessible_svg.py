@@ -16,12 +16,19 @@ from __future__ import annotations
 
 import html
 import re
+from typing import Callable
 
 __all__ = ["accessible_svg", "figure_description", "figure_labels", "prefixed_ids",
            "sentence_list", "svg_text_alternative"]
 
 _SVG_OPEN = re.compile(r"<svg\b[^>]*>", re.S)
-_ID = re.compile(r'\bid="([^"]+)"')
+#: an id, a reference to one and the aria attributes naming some: each only where it
+#: starts a word (an id="…" or aria-… not after a letter, digit or "_"), which
+#: :func:`_word_matches` checks; a leading ``\b`` in the pattern would do it too, but
+#: would keep the regex engine from its fast literal search, twenty times slower
+_ID = re.compile(r'id="([^"]+)"')
+_REFERENCE = re.compile(r'(id="|href="#|url\(#)([^")]+)')
+_ARIA = re.compile(r'(aria-(?:labelledby|describedby)=)"([^"]*)"')
 TITLE_ID, DESC_ID = "figure-title", "figure-desc"
 
 
@@ -56,8 +63,7 @@ def figure_description(figure) -> str:
     drawn = "; ".join(notes["drawn"])
     if drawn:
         sentences.append(f"Drawn: {drawn}.")
-    labels = [label for label in figure_labels(figure)
-              if not re.search(rf"(?<!\w){re.escape(label)}(?!\w)", drawn)]
+    labels = [label for label in figure_labels(figure) if not _names_word(drawn, label)]
     if labels:
         sentences.append("Labels: " + "; ".join(labels) + ".")
     return " ".join(sentences) or "A figure without labels."
@@ -86,7 +92,7 @@ def prefixed_ids(svg: str, prefix: str) -> str:
     aria attributes) starting with ``prefix``."""
     if not prefix:
         return svg
-    ids = set(_ID.findall(svg))
+    ids = {match.group(1) for match in _word_matches(_ID, svg)}
     if not ids:
         return svg
 
@@ -94,13 +100,57 @@ def prefixed_ids(svg: str, prefix: str) -> str:
         return match.group(1) + prefix + match.group(2) if match.group(2) in ids \
             else match.group(0)
 
-    svg = re.sub(r'(\bid="|href="#|url\(#)([^")]+)', renamed, svg)
+    svg = _replaced(_REFERENCE, svg, renamed, lambda match: match.group(1) == 'id="')
 
     def aria(match: re.Match) -> str:
         names = " ".join(prefix + n if n in ids else n for n in match.group(2).split())
         return f'{match.group(1)}"{names}"'
 
-    return re.sub(r'(\baria-(?:labelledby|describedby)=)"([^"]*)"', aria, svg)
+    return _replaced(_ARIA, svg, aria)
+
+
+def _word_matches(pattern: re.Pattern, text: str,
+                  bounded: Callable[[re.Match], bool] = lambda match: True):
+    """The matches of ``pattern`` in ``text`` that a search for it with ``\\b`` in front
+    finds, where ``bounded(match)`` says the ``\\b`` applies to the match (its first
+    character being a word character): those after a word character are passed over,
+    and the search goes on from the next character, as the regex engine's would."""
+    position = 0
+    while (match := pattern.search(text, position)) is not None:
+        start = match.start()
+        if start and bounded(match) and _is_word_character(text[start - 1]):
+            position = start + 1
+        else:
+            yield match
+            position = match.end()
+
+
+def _replaced(pattern: re.Pattern, text: str, replacement: Callable[[re.Match], str],
+              bounded: Callable[[re.Match], bool] = lambda match: True) -> str:
+    """``text`` with each of :func:`_word_matches` replaced by ``replacement(match)``."""
+    pieces, end = [], 0
+    for match in _word_matches(pattern, text, bounded):
+        pieces += (text[end:match.start()], replacement(match))
+        end = match.end()
+    return "".join(pieces) + text[end:]
+
+
+def _is_word_character(character: str) -> bool:
+    """What ``\\w`` matches: a letter, a digit or "_" (of any script)."""
+    return character.isalnum() or character == "_"
+
+
+def _names_word(text: str, word: str) -> bool:
+    """Whether ``word`` occurs in ``text`` with no word character right before or after
+    it (``(?<!\\w)word(?!\\w)``)."""
+    start = text.find(word)
+    while start != -1:
+        end = start + len(word)
+        if (start == 0 or not _is_word_character(text[start - 1])) and \
+                (end == len(text) or not _is_word_character(text[end])):
+            return True
+        start = text.find(word, start + 1)
+    return False
 
 
 def svg_text_alternative(svg: str) -> tuple[str, str]:
