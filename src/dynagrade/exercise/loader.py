@@ -249,10 +249,11 @@ class Bank:
     def listing(self) -> list[ExerciseListing]:
         """What ``dynagrade list`` shows of every exercise, in the order of :meth:`all`,
         read from the files without running them where they allow it (see
-        :mod:`dynagrade.exercise.listing`)."""
+        :mod:`dynagrade.exercise.listing`); a listing renders no template, so a file that
+        has to be run is not checked for them, as a file read statically is not."""
         listings = {}
         for path in sorted(set(self._index().values())):
-            listing = read_listing(path) or ExerciseListing.of(load_file(path))
+            listing = read_listing(path) or ExerciseListing.of(load_file(path, templates=False))
             _require_readable_formulas(Path(path), listing.id,
                                        written_formula_problems(listing.formulas))
             listings.setdefault(listing.id, listing)
