@@ -17,6 +17,7 @@ Usage::
 from __future__ import annotations
 
 import json
+import os
 import sys
 from pathlib import Path
 
@@ -430,7 +431,20 @@ def grade_main(file, as_json, solution, folders):
     The file is read, never run: each answer must be a number, a quoted string, a list
     of numbers or None.
     """
+    _one_blas_thread()
     _grade_files(_Context(folders, load_project()), (file,), as_json, solution)
+
+
+def _one_blas_thread() -> None:
+    """Let numpy's BLAS start one thread, unless the environment says otherwise: grading
+    one file multiplies no large matrices, and starting a thread per core costs a cold
+    ``grade FILE`` more CPU than its grading. numpy reads the setting when it is first
+    imported (here, when the exercise file is loaded); once it is loaded, nothing is
+    changed."""
+    if "numpy" in sys.modules or any(variable in os.environ for variable in (
+            "OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS")):
+        return
+    os.environ["OPENBLAS_NUM_THREADS"] = "1"
 
 
 def _grade_files(context, files, as_json, solution=False):
