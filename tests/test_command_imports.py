@@ -71,6 +71,20 @@ def test_grading_a_file_imports_no_template_engine_terminal_library_units_or_cas
     assert "total 1 / 5" in report["output"]
 
 
+def test_grading_an_exercise_with_a_parameter_in_gpa_loads_no_units_registry(tmp_path):
+    # rod-struck-at-end's Young's modulus is in GPa, as in eight more exercises of the
+    # bank: a unit outside the common ones that need no pint would load its registry
+    # (half a second) for every variant drawn.
+    sheet = tmp_path / "exercise.py"
+    written = CliRunner().invoke(main, ["sheet", "rod-struck-at-end", "--student", "s1",
+                                        "-o", str(sheet)])
+    assert written.exit_code == 0, written.output
+    report = _run_fresh("grade_main", str(sheet), cwd=tmp_path)
+    assert report["exit"] == 0, report["output"]
+    assert "pint" not in report["packages"]
+    assert "total 0 / " in report["output"]  # nothing answered yet
+
+
 def test_listing_the_bank_runs_no_exercise_file_and_imports_not_even_numpy(tmp_path):
     report = _run_fresh("main", "list", cwd=tmp_path)
     assert report["exit"] == 0, report["output"]
