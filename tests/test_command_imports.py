@@ -2,7 +2,8 @@
 each is run in a fresh process that then lists the packages it imported. Grading a
 practice sheet whose units are all common ones needs neither the templates (jinja2),
 nor rich, nor pint's registry, nor sympy, scipy, matplotlib or typst; listing the bank
-reads its files without running them, so it needs not even numpy. (Their times are measured by
+reads its files without running them, so it needs not even numpy. Every unit the bank's
+parameters and parts use is one the grader knows without pint. (Their times are measured by
 bench/grading.py, never here.)"""
 
 import json
@@ -91,3 +92,20 @@ def test_listing_the_bank_runs_no_exercise_file_and_imports_not_even_numpy(tmp_p
     assert sorted(set(report["packages"]).intersection(NOT_NEEDED + ("numpy",))) == []
     assert [name for name in report["packages"] if name.startswith("dynagrade_exercise")] == []
     assert "projectile-range" in report["output"]
+
+
+def test_every_unit_of_the_bank_is_read_without_pint(bank, monkeypatch):
+    from dynagrade.grading import units
+    from dynagrade.grading.quantity import unit_info
+
+    def no_pint():
+        raise AssertionError("pint's registry was asked for")
+
+    monkeypatch.setattr(units, "registry", no_pint)
+    units._lookup.cache_clear()
+    unit_info.cache_clear()
+    used = {p.unit for e in bank.listing() for p in (*e.params, *e.parts) if p.unit}
+    assert "GPa" in used and "m/s^2" in used
+    for unit in sorted(used):
+        factor, _ = unit_info(unit)
+        assert factor > 0, unit
