@@ -1,7 +1,8 @@
 """Benchmark of the grader: throughput, symbolic verdict latency, a naive CAS baseline,
 the slowest verdict of a fuzzing corpus, the cold-process time of grading one filled-in
-exercise file, that of `dynagrade list` (which must not run the bank's exercise files)
-and that of collecting the test suite.
+exercise file, that of `dynagrade list` (which must not run the bank's exercise files),
+each with dynagrade's bytecode cached and compiled from source, and that of collecting
+the test suite.
 
     PYTHONPATH=src python bench/grading.py            # 2000 answers, CI-sized
     PYTHONPATH=src python bench/grading.py --size 10000 --naive 60
@@ -17,6 +18,7 @@ import argparse
 import json
 import os
 import random
+import shutil
 import statistics
 import subprocess
 import sys
@@ -198,7 +200,23 @@ def run_naive(count: int, ours: list[float]) -> None:
           f"p99 {percentile(times, 0.99) * 1e3:.1f} ms -> ours is {naive / mine:,.0f}x faster (median)")
 
 
-def run_cold() -> None:
+def bytecode_cases(folder: Path) -> list[tuple[str, dict]]:
+    """The two ways a command starts cold, as (name, environment): with dynagrade's
+    bytecode cached (src/ as it is, PYTHONDONTWRITEBYTECODE unset, so the untimed first
+    run writes what is missing) and compiled from source (a copy of src/ without
+    __pycache__ in ``folder``, run with PYTHONDONTWRITEBYTECODE set, as a fresh clone
+    starts under that setting; the installed libraries keep their bytecode in both)."""
+    copy = folder / "from-source"
+    shutil.copytree(ROOT / "src", copy / "src",
+                    ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+    (copy / "exercises").symlink_to(ROOT / "exercises")  # the bank beside src/, as here
+    cached = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    return [("bytecode cached", dict(cached, PYTHONPATH=str(ROOT / "src"))),
+            ("compiled from source", dict(os.environ, PYTHONPATH=str(copy / "src"),
+                                          PYTHONDONTWRITEBYTECODE="1"))]
+
+
+def run_cold(cases: list[tuple[str, dict]]) -> None:
     env = dict(os.environ, PYTHONPATH=str(ROOT / "src"))
     out = subprocess.run([sys.executable, "-X", "importtime", "-c", "import dynagrade.grading"],
                          capture_output=True, text=True, env=env)
@@ -222,12 +240,16 @@ def run_cold() -> None:
                 lines[k] = line.replace("None", value)
         sheet.write_text("\n".join(lines) + "\n", encoding="utf-8")
         command = [sys.executable, "-c", "import sys; from dynagrade.cli import grade_main; grade_main()", str(sheet)]
-        print("cold `grade FILE` (answered sheet" + cold_runs(command, env))
+        for case, case_env in cases:
+            print(f"cold `grade FILE` (answered sheet, {case}" + cold_runs(command, case_env)
+                  + "; target 0.25 s")
 
 
 def cold_runs(command: list[str], env: dict, runs: int = 5) -> str:
-    """``command`` run ``runs`` times in fresh processes: ", status): the median wall time
-    (and the fastest) and the median CPU time (user + system of the process)"."""
+    """``command`` run ``runs`` times in fresh processes, after one untimed run: ", status):
+    the median wall time (and the fastest) and the median CPU time (user + system of the
+    process)"."""
+    fresh_process_times(command, env, 1)
     walls, cpus, code = fresh_process_times(command, env, runs)
     status = "ok" if code == 0 else f"exit {code}"
     return (f", {status}): median of {runs} {statistics.median(walls):.2f} s "
@@ -248,11 +270,12 @@ def fresh_process_times(command: list[str], env: dict, runs: int) -> tuple[list[
     return walls, cpus, os.waitstatus_to_exitcode(status)
 
 
-def run_cold_list(runs: int = 5) -> None:
+def run_cold_list(cases: list[tuple[str, dict]], runs: int = 5) -> None:
     """The time of `dynagrade list` in fresh processes: the median of ``runs``."""
-    env = dict(os.environ, PYTHONPATH=str(ROOT / "src"))
     command = [sys.executable, "-m", "dynagrade.cli", "list"]
-    print("cold `dynagrade list` (" + cold_runs(command, env, runs).removeprefix(", "))
+    for case, env in cases:
+        print(f"cold `dynagrade list` ({case}" + cold_runs(command, env, runs)
+              + "; target 0.5 s")
 
 
 def run_collect(runs: int = 3) -> None:
@@ -283,8 +306,10 @@ def main() -> None:
     run_naive(args.naive, ours)
     run_fuzzing()
     if not args.no_cold:
-        run_cold()
-        run_cold_list()
+        with tempfile.TemporaryDirectory() as folder:
+            cases = bytecode_cases(Path(folder))
+            run_cold(cases)
+            run_cold_list(cases)
         run_collect()
 
 

@@ -67,6 +67,35 @@ def test_a_malformed_exercise_file_names_the_file_line_and_fault(tmp_path, text,
     assert str(path) in str(error.value) and message in str(error.value)
 
 
+@pytest.mark.parametrize("template, message", [
+    ('statement="x = {% if %}",', "line 4: statement template, line 1: Expected an expression"),
+    ('statement="x = {{ x }}", solution="{{ speed }}",',
+     "line 4: exercise 'templated': the solution template names ['speed']"),
+])
+def test_a_bad_template_is_the_files_error_at_the_line_building_the_exercise(
+        tmp_path, template, message):
+    text = GOOD.format(id="templated", title="T").replace('statement="x = {{ x }}",', template)
+    path = _write(tmp_path, "t.py", text)
+    with pytest.raises(ExerciseFileError) as error:
+        load_file(path)
+    assert str(error.value).startswith(f"{path.resolve()}, {message}")
+
+
+def test_a_file_loaded_without_its_templates_checked_fails_when_they_are_asked_for(
+        tmp_path):
+    text = GOOD.format(id="templated", title="T").replace(
+        'statement="x = {{ x }}",', 'statement="x = {{ x }}", solution="{{ speed }}",')
+    path = _write(tmp_path, "t.py", text)
+    exercise = load_file(path, templates=False)  # grading a file renders neither template
+    variant = exercise.variant(0, with_statement=False)
+    assert variant.answers["y"] == pytest.approx(2 * variant.params["x"])
+    assert variant.statement == ""
+    with pytest.raises(ExerciseFileError, match="line 4: .*names \\['speed'\\]"):
+        load_file(path)  # the same module, from the cache: now its templates are checked
+    with pytest.raises(ExerciseFileError, match="names \\['speed'\\]"):
+        open_bank([tmp_path]).get("templated")
+
+
 def test_an_unknown_id_suggests_close_ones(bank):
     with pytest.raises(UnknownExercise, match="projectile-range"):
         bank.get("projectile-rnge")

@@ -120,14 +120,6 @@ def figure(p):
     return drawing
 
 
-def _position(name, symbol):
-    return Uniform(name, -1.5, 1.5, step=0.1, unit="m", symbol=symbol)
-
-
-def _speed(name, symbol):
-    return Uniform(name, -2.0, 2.0, step=0.1, unit="m/s", symbol=symbol)
-
-
 EXERCISE = Exercise(
     id="pucks-centre-of-mass",
     title="Three pucks on an air table: centre of mass and relative coordinates",
@@ -137,12 +129,18 @@ EXERCISE = Exercise(
         Uniform("m1", 0.2, 3.0, step=0.1, unit="kg", symbol="m_1"),
         Uniform("m2", 0.2, 3.0, step=0.1, unit="kg", symbol="m_2"),
         Uniform("m3", 0.2, 3.0, step=0.1, unit="kg", symbol="m_3"),
-        _position("x1", "x_1"), _position("y1", "y_1"),
-        _position("x2", "x_2"), _position("y2", "y_2"),
-        _position("x3", "x_3"), _position("y3", "y_3"),
-        _speed("u1", r"\dot x_1"), _speed("w1", r"\dot y_1"),
-        _speed("u2", r"\dot x_2"), _speed("w2", r"\dot y_2"),
-        _speed("u3", r"\dot x_3"), _speed("w3", r"\dot y_3"),
+        Uniform("x1", -1.5, 1.5, step=0.1, unit="m", symbol="x_1"),
+        Uniform("y1", -1.5, 1.5, step=0.1, unit="m", symbol="y_1"),
+        Uniform("x2", -1.5, 1.5, step=0.1, unit="m", symbol="x_2"),
+        Uniform("y2", -1.5, 1.5, step=0.1, unit="m", symbol="y_2"),
+        Uniform("x3", -1.5, 1.5, step=0.1, unit="m", symbol="x_3"),
+        Uniform("y3", -1.5, 1.5, step=0.1, unit="m", symbol="y_3"),
+        Uniform("u1", -2.0, 2.0, step=0.1, unit="m/s", symbol=r"\dot x_1"),
+        Uniform("w1", -2.0, 2.0, step=0.1, unit="m/s", symbol=r"\dot y_1"),
+        Uniform("u2", -2.0, 2.0, step=0.1, unit="m/s", symbol=r"\dot x_2"),
+        Uniform("w2", -2.0, 2.0, step=0.1, unit="m/s", symbol=r"\dot y_2"),
+        Uniform("u3", -2.0, 2.0, step=0.1, unit="m/s", symbol=r"\dot x_3"),
+        Uniform("w3", -2.0, 2.0, step=0.1, unit="m/s", symbol=r"\dot y_3"),
     ),
     constraints=(
         Constraint("the pucks are at least 0.4 m apart and 0.5 m from O", _apart),

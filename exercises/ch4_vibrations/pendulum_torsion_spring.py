@@ -133,7 +133,7 @@ hanging position.
                 misconceptions=(Misconception("1/omega for the period", lambda p: 1 / omega(p),
                                               "The period is 2 pi / omega."),)),
         Symbolic("omega_formula", "omega as a formula", question=4, points=1,
-                 expected="sqrt(g/L + kt/(m*L^2))", variables={k: v for k, v in _VARS.items() if k != "theta"},
+                 expected="sqrt(g/L + kt/(m*L^2))", variables=("m", "L", "g", "kt"),
                  equals="omega"),
     ),
 )

@@ -17,6 +17,7 @@ Usage::
 from __future__ import annotations
 
 import json
+import os
 import sys
 from pathlib import Path
 
@@ -75,8 +76,10 @@ class _Context:
             self._bank = loader.open_bank(self.folders)
         return self._bank
 
-    def exercise(self, exercise_id: str):
-        return self.bank.get(exercise_id)
+    def exercise(self, exercise_id: str, templates: bool = True):
+        """The exercise; ``templates=False`` for a command that renders neither its
+        statement nor its solution (its templates are then not checked)."""
+        return self.bank.get(exercise_id, templates=templates)
 
 
 _EXERCISES_HELP = (f"A folder of exercise files, searched before the shipped bank "
@@ -428,18 +431,33 @@ def grade_main(file, as_json, solution, folders):
     The file is read, never run: each answer must be a number, a quoted string, a list
     of numbers or None.
     """
+    _one_blas_thread()
     _grade_files(_Context(folders, load_project()), (file,), as_json, solution)
+
+
+def _one_blas_thread() -> None:
+    """Let numpy's BLAS start one thread, unless the environment says otherwise: grading
+    one file multiplies no large matrices, and starting a thread per core costs a cold
+    ``grade FILE`` more CPU than its grading. numpy reads the setting when it is first
+    imported (here, when the exercise file is loaded); once it is loaded, nothing is
+    changed."""
+    if "numpy" in sys.modules or any(variable in os.environ for variable in (
+            "OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS")):
+        return
+    os.environ["OPENBLAS_NUM_THREADS"] = "1"
 
 
 def _grade_files(context, files, as_json, solution=False):
     """Grade practice and homework files; an exam's file (it carries a variant token)
-    gets the key-free self-check only (and no solution: its variant is the staff's)."""
+    gets the key-free self-check only (and no solution: its variant is the staff's).
+    Grading renders no statement, so the exercises' templates are checked (and jinja2
+    imported) only for ``--solution``."""
     from .exercise.sheet import read_sheet
 
     results = []
     for file in files:
         sheet = read_sheet(file)
-        exercise = context.exercise(sheet.exercise_id)
+        exercise = context.exercise(sheet.exercise_id, templates=solution)
         notes = [f"{file}: no part named {name!r} in {exercise.id}; it was ignored"
                  for name in sheet.answers if name not in {p.name for p in exercise.parts}]
         notes += [f"{file}: {note}" for note in sheet.notes]
@@ -478,7 +496,7 @@ def _full_verdicts(file, exercise, sheet):
             sheet.seed != student_seed(exercise.id, sheet.student):
         click.echo(f"warning: {file}: this is not the practice variant of student "
                    f"{sheet.student!r}; graded the variant the file names", err=True)
-    variant = exercise.variant(sheet.seed)
+    variant = exercise.variant(sheet.seed, with_statement=False)
     return variant, grade_variant(exercise, variant, sheet.answers, sheet.problems)
 
 

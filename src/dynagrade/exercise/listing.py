@@ -160,15 +160,25 @@ def _calls(node: ast.expr, names: dict[str, ast.expr]) -> list[ast.Call]:
 
 
 def _arguments(call: ast.Call, cls: type, wanted: tuple[str, ...]) -> dict:
-    """The ``wanted`` arguments of ``cls(...)`` as written in ``call`` (literals only)."""
-    bound = _signature(cls).bind_partial(*call.args, **{
-        k.arg: k.value for k in call.keywords if k.arg})
-    return {name: bound.arguments[name] for name in wanted if name in bound.arguments}
+    """The ``wanted`` arguments of ``cls(...)`` as written in ``call``, bound to ``cls``'s
+    parameters by position and keyword (a call Python would refuse, or one that unpacks
+    ``*args`` or ``**kwargs``, is :class:`_NotLiteral`: the file is loaded instead)."""
+    names = _parameter_names(cls)
+    if len(call.args) > len(names) or any(isinstance(a, ast.Starred) for a in call.args):
+        raise _NotLiteral("positional arguments")
+    bound = dict(zip(names, call.args))
+    for keyword in call.keywords:
+        if keyword.arg is None or keyword.arg not in names or keyword.arg in bound:
+            raise _NotLiteral(f"keyword {keyword.arg}")
+        bound[keyword.arg] = keyword.value
+    return {name: bound[name] for name in wanted if name in bound}
 
 
 @cache
-def _signature(cls: type) -> inspect.Signature:
-    return inspect.signature(cls)
+def _parameter_names(cls: type) -> tuple[str, ...]:
+    """The names of ``cls(...)``'s parameters, in order (a class of the exercise model
+    takes neither ``*args`` nor ``**kwargs``)."""
+    return tuple(inspect.signature(cls).parameters)
 
 
 def _parameter(call: ast.Call, names) -> Parameter:
@@ -194,7 +204,7 @@ def _written_formula(call: ast.Call, names) -> list[tuple[str, str, str, tuple[s
     A Symbolic part that writes any of them otherwise is :class:`_NotLiteral` (the file
     is loaded, and the loaded exercise checked)."""
     cls = getattr(_parts, _callee(call) or "")
-    if "expected" not in _signature(cls).parameters:
+    if "expected" not in _parameter_names(cls):
         return []
     written = _arguments(call, cls, ("name", "expected", "variables", "misconceptions"))
     name = _literal(written["name"], names)

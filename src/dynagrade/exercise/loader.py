@@ -21,23 +21,28 @@ Exercise files are the authors' code and are imported; students' files never are
 from __future__ import annotations
 
 import hashlib
-import importlib.abc
+import importlib.machinery
 import importlib.util
 import os
 import re
 import sys
 from dataclasses import dataclass
 from pathlib import Path
+from types import ModuleType
 from typing import Iterable, Iterator
 
-from ..errors import DynagradeError, UnknownExercise
+from ..errors import DefinitionError, DynagradeError, UnknownExercise
 from .formula_check import formula_problems, written_formula_problems
 from .listing import ExerciseListing, read_listing
-from .model import Exercise
-from .source_lines import line_of_error, line_of_string
+from .model import Exercise, templates_checked_by_caller
+from .source_lines import line_of_assignment, line_of_error, line_of_string
 
 ENVIRONMENT_VARIABLE = "DYNAGRADE_EXERCISES"
-_DECLARED_ID = re.compile(r"""\bid\s*=\s*["']([a-z0-9]+(?:-[a-z0-9]+)*)["']""")
+#: ``id="..."`` as a file declares it. The pattern starts with the literal ``id`` (which
+#: the regular expression engine finds fast); that no letter, digit or ``_`` comes
+#: before it is checked by :func:`_declared_ids` (a leading ``\b`` made the scan of the
+#: whole bank ten times slower).
+_DECLARED_ID = re.compile(r"""id\s*=\s*["']([a-z0-9]+(?:-[a-z0-9]+)*)["']""")
 
 
 class ExerciseFileError(DynagradeError):
@@ -79,13 +84,18 @@ def exercise_files(folder: Path) -> Iterator[Path]:
         yield path
 
 
-def load_file(path: str | os.PathLike) -> Exercise:
+def load_file(path: str | os.PathLike, *, templates: bool = True) -> Exercise:
     """The ``EXERCISE`` defined by the file at ``path``, as the file reads now.
 
     An exercise's identity is its file's content: the module is cached under a name made
     of the path and the SHA-256 of the bytes, so loading an unchanged file again costs a
     read and a hash, and loading it after an edit runs the new text (the module of the
     old text is dropped). The hash is the loaded exercise's ``fingerprint``.
+
+    The statement and solution templates are checked after the file has run, with the
+    same one-line error as any other mistake in it; ``templates=False`` leaves them to
+    a later load or to their first rendering, for a command that renders neither
+    (grading a student's file), which then does not import jinja2.
     """
     path = Path(path).resolve()
     try:
@@ -97,23 +107,17 @@ def load_file(path: str | os.PathLike) -> Exercise:
     module_name = f"dynagrade_exercise_{place}_{fingerprint[:16]}"
     cached = sys.modules.get(module_name)
     if cached is not None:
+        if templates:
+            _require_valid_templates(path, source, cached.EXERCISE)
         return cached.EXERCISE
-    loader = _SourceLoader(path, source)
-    spec = importlib.util.spec_from_loader(module_name, loader, origin=str(path))
-    module = importlib.util.module_from_spec(spec)
-    try:
-        loader.exec_module(module)
-    except SyntaxError as error:
-        raise ExerciseFileError(f"{path}, line {error.lineno}: {error.msg}") from None
-    except Exception as error:
-        kind = "" if isinstance(error, DynagradeError) else f"{type(error).__name__}: "
-        raise ExerciseFileError(f"{path}, line {line_of_error(path, error)}: {kind}{error}") \
-            from None
+    module = _run(path, source, module_name)
     exercise = getattr(module, "EXERCISE", None)
     if not isinstance(exercise, Exercise):
         raise ExerciseFileError(
             f"{path}: defines no EXERCISE = Exercise(...); a helper module of an exercise "
             "folder has a name starting with '_'")
+    if templates:
+        _require_valid_templates(path, source, exercise)
     _require_readable_formulas(path, exercise.id, formula_problems(exercise))
     object.__setattr__(exercise, "path", str(path))
     object.__setattr__(exercise, "fingerprint", fingerprint)
@@ -121,6 +125,34 @@ def load_file(path: str | os.PathLike) -> Exercise:
         del sys.modules[stale]
     sys.modules[module_name] = module
     return exercise
+
+
+def _run(path: Path, source: bytes, module_name: str) -> ModuleType:
+    """The module of the exercise file ``path`` (its bytes ``source``), run; the
+    exercises it builds leave their templates to :func:`load_file`."""
+    loader = _SourceLoader(module_name, path, source)
+    spec = importlib.util.spec_from_loader(module_name, loader, origin=str(path))
+    module = importlib.util.module_from_spec(spec)
+    try:
+        with templates_checked_by_caller():
+            loader.exec_module(module)
+    except SyntaxError as error:
+        raise ExerciseFileError(f"{path}, line {error.lineno}: {error.msg}") from None
+    except Exception as error:
+        kind = "" if isinstance(error, DynagradeError) else f"{type(error).__name__}: "
+        raise ExerciseFileError(f"{path}, line {line_of_error(path, error)}: {kind}{error}") \
+            from None
+    return module
+
+
+def _require_valid_templates(path: Path, source: bytes, exercise: Exercise) -> None:
+    """The exercise's templates compile and name only what they may, else the file's
+    error at the line where ``EXERCISE`` is built."""
+    try:
+        exercise.check_templates()
+    except DefinitionError as error:
+        line = line_of_assignment(source, "EXERCISE") or "?"
+        raise ExerciseFileError(f"{path}, line {line}: {error}") from None
 
 
 def _require_readable_formulas(path: Path, exercise_id: str, problems) -> None:
@@ -134,18 +166,22 @@ def _require_readable_formulas(path: Path, exercise_id: str, problems) -> None:
                                 f"{part_name!r}: {problem}")
 
 
-class _SourceLoader(importlib.abc.SourceLoader):
+class _SourceLoader(importlib.machinery.SourceFileLoader):
     """Runs the bytes that were hashed, never a cached ``.pyc`` of the path: an edit
-    within the same second and of the same size would otherwise load the old code."""
+    within the same second and of the same size would otherwise load the old code.
+    (A :class:`~importlib.machinery.SourceFileLoader` rather than an ``importlib.abc``
+    one: importing ``importlib.abc`` imports ``tempfile`` and more, 10 ms of a cold
+    ``grade FILE``.)"""
 
-    def __init__(self, path: Path, source: bytes):
-        self.path, self.source = path, source
-
-    def get_filename(self, fullname: str) -> str:
-        return str(self.path)
+    def __init__(self, fullname: str, path: Path, source: bytes):
+        super().__init__(fullname, str(path))
+        self.source = source
 
     def get_data(self, path: str) -> bytes:
-        return self.source
+        return self.source if path == self.path else super().get_data(path)
+
+    def get_code(self, fullname: str):
+        return self.source_to_code(self.source, self.path)
 
 
 @dataclass
@@ -177,11 +213,12 @@ class Bank:
                 self._files.update({i: path for i, (path, _) in found.items()})
         return self._files
 
-    def get(self, exercise_id: str) -> Exercise:
-        """The exercise with this id; a clear error, with suggestions, when there is none."""
+    def get(self, exercise_id: str, *, templates: bool = True) -> Exercise:
+        """The exercise with this id; a clear error, with suggestions, when there is none.
+        ``templates=False``: its templates are not checked (:func:`load_file`)."""
         path = self._index().get(exercise_id)
         if path is not None:
-            exercise = load_file(path)
+            exercise = load_file(path, templates=templates)
             if exercise.id == exercise_id:
                 return exercise
         for exercise in self.all():
@@ -212,10 +249,11 @@ class Bank:
     def listing(self) -> list[ExerciseListing]:
         """What ``dynagrade list`` shows of every exercise, in the order of :meth:`all`,
         read from the files without running them where they allow it (see
-        :mod:`dynagrade.exercise.listing`)."""
+        :mod:`dynagrade.exercise.listing`); a listing renders no template, so a file that
+        has to be run is not checked for them, as a file read statically is not."""
         listings = {}
         for path in sorted(set(self._index().values())):
-            listing = read_listing(path) or ExerciseListing.of(load_file(path))
+            listing = read_listing(path) or ExerciseListing.of(load_file(path, templates=False))
             _require_readable_formulas(Path(path), listing.id,
                                        written_formula_problems(listing.formulas))
             listings.setdefault(listing.id, listing)
@@ -231,11 +269,17 @@ def _declared_ids(path: Path) -> list[tuple[str, int | str]]:
     except (OSError, UnicodeDecodeError) as error:
         raise ExerciseFileError(f"{path}: cannot read the file ({error})") from None
     declared = [(match.group(1), text.count("\n", 0, match.start()) + 1)
-                for match in _DECLARED_ID.finditer(text)]
+                for match in _DECLARED_ID.finditer(text)
+                if _starts_a_word(text, match.start())]
     if declared:
         return declared
     exercise = load_file(path)
     return [(exercise.id, line_of_string(text, exercise.id) or "?")]
+
+
+def _starts_a_word(text: str, index: int) -> bool:
+    """Whether no letter, digit or ``_`` comes right before ``text[index]``."""
+    return index == 0 or not (text[index - 1].isalnum() or text[index - 1] == "_")
 
 
 def open_bank(extra_folders: Iterable[str | os.PathLike] = ()) -> Bank:

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import math
 import re
+from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Mapping
 
@@ -27,6 +29,25 @@ _ID = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
 _SOURCE_CHAPTER = re.compile(r"(\d+)(?:\.\d+)*")
 _MAX_DRAWS = 1000
 
+#: True while the loader runs an exercise file: the exercises it builds leave their
+#: templates to the loader (:func:`templates_checked_by_caller`).
+_CALLER_CHECKS_TEMPLATES: ContextVar[bool] = ContextVar("caller_checks_templates",
+                                                        default=False)
+
+
+@contextmanager
+def templates_checked_by_caller():
+    """Within this block, building an :class:`Exercise` does not compile its statement and
+    solution templates; whoever builds it calls :meth:`Exercise.check_templates` when
+    it needs them. The loader runs exercise files so, and checks the templates right
+    after, unless the command renders neither (``grade FILE`` only grades, and so does
+    not import jinja2)."""
+    token = _CALLER_CHECKS_TEMPLATES.set(True)
+    try:
+        yield
+    finally:
+        _CALLER_CHECKS_TEMPLATES.reset(token)
+
 
 class ConstraintError(DynagradeError, ValueError):
     """No draw of the parameters met the exercise's constraints."""
@@ -38,7 +59,8 @@ class Variant:
 
     ``params`` are in the parameters' declared units, ``answers`` in the parts' units
     (symbolic parts hold their expression, choice parts their option label).
-    ``warnings`` lists constraints that overridden values broke.
+    ``warnings`` lists constraints that overridden values broke. ``statement`` is empty
+    in a variant made only to be graded (``grade FILE``, a class's grading).
     """
 
     exercise_id: str
@@ -86,6 +108,7 @@ class Exercise:
     path: str | None = field(default=None, compare=False)
     fingerprint: str | None = field(default=None, compare=False)
     _draw: list = field(default_factory=list, init=False, repr=False, compare=False)
+    _templates_checked: bool = field(default=False, init=False, repr=False, compare=False)
 
     def __post_init__(self):
         if not _ID.match(self.id):
@@ -106,8 +129,18 @@ class Exercise:
         if self.chapter is None:
             object.__setattr__(self, "chapter", chapter_of(self.source))
         object.__setattr__(self, "topics", tuple(self.topics))
+        if not _CALLER_CHECKS_TEMPLATES.get():
+            self.check_templates()
+
+    def check_templates(self) -> None:
+        """Refuse a statement or worked-solution template that does not compile or names
+        what it cannot have (:func:`~.solution.check_solution`); checked once per exercise,
+        when it is built (or, for an exercise file, when the loader has run it)."""
+        if self._templates_checked:
+            return
         compile_statement(self.statement)
         check_solution(self)
+        object.__setattr__(self, "_templates_checked", True)
 
     # -- parameters -------------------------------------------------------------------
 
@@ -194,14 +227,17 @@ class Exercise:
         return answers
 
     def variant(self, seed: int, overrides: Mapping[str, float] | None = None,
-                strict: bool = True, tally: DrawTally | None = None) -> Variant:
+                strict: bool = True, tally: DrawTally | None = None,
+                with_statement: bool = True) -> Variant:
         """The variant for ``seed`` (with ``overrides`` fixed, in declared units);
-        ``tally`` counts the draws it takes (:meth:`draw`)."""
+        ``tally`` counts the draws it takes (:meth:`draw`). ``with_statement=False``
+        leaves the statement empty, for a variant that is only graded."""
         values, warnings = self.draw(seed, overrides, strict=strict, tally=tally)
-        return self.variant_from_params(seed, values, warnings)
+        return self.variant_from_params(seed, values, warnings, with_statement)
 
     def variant_from_params(self, seed: int, values: Mapping[str, float],
-                            warnings: tuple[str, ...] = ()) -> Variant:
+                            warnings: tuple[str, ...] = (),
+                            with_statement: bool = True) -> Variant:
         """The variant with these parameter values, e.g. as stored in an exam manifest."""
         values = {p.name: float(values[p.name]) for p in self.params}
         return Variant(
@@ -209,7 +245,8 @@ class Exercise:
             seed=int(seed),
             params=values,
             answers=self.solve_in_part_units(values),
-            statement=render_statement(self.statement, self.params, values),
+            statement=(render_statement(self.statement, self.params, values)
+                       if with_statement else ""),
             warnings=tuple(warnings),
         )
 

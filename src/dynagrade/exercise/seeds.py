@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import hashlib
 import hmac
-import secrets
 
 SECRET_BYTES = 32
 TOKEN_CHARACTERS = 24
@@ -35,6 +34,8 @@ def student_seed(exercise_id: str, student_id: str) -> int:
 
 def new_secret() -> str:
     """A fresh exam secret: 32 random bytes as hex."""
+    import secrets  # here: only a new exam needs it, and it imports random and base64
+
     return secrets.token_hex(SECRET_BYTES)
 
 

@@ -16,6 +16,7 @@ The template's context (docs/authoring.md, "Worked solutions"):
 
 The solution is rendered from the parameter values alone (the solver runs again), so an
 exam manifest, which stores each variant's parameters, is all a later rendering needs.
+jinja2 is imported when a solution is first checked or rendered, as for statements.
 """
 
 from __future__ import annotations
@@ -24,14 +25,14 @@ import math
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any, Iterator, Mapping
 
-import jinja2
-from jinja2 import meta, nodes
-
 from ..errors import DefinitionError
 from .numbers import answer_text
 from .statement import ShownValue
 
 if TYPE_CHECKING:
+    import jinja2
+    from jinja2 import nodes
+
     from .model import Exercise, Variant
 
 #: the names a solution template may use besides the exercise's parameters
@@ -110,6 +111,8 @@ def _map(function, value):
 
 @lru_cache(maxsize=1)
 def _environment() -> jinja2.Environment:
+    import jinja2
+
     environment = jinja2.Environment(undefined=jinja2.StrictUndefined, autoescape=False,
                                      keep_trailing_newline=False)
     environment.filters["deg"] = degrees
@@ -119,6 +122,8 @@ def _environment() -> jinja2.Environment:
 @lru_cache(maxsize=512)
 def compile_solution(source: str) -> jinja2.Template:
     """The compiled template; a syntax error (or an unknown filter) names the line."""
+    import jinja2
+
     try:
         return _environment().from_string(source)
     except jinja2.TemplateSyntaxError as error:
@@ -131,6 +136,8 @@ def check_solution(exercise: Exercise) -> None:
     a top-level name that is no parameter, ``answers`` or ``si``, or ``answers.X`` for an
     ``X`` that is no part. (``si.X`` depends on what the solver returns; rendering checks
     it, and ``dynagrade verify`` renders every variant.)"""
+    from jinja2 import meta
+
     if exercise.solution is None:
         return
     where = f"exercise {exercise.id!r}"
@@ -154,6 +161,8 @@ def check_solution(exercise: Exercise) -> None:
 
 def _members(tree: nodes.Template, name: str) -> Iterator[str]:
     """Every ``X`` of ``name.X`` and ``name["X"]`` in the template."""
+    from jinja2 import nodes
+
     for node in tree.find_all((nodes.Getattr, nodes.Getitem)):
         if isinstance(node.node, nodes.Name) and node.node.name == name:
             if isinstance(node, nodes.Getattr):
@@ -181,6 +190,8 @@ def solver_values(exercise: Exercise, variant: Variant) -> dict[str, Any]:
 def render_solution(exercise: Exercise, variant: Variant) -> str | None:
     """The worked solution of ``variant`` as Markdown, or ``None`` when the exercise has
     none; :class:`SolutionError` names the exercise and seed when it cannot be rendered."""
+    import jinja2
+
     if exercise.solution is None:
         return None
     where = f"exercise {exercise.id!r}, seed {variant.seed}: solution template"

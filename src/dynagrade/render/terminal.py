@@ -1,34 +1,38 @@
-"""What the commands print in a terminal (rich tables and progress)."""
+"""What the commands print in a terminal.
+
+The grade report and the bank's listing are plain text tables (:mod:`.text_table`), so
+that ``grade FILE`` and ``dynagrade list`` start without importing rich; the panels,
+progress bars and the other commands' tables are rich's, imported where they are drawn.
+"""
 
 from __future__ import annotations
 
-from typing import Callable, Sequence
+from typing import TYPE_CHECKING, Callable, Sequence
 
-from rich.console import Console
-from rich.panel import Panel
-from rich.progress import Progress
-from rich.table import Table
+import click
 
 from ..exercise.numbers import percent_text, points_text
+from .text_table import text_table
 
-_STATUS_STYLE = {"correct": "green", "follow-through": "yellow", "partial": "yellow",
-                 "wrong": "red", "not answered": "dim"}
+if TYPE_CHECKING:
+    from rich.console import Console
 
+def _console(stderr: bool = False) -> Console:
+    from rich.console import Console
 
-def _console() -> Console:
-    return Console(highlight=False)
+    return Console(stderr=stderr, highlight=False)
 
 
 def exercise_table(exercises) -> None:
-    table = Table(title=f"{len(exercises)} exercises")
-    for column in ("id", "source", "title", "parts"):
-        table.add_column(column, overflow="fold")
-    for e in exercises:
-        table.add_row(e.id, e.source, e.title, ", ".join(p.name for p in e.parts))
-    _console().print(table)
+    """The bank's listing: id, source, title and parts of every exercise."""
+    click.echo(text_table(("id", "source", "title", "parts"), [
+        (e.id, e.source, e.title, ", ".join(p.name for p in e.parts)) for e in exercises],
+        title=f"{len(exercises)} exercises"), nl=False)
 
 
 def answers_table(exercise, variant) -> None:
+    from rich.table import Table
+
     table = Table(title=f"{exercise.id}, seed {variant.seed}")
     table.add_column("part")
     table.add_column("answer")
@@ -38,7 +42,8 @@ def answers_table(exercise, variant) -> None:
 
 
 def variant_panel(exercise, variant, with_answers: bool) -> None:
-    from rich.markdown import Markdown  # only `show` needs it; `grade` starts faster
+    from rich.markdown import Markdown
+    from rich.panel import Panel
 
     console = _console()
     console.print(Panel(Markdown(variant.statement),
@@ -51,6 +56,7 @@ def variant_panel(exercise, variant, with_answers: bool) -> None:
 def solution_panel(exercise, variant, solution: str | None) -> None:
     """The variant's worked solution (Markdown), or a line saying there is none yet."""
     from rich.markdown import Markdown
+    from rich.panel import Panel
 
     console = _console()
     if solution is None:
@@ -61,21 +67,20 @@ def solution_panel(exercise, variant, solution: str | None) -> None:
 
 
 def result_table(exercise, result) -> None:
-    table = Table(title=f"{exercise.title} ({exercise.id}, seed {result.seed})")
-    for column in ("part", "verdict", "points", "feedback"):
-        table.add_column(column, overflow="fold")
-    for part in result.parts:
-        style = _STATUS_STYLE.get(part.status, "")
-        table.add_row(part.name, f"[{style}]{part.status}[/]",
-                      f"{points_text(part.score)} / {points_text(part.max_score)}",
-                      part.feedback)
-    table.caption = f"total {points_text(result.score)} / {points_text(result.max_score)}"
-    _console().print(table)
+    """The verdict, points and feedback of every part of a graded file, and the total."""
+    click.echo(text_table(("part", "verdict", "points", "feedback"), [
+        (part.name, part.status, f"{points_text(part.score)} / {points_text(part.max_score)}",
+         part.feedback) for part in result.parts],
+        title=f"{exercise.title} ({exercise.id}, seed {result.seed})",
+        caption=f"total {points_text(result.score)} / {points_text(result.max_score)}"),
+        nl=False)
 
 
 def verify_progress(exercises: Sequence, check: Callable) -> list:
     """Run ``check`` on every exercise with a progress bar; print what failed."""
-    console = Console(stderr=True, highlight=False)
+    from rich.progress import Progress
+
+    console = _console(stderr=True)
     reports = []
     with Progress(console=console, transient=True) as progress:
         task = progress.add_task("verifying", total=len(exercises))
@@ -111,8 +116,9 @@ class progress_reporter:
     bars on stderr (one bar per stage)."""
 
     def __enter__(self):
-        self._progress = Progress(console=Console(stderr=True, highlight=False),
-                                  transient=False)
+        from rich.progress import Progress
+
+        self._progress = Progress(console=_console(stderr=True), transient=False)
         self._tasks: dict[str, int] = {}
         self._progress.__enter__()
         return self.update
@@ -128,6 +134,8 @@ class progress_reporter:
 
 def gradebook_table(outcome) -> None:
     """The class's grades, one row per roster student."""
+    from rich.table import Table
+
     table = Table(title=f"{outcome.exam_title}: {len(outcome.rows)} students")
     numbers = [str(n) for n in range(1, len(outcome.exercise_ids) + 1)]
     for column in ("student", *numbers, "total", "%", "status"):
