@@ -62,13 +62,20 @@ def pytest_collection_modifyitems(config, items):
 
 
 @pytest.hookimpl(trylast=True)
-def pytest_collection_finish(session):
-    """Freeze what collection built: the test modules, the libraries they import and some
-    110 000 objects behind the test items, all alive until the process ends. The garbage
-    collector's full passes -- pytest's own at the end of a session and the interpreter's
-    at exit, 0.3 s of a ``--collect-only``, and those during the run -- then stop
-    walking them again (as :func:`dynagrade.grading.prepare` does for sympy and pint).
-    Garbage made during the tests is collected as before."""
+def pytest_collectreport():
+    """Freeze what collecting a module built: its code, the libraries it imports and the
+    objects behind its test items, all alive until the process ends. The garbage
+    collector's full passes -- some while collecting, pytest's own at the end of a
+    session, the interpreter's at exit (together 0.4 s of a ``--collect-only``) and
+    those during the run -- then stop walking them again, as after
+    :func:`dynagrade.grading.prepare` they stop walking sympy and pint. Garbage made
+    during the tests is collected as before."""
+    gc.freeze()
+
+
+@pytest.hookimpl(trylast=True)
+def pytest_collection_finish():
+    """Freeze, as each module's, what the plugins' last look at the items built."""
     gc.freeze()
 
 
