@@ -271,8 +271,10 @@ def run_collect(runs: int = 3) -> None:
     cases = [("rewritten asserts cached", pytest_collect, dict(env, PYTHONPATH=str(ROOT / "src")))]
     with tempfile.TemporaryDirectory(prefix="dynagrade-collect-") as scratch:
         copy = Path(scratch) / "project"
-        shutil.copytree(ROOT, copy, ignore=shutil.ignore_patterns(
-            "__pycache__", ".git", ".hypothesis", ".pytest_cache", ".venv", "out", "*.egg-info"))
+        caches = shutil.ignore_patterns("__pycache__", ".git", ".hypothesis", ".pytest_cache",
+                                        ".venv", "*.egg-info")
+        shutil.copytree(ROOT, copy, ignore=lambda folder, names: caches(folder, names) | (
+            {"out"} & set(names) if Path(folder) == ROOT else set()))  # examples/run.sh's output
         in_copy = ["--rootdir", str(copy), "-c", str(copy / "pyproject.toml"), str(copy / "tests")]
         cases.append(("nothing cached", pytest_collect + in_copy,
                       dict(env, PYTHONPATH=str(copy / "src"), PYTHONDONTWRITEBYTECODE="1")))
