@@ -66,7 +66,7 @@ def pytest_collectreport():
     """Freeze what collecting a module built: its code, the libraries it imports and the
     objects behind its test items, all alive until the process ends. The garbage
     collector's full passes -- some while collecting, pytest's own at the end of a
-    session, the interpreter's at exit (together 0.4 s of a ``--collect-only``) and
+    session, the interpreter's at exit (together 0.3 s of a ``--collect-only``) and
     those during the run -- then stop walking them again, as after
     :func:`dynagrade.grading.prepare` they stop walking sympy and pint. Garbage made
     during the tests is collected as before."""
