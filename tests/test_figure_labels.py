@@ -9,12 +9,13 @@ import xml.etree.ElementTree as ET
 import pytest
 
 from dynagrade.errors import DefinitionError
-from dynagrade.exercise import open_bank
 from dynagrade.render.figures import figure_svg
 from dynagrade.render.svg_text import label_runs, plain_label, svg_tspans
 
+from bank_ids import figured_ids
+
 SVG = "{http://www.w3.org/2000/svg}"
-_FIGURED = sorted(e.id for e in open_bank().listing() if e.figured)
+_FIGURED = figured_ids()
 
 
 @pytest.mark.parametrize("label, runs", [

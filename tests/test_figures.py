@@ -14,8 +14,10 @@ from dynagrade.exercise.figure_checks import given_away
 from dynagrade.render.figures import figure_svg, figure_title
 from dynagrade.exercise.numbers import format_number
 
+from bank_ids import figured_ids
+
 SEEDS = (0, 1, 2)
-_FIGURED = sorted(e.id for e in open_bank().listing() if e.figured)  # no file is run
+_FIGURED = figured_ids()
 
 
 def _label_texts(exercise, variant) -> list[str]:

@@ -15,9 +15,11 @@ from dynagrade.exercise.solution_check import solution_problems, stray_numbers
 from dynagrade.exercise.verify import verify_exercise
 from dynagrade.render.solutions import math_problems
 
+from bank_ids import bank_ids
+
 GOLDEN = Path(__file__).parent / "fixtures" / "solutions"
 #: the bank's ids, read without loading any exercise file (collection stays light)
-BANK_IDS = open_bank().ids()
+BANK_IDS = bank_ids()
 
 
 def _solve(p):
