@@ -1,6 +1,6 @@
 """Benchmark of one student's work in an exam generation, without PDFs: the CPU
-milliseconds per student of each stage (figures, sheets, the rest: variants and their
-checks, fill-in files) and, with ``--profile``, where they go.
+milliseconds per student of each stage (choosing and checking variants, figures,
+sheets, the rest: fill-in files) and, with ``--profile``, where they go.
 
     PYTHONPATH=src python bench/student.py                    # the example exam, 40 students
     PYTHONPATH=src python bench/student.py --students 100 --repeat 5

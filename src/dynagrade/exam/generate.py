@@ -89,7 +89,8 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
     report.timings["load"] = time.perf_counter() - started
     with Pool(run, default_jobs(jobs)) as pool:
         stage = time.perf_counter()
-        chosen = _variants(pool, roster, progress)
+        chosen: list[StudentVariants] = _in_roster_order(pool, student_variants, roster,
+                                                         "variants", progress)
         manifest = build_manifest(run.spec, run.exercises, run.parts,
                                   [c.entry for c in chosen])
         report.redraws = manifest.redraw_count
@@ -98,7 +99,8 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
         stage = time.perf_counter()
         key_pdf = pool.submit(_write_key_pdf, manifest) if pdf else None  # meanwhile
         _write_key_csv(run, manifest)
-        results = _students(pool, chosen, progress)
+        results: list[StudentResult] = _in_roster_order(pool, student_files, chosen,
+                                                        "students", progress)
         report.timings["students"] = time.perf_counter() - stage
         for name in STAGES:
             report.timings[f"students: {name} (worker CPU s)"] = sum(
@@ -191,22 +193,14 @@ def exercise_parts(exercise: Exercise, points: float,
                  for part in exercise.parts)
 
 
-def _variants(pool: Pool, roster: list[Student], progress: Progress) -> list[StudentVariants]:
-    """Every student's variants, in roster order."""
-    chosen = []
-    for done, variants in enumerate(pool.map(student_variants, roster, chunksize=4), 1):
-        chosen.append(variants)
-        progress("variants", done, len(roster))
-    return chosen
-
-
-def _students(pool: Pool, chosen: list[StudentVariants],
-              progress: Progress) -> list[StudentResult]:
-    """Every student's files and sheets, in roster order."""
+def _in_roster_order(pool: Pool, job: Callable, items: list, stage: str,
+                     progress: Progress) -> list:
+    """``job(run, item)`` for every item in the pool, results in the items' order, each
+    counted as done in ``stage``."""
     results = []
-    for done, result in enumerate(pool.map(student_files, chosen, chunksize=4), 1):
+    for done, result in enumerate(pool.map(job, items, chunksize=4), 1):
         results.append(result)
-        progress("students", done, len(chosen))
+        progress(stage, done, len(items))
     return results
 
 
@@ -251,6 +245,7 @@ def _staged_figures(run: GenerationRun, manifest: Manifest):
 
 
 def _write_key_pdf(run: GenerationRun, manifest: Manifest) -> None:
+    """key.pdf: every student's given values and answers (:func:`dynagrade.render.keys.key_typst`)."""
     from ..render.keys import key_typst
 
     source = (typst_preamble(run.spec.to_json(), f"{run.spec.title}: answer key")
