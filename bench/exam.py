@@ -53,8 +53,8 @@ def main(argv=None) -> None:
     parser.add_argument("--keep", help="Write into this folder and keep it.")
     args = parser.parse_args(argv)
 
-    from dynagrade.exam.classgrade import grade_class
-    from dynagrade.exam.generate import generate_exam
+    from dynagrade.classgrade.grade import grade_class
+    from dynagrade.generation.generate import generate_exam
     from dynagrade.exercise.loader import open_bank
 
     import tomllib

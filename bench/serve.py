@@ -39,9 +39,9 @@ ROOT = Path(__file__).resolve().parent.parent
 
 def build_exam(folder: Path, students: int) -> Path:
     """The manifest of the example exam for ``students`` synthetic students."""
-    from dynagrade.exam.generate import build_manifest, exercise_parts, load_exam
+    from dynagrade.generation.generate import build_manifest, exercise_parts, load_exam
     from dynagrade.exam.manifest import StudentEntry, VariantEntry, dump
-    from dynagrade.exam.variants import exam_variant
+    from dynagrade.generation.variants import exam_variant
     from dynagrade.exercise.seeds import new_secret
 
     roster = folder / "roster.csv"

@@ -27,8 +27,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "src"))
 
-from dynagrade.exam.generate import open_run  # noqa: E402
-from dynagrade.exam.student import STAGES, student_job  # noqa: E402
+from dynagrade.generation.generate import open_run  # noqa: E402
+from dynagrade.generation.student import STAGES, student_job  # noqa: E402
 from dynagrade.exercise.loader import open_bank  # noqa: E402
 
 SECRET = "bench-" + "0" * 40

@@ -54,7 +54,7 @@ s3,Cy Three,cy@example.org
 @pytest.fixture(scope="session")
 def exam_dir(tmp_path_factory) -> Path:
     """A generated exam (manifest, sheets, figures)."""
-    from dynagrade.exam.generate import generate_exam
+    from dynagrade.generation.generate import generate_exam
 
     root = tmp_path_factory.mktemp("exam")
     (root / "exam.toml").write_text(EXAM_TOML, encoding="utf-8")

@@ -19,10 +19,10 @@ import pytest
 from click.testing import CliRunner
 
 from dynagrade.cli import main
-from dynagrade.exam.classgrade import grade_class
-from dynagrade.exam.downloads import (DownloadError, EntryName, canvas_entry,
+from dynagrade.classgrade.grade import grade_class
+from dynagrade.classgrade.downloads import (DownloadError, EntryName, canvas_entry,
                                       detect_platform, moodle_entry)
-from dynagrade.exam.generate import generate_exam
+from dynagrade.generation.generate import generate_exam
 from dynagrade.exam.manifest import load
 from dynagrade.exam.roster import RosterError, parse_roster
 
@@ -319,7 +319,7 @@ def test_a_damaged_entry_costs_only_itself(exam, tmp_path):
 
 def test_an_archive_with_too_many_entries_or_not_a_zip_is_an_error_naming_it(exam, tmp_path,
                                                                              monkeypatch):
-    import dynagrade.exam.downloads as downloads
+    import dynagrade.classgrade.downloads as downloads
 
     monkeypatch.setattr(downloads, "MAX_ENTRIES", 3)
     archive = make_zip(tmp_path / "many.zip", {f"x{i}.txt": "" for i in range(4)})

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from dynagrade.exam.generate import generate_exam
+from dynagrade.generation.generate import generate_exam
 from dynagrade.exam.manifest import VariantEntry
 from dynagrade.exercise.loader import open_bank
 from dynagrade.exercise.numbers import format_number

@@ -26,10 +26,10 @@ from click.testing import CliRunner
 from hypothesis import given, strategies as st
 
 from dynagrade.cli import main
-from dynagrade.exam.classgrade import grade_class
-from dynagrade.exam.generate import generate_exam
-from dynagrade.exam.gradebook import gradebook_row, round_results
-from dynagrade.exam.overrides import OverrideError
+from dynagrade.classgrade.grade import grade_class
+from dynagrade.generation.generate import generate_exam
+from dynagrade.classgrade.gradebook import gradebook_row, round_results
+from dynagrade.classgrade.overrides import OverrideError
 from dynagrade.exam.points import Rounding
 from dynagrade.exercise.numbers import answer_text
 

@@ -14,8 +14,8 @@ import pytest
 from click.testing import CliRunner
 
 from dynagrade.cli import grade_main, main
-from dynagrade.exam.classgrade import grade_class
-from dynagrade.exam.generate import generate_exam
+from dynagrade.classgrade.grade import grade_class
+from dynagrade.generation.generate import generate_exam
 
 ROOT = Path(__file__).resolve().parent.parent
 KINDS = ["correct", "half", "empty", "corrupt", "duplicate", "csv"]
@@ -208,7 +208,7 @@ def test_the_command_line_grades_a_class_and_single_files_as_before(graded):
 
 def test_response_csvs_report_bad_rows_and_let_a_later_row_win(graded, tmp_path):
     from dynagrade.exam.manifest import from_dict
-    from dynagrade.exam.submissions import collect
+    from dynagrade.classgrade.submissions import collect
 
     manifest = graded["manifest"]
     student = manifest["students"][0]

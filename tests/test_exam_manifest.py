@@ -11,7 +11,7 @@ from click.testing import CliRunner
 
 from dynagrade.cli import main
 from dynagrade.exam import manifest as mf
-from dynagrade.exam.generate import generate_exam
+from dynagrade.generation.generate import generate_exam
 
 
 def small_manifest() -> dict:

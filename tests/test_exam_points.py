@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 from hypothesis import given, strategies as st
 
-from dynagrade.exam.generate import exercise_parts
+from dynagrade.generation.generate import exercise_parts
 from dynagrade.exam.manifest import from_dict, to_dict
 from dynagrade.exam.points import Rounding, split_points
 from dynagrade.exam.spec import ExamSpecError, read_exam_spec

@@ -7,14 +7,14 @@ from __future__ import annotations
 import html
 import re
 
-from dynagrade.exam.classgrade import ClassOutcome
+from dynagrade.classgrade.grade import ClassOutcome
 from dynagrade.exam.manifest import ExamEntry, PartEntry
-from dynagrade.exam.stats import (DECLARED, FOLLOW_THROUGH, FOLLOWED, MIN_STUDENTS, SLIP,
+from dynagrade.classgrade.stats import (DECLARED, FOLLOW_THROUGH, FOLLOWED, MIN_STUDENTS, SLIP,
                                   Explanation, declared_names, part_statistics)
 from dynagrade.exercise.scoring import grade_variant
 from dynagrade.grading import grade
 from dynagrade.grading.spec import NumericSpec, VectorSpec
-from dynagrade.render.report import report_html
+from dynagrade.classgrade.report import report_html
 
 PART = PartEntry("x", "distance", "numeric", "m", 2.0, rtol=0.01, atol=None)
 

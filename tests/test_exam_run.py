@@ -7,9 +7,10 @@ import filecmp
 import pickle
 import textwrap
 
-from dynagrade.exam.generate import generate_exam
-from dynagrade.exam.run import GenerationRun, VariantCache, exercise_identity, file_sha256
-from dynagrade.exam.workers import Pool
+from dynagrade.generation.generate import generate_exam
+from dynagrade.generation.run import GenerationRun
+from dynagrade.runs.caches import VariantCache, exercise_identity, file_sha256
+from dynagrade.runs.workers import Pool
 from dynagrade.exercise.loader import load_file
 
 EXERCISE = textwrap.dedent('''\
@@ -142,7 +143,7 @@ def test_a_formula_checked_from_the_cache_gets_the_problems_an_unchecked_one_get
     accepted wherever it applies: for h > 3 m, never below. The run checks the formula
     once per set of misconceptions that apply, and every variant still gets its own
     verdict."""
-    from dynagrade.exam.variants import check_variant
+    from dynagrade.generation.variants import check_variant
 
     exercise = _write_formula(tmp_path, "h + h")
     run = GenerationRun(None, {exercise.id: exercise}, {}, tmp_path)
@@ -175,7 +176,7 @@ def test_the_example_exams_variants_get_the_same_problems_with_and_without_the_c
         tmp_path, bank):
     """Every part kind of the example exam's exercises, 30 seeds each: the run's cached
     checks list the problems, in order, that checking each variant anew lists."""
-    from dynagrade.exam.variants import check_variant
+    from dynagrade.generation.variants import check_variant
     from dynagrade.exercise.model import ConstraintError
 
     ids = ("projectile-range", "sliding-up-a-slope", "car-in-a-looping",

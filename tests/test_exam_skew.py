@@ -9,9 +9,9 @@ import math
 from click.testing import CliRunner
 
 from dynagrade.cli import main
-from dynagrade.exam.generate import generate_exam
+from dynagrade.generation.generate import generate_exam
 from dynagrade.exam.manifest import load
-from dynagrade.exam.skew import skew_warnings
+from dynagrade.generation.skew import skew_warnings
 from dynagrade.exercise.loader import open_bank
 
 # A block on a rough incline (Example 1.8): it comes to rest when mu > tan(alpha). The

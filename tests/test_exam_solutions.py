@@ -106,8 +106,8 @@ def test_without_the_option_no_solution_is_written(tmp_path):
 
 
 def _graded_feedback(folder: Path, setting: str | None, bank) -> tuple[dict, Path]:
-    from dynagrade.exam.classgrade import grade_class
-    from dynagrade.exam.generate import generate_exam
+    from dynagrade.classgrade.grade import grade_class
+    from dynagrade.generation.generate import generate_exam
 
     line = f'solutions = "{setting}"\n' if setting else ""
     (folder / "exam.toml").write_text(EXAM.replace('date = 2025-04-14\n',

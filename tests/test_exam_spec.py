@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from dynagrade.exam.generate import load_exam
+from dynagrade.generation.generate import load_exam
 from dynagrade.exam.spec import ExamSpecError, parse_roster, read_exam_spec, read_roster
 from dynagrade.exercise.loader import open_bank
 

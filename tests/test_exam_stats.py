@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from dynagrade.exam.manifest import PartEntry
-from dynagrade.exam.stats import correlation, part_statistics, upper_lower_index
+from dynagrade.classgrade.stats import correlation, part_statistics, upper_lower_index
 
 
 def test_correlation_agrees_with_numpy_and_is_none_without_variation():

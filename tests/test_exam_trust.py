@@ -19,8 +19,8 @@ import pytest
 from click.testing import CliRunner
 
 from dynagrade.cli import main
-from dynagrade.exam.classgrade import grade_class
-from dynagrade.exam.generate import generate_exam
+from dynagrade.classgrade.grade import grade_class
+from dynagrade.generation.generate import generate_exam
 from dynagrade.exam.manifest import dump, load
 
 ROSTER = ["s1", "s2", "s3"]

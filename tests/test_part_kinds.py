@@ -128,7 +128,7 @@ def test_a_generated_exam_prints_the_same_points_on_sheet_fill_in_file_and_key(t
     1.14 (7.98), the two hundredths left going to the largest remainders (the first part,
     then the first of the tied others): 2.29, 1.15, 1.14, 1.14, 1.14, 1.14 on the sheet,
     in the fill-in file and in the key."""
-    from dynagrade.exam.generate import generate_exam
+    from dynagrade.generation.generate import generate_exam
 
     exam = tmp_path / "exam.toml"
     exam.write_text(exam_toml, encoding="utf-8")

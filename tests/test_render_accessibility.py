@@ -25,11 +25,11 @@ from pathlib import Path
 
 import pytest
 
-from dynagrade.exam.classgrade import grade_class
-from dynagrade.exam.generate import generate_exam
+from dynagrade.classgrade.grade import grade_class
+from dynagrade.generation.generate import generate_exam
 from dynagrade.render.figures import figure_svg
 from dynagrade.render.mathtex import to_mathml
-from dynagrade.render.report import class_summary, score_bins
+from dynagrade.classgrade.report import class_summary, score_bins
 
 ROOT = Path(__file__).resolve().parent.parent
 TEMPLATES = ROOT / "src" / "dynagrade" / "templates"

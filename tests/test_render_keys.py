@@ -11,7 +11,7 @@ import subprocess
 
 import pytest
 
-from dynagrade.exam.generate import generate_exam
+from dynagrade.generation.generate import generate_exam
 
 EXAM = """\
 id = "key-exam"

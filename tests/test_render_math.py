@@ -136,7 +136,7 @@ chromium = pytest.mark.skipif(not Path("/usr/bin/chromium").exists(),
 
 @chromium
 def test_a_generated_html_sheet_lays_out_its_math_and_figures_in_chromium(tmp_path):
-    from dynagrade.exam.generate import generate_exam
+    from dynagrade.generation.generate import generate_exam
     from dynagrade.exercise.loader import open_bank
 
     roster = tmp_path / "roster.csv"

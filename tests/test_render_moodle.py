@@ -21,7 +21,7 @@ from hypothesis import strategies as st
 
 from dynagrade.cli import main
 from dynagrade.exam.manifest import ExerciseEntry, PartEntry, VariantEntry
-from dynagrade.exam.pool import pool_categories
+from dynagrade.generation.pool import pool_categories
 from dynagrade.render.cloze import cloze_text, number_text
 from dynagrade.render.cloze_marks import field_weights
 from dynagrade.render.moodle import exercise_marks, pool_xml, variant_idnumber

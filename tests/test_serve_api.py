@@ -245,7 +245,7 @@ def test_pathological_answers_get_verdicts_not_errors(exam_dir, tmp_path, databa
 
 
 def test_downloaded_submissions_regrade_to_the_same_gradebook(exam_dir, tmp_path, database):
-    from dynagrade.exam.classgrade import gradebook_csv, grade_class
+    from dynagrade.classgrade.grade import gradebook_csv, grade_class
 
     manifest = exam_copy(exam_dir, tmp_path / "hw", mode="homework", feedback="immediate",
                          counts="best")

@@ -77,7 +77,7 @@ def test_bad_policies_are_refused_with_file_line_and_field(tmp_path, lines, line
 
 
 def test_dynagrade_exam_writes_the_policy_into_the_manifest(tmp_path):
-    from dynagrade.exam.generate import generate_exam
+    from dynagrade.generation.generate import generate_exam
     from dynagrade.exam.manifest import load
 
     (tmp_path / "roster.csv").write_text("student_id,name\ns1,Ada\n", encoding="utf-8")

@@ -8,7 +8,7 @@ import datetime as dt
 
 from serve_support import Clock, exam_copy, exam_dir, reference_answers, serve  # noqa: F401
 
-from dynagrade.exam.classgrade import stored_variant
+from dynagrade.classgrade.grade import stored_variant
 
 UTC = dt.timezone.utc
 OPENS = dt.datetime(2025, 4, 14, 8, 0, tzinfo=UTC)

@@ -66,7 +66,7 @@ points = 4
 
 
 def test_the_server_shows_the_figure_beside_the_fill_in_file_and_of_older_exams(tmp_path):
-    from dynagrade.exam.generate import generate_exam
+    from dynagrade.generation.generate import generate_exam
     from dynagrade.render.figures import inline_svg
     from dynagrade.serve.exam_data import ExamData
 

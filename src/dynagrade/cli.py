@@ -180,7 +180,7 @@ def show(context, exercise_id, seed, student, settings, answers, solution, as_js
 @click.pass_obj
 def solve(context, exercise_id, seed, settings, as_json, force):
     """Solve an exercise for given parameters; the others are drawn from --seed."""
-    from .exam.generate import non_finite_answers
+    from .generation.generate import non_finite_answers
 
     exercise = context.exercise(exercise_id)
     variant = _variant(exercise, seed, None, settings, force)
@@ -361,7 +361,7 @@ def grade_command(context, files, as_json, manifest, output, jobs, strict, roste
 @click.pass_obj
 def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file, solutions):
     """Generate an exam: every student's variants, sheets, keys, Moodle XML, manifest."""
-    from .exam.generate import generate_exam
+    from .generation.generate import generate_exam
     from .exam.secret import load_secret
     from .render.terminal import progress_reporter
 
@@ -396,8 +396,8 @@ def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file, solution
 def moodle(context, exercise_ids, variants, output, title, secret_file):
     """Write a Moodle question pool: --variants variants of each exercise, a category
     per exercise, for a quiz's random questions (no roster needed)."""
-    from .exam.files import write_atomic
-    from .exam.pool import pool_categories
+    from .runs.files import write_atomic
+    from .generation.pool import pool_categories
     from .exam.secret import load_secret
     from .exercise.seeds import new_secret
     from .render.moodle import pool_xml
@@ -514,7 +514,7 @@ def _print_self_check(checked: dict) -> None:
 
 
 def _grade_class(context, manifest, files, output, jobs, as_json, strict, options):
-    from .exam.classgrade import grade_class
+    from .classgrade.grade import grade_class
     from .render.terminal import progress_reporter
 
     with progress_reporter() as progress:
@@ -529,7 +529,7 @@ def _grade_class(context, manifest, files, output, jobs, as_json, strict, option
 
         gradebook_table(outcome)
     if output:
-        from .exam.gradebook import GRADEBOOK_FILES
+        from .classgrade.gradebook import GRADEBOOK_FILES
 
         written = ["grades.csv", *(GRADEBOOK_FILES[f] for f in options["formats"])]
         click.echo(f"wrote {output}: {', '.join(written)}, problems.csv, feedback/, "

@@ -256,7 +256,7 @@ def text(manifest: Manifest) -> str:
 
 def dump(manifest: Manifest, path: str | os.PathLike) -> Path:
     """Write ``manifest`` to ``path`` atomically."""
-    from .files import write_atomic
+    from ..runs.files import write_atomic
 
     return write_atomic(path, text(manifest))
 

@@ -18,7 +18,7 @@ points left go to the largest remainders, 0.857 and 0.714.) An exam may instead 
 every part's points itself (``[exercise.points]``, :mod:`.spec`).
 
 :func:`exam_part_points` is the one function that decides a part's points in an exam;
-the generation (:func:`dynagrade.exam.generate.exercise_parts`) and any export that
+the generation (:func:`dynagrade.generation.generate.exercise_parts`) and any export that
 needs the parts' share call it.
 """
 

@@ -3,7 +3,7 @@
 A quiz draws a random question from each category, so every student meets one variant.
 Two writers share everything below: :func:`moodle_xml` (an exam's variants, from its
 manifest) and :func:`pool_xml` (a pool of variants independent of any roster,
-:mod:`dynagrade.exam.pool`).
+:mod:`dynagrade.generation.pool`).
 
 What a question holds (Moodle's XML import format, ``question/format/xml/format.php``):
 

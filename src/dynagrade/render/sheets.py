@@ -1,7 +1,7 @@
 """A student's exam sheet as Markdown, HTML (MathML, inline SVG) and typst (for PDF).
 
 The three renderers read one description of the sheet (:class:`StudentSheet`), built by
-:mod:`dynagrade.exam.generate`. Numbers are formatted in Python before they reach a
+:mod:`dynagrade.generation.generate`. Numbers are formatted in Python before they reach a
 template; typst only lays out text.
 
 Usage::

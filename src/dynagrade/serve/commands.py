@@ -15,7 +15,7 @@ _DB_HELP = ("Database URL: sqlite:///path or postgresql://user@host/db "
 
 
 def _open(manifest: str, db_url: str | None, folders):
-    from ..exam.classgrade import ManifestError
+    from ..classgrade.grade import ManifestError
     from ..exercise.loader import open_bank
     from . import db
     from .exam_data import ExamData

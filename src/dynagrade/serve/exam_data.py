@@ -4,7 +4,7 @@
 stored reference answers, part points, the policy) and the bank's exercises that grade
 them. It renders a student's statement (HTML with MathML; the figure ``dynagrade exam``
 drew), reads answers (:mod:`dynagrade.grading.readability`) and grades them exactly as
-class grading does (:func:`dynagrade.exam.classgrade.grade_student`), so a regrade of the
+class grading does (:func:`dynagrade.classgrade.grade.grade_student`), so a regrade of the
 server's submissions with ``dynagrade grade`` gives the same points.
 """
 
@@ -16,10 +16,10 @@ from functools import lru_cache
 from pathlib import Path
 
 from ..errors import UnknownExercise
-from ..exam.classgrade import grade_student, stored_variant
+from ..classgrade.grade import grade_student, stored_variant
 from ..exam.manifest import ManifestError, PartEntry, StudentEntry, VariantEntry, load
 from ..exam.policy import Policy
-from ..exam.submissions import Submission
+from ..classgrade.submissions import Submission
 from ..exercise.loader import Bank, open_bank
 from ..exercise.model import ConstraintError, Exercise
 from ..grading.readability import readability

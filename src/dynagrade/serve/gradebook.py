@@ -15,9 +15,9 @@ import io
 import tempfile
 from pathlib import Path
 
-from ..exam.classgrade import ClassOutcome, grade_class, gradebook_csv, gradebook_row
+from ..classgrade.grade import ClassOutcome, grade_class, gradebook_csv, gradebook_row
 from ..exam.points import Rounding
-from ..exam.submissions import RESPONSE_HEADER
+from ..classgrade.submissions import RESPONSE_HEADER
 from .db import StoredAnswer
 from .exam_data import ExamData
 
@@ -99,7 +99,7 @@ def class_report_html(data: ExamData, stored: list[StoredAnswer], folders=()) ->
     """Class grading's report (histogram, item statistics, wrong answers by what explains
     them) of the counted answers."""
     from ..exercise.loader import open_bank
-    from ..render.report import report_html
+    from ..classgrade.report import report_html
 
     with tempfile.TemporaryDirectory() as folder:
         path = Path(folder) / "responses.csv"

@@ -39,18 +39,19 @@ from ..exercise.model import ConstraintError, Exercise
 from ..exercise.seeds import new_secret
 from ..render.pdf import embedded_pages_source
 from ..render.sheets import typst_preamble
-from .files import write_atomic
-from .manifest import (ExamEntry, ExerciseEntry, Generator, Manifest, PartEntry,
+from ..runs.files import write_atomic
+from ..exam.manifest import (ExamEntry, ExerciseEntry, Generator, Manifest, PartEntry,
                        StudentEntry, dump)
-from .outputs import staging_folder, swap_in
-from .points import Rounding, exam_part_points
-from .run import GenerationRun, file_sha256
+from ..runs.outputs import staging_folder, swap_in
+from ..exam.points import Rounding, exam_part_points
+from ..runs.caches import file_sha256
+from .run import GenerationRun
 from .skew import skew_warnings
 from .solutions import solutions_title
-from .spec import ExamSpec, ExamSpecError, Student, read_exam_spec, read_roster
+from ..exam.spec import ExamSpec, ExamSpecError, Student, read_exam_spec, read_roster
 from .student import (STAGES, StudentResult, StudentVariants, student_files,
                       student_variants)
-from .workers import Pool, default_jobs
+from ..runs.workers import Pool, default_jobs
 
 Progress = Callable[[str, int, int], None]
 

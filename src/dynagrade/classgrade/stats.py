@@ -25,7 +25,7 @@ import math
 from collections import Counter
 from dataclasses import dataclass, field
 
-from .manifest import PartEntry
+from ..exam.manifest import PartEntry
 
 GROUP_FRACTION = 0.27
 #: below this many students a statistic is a hint, not a measurement (a common rule of

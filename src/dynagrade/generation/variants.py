@@ -16,7 +16,7 @@ from ..errors import DynagradeError
 from ..exercise.model import ConstraintError, Exercise, Variant
 from ..exercise.seeds import exam_seed
 from ..exercise.verify import OwnProblems, variant_problems
-from .manifest import Redraw
+from ..exam.manifest import Redraw
 
 MAX_ATTEMPTS = 25
 
@@ -29,7 +29,7 @@ def check_variant(exercise: Exercise, variant: Variant,
                   own_problems: OwnProblems | None = None) -> tuple[str, ...]:
     """Why ``variant`` cannot be handed out (:func:`variant_problems`); empty when it can.
     ``own_problems``: a run's cache of each part's own checks
-    (:attr:`dynagrade.exam.run.GenerationRun.part_problems`), or None to compute them."""
+    (:attr:`dynagrade.generation.run.GenerationRun.part_problems`), or None to compute them."""
     return tuple(variant_problems(exercise, variant, own_problems))
 
 
@@ -39,7 +39,7 @@ def exam_variant(exercise: Exercise, secret: str, exam_id: str, student_id: str,
                  ) -> tuple[Variant, tuple[Redraw, ...]]:
     """The variant handed to ``student_id``, and the draws rejected before it.
     ``problems`` is :func:`check_variant` or a run's cache of it
-    (:attr:`dynagrade.exam.run.GenerationRun.problems`)."""
+    (:attr:`dynagrade.generation.run.GenerationRun.problems`)."""
     redraws = []
     for attempt in range(MAX_ATTEMPTS):
         seed = exam_seed(secret, exam_id, student_id, exercise.id, attempt)

@@ -1,6 +1,7 @@
-"""The state of one exam generation and of one class grading, held by the run itself.
+"""What a run caches, keyed so that nothing is answered from another exercise's state.
 
-A run owns its exercises, its caches (each variant's problems and figure, a part's own
+A run (:class:`dynagrade.generation.run.GenerationRun`,
+:class:`dynagrade.classgrade.run.GradingRun`) owns its exercises, its caches (each variant's problems and figure, a part's own
 checks where they depend on less than the variant) and its PDF compiler; it is handed to
 worker processes explicitly (:mod:`.workers`), where it is rebuilt from what pickles
 (the exercises' files; caches and compilers start empty).
@@ -13,16 +14,12 @@ from __future__ import annotations
 
 import hashlib
 import os
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable, Generic, TypeVar
 
 from ..exercise.model import Exercise, Variant
 from ..exercise.params import ParamValues
 from ..exercise.parts import Part
-from ..render.pdf import PdfCompiler
-from .manifest import PartEntry
-from .spec import ExamSpec
 
 T = TypeVar("T")
 
@@ -104,65 +101,8 @@ class PartProblemsCache:
         return self._values[key]
 
 
-def _figure(exercise: Exercise, variant: Variant) -> str | None:
-    from ..render.figures import figure_svg
-
-    return figure_svg(exercise, variant)
-
-
-def _load(paths: dict[str, str]) -> dict[str, Exercise]:
+def load_exercises(paths: dict[str, str]) -> dict[str, Exercise]:
+    """The exercises of a run by id, loaded again from their files (in a worker process)."""
     from ..exercise.loader import load_file
 
     return {exercise_id: load_file(path) for exercise_id, path in paths.items()}
-
-
-@dataclass
-class GenerationRun:
-    """One ``dynagrade exam``: the spec, the exercises by id, every exercise's parts with
-    points scaled to the exam, where files go, and this run's caches and compiler."""
-
-    spec: ExamSpec
-    exercises: dict[str, Exercise]
-    parts: dict[str, tuple[PartEntry, ...]]
-    out_dir: Path
-    pdf: bool = True
-    solutions: bool = False  # write each student's worked solutions (``--solutions``)
-    compiler: PdfCompiler = field(default_factory=PdfCompiler)
-    part_problems: PartProblemsCache = field(init=False)
-    problems: VariantCache[tuple[str, ...]] = field(init=False)
-    figures: VariantCache[str | None] = field(init=False)
-
-    def __post_init__(self):
-        identities = Identities()
-        self.part_problems = PartProblemsCache(10_000, identities)
-        self.problems = VariantCache(self._variant_problems, 50_000, identities)
-        self.figures = VariantCache(_figure, 2_000, identities)
-
-    def _variant_problems(self, exercise: Exercise, variant: Variant) -> tuple[str, ...]:
-        from .variants import check_variant
-
-        return check_variant(exercise, variant, self.part_problems)
-
-    def __getstate__(self):
-        paths = {i: e.path for i, e in self.exercises.items()}
-        return (self.spec, paths, self.parts, self.out_dir, self.pdf, self.solutions)
-
-    def __setstate__(self, state):
-        spec, paths, parts, out_dir, pdf, solutions = state
-        self.__init__(spec, _load(paths), parts, out_dir, pdf, solutions)
-
-
-@dataclass
-class GradingRun:
-    """One ``dynagrade grade --manifest``: the exercises that grade the exam and each
-    exercise's parts as the manifest stored them."""
-
-    exercises: dict[str, Exercise]
-    parts: dict[str, tuple[PartEntry, ...]]
-
-    def __getstate__(self):
-        return ({i: e.path for i, e in self.exercises.items()}, self.parts)
-
-    def __setstate__(self, state):
-        paths, parts = state
-        self.__init__(_load(paths), parts)

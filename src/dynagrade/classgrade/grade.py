@@ -43,20 +43,21 @@ from ..exercise.loader import Bank, open_bank
 from ..exercise.model import Exercise, Variant
 from ..exercise.scoring import grade_variant, graded_error
 from ..grading import prepare
-from .files import write_atomic
+from ..runs.files import write_atomic
 from .gradebook import (GRADEBOOK_FILES, gradebook_csv, gradebook_row, platform_gradebook,
                         round_results)
-from .outputs import staging_folder, swap_in
+from ..runs.outputs import staging_folder, swap_in
 from .overrides import Override, apply_overrides, read_overrides
-from .points import Rounding
-from .run import GradingRun, file_sha256
-from .policy import Policy
-from .solution_policy import with_feedback
+from ..exam.points import Rounding
+from ..runs.caches import file_sha256
+from .run import GradingRun
+from ..exam.policy import Policy
+from ..exam.solution_policy import with_feedback
 from .solutions import feedback_solutions
-from .manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
+from ..exam.manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
 from .stats import declared_names, part_statistics
 from .submissions import Problem, Submission, collect
-from .workers import Pool, default_jobs
+from ..runs.workers import Pool, default_jobs
 
 GRADE_STATUSES = ("graded", "incomplete", "rejected", "absent")
 
@@ -318,7 +319,7 @@ def problems_csv(problems: list[Problem]) -> str:
 
 def write_outputs(outcome: ClassOutcome, manifest: Manifest, out: Path, progress,
                   formats: tuple[str, ...] = (), assignment: str = "") -> None:
-    from ..render.report import feedback_html, feedback_markdown, report_html
+    from .report import feedback_html, feedback_markdown, report_html
 
     exercises = {e.id: e for e in manifest.exercises}
     total = len(outcome.feedback)

@@ -29,9 +29,9 @@ from typing import Mapping
 
 from ..errors import DynagradeError
 from ..exercise.datafile import DataFileError, read_data_file
-from .manifest import Manifest
-from .points import Rounding
-from .roster import csv_rows
+from ..exam.manifest import Manifest
+from ..exam.points import Rounding
+from ..exam.roster import csv_rows
 
 OVERRIDE_COLUMNS = ("student_id", "exercise", "part", "points", "comment")
 MAX_OVERRIDES_BYTES = 5_000_000

@@ -30,7 +30,7 @@ import io
 from typing import Mapping, Sequence
 
 from ..exercise.numbers import percent_text
-from .points import Rounding
+from ..exam.points import Rounding
 
 #: the layouts a gradebook can be written in, and the file each is written to
 GRADEBOOK_FILES = {"csv": "grades.csv", "moodle": "grades-moodle.csv",

@@ -40,7 +40,7 @@ from typing import Callable
 from ..errors import DynagradeError
 from ..exercise.datafile import file_kind
 from ..exercise.sheet import MAX_SHEET_BYTES
-from .roster import read_roster
+from ..exam.roster import read_roster
 
 PLATFORMS = ("moodle", "canvas")
 #: an archive with more entries than this is refused whole

@@ -22,7 +22,7 @@ from collections import Counter
 
 from ..exercise.parts import PART_KINDS
 from ..exercise.redraws import REDRAW_WARNING, percent
-from .manifest import Manifest
+from ..exam.manifest import Manifest
 
 #: the smallest class for which "the same answer for everyone" is worth a warning
 MIN_CLASS = 5

@@ -13,12 +13,12 @@ import statistics
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from .accessible_svg import accessible_svg, sentence_list
-from .figures import SVG_SETTINGS, inline_svg
 from ..exercise.numbers import answer_text, format_number, percent_text
 from ..exercise.units import with_unit
-from .sheets import render_template
-from ..exam.stats import MIN_STUDENTS, PartStats
+from ..render.accessible_svg import accessible_svg, sentence_list
+from ..render.figures import SVG_SETTINGS, inline_svg
+from ..render.sheets import render_template
+from .stats import MIN_STUDENTS, PartStats
 
 if TYPE_CHECKING:
     from ..exam.manifest import ExamEntry, ExerciseEntry

@@ -1,12 +1,12 @@
 """Worked solutions in an exam: each student's solution sheet (``dynagrade exam
---solutions``), the solutions that end a student's feedback after class grading, and
-when students may see them.
+--solutions``); those that end a student's feedback after class grading are
+:mod:`dynagrade.classgrade.solutions`.
 
 Output, next to the student's exam sheet::
 
     students/<student_id>/solution.md, solution.html, solution.pdf
 
-When students see them, ``exam.toml`` says (:mod:`.solution_policy`).
+When students see them, ``exam.toml`` says (:mod:`dynagrade.exam.solution_policy`).
 
 A variant's solution is rendered from its parameters (the manifest stores them), so the
 solutions of a graded exam are the ones its students were given numbers for.
@@ -14,16 +14,16 @@ solutions of a graded exam are the ones its students were given numbers for.
 
 from __future__ import annotations
 
-from typing import Callable, Iterable
+from typing import Iterable
 
 from ..exercise.model import Exercise, Variant
-from ..exercise.solution import SolutionError, render_solution
+from ..exercise.solution import render_solution
 from ..render.solutions import (SolutionSection, SolutionSheet, solution_html,
                                 solution_markdown, solution_typst_body)
 from ..render.sheets import typst_preamble
-from .files import write_atomic
+from ..exam.spec import Student
+from ..runs.files import write_atomic
 from .run import GenerationRun
-from .spec import Student
 
 
 def solution_sections(solved: Iterable[tuple[Exercise, Variant]]) -> tuple[SolutionSection, ...]:
@@ -53,17 +53,3 @@ def write_solution_sheet(run: GenerationRun, student: Student,
 def solutions_title(exam_title: str) -> str:
     """The title of a solution sheet's PDF."""
     return f"{exam_title}: worked solutions"
-
-
-def feedback_solutions(solved: Iterable[tuple[Exercise, Variant]],
-                       warn: Callable[[str, str], None]) -> dict[str, str | None]:
-    """The worked solution of each of a student's variants, by exercise id; one that
-    cannot be rendered is left out and ``warn(exercise_id, message)`` told why."""
-    solutions = {}
-    for exercise, variant in solved:
-        try:
-            solutions[exercise.id] = render_solution(exercise, variant)
-        except SolutionError as error:
-            solutions[exercise.id] = None
-            warn(exercise.id, str(error))
-    return solutions

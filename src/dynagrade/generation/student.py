@@ -20,11 +20,11 @@ from ..exercise.units import pretty_unit
 from ..render.pdf import ACCESSIBLE
 from ..render.sheets import (SheetExercise, SheetPart, StudentSheet, sheet_html,
                              sheet_markdown, sheet_typst_body, typst_preamble)
-from .files import write_atomic
-from .manifest import StudentEntry, VariantEntry
+from ..runs.files import write_atomic
+from ..exam.manifest import StudentEntry, VariantEntry
 from .run import GenerationRun
 from .solutions import write_solution_sheet
-from .spec import ExamExercise, Student
+from ..exam.spec import ExamExercise, Student
 from .variants import exam_variant
 
 

@@ -20,8 +20,8 @@ from pathlib import Path
 from ..exercise.model import Exercise
 from ..render.moodle import Category, variant_idnumber
 from .generate import exercise_parts
-from .manifest import ExerciseEntry, VariantEntry
-from .run import file_sha256
+from ..exam.manifest import ExerciseEntry, VariantEntry
+from ..runs.caches import file_sha256
 from .variants import exam_variant
 
 #: the exam id a pool's variants are keyed with

@@ -40,7 +40,7 @@ from ..exercise.seeds import token_matches, variant_token
 from ..exercise.sheet import MAX_SHEET_BYTES, Sheet, SheetError, read_sheet, sheet_from_bytes
 from .downloads import MAX_CSV_BYTES, Identities, identities, read_download
 from .layouts import owner
-from .manifest import Manifest
+from ..exam.manifest import Manifest
 
 RESPONSE_HEADER = ("student_id", "exercise_id", "part", "answer")
 

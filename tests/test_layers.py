@@ -1,0 +1,90 @@
+"""The packages of dynagrade import downwards only (docs/design.md, "Layers").
+
+Every import of every module is read with :mod:`ast` (those inside functions and
+``TYPE_CHECKING`` blocks too: a lazy import is still a dependency) and resolved to the
+package of dynagrade it names; each package may import only the packages listed for it.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+import dynagrade
+
+SOURCE = Path(dynagrade.__file__).parent
+
+#: what each package may import, besides itself and ``errors`` (which every layer may)
+ALLOWED = {
+    "mechanics": set(),
+    "grading": set(),
+    "exercise": {"grading"},
+    "runs": {"exercise"},
+    "exam": {"exercise", "grading", "runs"},
+    "render": {"exam", "exercise", "grading", "runs"},
+    "generation": {"exam", "exercise", "grading", "render", "runs"},
+    "classgrade": {"exam", "exercise", "grading", "render", "runs"},
+    "serve": {"classgrade", "exam", "exercise", "generation", "grading", "render", "runs"},
+}
+
+
+def _package_of(path: Path) -> str:
+    relative = path.relative_to(SOURCE).parts
+    return relative[0] if len(relative) > 1 else relative[0].removesuffix(".py")
+
+
+def _imported_packages(path: Path) -> set[str]:
+    """The top-level packages of dynagrade that the module at ``path`` imports."""
+    package_parts = path.relative_to(SOURCE.parent).with_suffix("").parts[:-1]
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package_parts[:len(package_parts) - node.level + 1]
+                target = (*base, *(node.module.split(".") if node.module else ()))
+                names = [(*target, alias.name) for alias in node.names] \
+                    if len(target) == 1 else [target]
+            else:
+                names = [tuple((node.module or "").split("."))]
+        elif isinstance(node, ast.Import):
+            names = [tuple(alias.name.split(".")) for alias in node.names]
+        else:
+            continue
+        for name in names:
+            if name[0] == "dynagrade" and len(name) > 1 and name[1] != "__name__":
+                found.add(name[1].removesuffix(".py"))
+    return found
+
+
+MODULES = sorted(p for p in SOURCE.rglob("*.py") if _package_of(p) in ALLOWED)
+
+
+@pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(SOURCE)))
+def test_a_module_imports_only_the_packages_below_its_own(path):
+    own = _package_of(path)
+    upward = _imported_packages(path) - ALLOWED[own] - {own, "errors"}
+    assert not upward, f"{path.relative_to(SOURCE)} ({own}) imports {sorted(upward)}"
+
+
+def test_the_scan_sees_relative_lazy_and_absolute_imports(tmp_path):
+    package = tmp_path / "dynagrade" / "render"
+    package.mkdir(parents=True)
+    module = package / "example.py"
+    module.write_text("from ..exam.manifest import Manifest\n"
+                      "from .. import classgrade\n"
+                      "def later():\n    import dynagrade.serve.app\n")
+    global SOURCE
+    kept, SOURCE = SOURCE, tmp_path / "dynagrade"
+    try:
+        assert _imported_packages(module) == {"exam", "classgrade", "serve"}
+    finally:
+        SOURCE = kept
+    assert len(MODULES) > 100
+
+
+def test_every_package_of_dynagrade_has_its_place_in_the_layers():
+    packages = {p.name for p in SOURCE.iterdir()
+                if p.is_dir() and (p / "__init__.py").exists()} - {"bank", "templates"}
+    assert packages == set(ALLOWED)
