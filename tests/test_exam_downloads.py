@@ -72,7 +72,8 @@ def grade(exam: Path, archive: Path, platform: str | None = None):
 
 
 def points(outcome) -> dict[str, dict]:
-    return {row["student_id"]: row for row in outcome.rows}
+    """Each student's exercise points and status, by student id."""
+    return {row.student_id: {**row.cells, "status": row.status} for row in outcome.rows}
 
 
 def full(exam: Path, exercise: str) -> float:
@@ -224,7 +225,7 @@ def test_a_student_with_two_files_for_one_exercise_gets_neither_and_both_are_rep
     assert all(p.level == "error" and p.student_id == "s1"
                and p.exercise_id == "projectile-range" for p in two)
     # the student's feedback says the files were handed in and why they were not graded
-    assert set(outcome.feedback["s1"]["rejected"]) == {"projectile-range"}
+    assert set(outcome.feedback["s1"].rejected) == {"projectile-range"}
 
 
 def test_a_file_naming_another_student_in_a_students_entry_is_credited_to_nobody(
@@ -314,7 +315,7 @@ def test_a_damaged_entry_costs_only_itself(exam, tmp_path):
     assert rows["s1"]["projectile-range"] == pytest.approx(full(exam, "projectile-range"))
     assert rows["s2"]["projectile-range"] == 0.0
     # s2's feedback says the file was handed in and why it was not graded
-    assert set(outcome.feedback["s2"]["rejected"]) == {"projectile-range"}
+    assert set(outcome.feedback["s2"].rejected) == {"projectile-range"}
 
 
 def test_an_archive_with_too_many_entries_or_not_a_zip_is_an_error_naming_it(exam, tmp_path,

@@ -20,6 +20,7 @@ import io
 import json
 import re
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 from click.testing import CliRunner
@@ -28,7 +29,8 @@ from hypothesis import given, strategies as st
 from dynagrade.cli import main
 from dynagrade.classgrade.grade import grade_class
 from dynagrade.generation.generate import generate_exam
-from dynagrade.classgrade.gradebook import gradebook_row, round_results
+from dynagrade.classgrade.gradebook import FIXED_COLUMNS, RowStatus, gradebook_csv, gradebook_row
+from dynagrade.exercise.results import ExerciseResult, GradedPart, Status
 from dynagrade.classgrade.overrides import OverrideError
 from dynagrade.exam.points import Rounding
 from dynagrade.exercise.numbers import answer_text
@@ -83,6 +85,16 @@ def exam(tmp_path_factory, bank):
 def _grade(exam, out, overrides=None, formats=("moodle", "canvas")):
     return grade_class(exam["manifest"], [exam["responses"]], out, bank=exam["bank"], jobs=1,
                        overrides=overrides, formats=formats)
+
+
+def test_an_override_keeps_the_graders_points_beside_the_staffs(graded):
+    """The override of s2's h_max (1 point, "right method, unit missing") once overwrote
+    the automatic score, which then survived only in the feedback text."""
+    result = graded["outcome"].feedback["s2"].results["projectile-range"]
+    part = result.part("h_max")
+    assert part.score == 1.0 and part.auto_score == 0.0 and part.status == "not answered"
+    assert part.override.comment == "right method, unit missing"
+    assert part.override.author.endswith("overrides.csv")
 
 
 def _read(path: Path) -> list[list[str]]:
@@ -274,13 +286,38 @@ def test_every_cell_is_a_multiple_of_the_step_and_the_total_is_the_sum_of_the_ce
     rounded parts, and the total is the exact sum of the exercise cells."""
     rounding = Rounding(step)
     ids = [f"e{i}" for i in range(len(exercises))]
-    results = {e: {"parts": [{"score": score} for score in scores], "score": sum(scores)}
-               for e, scores in zip(ids, exercises)}
-    round_results(results, rounding)
+    results = {e: _result(e, scores) for e, scores in zip(ids, exercises)}
     row = gradebook_row("s", results, ids, 100.0, rounding=rounding)
     for e, scores in zip(ids, exercises):
         parts = [rounding.steps(score) for score in scores]  # nearest steps, by hand below
         assert all(abs(n * step - score) <= step / 2 + 1e-9 for n, score in zip(parts, scores))
-        assert rounding.steps(row[e]) == sum(parts) and rounding.is_multiple(row[e])
-    assert rounding.steps(row["total"]) == sum(rounding.steps(row[e]) for e in ids)
-    assert row["total"] == rounding.points(sum(rounding.steps(row[e]) for e in ids))
+        assert rounding.steps(row.cells[e]) == sum(parts) and rounding.is_multiple(row.cells[e])
+    assert rounding.steps(row.total) == sum(rounding.steps(row.cells[e]) for e in ids)
+    assert row.total == rounding.points(sum(rounding.steps(row.cells[e]) for e in ids))
+
+
+def _result(exercise_id: str, scores) -> ExerciseResult:
+    """An exercise whose parts (worth 10 points each) earned ``scores``, unrounded."""
+    return ExerciseResult(exercise_id, 1, tuple(
+        GradedPart(f"p{i}", "", Status.PARTIAL, score, 10.0, "1", "")
+        for i, score in enumerate(scores)))
+
+
+@pytest.mark.parametrize("exercise_id", FIXED_COLUMNS[1:])
+def test_an_exercise_named_like_a_fixed_column_leaves_that_column_alone(exercise_id):
+    """An exercise whose id is ``total`` (valid kebab-case) once overwrote the row's total
+    with its own points; the cells are keyed apart now, and the CSV heads its column
+    ``exercise:<id>`` so that no header stands twice."""
+    rounding = Rounding(0.5)
+    results = {exercise_id: _result(exercise_id, [1.0]), "other": _result("other", [2.0])}
+    row = gradebook_row("s1", results, [exercise_id, "other"], 20.0, name="Ada",
+                        email="ada@example.org", rounding=rounding)
+    assert (row.cells[exercise_id], row.total, row.status) == (1.0, 3.0, RowStatus.GRADED)
+    assert (row.name, row.email, row.percent) == ("Ada", "ada@example.org", 15.0)
+    outcome = SimpleNamespace(exercise_ids=[exercise_id, "other"], rows=[row],
+                              rounding=rounding)
+    header, cells = list(csv.reader(io.StringIO(gradebook_csv(outcome))))
+    assert len(set(header)) == len(header)
+    assert header[3:5] == [f"exercise:{exercise_id}", "other"]
+    assert dict(zip(header, cells))["total"] == "3"
+    assert dict(zip(header, cells))[f"exercise:{exercise_id}"] == "1"

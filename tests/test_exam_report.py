@@ -8,13 +8,16 @@ import html
 import re
 
 from dynagrade.classgrade.grade import ClassOutcome
-from dynagrade.exam.manifest import ExamEntry, PartEntry
+from dynagrade.classgrade.gradebook import GradebookRow, RowStatus
+from dynagrade.classgrade.report import report_html
 from dynagrade.classgrade.stats import (DECLARED, FOLLOW_THROUGH, FOLLOWED, MIN_STUDENTS, SLIP,
-                                  Explanation, declared_names, part_statistics)
+                                        Explanation, StudentParts, declared_names,
+                                        part_statistics)
+from dynagrade.exam.manifest import ExamEntry, PartEntry
+from dynagrade.exercise.results import GradedPart, Status
 from dynagrade.exercise.scoring import grade_variant
 from dynagrade.grading import grade
 from dynagrade.grading.spec import NumericSpec, VectorSpec
-from dynagrade.classgrade.report import report_html
 
 PART = PartEntry("x", "distance", "numeric", "m", 2.0, rtol=0.01, atol=None)
 
@@ -22,8 +25,8 @@ PART = PartEntry("x", "distance", "numeric", "m", 2.0, rtol=0.01, atol=None)
 def _entry(status, answer, misconception=None, fraction=None):
     if fraction is None:
         fraction = {"correct": 1.0, "partial": 0.5, "follow-through": 0.5}.get(status, 0.0)
-    return {"fraction": fraction, "status": status, "answer": answer,
-            "misconception": misconception}
+    return GradedPart("x", "distance", Status(status), fraction * PART.points, PART.points,
+                      answer, "", misconception)
 
 
 #: eight students handed the exercise in: one right, two sign slips (different numbers:
@@ -42,7 +45,7 @@ HAND_BUILT = [
 
 
 def _class(entries, total=10.0):
-    return [{"total": total + i, "parts": {("e", "x"): entry}} for i, entry in enumerate(entries)]
+    return [StudentParts(total + i, {("e", "x"): entry}) for i, entry in enumerate(entries)]
 
 
 def test_wrong_answers_are_grouped_by_what_explains_them_not_by_value():
@@ -96,10 +99,11 @@ def test_the_verdicts_of_a_real_exercise_feed_the_groups(bank):
         (result,) = [p for p in grade_variant(exercise, variant, {"a": answer}).parts
                      if p.name == "a"]
         entries.append(_entry(result.status, result.answer, result.misconception,
-                              result.score / result.max_score))
+                              result.fraction))
     a = PartEntry("a", "acceleration", "numeric", "m/s^2", 2.0, rtol=0.01, atol=None)
     (stats,) = part_statistics([("block-sliding-down-incline", a)], [
-        {"total": 5.0 + i, "parts": {("block-sliding-down-incline", "a"): e}} for i, e in enumerate(entries)],
+        StudentParts(5.0 + i, {("block-sliding-down-incline", "a"): e})
+        for i, e in enumerate(entries)],
         declared=declared_names({"block-sliding-down-incline": exercise}))
     assert stats.wrong == 3 and stats.unexplained == 1
     assert sorted((e.name, e.kind, e.students) for e in stats.explained) == [
@@ -108,7 +112,7 @@ def test_the_verdicts_of_a_real_exercise_feed_the_groups(bank):
 
 def _report(entries, declared=None):
     stats = part_statistics([("e", PART)], _class(entries), declared=declared)
-    rows = [{"student_id": f"s{i}", "status": "graded", "percent": 50.0, "total": 1.0}
+    rows = [GradebookRow(f"s{i}", "", "", {"e": 1.0}, 1.0, 2.0, RowStatus.GRADED)
             for i in range(len(entries))]
     outcome = ClassOutcome("Midterm", ["e"], rows, [], stats)
     exam = ExamEntry(id="midterm", title="Midterm", date="2025-04-14", instructions="",

@@ -7,7 +7,9 @@ import math
 import numpy as np
 
 from dynagrade.exam.manifest import PartEntry
-from dynagrade.classgrade.stats import correlation, part_statistics, upper_lower_index
+from dynagrade.classgrade.stats import (StudentParts, correlation, part_statistics,
+                                        upper_lower_index)
+from dynagrade.exercise.results import GradedPart, Status
 
 
 def test_correlation_agrees_with_numpy_and_is_none_without_variation():
@@ -28,14 +30,14 @@ def test_the_upper_lower_index_compares_the_best_and_weakest_27_percent():
 
 def test_part_statistics_use_the_rest_of_the_exam_and_count_wrong_answers():
     part = PartEntry("x", "x", "numeric", "m", 2.0, rtol=0.01, atol=None)
+    def graded_part(score, status, answer, misconception=None):
+        return GradedPart("x", "x", status, score, 2.0, answer, "", misconception)
+
     graded = [
-        {"total": 10.0, "parts": {("e", "x"): {"fraction": 1.0, "status": "correct",
-                                               "answer": "4.2", "misconception": None}}},
-        {"total": 3.0, "parts": {("e", "x"): {"fraction": 0.0, "status": "wrong",
-                                              "answer": " 8.4 ", "misconception": "factor 2"}}},
-        {"total": 6.0, "parts": {("e", "x"): {"fraction": 0.0, "status": "wrong",
-                                              "answer": "8.4", "misconception": "factor 2"}}},
-        {"total": 5.0, "parts": {}},  # did not hand in exercise e
+        StudentParts(10.0, {("e", "x"): graded_part(2.0, Status.CORRECT, "4.2")}),
+        StudentParts(3.0, {("e", "x"): graded_part(0.0, Status.WRONG, " 8.4 ", "factor 2")}),
+        StudentParts(6.0, {("e", "x"): graded_part(0.0, Status.WRONG, "8.4", "factor 2")}),
+        StudentParts(5.0, {}),  # did not hand in exercise e
     ]
     (stats,) = part_statistics([("e", part)], graded)
     assert stats.answered == 3

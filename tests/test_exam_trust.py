@@ -139,7 +139,7 @@ def test_a_file_naming_a_classmate_is_impersonating_and_credited_to_nobody(exam,
     # s2 hands in a correct copy of s1's own sheet, STUDENT line and all
     put(subs, "s2/projectile-range.py", filled(exam, "s1", "projectile-range"))
     outcome = grade_class(exam / "manifest.json", [subs])
-    rows = {row["student_id"]: row for row in outcome.rows}
+    rows = {row.student_id: {**row.cells, "status": row.status} for row in outcome.rows}
     # s1's own file counts: wrong numbers, only the formula (1 of 5 points, 1.2 of 6) right
     assert rows["s1"]["projectile-range"] == pytest.approx(1.2)
     assert rows["s2"]["projectile-range"] == 0.0 and rows["s2"]["status"] == "rejected"
@@ -154,7 +154,7 @@ def test_a_responses_csv_in_a_students_folder_may_hold_only_their_rows(exam, tmp
     put(subs, "s3/answers.csv", "student_id,exercise_id,part,answer\n"
         "s1,projectile-range,x_max,1\ns3,projectile-range,x_max,2\n")
     outcome = grade_class(exam / "manifest.json", [subs])
-    rows = {row["student_id"]: row for row in outcome.rows}
+    rows = {row.student_id: {**row.cells, "status": row.status} for row in outcome.rows}
     assert rows["s1"]["status"] == "absent"
     assert [(p.student_id, p.source.rsplit(", ", 1)[1]) for p in outcome.problems
             if p.message.startswith("impersonating")] == [("s3", "row 2")]
@@ -167,7 +167,7 @@ def test_the_file_modified_last_counts_not_the_last_in_path_order(exam, tmp_path
     older = put(subs, "s1/b-projectile-range.py",
                 filled(exam, "s1", "projectile-range", correct=False), modified=1_000_000_000)
     outcome = grade_class(exam / "manifest.json", [subs])
-    assert {row["student_id"]: row for row in outcome.rows}["s1"]["projectile-range"] == 6.0
+    assert {row.student_id: row for row in outcome.rows}["s1"].cells["projectile-range"] == 6.0
     duplicate = next(p for p in outcome.problems if p.message.startswith("duplicate"))
     assert duplicate.source == str(newer) and str(older) in duplicate.message
 
@@ -176,7 +176,7 @@ def test_a_file_in_no_students_folder_is_not_attributed_by_its_student_line(exam
     subs = tmp_path / "subs"
     put(subs, "loose/projectile-range.py", filled(exam, "s1", "projectile-range"))
     outcome = grade_class(exam / "manifest.json", [subs])
-    assert {row["student_id"]: row for row in outcome.rows}["s1"]["status"] == "absent"
+    assert {row.student_id: row for row in outcome.rows}["s1"].status == "absent"
     assert outcome.problems[0].message.startswith("skipped: not in the folder of a student")
 
 
@@ -205,7 +205,7 @@ def test_one_unquoted_answer_in_an_exam_file_costs_only_that_part(exam, tmp_path
     put(subs, "s1/projectile-range.py", "\ufeff" + text.replace("\n", "\r\n"))
     outcome = grade_class(exam / "manifest.json", [subs])
     # everything but x_max (2 of the exercise's 5 points, 2.4 of the exam's 6) counts
-    assert {row["student_id"]: row for row in outcome.rows}["s1"]["projectile-range"] == \
+    assert {row.student_id: row for row in outcome.rows}["s1"].cells["projectile-range"] == \
         pytest.approx(3.6)
 
 
@@ -405,7 +405,7 @@ def test_a_token_moved_to_another_student_or_made_up_is_foreign_and_not_shown(ex
     made_up = own.replace(s1_token, "0" * 24)
     put(subs, "s1/projectile-range.py", made_up)
     outcome = grade_class(exam / "manifest.json", [subs])
-    assert {row["student_id"]: row["status"] for row in outcome.rows} == \
+    assert {row.student_id: row.status for row in outcome.rows} == \
         {"s1": "rejected", "s2": "rejected", "s3": "absent"}
     messages = [p.message for p in outcome.problems]
     assert all(m.startswith("foreign, skipped: not the variant of") for m in messages)
@@ -455,7 +455,7 @@ def test_homework_keeps_seeds_and_full_verdicts_and_the_sheets_say_what_grade_do
     verdict = json.loads(CliRunner().invoke(main, ["grade", str(path), "--json"]).output)
     assert verdict["score"] == verdict["max_score"] == 5  # the exercise's own 2+1+1+1
     outcome = grade_class(out / "manifest.json", [tmp_path / "subs"])
-    assert outcome.rows[0]["projectile-range"] == 6.0
+    assert outcome.rows[0].cells["projectile-range"] == 6.0
 
 
 def test_an_exam_sheet_says_the_self_check_only_reads(exam):

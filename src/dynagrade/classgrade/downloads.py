@@ -13,7 +13,7 @@ Two downloads are read, each a zip whose entry names say whose a file is:
   (``smithanna_late_1234_5678_projectile-range.py``) and ``-1``, ``-2`` ... at the end of
   the original name of a resubmitted file.
 
-A file belongs to the roster student whose platform id (:mod:`.roster`: ``moodle_id``,
+A file belongs to the roster student whose platform id (:mod:`dynagrade.exam.roster`: ``moodle_id``,
 ``canvas_id``) is the one in its name, never to a name written in it or a name that
 merely looks alike. A file whose name is not the platform's pattern or whose id is on no
 roster row is *unmatched*: reported, credited to nobody.

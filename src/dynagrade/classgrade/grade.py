@@ -8,11 +8,12 @@ and the run goes on. Each submitted exercise is graded against the reference ans
 *stored in the manifest* (never recomputed, so a later numpy or an edited exercise cannot
 change a student's numbers); the exercise file supplies only the parts' grading rules
 (tolerances, units, misconceptions). Part points are those of the manifest, split so
-that an exercise's parts sum to its points in the exam; each part's score is rounded to
-the exam's step (:mod:`.points`) and the staff's overrides (:mod:`.overrides`) replace
-the points of the parts they name.
+that an exercise's parts sum to its points in the exam. Every verdict is the one record of
+graded work (:mod:`dynagrade.exercise.results`): each result is rounded to the exam's step
+(:mod:`dynagrade.exam.points`), and the staff's overrides (:mod:`.overrides`) set the
+points of the parts they name, the grader's points kept beside them.
 
-Outputs (built in a staging folder and swapped in whole, :mod:`.outputs`)::
+Outputs (built in a staging folder and swapped in whole, :mod:`dynagrade.runs.outputs`)::
 
     grades.csv        student_id, name, email, <one column per exercise id: points
                       earned>, total, max_total, percent, status (graded / incomplete /
@@ -35,31 +36,45 @@ from __future__ import annotations
 import csv
 import io
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
+from typing import Mapping
 
 from ..errors import UnknownExercise
-from ..exercise.loader import Bank, open_bank
-from ..exercise.model import Exercise, Variant
-from ..exercise.scoring import grade_variant, graded_error
-from ..grading import prepare
-from ..runs.files import write_atomic
-from .gradebook import (GRADEBOOK_FILES, gradebook_csv, gradebook_row, platform_gradebook,
-                        round_results)
-from ..runs.outputs import staging_folder, swap_in
-from .overrides import Override, apply_overrides, read_overrides
+from ..exam.manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
 from ..exam.points import Rounding
-from ..runs.caches import file_sha256
-from .run import GradingRun
 from ..exam.policy import Policy
 from ..exam.solution_policy import with_feedback
-from .solutions import feedback_solutions
-from ..exam.manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
-from .stats import declared_names, part_statistics
-from .submissions import Problem, Submission, collect
+from ..exercise.loader import Bank, open_bank
+from ..exercise.model import Exercise, Variant
+from ..exercise.results import ExerciseResult, GradedPart, Status
+from ..exercise.scoring import grade_variant, graded_error
+from ..grading import prepare
+from ..runs.caches import file_sha256
+from ..runs.files import write_atomic
+from ..runs.outputs import staging_folder, swap_in
 from ..runs.workers import Pool, default_jobs
+from .gradebook import (GRADEBOOK_FILES, GradebookRow, gradebook_csv, gradebook_row,
+                        platform_gradebook)
+from .overrides import Override, apply_overrides, read_overrides
+from .run import GradingRun
+from .solutions import feedback_solutions
+from .stats import StudentParts, declared_names, part_statistics
+from .submissions import Problem, Submission, collect
 
-GRADE_STATUSES = ("graded", "incomplete", "rejected", "absent")
+@dataclass
+class StudentFeedback:
+    """What one student's feedback page shows: their results, their gradebook row, why
+    files they handed in were not graded, and their worked solutions where the policy
+    shows them."""
+
+    student: StudentEntry
+    results: dict[str, ExerciseResult | None]
+    row: GradebookRow
+    #: per exercise, why the files handed in for it were not graded
+    rejected: dict[str, list[str]] = field(default_factory=dict)
+    #: per exercise, the worked solution (None: it could not be rendered)
+    solutions: dict[str, str | None] = field(default_factory=dict)
 
 
 @dataclass
@@ -68,10 +83,10 @@ class ClassOutcome:
 
     exam_title: str
     exercise_ids: list[str]
-    rows: list[dict]
+    rows: list[GradebookRow]
     problems: list[Problem]
     stats: list = field(default_factory=list)
-    feedback: dict[str, dict] = field(default_factory=dict)
+    feedback: dict[str, StudentFeedback] = field(default_factory=dict)
     timings: dict[str, float] = field(default_factory=dict)
     rounding: Rounding = Rounding()
     max_total: float = 0.0
@@ -81,8 +96,17 @@ class ClassOutcome:
     overridden: int = 0
 
     def summary(self) -> dict:
-        return {"exam": self.exam_title, "rows": self.rows,
+        """The gradebook and the problems as ``dynagrade grade --json`` prints them."""
+        return {"exam": self.exam_title, "rows": [_row_json(r) for r in self.rows],
                 "problems": [p.__dict__ for p in self.problems]}
+
+
+def _row_json(row: GradebookRow) -> dict:
+    """A gradebook row as JSON: the fixed columns, and the exercises' points under
+    ``exercises``."""
+    return {"student_id": row.student_id, "name": row.name, "email": row.email,
+            "exercises": dict(row.cells), "total": row.total, "max_total": row.max_total,
+            "percent": row.percent, "status": str(row.status)}
 
 
 def _exercises(manifest: Manifest, bank: Bank, problems: list[Problem],
@@ -115,36 +139,28 @@ def stored_variant(exercise: Exercise, entry: VariantEntry) -> Variant:
 
 
 def grade_student(student: StudentEntry, manifest_parts: dict[str, tuple[PartEntry, ...]],
-                  exercises: dict[str, Exercise],
-                  submissions: dict[str, Submission]) -> dict:
-    """One roster student's results: points per exercise and a verdict per part."""
-    results = {}
+                  exercises: dict[str, Exercise], submissions: dict[str, Submission]
+                  ) -> dict[str, ExerciseResult | None]:
+    """One roster student's results by exercise id (None: nothing handed in), each part
+    worth its points in the exam and holding the reference answer the manifest stored."""
+    results: dict[str, ExerciseResult | None] = {}
     for entry in student.variants:
         exercise_id = entry.exercise
         submission = submissions.get(exercise_id)
-        parts = manifest_parts[exercise_id]
         if submission is None:
             results[exercise_id] = None
             continue
-        exercise = exercises[exercise_id]
-        by_name = _verdicts(exercise, entry, submission)
-        graded_parts = []
-        for part in parts:
-            verdict = by_name[part.name]
-            fraction = verdict.score / verdict.max_score if verdict.max_score else 0.0
-            graded_parts.append({
-                "name": part.name, "label": part.label, "status": verdict.status,
-                "fraction": fraction, "score": fraction * part.points,
-                "points": part.points, "answer": verdict.answer,
-                "feedback": verdict.feedback, "misconception": verdict.misconception,
-                "expected": entry.answers[part.name], "unit": part.unit,
-            })
-        results[exercise_id] = {"source": submission.source, "parts": graded_parts,
-                                "score": round(sum(p["score"] for p in graded_parts), 6)}
+        by_name = _verdicts(exercises[exercise_id], entry, submission)
+        parts = tuple(replace(by_name[part.name].scaled(part.points), label=part.label,
+                              expected=entry.answers[part.name], unit=part.unit)
+                      for part in manifest_parts[exercise_id])
+        results[exercise_id] = ExerciseResult(exercise_id, int(entry.seed), parts,
+                                              submission.source)
     return results
 
 
-def _verdicts(exercise: Exercise, entry: VariantEntry, submission: Submission) -> dict:
+def _verdicts(exercise: Exercise, entry: VariantEntry,
+              submission: Submission) -> dict[str, GradedPart]:
     """Each part's verdict by name; when the exercise cannot be graded at all (its
     grading rules fail on the stored variant), every part is that error."""
     try:
@@ -156,7 +172,8 @@ def _verdicts(exercise: Exercise, entry: VariantEntry, submission: Submission) -
     return {p.name: p for p in result.parts}
 
 
-def _grade_one(run: GradingRun, work: tuple[StudentEntry, dict[str, Submission]]) -> dict:
+def _grade_one(run: GradingRun, work: tuple[StudentEntry, dict[str, Submission]]
+               ) -> dict[str, ExerciseResult | None]:
     """Worker: one student's results, with the grading run's exercises and parts."""
     student, submissions = work
     return grade_student(student, run.parts, run.exercises, submissions)
@@ -192,7 +209,7 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
                  if (s.student_id, e) in chosen}) for s in manifest.students]
     graded = _run(work, manifest_parts, exercises, jobs, progress)
     timings["grading"] = time.perf_counter() - stage
-    outcome = _outcome(manifest, graded, problems, timings, declared_names(exercises),
+    outcome = class_outcome(manifest, graded, problems, timings, declared_names(exercises),
                        staff, str(overrides))
     if "moodle" in formats:
         outcome.problems += missing_emails(manifest)
@@ -210,48 +227,52 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
     return outcome
 
 
-def _outcome(manifest: Manifest, graded: list[dict], problems: list[Problem],
-             timings: dict[str, float], declared: dict | None = None,
+def class_outcome(manifest: Manifest, graded: list[dict[str, ExerciseResult | None]],
+             problems: list[Problem], timings: dict[str, float], declared: dict | None = None,
              overrides: tuple[Override, ...] = (), overrides_file: str = "") -> ClassOutcome:
-    """The gradebook, the feedback per student and the item statistics: every part's
-    score rounded to the exam's step, then the staff's overrides applied."""
+    """The gradebook, the feedback per student and the item statistics of ``graded``
+    (each roster student's results, in roster order): every result rounded to the
+    exam's step, then the staff's overrides applied. Class grading and the server's
+    gradebook and report both build their outcome here."""
     exercise_ids = manifest.exercise_ids
     rounding = Rounding(manifest.exam.rounding)
     max_total = rounding.total([e.points for e in manifest.exercises])
-    for results in graded:
-        round_results(results, rounding)
-    comments = apply_overrides(overrides, overrides_file, dict(zip(
-        (s.student_id for s in manifest.students), graded)), rounding)
+    student_ids = [s.student_id for s in manifest.students]
+    rounded = {student_id: {e: r.rounded(rounding) if r is not None else None
+                            for e, r in results.items()}
+               for student_id, results in zip(student_ids, graded)}
+    final, comments = apply_overrides(overrides, overrides_file, rounded, rounding)
     rows, analysed, feedback = [], [], {}
     rejected = rejected_files(problems)
-    problems += part_errors(manifest, graded)
-    for student, results in zip(manifest.students, graded):
+    problems += part_errors(manifest, final)
+    for student in manifest.students:
+        results = final[student.student_id]
         handed_in = rejected.get(student.student_id, {})
         row = gradebook_row(student.student_id, results, exercise_ids, max_total,
                             bool(handed_in), name=student.name, email=student.email,
                             rounding=rounding)
         rows.append(row)
-        feedback[student.student_id] = {"student": student, "results": results, "row": row,
-                                        "rejected": handed_in}
+        feedback[student.student_id] = StudentFeedback(student, results, row, handed_in)
         submitted = [e for e in exercise_ids if results[e] is not None]
         if submitted:
-            analysed.append({"total": row["total"], "parts": {
-                (e, p["name"]): p for e in submitted for p in results[e]["parts"]}})
+            analysed.append(StudentParts(row.total, {
+                (e, p.name): p for e in submitted for p in results[e].parts}))
     ordered_parts = [(e.id, p) for e in manifest.exercises for p in e.parts]
     return ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
                         part_statistics(ordered_parts, analysed, declared=declared), feedback,
                         timings, rounding, max_total, comments, len(overrides))
 
 
-def part_errors(manifest: Manifest, graded: list[dict]) -> list[Problem]:
+def part_errors(manifest: Manifest,
+                graded: Mapping[str, Mapping[str, ExerciseResult | None]]) -> list[Problem]:
     """A problem for every part whose grading failed, with the failure's message."""
     found = []
-    for student, results in zip(manifest.students, graded):
-        for exercise_id, result in results.items():
-            for part in (result or {}).get("parts", ()):
-                if part["status"] == "error":
-                    found.append(Problem("error", result["source"],
-                                         f"part {part['name']}: {part['feedback']}",
+    for student in manifest.students:
+        for exercise_id, result in graded[student.student_id].items():
+            for part in result.parts if result is not None else ():
+                if part.status is Status.ERROR:
+                    found.append(Problem("error", result.source,
+                                         f"part {part.name}: {part.feedback}",
                                          student.student_id, exercise_id))
     return found
 
@@ -291,7 +312,7 @@ def _add_solutions(outcome: ClassOutcome, manifest: Manifest,
 
         solved = [(exercises[e.exercise], stored_variant(exercises[e.exercise], e))
                   for e in student.variants]
-        outcome.feedback[student.student_id]["solutions"] = feedback_solutions(solved, warn)
+        outcome.feedback[student.student_id].solutions = feedback_solutions(solved, warn)
 
 
 def _run(work, manifest_parts, exercises, jobs, progress) -> list[dict]:

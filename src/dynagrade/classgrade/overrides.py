@@ -7,8 +7,9 @@ student's working::
     student_id,exercise,part,points,comment
     s1,car-in-a-looping,N_max,1,"sign slip only, method right"
 
-The points replace what the grader gave that part; the comment is added to the part's
-feedback. The file is read as people save it (UTF-8 with or without a byte-order mark,
+The points replace what the grader gave that part (which is kept beside them, as the
+:class:`~dynagrade.exercise.results.StaffOverride` of the part's record); the comment
+follows the part's feedback. The file is read as people save it (UTF-8 with or without a byte-order mark,
 ``,``, ``;`` or a tab as separator, CRLF or LF; a decimal comma such as ``1,5`` is read as 1.5).
 
 Every row is checked before anything is graded or written: a student not on the roster,
@@ -29,6 +30,7 @@ from typing import Mapping
 
 from ..errors import DynagradeError
 from ..exercise.datafile import DataFileError, read_data_file
+from ..exercise.results import ExerciseResult, StaffOverride
 from ..exam.manifest import Manifest
 from ..exam.points import Rounding
 from ..exam.roster import csv_rows
@@ -141,31 +143,29 @@ def _number(text: str) -> float | None:
 
 
 def apply_overrides(overrides: tuple[Override, ...], where: str,
-                    results_by_student: Mapping[str, dict],
-                    rounding: Rounding) -> dict[str, list[str]]:
-    """Replace the points of every overridden part in the graded results (in place) and
-    add the comment to its feedback; returns the comments by student. An override of an
-    exercise the student handed nothing in for is an :class:`OverrideError`, listing every
-    such row."""
+                    results_by_student: Mapping[str, Mapping[str, ExerciseResult | None]],
+                    rounding: Rounding
+                    ) -> tuple[dict[str, dict[str, ExerciseResult | None]], dict[str, list[str]]]:
+    """The graded results with every overridden part's points set by the staff (the
+    automatic score kept beside them, the comment and the file as the override's author
+    recorded), and the staff's notes by student for the platform feedback. An override
+    of an exercise the student handed nothing in for is an :class:`OverrideError`,
+    listing every such row."""
+    results = {student: dict(by_exercise) for student, by_exercise in results_by_student.items()}
     problems, comments = [], {}
     for override in overrides:
-        result = results_by_student[override.student_id][override.exercise]
+        result = results[override.student_id][override.exercise]
         if result is None:
             problems.append(f"{where}, row {override.row}: {override.student_id} handed in "
                             f"nothing gradable for {override.exercise!r}; an override "
                             "replaces the points of a graded part")
             continue
-        part = next(p for p in result["parts"] if p["name"] == override.part)
-        note = (f"Points set by the staff: {rounding.text(override.points)} (graded "
-                f"{rounding.text(part['score'])})"
-                + (f": {override.comment}" if override.comment else ""))
-        part.update(score=override.points, overridden=True,
-                    fraction=override.points / part["points"] if part["points"] else 0.0,
-                    feedback=f"{part['feedback']} {note}".strip())
-        result["score"] = rounding.total([p["score"] for p in result["parts"]])
+        part = result.part(override.part).with_override(
+            StaffOverride(override.points, override.comment, author=where))
+        results[override.student_id][override.exercise] = result.with_part(part)
         comments.setdefault(override.student_id, []).append(
-            f"{override.exercise} {override.part}: {note}")
+            f"{override.exercise} {override.part}: {part.override_note(rounding)}")
     if problems:
         raise OverrideError(f"{len(problems)} bad override row(s); nothing was written:\n  "
                             + "\n  ".join(problems))
-    return comments
+    return results, comments

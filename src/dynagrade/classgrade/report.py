@@ -13,6 +13,7 @@ import statistics
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from ..exam.points import Rounding
 from ..exercise.numbers import answer_text, format_number, percent_text
 from ..exercise.units import with_unit
 from ..render.accessible_svg import accessible_svg, sentence_list
@@ -22,6 +23,7 @@ from .stats import MIN_STUDENTS, PartStats
 
 if TYPE_CHECKING:
     from ..exam.manifest import ExamEntry, ExerciseEntry
+    from .grade import StudentFeedback
 
 
 NO_ANSWER = "— (no answer)"
@@ -35,32 +37,37 @@ def _shown(value, unit) -> str:
     return with_unit(answer_text(value), unit)
 
 
-def _feedback_context(exam, exercises, data) -> dict:
+def _feedback_context(exam: ExamEntry, exercises: dict[str, ExerciseEntry],
+                      data: StudentFeedback) -> dict:
+    rule = Rounding(exam.rounding)
     sections = []
-    for entry in data["student"].variants:
+    for entry in data.student.variants:
         exercise_id = entry.exercise
-        result = data["results"][exercise_id]
+        result = data.results[exercise_id]
         described = exercises[exercise_id]
-        parts = []
-        if result is not None:
-            for part in result["parts"]:
-                parts.append({**part, "expected_shown": _shown(part["expected"], part["unit"]),
-                              "answer_shown": part["answer"] if part["answer"] is not None
-                              else NO_ANSWER})
+        parts = [{"name": part.name, "status": part.status, "score": part.score,
+                  "points": part.points, "feedback": part.shown_feedback(rule),
+                  "expected_shown": _shown(part.expected, part.unit),
+                  "answer_shown": part.answer if part.answer is not None else NO_ANSWER}
+                 for part in (result.parts if result is not None else ())]
         sections.append({"id": exercise_id, "title": described.title,
                          "points": described.points, "result": result, "parts": parts,
-                         "rejected": data.get("rejected", {}).get(exercise_id, []),
-                         "solution": data.get("solutions", {}).get(exercise_id)})
-    row = {**data["row"], "percent": percent_text(data["row"]["percent"])}
-    return {"exam": exam, "student": data["student"], "row": row, "sections": sections}
+                         "rejected": data.rejected.get(exercise_id, []),
+                         "solution": data.solutions.get(exercise_id)})
+    row = data.row
+    shown_row = {"total": row.total, "max_total": row.max_total,
+                 "percent": percent_text(row.percent), "status": row.status}
+    return {"exam": exam, "student": data.student, "row": shown_row, "sections": sections}
 
 
-def feedback_markdown(exam: ExamEntry, exercises: dict[str, ExerciseEntry], data: dict) -> str:
+def feedback_markdown(exam: ExamEntry, exercises: dict[str, ExerciseEntry],
+                      data: StudentFeedback) -> str:
     """One student's feedback as Markdown."""
     return render_template("feedback.md", **_feedback_context(exam, exercises, data))
 
 
-def feedback_html(exam: ExamEntry, exercises: dict[str, ExerciseEntry], data: dict) -> str:
+def feedback_html(exam: ExamEntry, exercises: dict[str, ExerciseEntry],
+                  data: StudentFeedback) -> str:
     """One student's feedback as a self-contained HTML page."""
     return render_template("feedback.html", **_feedback_context(exam, exercises, data))
 
@@ -144,8 +151,8 @@ def _stat(value) -> str:
 def class_summary(rows) -> dict:
     """Roster size, present and absent students, and the mean and median percentage of
     those present (the median of an even count is the mean of the two middle values)."""
-    present = [r for r in rows if r["status"] != "absent"]
-    percents = [r["percent"] for r in present]
+    present = [r for r in rows if r.status != "absent"]
+    percents = [r.percent for r in present]
     none = "— (no submissions)"
     return {
         "students": len(rows), "present": len(present), "absent": len(rows) - len(present),
@@ -186,7 +193,7 @@ def small_class_caution(stats: list[PartStats]) -> str:
 def report_html(exam: ExamEntry, outcome) -> str:
     """The class report: summary, histogram, item statistics (with a caution where they
     rest on few students) and the wrong answers grouped by what explains them."""
-    percents = [r["percent"] for r in outcome.rows if r["status"] != "absent"]
+    percents = [r.percent for r in outcome.rows if r.status != "absent"]
     return render_template(
         "report.html", exam=exam, outcome=outcome, summary=class_summary(outcome.rows),
         histogram=histogram(percents) if percents else None,

@@ -24,15 +24,15 @@ from __future__ import annotations
 import math
 from collections import Counter
 from dataclasses import dataclass, field
+from typing import Mapping
 
 from ..exam.manifest import PartEntry
+from ..exercise.results import GradedPart, Status
 
 GROUP_FRACTION = 0.27
 #: below this many students a statistic is a hint, not a measurement (a common rule of
 #: thumb for item analysis; one student more or less can change it by a tenth or more)
 MIN_STUDENTS = 30
-#: verdict statuses that mean "answered, and not right"
-WRONG_STATUSES = ("wrong", "partial", "follow-through")
 FOLLOW_THROUGH = "follow-through from an earlier wrong answer"
 #: kinds of explanation, as the report names them
 DECLARED, SLIP, FOLLOWED = "the exercise's misconception", "slip", "follow-through"
@@ -46,6 +46,15 @@ class Explanation:
     name: str
     kind: str
     students: int
+
+
+@dataclass(frozen=True)
+class StudentParts:
+    """One student's graded parts by ``(exercise_id, part)`` (only the exercises they
+    handed in) and their total."""
+
+    total: float
+    parts: Mapping[tuple[str, str], GradedPart]
 
 
 @dataclass
@@ -103,24 +112,22 @@ def upper_lower_index(fractions: list[float], totals: list[float]) -> float | No
     return (sum(fractions[i] for i in upper) - sum(fractions[i] for i in lower)) / size
 
 
-def part_statistics(exercise_parts: list[tuple[str, PartEntry]], graded: list[dict],
+def part_statistics(exercise_parts: list[tuple[str, PartEntry]], graded: list[StudentParts],
                     top: int = 5,
                     declared: dict[tuple[str, str], set[str]] | None = None) -> list[PartStats]:
-    """Statistics for each ``(exercise_id, part)``; ``graded`` holds per student
-    ``{"total": float, "parts": {(exercise_id, part): {...}}}`` with each part's
-    ``fraction``, ``answer``, ``status`` and ``misconception`` (students who did not
-    submit an exercise have no entry for its parts). ``declared`` names each part's
-    declared misconceptions, to tell them from the grader's generic slips."""
+    """Statistics for each ``(exercise_id, part)`` over the students in ``graded`` who
+    handed its exercise in. ``declared`` names each part's declared misconceptions, to
+    tell them from the grader's generic slips."""
     declared = declared or {}
     stats = []
     for exercise_id, part in exercise_parts:
         key = (exercise_id, part.name)
-        entries = [(g["parts"][key], g["total"]) for g in graded if key in g["parts"]]
+        entries = [(g.parts[key], g.total) for g in graded if key in g.parts]
         item = PartStats(exercise_id, part.name, part.label, part.points,
                          answered=len(entries))
         if entries:
-            fractions = [e["fraction"] for e, _ in entries]
-            rest = [total - e["fraction"] * part.points for e, total in entries]
+            fractions = [e.fraction for e, _ in entries]
+            rest = [total - e.fraction * part.points for e, total in entries]
             totals = [total for _, total in entries]
             item.difficulty = sum(fractions) / len(fractions)
             item.point_biserial = correlation(fractions, rest)
@@ -129,12 +136,12 @@ def part_statistics(exercise_parts: list[tuple[str, PartEntry]], graded: list[di
             matched: dict[str, Counter] = {}
             named = Counter()
             for entry, _ in entries:
-                if entry["status"] in ("wrong", "partial") and entry["answer"]:
-                    text = " ".join(entry["answer"].split())
+                if entry.status in (Status.WRONG, Status.PARTIAL) and entry.answer:
+                    text = " ".join(entry.answer.split())
                     wrong[text] += 1
-                    matched.setdefault(text, Counter())[entry["misconception"] or ""] += 1
-                    if entry["misconception"]:
-                        named[entry["misconception"]] += 1
+                    matched.setdefault(text, Counter())[entry.misconception or ""] += 1
+                    if entry.misconception:
+                        named[entry.misconception] += 1
             item.wrong_answers = [(text, count, matched[text].most_common(1)[0][0])
                                   for text, count in sorted(wrong.items(),
                                                             key=lambda kv: (-kv[1], kv[0]))[:top]]
@@ -144,17 +151,17 @@ def part_statistics(exercise_parts: list[tuple[str, PartEntry]], graded: list[di
     return stats
 
 
-def _explain(item: PartStats, entries: list[dict], declared: set[str]) -> None:
+def _explain(item: PartStats, entries: list[GradedPart], declared: set[str]) -> None:
     """Group the part's wrong answers by the mistake the grader named for each."""
     groups: Counter = Counter()
     for entry in entries:
-        if entry["status"] not in WRONG_STATUSES or not (entry["answer"] or "").strip():
+        if not entry.status.answered_wrong or not (entry.answer or "").strip():
             continue
         item.wrong += 1
-        if entry["status"] == "follow-through":
+        if entry.status is Status.FOLLOW_THROUGH:
             groups[(FOLLOW_THROUGH, FOLLOWED)] += 1
-        elif entry["misconception"]:
-            name = entry["misconception"]
+        elif entry.misconception:
+            name = entry.misconception
             groups[(name, DECLARED if name in declared else SLIP)] += 1
         else:
             item.unexplained += 1

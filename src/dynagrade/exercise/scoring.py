@@ -8,57 +8,19 @@ student's own earlier answers, and earns its credit when it is consistent with t
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass
 from typing import Mapping
 
 from ..grading import grade, read_number
 from ..grading.errors import AnswerError
 from .model import Exercise, Variant
 from .parts import Numeric, Part
+from .results import ExerciseResult, GradedPart, Status
 from .units import from_si, to_si
-
-
-@dataclass(frozen=True)
-class PartResult:
-    """The verdict on one part, with the points it earned."""
-
-    name: str
-    label: str
-    status: str  # "correct", "follow-through", "partial", "wrong", "not answered", "error"
-    correct: bool
-    score: float
-    max_score: float
-    feedback: str
-    answer: str | None
-    misconception: str | None = None
-
-
-@dataclass(frozen=True)
-class Result:
-    """The verdicts on every part of a variant and the total."""
-
-    exercise_id: str
-    seed: int
-    parts: tuple[PartResult, ...]
-
-    @property
-    def score(self) -> float:
-        return sum(p.score for p in self.parts)
-
-    @property
-    def max_score(self) -> float:
-        return sum(p.max_score for p in self.parts)
-
-    def to_json(self) -> dict:
-        return {"exercise": self.exercise_id, "seed": self.seed,
-                "score": round(self.score, 6), "max_score": self.max_score,
-                "parts": [{k: v for k, v in asdict(p).items() if k != "label"}
-                          for p in self.parts]}
 
 
 def grade_variant(exercise: Exercise, variant: Variant,
                   answers: Mapping[str, str | None],
-                  problems: Mapping[str, str] | None = None) -> Result:
+                  problems: Mapping[str, str] | None = None) -> ExerciseResult:
     """The verdict on each of ``exercise``'s parts for the student's ``answers`` (text)."""
     problems = problems or {}
     params_si = exercise.si(variant.params)
@@ -66,17 +28,17 @@ def grade_variant(exercise: Exercise, variant: Variant,
     for part in exercise.parts:
         text = answers.get(part.name)
         if part.name in problems:
-            results.append(_result(part, text, "wrong", 0.0,
+            results.append(_result(part, text, Status.WRONG, 0.0,
                                    f"could not read the answer: {problems[part.name]}"))
         elif text is None or not text.strip():
-            results.append(_result(part, None, "not answered", 0.0, "not answered"))
+            results.append(_result(part, None, Status.NOT_ANSWERED, 0.0, "not answered"))
         else:
             results.append(_graded_part(exercise, part, variant, answers, params_si, text))
-    return Result(exercise.id, variant.seed, tuple(results))
+    return ExerciseResult(exercise.id, variant.seed, tuple(results))
 
 
 def _graded_part(exercise: Exercise, part: Part, variant: Variant,
-                 answers: Mapping[str, str | None], params_si, text: str) -> PartResult:
+                 answers: Mapping[str, str | None], params_si, text: str) -> GradedPart:
     """The verdict on one answered part; a failure of grading itself is that part's
     ``error`` (0 points, the message kept), never the end of the other parts' grading."""
     try:
@@ -87,15 +49,15 @@ def _graded_part(exercise: Exercise, part: Part, variant: Variant,
     except Exception as error:  # noqa: BLE001 - isolation is the point
         return graded_error(part, text, error)
     verdict = followed or verdict
-    status = ("correct" if verdict.correct else "follow-through" if followed
-              else "partial" if verdict.score > 0 else "wrong")
+    status = (Status.CORRECT if verdict.correct else Status.FOLLOW_THROUGH if followed
+              else Status.PARTIAL if verdict.score > 0 else Status.WRONG)
     return _result(part, text, status, verdict.score, verdict.feedback, verdict.misconception)
 
 
-def graded_error(part: Part, text: str | None, error: BaseException) -> PartResult:
+def graded_error(part: Part, text: str | None, error: BaseException) -> GradedPart:
     """The result of a part whose grading failed: status ``error`` with the message."""
     message = str(error) or type(error).__name__
-    return _result(part, text, "error", 0.0,
+    return _result(part, text, Status.ERROR, 0.0,
                    f"could not be graded ({type(error).__name__}: {message}); the course "
                    "staff will look at it")
 
@@ -125,7 +87,7 @@ def _follow_through(exercise: Exercise, part: Numeric, variant: Variant,
                          "credit")
 
 
-def _result(part: Part, answer, status, fraction, feedback, misconception=None) -> PartResult:
-    return PartResult(part.name, part.label, status, status == "correct",
-                      round(fraction * part.points, 6), part.points, feedback, answer,
-                      misconception)
+def _result(part: Part, answer: str | None, status: Status, fraction: float, feedback: str,
+            misconception: str | None = None) -> GradedPart:
+    return GradedPart(part.name, part.label, status, round(fraction * part.points, 6),
+                      part.points, answer, feedback, misconception)

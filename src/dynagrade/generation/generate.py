@@ -16,13 +16,13 @@ Output folder::
     moodle.xml                      a question category per exercise, a question per variant
 
 This module is the driver: it loads the exam into a run (:mod:`.run`), has a pool of
-processes (:mod:`.workers`) choose every student's variants (:mod:`.student`), which
+processes (:mod:`dynagrade.runs.workers`) choose every student's variants (:mod:`.student`), which
 gives the manifest and the answer keys; while one worker compiles the key's PDF, the
 pool writes each student's folder; then the Moodle export (in a worker) and the printing
 PDFs, and the manifest. Results are put
 together in roster order, so the files do not depend on the pool. Everything is built in
 a staging folder beside the output folder and swapped in when complete
-(:mod:`.outputs`): the output folder holds exactly one whole exam, the one before it is
+(:mod:`dynagrade.runs.outputs`): the output folder holds exactly one whole exam, the one before it is
 kept as ``OUT.previous``.
 """
 
@@ -77,7 +77,7 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
                   secret: str | None = None,
                   solutions: bool = False) -> GenerationReport:
     """Write the whole exam into ``out_dir`` (see the module docstring); ``secret`` keys
-    the students' variants (a fresh random one when None, :mod:`.secret`)."""
+    the students' variants (a fresh random one when None, :mod:`dynagrade.exam.secret`)."""
     started = time.perf_counter()
     progress = progress or (lambda stage, done, total: None)
     target = Path(out_dir)

@@ -1,7 +1,7 @@
 """The work of one student in an exam generation: their variant of every exercise, the
 fill-in files and figures, and the sheet as Markdown, HTML and PDF.
 
-It comes in two steps, each run in a worker process (:mod:`.workers`) with the
+It comes in two steps, each run in a worker process (:mod:`dynagrade.runs.workers`) with the
 generation's run: :func:`student_variants` chooses the variants (what the manifest and
 the answer keys need), :func:`student_files` writes the student's folder and returns the
 manifest entry and the typst body of their sheet (for the printing PDF, should the PDFs

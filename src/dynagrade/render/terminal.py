@@ -69,8 +69,8 @@ def solution_panel(exercise, variant, solution: str | None) -> None:
 def result_table(exercise, result) -> None:
     """The verdict, points and feedback of every part of a graded file, and the total."""
     click.echo(text_table(("part", "verdict", "points", "feedback"), [
-        (part.name, part.status, f"{points_text(part.score)} / {points_text(part.max_score)}",
-         part.feedback) for part in result.parts],
+        (part.name, part.status, f"{points_text(part.score)} / {points_text(part.points)}",
+         part.shown_feedback()) for part in result.parts],
         title=f"{exercise.title} ({exercise.id}, seed {result.seed})",
         caption=f"total {points_text(result.score)} / {points_text(result.max_score)}"),
         nl=False)
@@ -143,7 +143,7 @@ def gradebook_table(outcome) -> None:
                          ("student", "status") else "right")
     table.caption = "  ".join(f"{n}: {e}" for n, e in zip(numbers, outcome.exercise_ids))
     for row in outcome.rows:
-        table.add_row(row["student_id"], *(points_text(row[e]) for e in outcome.exercise_ids),
-                      f"{points_text(row['total'])} / {points_text(row['max_total'])}",
-                      percent_text(row["percent"]), row["status"])
+        table.add_row(row.student_id, *(points_text(row.cells[e]) for e in outcome.exercise_ids),
+                      f"{points_text(row.total)} / {points_text(row.max_total)}",
+                      percent_text(row.percent), row.status)
     _console().print(table)

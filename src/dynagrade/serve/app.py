@@ -252,7 +252,7 @@ def _routes(app: FastAPI, base: str) -> None:
         _holder(request, token, "staff")
         state = request.app.state
         stored = db.all_answers(state.engine, state.data.exam_id)
-        return HTMLResponse(gradebook.class_report_html(state.data, stored, state.folders))
+        return HTMLResponse(gradebook.class_report_html(state.data, stored))
 
 
 async def _posted_form(request: Request, token: str):
@@ -360,8 +360,7 @@ def _staff_html(request: Request, token: str) -> str:
     state = request.app.state
     data: ExamData = state.data
     stored = db.all_answers(state.engine, data.exam_id)
-    rows = gradebook.gradebook_rows(data, gradebook.counted_answers(data, stored))
-    columns = ["student_id", *data.exercise_ids, "total", "max_total", "percent", "status"]
+    columns, rows = gradebook.staff_table(data, stored)
     return _TEMPLATES.get_template("staff.html").render(
         title=data.title, token=token, base=_base(request), rows=rows, columns=columns,
         language=data.manifest.exam.language,

@@ -7,6 +7,7 @@ Tables (created by the Alembic migrations in ``migrations/``; see docs/serve.md)
 ``submissions``  one row per accepted submit: exam, student, exercise, attempt number,
                  idempotency key, time, whether it counts (practice draws do not)
 ``answers``      one row per part of a submission: the raw text, how it read, the verdict
+                 (status, points, feedback, the mistake the grader named)
 
 Submissions and answers are only ever inserted, never updated or deleted. A submit is
 one transaction; the caller acknowledges it only after :func:`record_submission`
@@ -81,6 +82,7 @@ answers = sa.Table(
     sa.Column("score", sa.Float, nullable=False),
     sa.Column("max_score", sa.Float, nullable=False),
     sa.Column("feedback", sa.Text, nullable=False),
+    sa.Column("misconception", sa.Text, nullable=True),
     sa.UniqueConstraint("submission_id", "part", name="uq_answers_part"),
 )
 
@@ -284,6 +286,7 @@ class StoredAnswer:
     score: float
     max_score: float
     feedback: str
+    misconception: str | None = None
 
 
 class DuplicateAttempt(DynagradeError):
@@ -380,7 +383,7 @@ def _answers(connection, condition) -> list[StoredAnswer]:
     rows = connection.execute(
         sa.select(s.id, s.student_id, s.exercise_id, s.attempt, s.counted, s.seed,
                   s.created_at, a.part, a.raw, a.readable, a.message, a.status, a.correct,
-                  a.score, a.max_score, a.feedback)
+                  a.score, a.max_score, a.feedback, a.misconception)
         .select_from(answers.join(submissions)).where(condition)
         .order_by(s.id, a.id)).all()
     return [StoredAnswer(*row) for row in rows]

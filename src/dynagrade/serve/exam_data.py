@@ -18,11 +18,14 @@ from pathlib import Path
 from ..errors import UnknownExercise
 from ..classgrade.grade import grade_student, stored_variant
 from ..exam.manifest import ManifestError, PartEntry, StudentEntry, VariantEntry, load
+from ..exam.points import Rounding
 from ..exam.policy import Policy
 from ..classgrade.submissions import Submission
 from ..exercise.loader import Bank, open_bank
 from ..exercise.model import ConstraintError, Exercise
+from ..exercise.results import GradedPart, Status
 from ..grading.readability import readability
+from .verdicts import SubmittedPart
 
 #: Longest answer text accepted for one part (longer answers are refused, not graded).
 MAX_ANSWER_CHARS = 2000
@@ -51,6 +54,8 @@ class ExamData:
         self.title: str = exam.title
         self.instructions: str = exam.instructions
         self.policy = Policy.from_json(exam.policy)
+        #: how the exam rounds points, as class grading rounds them
+        self.rounding = Rounding(exam.rounding)
         self.exercises_meta = {e.id: e for e in self.manifest.exercises}
         self.exercise_ids = self.manifest.exercise_ids
         self.manifest_parts: dict[str, tuple[PartEntry, ...]] = {
@@ -136,7 +141,7 @@ class ExamData:
         return {"readable": readable, "message": message, "formula": shown}
 
     def grade(self, student_id: str, exercise_id: str, answers: dict[str, str],
-              seed: int | None = None) -> list[dict]:
+              seed: int | None = None) -> list[SubmittedPart]:
         """Each submitted part read and graded, with points in the exam's scale.
 
         A part whose grading fails (a fault of the grader, not of the student) gets the
@@ -151,29 +156,26 @@ class ExamData:
                     graded.update(self._grade_parts(student_id, exercise_id,
                                                     {name: text}, seed))
                 except Exception as error:
-                    graded[name] = _failed(self.manifest_parts[exercise_id], name, error)
+                    graded[name] = _failed(self.manifest_parts[exercise_id], name, text,
+                                           error)
         out = []
         for part in self.manifest_parts[exercise_id]:
             name = part.name
             if name not in answers:
                 continue
             readable, message = self.read(student_id, exercise_id, name, answers[name], seed)
-            verdict = graded[name]
-            out.append({"part": name, "raw": answers[name], "readable": readable,
-                        "message": message, "status": verdict["status"],
-                        "correct": verdict["status"] == "correct", "score": verdict["score"],
-                        "max_score": verdict["points"], "feedback": verdict["feedback"] or ""})
+            out.append(SubmittedPart(answers[name], readable, message, graded[name]))
         return out
 
     def _grade_parts(self, student_id: str, exercise_id: str, answers: dict[str, str],
-                     seed: int | None) -> dict[str, dict]:
+                     seed: int | None) -> dict[str, GradedPart]:
         entry = self.entry(student_id, exercise_id, seed)
         student = StudentEntry(student_id, "", "", (entry,))
         submission = Submission("server", student_id, exercise_id, dict(answers))
         graded = grade_student(student, {exercise_id: self.manifest_parts[exercise_id]},
                                {exercise_id: self.exercises[exercise_id]},
                                {exercise_id: submission})[exercise_id]
-        return {part["name"]: part for part in graded["parts"] if part["name"] in answers}
+        return {part.name: part for part in graded.parts if part.name in answers}
 
     def new_practice_seed(self, exercise_id: str) -> int:
         """A fresh seed whose draw meets the exercise's constraints."""
@@ -187,11 +189,12 @@ class ExamData:
         raise ConstraintError(f"no practice variant of {exercise_id!r} could be drawn")
 
 
-def _failed(parts: tuple[PartEntry, ...], name: str, error: Exception) -> dict:
-    points = next(float(p.points) for p in parts if p.name == name)
-    return {"status": "error", "score": 0.0, "points": points,
-            "feedback": f"this answer could not be graded ({type(error).__name__}); the "
-                        "staff will look at it"}
+def _failed(parts: tuple[PartEntry, ...], name: str, text: str,
+            error: Exception) -> GradedPart:
+    part = next(p for p in parts if p.name == name)
+    return GradedPart(name, part.label, Status.ERROR, 0.0, float(part.points), text,
+                      f"this answer could not be graded ({type(error).__name__}); the "
+                      "staff will look at it", unit=part.unit)
 
 
 @lru_cache(maxsize=4096)

@@ -1,25 +1,33 @@
-"""What the staff page shows and lets download, from the stored submissions.
+"""What the staff page shows and lets download, built from the stored verdicts.
 
 The attempt that counts for a part is the exam's ``counts`` policy: the ``last`` answer
-or the ``best`` score (penalties included; the earlier attempt wins a tie). The gradebook
-has the columns of class grading's ``grades.csv``; the submissions download is the
-responses CSV that ``dynagrade grade --manifest`` reads, holding each counted answer, so
-an offline regrade gives the same points (when ``penalty`` is 0: the offline grader knows
-nothing of attempts).
+or the ``best`` score (penalties included; the earlier attempt wins a tie). The counted
+verdicts of each student become the same records class grading makes
+(:class:`~dynagrade.exercise.results.ExerciseResult`), and the gradebook, the report and
+the statistics are built from them by class grading's own code
+(:func:`dynagrade.classgrade.grade.class_outcome`): each part rounded to the exam's step,
+an exercise the sum of its rounded parts. Nothing is graded again.
+
+The submissions download is the responses CSV that ``dynagrade grade --manifest`` reads,
+holding each counted answer, so an offline regrade gives the same ``grades.csv`` byte for
+byte when ``penalty`` is 0 (the offline grader knows nothing of attempts; with a penalty,
+each part's points here are the grader's points times the attempt's factor, rounded).
 """
 
 from __future__ import annotations
 
 import csv
 import io
-import tempfile
-from pathlib import Path
 
-from ..classgrade.grade import ClassOutcome, grade_class, gradebook_csv, gradebook_row
-from ..exam.points import Rounding
+from ..classgrade.grade import ClassOutcome, class_outcome
+from ..classgrade.gradebook import exercise_columns, gradebook_csv
+from ..classgrade.stats import declared_names
 from ..classgrade.submissions import RESPONSE_HEADER
+from ..exercise.numbers import percent_text
+from ..exercise.results import ExerciseResult
 from .db import StoredAnswer
 from .exam_data import ExamData
+from .verdicts import SubmittedPart, not_answered
 
 
 def counted_answers(data: ExamData, stored: list[StoredAnswer]
@@ -36,34 +44,55 @@ def counted_answers(data: ExamData, stored: list[StoredAnswer]
     return chosen
 
 
-def gradebook_rows(data: ExamData, chosen: dict) -> list[dict]:
-    """One row per roster student, as class grading's grades.csv has them."""
-    max_total = sum(float(data.exercises_meta[e].points) for e in data.exercise_ids)
-    rows = []
+def counted_results(data: ExamData, chosen: dict[tuple[str, str, str], StoredAnswer]
+                    ) -> list[dict[str, ExerciseResult | None]]:
+    """Each roster student's results, in roster order, from their counted verdicts: an
+    exercise with no counted answer is not handed in (None); a part of a handed-in
+    exercise without one is not answered, as class grading records an empty part."""
+    graded = []
     for student_id in data.students:
-        results = {}
+        results: dict[str, ExerciseResult | None] = {}
         for exercise_id in data.exercise_ids:
-            scores = [chosen[(student_id, exercise_id, p.name)].score
-                      for p in data.parts(exercise_id)
-                      if (student_id, exercise_id, p.name) in chosen]
-            results[exercise_id] = {"score": round(sum(scores), 6)} if scores else None
-        student = data.students[student_id]
-        rows.append(gradebook_row(student_id, results, data.exercise_ids, max_total,
-                                  name=student.name, email=student.email,
-                                  rounding=_rounding(data)))
-    return rows
+            entries = data.manifest_parts[exercise_id]
+            answers = {p.name: chosen.get((student_id, exercise_id, p.name)) for p in entries}
+            if not any(answers.values()):
+                results[exercise_id] = None
+                continue
+            parts = tuple(SubmittedPart.stored(answers[p.name], p.label).verdict
+                          if answers[p.name] is not None else not_answered(p)
+                          for p in entries)
+            source = f"server, {exercise_id}"
+            results[exercise_id] = ExerciseResult(exercise_id, None, parts, source)
+        graded.append(results)
+    return graded
+
+
+def outcome(data: ExamData, stored: list[StoredAnswer]) -> ClassOutcome:
+    """The class's gradebook, feedback and statistics from the stored verdicts."""
+    graded = counted_results(data, counted_answers(data, stored))
+    return class_outcome(data.manifest, graded, [], {}, declared_names(data.exercises))
 
 
 def grades_csv(data: ExamData, stored: list[StoredAnswer]) -> str:
     """The gradebook as class grading writes it."""
-    rows = gradebook_rows(data, counted_answers(data, stored))
-    return gradebook_csv(ClassOutcome(data.title, data.exercise_ids, rows, [],
-                                      rounding=_rounding(data)))
+    return gradebook_csv(outcome(data, stored))
 
 
-def _rounding(data: ExamData) -> Rounding:
-    """The exam's rounding of points, as class grading rounds them."""
-    return Rounding(data.manifest.exam.rounding)
+def staff_table(data: ExamData, stored: list[StoredAnswer]) -> tuple[list[str], list[dict]]:
+    """The gradebook as the staff page shows it: the columns of ``grades.csv`` (but name
+    and email) and one row of cell texts per roster student."""
+    graded = outcome(data, stored)
+    rounding = graded.rounding
+    columns = ["student_id", *exercise_columns(data.exercise_ids), "total", "max_total",
+               "percent", "status"]
+    rows = []
+    for row in graded.rows:
+        cells = [row.student_id, *(row.cells[e] for e in data.exercise_ids), row.total,
+                 row.max_total]
+        shown = [cells[0], *(None if v is None else rounding.text(v) for v in cells[1:])]
+        rows.append(dict(zip(columns, [*shown, percent_text(row.percent, None),
+                                       str(row.status)])))
+    return columns, rows
 
 
 def responses_csv(data: ExamData, stored: list[StoredAnswer]) -> str:
@@ -95,14 +124,9 @@ def progress(data: ExamData, stored: list[StoredAnswer]) -> list[dict]:
     return list(seen.values())
 
 
-def class_report_html(data: ExamData, stored: list[StoredAnswer], folders=()) -> str:
+def class_report_html(data: ExamData, stored: list[StoredAnswer]) -> str:
     """Class grading's report (histogram, item statistics, wrong answers by what explains
-    them) of the counted answers."""
-    from ..exercise.loader import open_bank
+    them) of the counted verdicts."""
     from ..classgrade.report import report_html
 
-    with tempfile.TemporaryDirectory() as folder:
-        path = Path(folder) / "responses.csv"
-        path.write_text(responses_csv(data, stored), encoding="utf-8")
-        outcome = grade_class(data.path, [path], bank=open_bank(folders), jobs=1)
-    return report_html(data.manifest.exam, outcome)
+    return report_html(data.manifest.exam, outcome(data, stored))

@@ -27,8 +27,10 @@ from dataclasses import dataclass
 from starlette.concurrency import run_in_threadpool
 
 from ..errors import DynagradeError
+from ..exercise.results import ExerciseResult, GradedPart, Status
 from . import db
 from .exam_data import MAX_ANSWER_CHARS, ExamData
+from .verdicts import SubmittedPart
 
 _KEY = re.compile(r"^[A-Za-z0-9._:-]{8,100}$")
 
@@ -95,12 +97,13 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
             db.part_attempts, state.engine, data.exam_id, student_id, exercise_id, counted)
         if counted:
             _check_attempts(policy, per_part, given)
-        rows = [_with_penalty(policy, row, per_part.get(row["part"], 0) + 1, counted)
-                for row in graded]
+        rows = [_with_penalty(policy, part, per_part.get(part.name, 0) + 1, counted)
+                for part in graded]
         attempt = last + 1
         try:
             await run_in_threadpool(db.record_submission, state.engine, data.exam_id,
-                                    student_id, exercise_id, attempt, seed, counted, key, rows)
+                                    student_id, exercise_id, attempt, seed, counted, key,
+                                    [part.row() for part in rows])
         except db.DuplicateAttempt:
             continue
         except db.DuplicateSubmission:  # the same key arrived twice at once: the other was stored
@@ -111,21 +114,23 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
     raise Refused(503, "too many submits at once; try again")
 
 
-def describe(data: ExamData, exercise_id: str, attempt: int, rows: list[dict],
+def describe(data: ExamData, exercise_id: str, attempt: int, rows: list[SubmittedPart],
              verdicts: bool, key: str) -> dict:
-    """The response body of a submit."""
+    """The response body of a submit: points rounded as the gradebook rounds them."""
+    result = ExerciseResult(exercise_id, None, tuple(r.verdict for r in rows)
+                            ).rounded(data.rounding)
     parts = []
-    for row in rows:
-        shown = {"name": row["part"], "readable": row["readable"], "message": row["message"]}
+    for row, verdict in zip(rows, result.parts):
+        shown = {"name": row.name, "readable": row.readable, "message": row.message}
         if verdicts:
-            shown.update(correct=row["correct"], score=round(row["score"], 6),
-                         feedback=row["feedback"])
+            shown.update(correct=verdict.correct, score=verdict.score,
+                         feedback=verdict.feedback)
         parts.append(shown)
     body = {"exercise": exercise_id, "attempt": attempt, "idempotency_key": key,
             "parts": parts}
     if verdicts:
-        body["score"] = round(sum(r["score"] for r in rows), 6)
-        body["max_score"] = round(sum(r["max_score"] for r in rows), 6)
+        body["score"] = result.score
+        body["max_score"] = round(result.max_score, 6)
     return body
 
 
@@ -134,9 +139,7 @@ def _replay(data: ExamData, student_id: str, stored: list[db.StoredAnswer],
     if stored[0].student_id != student_id:
         raise Refused(422, "this idempotency key was used by another submission; send a "
                            "fresh key with each new submit")
-    rows = [{"part": a.part, "readable": a.readable, "message": a.message,
-             "correct": a.correct, "score": a.score, "max_score": a.max_score,
-             "feedback": a.feedback} for a in stored]
+    rows = [SubmittedPart.stored(a) for a in stored]
     return describe(data, stored[0].exercise_id, stored[0].attempt, rows,
                     data.policy.shows_verdicts(now), key) | {"replayed": True}
 
@@ -158,17 +161,12 @@ def _check_attempts(policy, per_part: dict[str, int], given: dict[str, str]) -> 
                            f"{policy.attempts})")
 
 
-def _with_penalty(policy, row: dict, attempt: int, counted: bool) -> dict:
-    factor = policy.attempt_factor(attempt) if counted else 1.0
-    if factor >= 1.0:
-        return dict(row)
-    note = f" (attempt {attempt}: {round(100 * factor)} % of the points)"
-    return {**row, "score": row["score"] * factor, "feedback": row["feedback"] + note}
+def _with_penalty(policy, part: SubmittedPart, attempt: int, counted: bool) -> SubmittedPart:
+    return part.penalised(policy.attempt_factor(attempt) if counted else 1.0, attempt)
 
 
-def _not_in_time(data: ExamData, exercise_id: str, name: str, text: str) -> dict:
-    points = next(p.points for p in data.parts(exercise_id) if p.name == name)
+def _not_in_time(data: ExamData, exercise_id: str, name: str, text: str) -> SubmittedPart:
+    part = next(p for p in data.parts(exercise_id) if p.name == name)
     message = "could not be graded in time; the staff will grade it"
-    return {"part": name, "raw": text, "readable": False, "message": message,
-            "status": "error", "correct": False, "score": 0.0, "max_score": points,
-            "feedback": message}
+    return SubmittedPart(text, False, message, GradedPart(
+        name, part.label, Status.ERROR, 0.0, part.points, text, message))
