@@ -48,7 +48,7 @@ from ..exercise.model import Exercise
 from ..exercise.numbers import format_number, points_phrase
 from ..exercise.statement import render_statement
 from ..exercise.units import pretty_unit
-from ..grading.spec import VectorSpec
+from ..grading.spec import KnownWrong, VectorSpec
 from ..grading.tolerance import allowed_error
 from .cloze import Alternative, choice_field, field as cloze_field, number_text
 from .cloze_marks import Weights, field_points, field_weights
@@ -105,14 +105,19 @@ def _number_alternatives(given: PartFields) -> list[Alternative]:
 
 
 def _vector_fields(given: PartFields, weights: list[int]) -> list[str]:
-    """A field per component; a misconception's vector gives each component a wrong
-    answer, judged with the component's tolerance as dynagrade judges it."""
-    part, values = given.part, [float(v) for v in given.value]
-    tolerances = vector_tolerances(values, part.rtol, part.atol)
-    return [cloze_field(w, "NUMERICAL", numeric_alternatives(
-                value, allowed, [(float(v[i]), allowed, feedback, score)
-                                 for _, v, feedback, score in given.wrong]))
-            for i, (w, value, allowed) in enumerate(zip(weights, values, tolerances))]
+    """A field per component, whose alternatives are the answers the grader holds that
+    component against, in its order (:func:`dynagrade.grading.vector.component_answers`:
+    the reference, then each misconception that differs there, with its score): Moodle's
+    first alternative within tolerance gives the credit dynagrade gives."""
+    from ..grading.vector import component_answers
+
+    part = given.part
+    spec = VectorSpec(int(part.size), rtol=part.rtol, atol=part.atol, misconceptions=tuple(
+        KnownWrong(name, tuple(value), feedback, score)
+        for name, value, feedback, score in given.wrong))
+    return [cloze_field(w, "NUMERICAL", [Alternative(a.value, a.credit, a.allowed, a.feedback)
+                                         for a in answers])
+            for w, answers in zip(weights, component_answers(spec, tuple(given.value)))]
 
 
 def numeric_alternatives(value: float, allowed: float, wrong) -> list[Alternative]:
