@@ -14,10 +14,8 @@ from hypothesis import strategies as st
 
 from dynagrade.exam.manifest import PartEntry
 from dynagrade.grading import KnownWrong, VectorSpec, grade
-from dynagrade.render.moodle import PartFields, _vector_fields, vector_tolerances
+from dynagrade.render.moodle import part_fields, vector_tolerances
 
-def part_fields(part, value, wrong, weights):
-    return _vector_fields(PartFields(part, value, wrong), weights)
 from moodle_reader import moodle_mark, read_fields
 
 #: at most 9 significant figures, so the export's 10 figures write them exactly

@@ -27,6 +27,9 @@ from .quantity import quantity_from_tree, unit_info
 from .spec import VectorSpec
 from .tolerance import allowed_error, is_close
 from .verdict import Verdict, unreadable
+from . import records
+from .readability import Readability
+from .records import Common
 
 
 def _expected(spec: VectorSpec, expected) -> np.ndarray:
@@ -203,3 +206,33 @@ def _misconception(spec: VectorSpec, e: np.ndarray, values: np.ndarray, scale: n
     if matches(e / 2):
         return "factor 1/2", "Your vector is half the expected one: check for a missing factor of 2."
     return None
+
+
+def read_vector(spec: VectorSpec, text: str) -> Readability:
+    """How ``text`` reads as an answer to ``spec`` (:func:`.readability.readability`)."""
+    components, unit_tree = parse_vector(text)
+    factor, dim = unit_info(spec.unit)
+    values, problem = _read(spec, components, unit_tree, text, factor, dim)
+    if problem:
+        return Readability(False, f"unit problem: {problem}")
+    if len(values) != spec.size:
+        return Readability(False, f"the answer needs {spec.size} components, it has "
+                                  f"{len(values)}")
+    if not all(math.isfinite(v) for v in values):
+        return Readability(False, "a component is not a finite number")
+    shown = ", ".join(show_value(float(v), None) for v in values)
+    unit = f" {spec.unit}" if spec.unit else ""
+    return Readability(True, f"reads as ({shown}){unit}")
+
+
+def build_vector(record: dict, common: Common):
+    """A vector record's spec and reference (``dynagrade compare``, :mod:`.compare`)."""
+    expected = record["expected"]
+    if not isinstance(expected, list) or not all(
+            isinstance(x, (int, float)) and not isinstance(x, bool) for x in expected):
+        raise records.RecordError("field 'expected' of a vector must be a list of numbers")
+    size = records.number(record, "size", integer=True) or len(expected)
+    spec = VectorSpec(size, unit=common.unit, **common.tolerances(),
+                      misconceptions=common.misconceptions,
+                      require_unit=records.flag(record, "require_unit"), reveal=common.reveal)
+    return spec, tuple(float(x) for x in expected)
