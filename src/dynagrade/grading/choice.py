@@ -8,6 +8,10 @@ mix of these forms. Answers longer than :data:`lexer.MAX_LENGTH` are refused bef
 any other work. Partial credit for multiple
 choice: ``max(0, (right picks - wrong picks) / number of right options)``; only the
 exact set is correct.
+
+The module is the kind's grading half (:mod:`.kinds`): besides grading it reads an answer
+without the reference (``read_choice``) and builds the spec of a ``dynagrade compare`` record
+(``build_choice``).
 """
 
 from __future__ import annotations

@@ -1,4 +1,9 @@
-"""Grading of numeric parts: read the value, convert it to the part's unit, compare."""
+"""Grading of numeric parts: read the value, convert it to the part's unit, compare.
+
+The module is the kind's grading half (:mod:`.kinds`): besides grading it reads an answer
+without the reference (``read_numeric``) and builds the spec of a ``dynagrade compare`` record
+(``build_numeric``).
+"""
 
 from __future__ import annotations
 

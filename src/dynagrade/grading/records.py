@@ -19,6 +19,7 @@ class RecordError(DynagradeError, ValueError):
 
 
 def number(record: dict, key: str, *, required: bool = False, integer: bool = False):
+    """A finite number (an integer with ``integer``) or None when absent."""
     if key not in record or record[key] is None:
         if required:
             raise RecordError(f"missing field '{key}'")
@@ -32,6 +33,7 @@ def number(record: dict, key: str, *, required: bool = False, integer: bool = Fa
 
 
 def string(record: dict, key: str, *, required: bool = False):
+    """A string, or None when absent."""
     if key not in record or record[key] is None:
         if required:
             raise RecordError(f"missing field '{key}'")
@@ -42,6 +44,7 @@ def string(record: dict, key: str, *, required: bool = False):
 
 
 def flag(record: dict, key: str) -> bool:
+    """True or false (false when absent)."""
     value = record.get(key, False)
     if value is None:
         return False
@@ -51,6 +54,7 @@ def flag(record: dict, key: str) -> bool:
 
 
 def misconceptions(record: dict) -> tuple[KnownWrong, ...]:
+    """The declared misconceptions (a list becomes a tuple of numbers, for a vector)."""
     items = record.get("misconceptions") or []
     if not isinstance(items, list):
         raise RecordError("field 'misconceptions' must be a list")
@@ -68,6 +72,7 @@ def misconceptions(record: dict) -> tuple[KnownWrong, ...]:
 
 
 def variables(record: dict) -> dict:
+    """A symbolic record's variables, each a :class:`Variable` with its domain."""
     raw = record.get("variables")
     if raw is None:
         return {}

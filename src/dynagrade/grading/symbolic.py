@@ -19,6 +19,10 @@ V(θ) whose zero level is a convention), the answer is compared by its differenc
 variables set to their values at the first point: point i agrees when
 ``|Δa_i - Δe_i| <= t_i + t_i°`` (the two points' tolerances). An answer right only up to
 such a constant is correct, and its feedback says the constant was ignored.
+
+The module is the kind's grading half (:mod:`.kinds`): besides grading it reads an answer
+without the reference (``read_symbolic``) and builds the spec of a ``dynagrade compare`` record
+(``build_symbolic``).
 """
 
 from __future__ import annotations

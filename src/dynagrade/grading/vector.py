@@ -8,6 +8,10 @@ the vector scores the mean credit of its components. The Moodle export writes th
 answers as each component's alternatives (:mod:`dynagrade.render.moodle`), and Moodle
 marks a field by the first alternative within tolerance and a cloze question by the
 weighted mean, so an answer earns the same credit in both.
+
+The module is the kind's grading half (:mod:`.kinds`): besides grading it reads an answer
+without the reference (``read_vector``) and builds the spec of a ``dynagrade compare`` record
+(``build_vector``).
 """
 
 from __future__ import annotations
