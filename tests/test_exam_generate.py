@@ -217,21 +217,34 @@ def test_the_moodle_export_has_one_question_per_variant_with_its_tolerance(exam,
             assert math.isclose(right.tolerance, part.rtol * abs(expected), rel_tol=1e-9)
 
 
-def test_the_moodle_export_embeds_the_figure_each_student_got(exam):
+def test_the_moodle_export_embeds_the_figure_each_student_got(exam, bank):
+    """Every question of a variant whose exercise draws a figure embeds exactly that
+    figure, drawn afresh here from the manifest's parameters (not read from wherever the
+    generator keeps its copy), and the count is held against the variants: an export
+    that lost its figures (it looked in a folder the figures no longer go to) embeds
+    none, and must fail here."""
     root = ET.parse(exam["out"] / "moodle.xml").getroot()
     variants = _by_idnumber(exam["manifest"])
-    holders = {(v["exercise"], v["seed"]): s["student_id"]
-               for s in exam["manifest"]["students"] for v in s["variants"]}
-    for question in root.findall("question"):
-        if question.get("type") == "category":
-            continue
+    questions = [q for q in root.findall("question") if q.get("type") != "category"]
+    drawing = {idnumber for idnumber, v in variants.items()
+               if bank.get(v["exercise"]).figure is not None}
+    embedded = 0
+    for question in questions:
         variant = variants[question.findtext("idnumber")]
-        drawn = (exam["out"] / "students" / holders[(variant["exercise"], variant["seed"])]
-                 / "figures" / f"{variant['exercise']}.svg")
+        exercise = bank.get(variant["exercise"])
         files = question.findall("questiontext/file")
-        assert len(files) == (1 if drawn.exists() else 0)
-        for file in files:
-            assert base64.b64decode(file.text) == drawn.read_bytes()
+        if exercise.figure is None:
+            assert files == []
+            continue
+        assert len(files) == 1, variant["exercise"]
+        drawn = figure_svg(exercise, exercise.variant_from_params(variant["seed"],
+                                                                  variant["params"]))
+        assert base64.b64decode(files[0].text).decode("utf-8") == drawn
+        assert f'src="@@PLUGINFILE@@/{files[0].get("name")}"' in \
+            question.findtext("questiontext/text")
+        embedded += 1
+    assert len(drawing) > 0  # the test exam has exercises with figures
+    assert embedded == len(drawing)
 
 
 REDRAW_EXERCISE = '''

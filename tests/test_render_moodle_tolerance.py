@@ -61,3 +61,18 @@ def test_a_zero_number_keeps_the_graders_absolute_floor():
     Moodle tolerance is 1e-9, not 0 (which no typed answer but 0 itself could meet)."""
     assert tolerance(0.0, 1e-2, None) == 1e-9
     assert grade(NumericSpec(), 0.0, "5e-10").correct
+
+
+def test_the_ten_figures_move_moodles_boundary_by_a_few_parts_in_ten_billion():
+    """docs/exams.md: for 2/3 at 1 % Moodle holds 0.6666666667 within 0.006666666667, so
+    its upper edge is 0.673333333367 where the grader's is 0.673333333333...: an
+    11-figure response between the two, 0.67333333335, is right in Moodle and wrong for
+    the grader; 0.6733333333 is right in both."""
+    from dynagrade.render.cloze import number_text
+
+    written, allowed = number_text(2 / 3), number_text(tolerance(2 / 3, 1e-2, None))
+    assert (written, allowed) == ("0.6666666667", "0.006666666667")
+    assert abs(0.67333333335 - float(written)) <= float(allowed)
+    assert not grade(NumericSpec(), 2 / 3, "0.67333333335").correct
+    assert abs(0.6733333333 - float(written)) <= float(allowed)
+    assert grade(NumericSpec(), 2 / 3, "0.6733333333").correct

@@ -65,11 +65,8 @@ def test_the_check_is_the_same_whatever_the_reference():
     assert readability(spec, "28.9 m").readable == readability(spec, "2.89 m").readable
 
 
-def test_every_kind_the_grader_grades_can_be_checked_for_readability():
-    from dynagrade.grading.dispatch import GRADERS
-    from dynagrade.grading.readability import READERS
-
-    assert set(READERS) == set(GRADERS)
+def test_a_spec_of_no_registered_kind_is_not_readable_rather_than_a_crash():
+    assert readability(object(), "12").message == "this kind of answer cannot be checked here"
 
 
 @pytest.mark.parametrize("text, names, tex", [

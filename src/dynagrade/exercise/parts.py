@@ -1,7 +1,10 @@
 """Answer parts of an exercise: what is asked, in which unit, for how many points.
 
 A part kind (:class:`Numeric`, :class:`Vector`, :class:`Symbolic`, :class:`Options`) owns
-everything that differs between kinds, behind the small contract of :class:`Part`:
+everything that differs between kinds. Its class is the kind, registered by defining it
+(:mod:`.kinds`): it names its grading kind (``grading``: spec, grade, accepts, read and
+compare builder, :mod:`dynagrade.grading.kinds`) and its Moodle form (``moodle``), and
+implements the small contract of :class:`Part`:
 
 - ``reference`` / ``in_part_unit``: the solver's SI answer in the part's own unit;
 - ``spec``: the grader's specification (:mod:`dynagrade.grading.spec`);
@@ -28,6 +31,7 @@ from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 from typing import Any, Callable, ClassVar, Mapping
 
+from ..grading.kinds import GRADING_KINDS
 from ..grading.spec import (
     ChoiceSpec,
     KnownWrong,
@@ -39,6 +43,7 @@ from ..grading.spec import (
 from ..errors import DefinitionError
 from ..grading.names import printed_form
 from ..grading.tolerance import DEFAULT_RTOL
+from .kinds import PART_KINDS, MoodleForm, NotExported, register_part_kind
 from .numbers import answer_text, format_number, points_phrase
 from .params import ParamValues
 from .units import from_si, to_si, with_unit
@@ -48,7 +53,8 @@ PERTURBATION = 0.05
 #: how closely a formula must reproduce the mechanics core's number (``Symbolic.equals``)
 CROSS_CHECK_RTOL = 1e-6
 
-__all__ = ["Misconception", "Numeric", "Vector", "Symbolic", "Options", "Variable", "Part"]
+__all__ = ["Misconception", "Numeric", "Vector", "Symbolic", "Options", "Variable", "Part",
+           "PART_KINDS"]
 
 
 @dataclass(frozen=True)
@@ -90,6 +96,18 @@ class Part(ABC):
     manifest_fields: ClassVar[tuple[str, ...]] = ()
     #: whether the reference answer follows the parameters (a formula is one for all)
     answer_varies: ClassVar[bool] = True
+    #: the grader's half of the kind (every concrete kind sets its own, :mod:`.kinds`)
+    grading: ClassVar[object] = None
+    #: how the kind goes into Moodle (a :class:`MoodleForm`, or :class:`NotExported`)
+    moodle: ClassVar[object] = None
+
+    def __init_subclass__(cls, **kwargs):
+        """A class that declares its own ``kind`` is a part kind: checked and registered
+        now (:func:`.kinds.register_part_kind`), so a kind without a grading kind or a
+        Moodle form cannot exist."""
+        super().__init_subclass__(**kwargs)
+        if "kind" in cls.__dict__:
+            register_part_kind(cls)
 
     def __post_init__(self):
         if not self.name.isidentifier():
@@ -212,6 +230,8 @@ class Numeric(Part):
     unit_credit: float | None = None
 
     kind = "numeric"
+    grading = GRADING_KINDS["numeric"]
+    moodle = MoodleForm.NUMBER
     manifest_fields = ("rtol", "atol")
 
     def in_part_unit(self, value):
@@ -245,6 +265,8 @@ class Vector(Part):
     atol: float | None = None
 
     kind = "vector"
+    grading = GRADING_KINDS["vector"]
+    moodle = MoodleForm.COMPONENTS
     manifest_fields = ("rtol", "atol", "size")
 
     def in_part_unit(self, value):
@@ -297,6 +319,8 @@ class Symbolic(Part):
     up_to_constant: bool | tuple[str, ...] = ()
 
     kind = "symbolic"
+    grading = GRADING_KINDS["symbolic"]
+    moodle = NotExported("a formula")
     answer_varies = False
 
     def reference(self, solved):
@@ -376,6 +400,8 @@ class Options(Part):
     aliases: Mapping[str, str] = field(default_factory=dict)
 
     kind = "choice"
+    grading = GRADING_KINDS["choice"]
+    moodle = MoodleForm.OPTIONS
     manifest_fields = ("options", "multiple")
 
     def in_part_unit(self, value):
@@ -429,8 +455,3 @@ def shortened(text: str, width: int) -> str:
     " [...]" to fit ``width``; a line that fits as it is (most) skips the wrapper."""
     words = " ".join(text.split())
     return words if len(words) <= width else textwrap.shorten(words, width)
-
-
-#: every part kind by its name (the ``kind`` of a part and of a manifest's part entry)
-PART_KINDS: dict[str, type[Part]] = {cls.kind: cls for cls in (Numeric, Vector, Symbolic,
-                                                                 Options)}

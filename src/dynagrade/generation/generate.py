@@ -37,6 +37,7 @@ from .. import __name__ as _package
 from ..exercise.loader import Bank, open_bank
 from ..exercise.model import ConstraintError, Exercise
 from ..exercise.seeds import new_secret
+from ..exercise.sheet import figure_file_name
 from ..render.pdf import embedded_pages_source
 from ..render.sheets import typst_preamble
 from ..runs.files import write_atomic
@@ -233,13 +234,14 @@ def _write_moodle(run: GenerationRun, manifest: Manifest) -> list[str]:
 
 
 def _staged_figures(run: GenerationRun, manifest: Manifest):
-    """A variant's figure as a student who has it got it (``figures/<exercise>.svg``)."""
+    """A variant's figure as a student who has it got it: the file beside the student's
+    fill-in file (:func:`dynagrade.exercise.sheet.figure_file_name`)."""
     holder = {(v.exercise, v.seed): s.student_id
               for s in manifest.students for v in s.variants}
 
     def figure(exercise: Exercise, variant) -> str | None:
         path = (run.out_dir / "students" / holder[(variant.exercise, variant.seed)]
-                / "figures" / f"{variant.exercise}.svg")
+                / figure_file_name(exercise))
         return path.read_text(encoding="utf-8") if path.is_file() else None
 
     return figure

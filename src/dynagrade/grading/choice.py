@@ -8,6 +8,10 @@ mix of these forms. Answers longer than :data:`lexer.MAX_LENGTH` are refused bef
 any other work. Partial credit for multiple
 choice: ``max(0, (right picks - wrong picks) / number of right options)``; only the
 exact set is correct.
+
+The module is the kind's grading half (:mod:`.kinds`): besides grading it reads an answer
+without the reference (``read_choice``) and builds the spec of a ``dynagrade compare`` record
+(``build_choice``).
 """
 
 from __future__ import annotations
@@ -17,6 +21,10 @@ import re
 from .errors import SpecError
 from .lexer import MAX_LENGTH
 from .verdict import Verdict, unreadable
+from . import records
+from .readability import Readability
+from .records import Common
+from .spec import ChoiceSpec
 
 
 #: What may separate the labels of several options.
@@ -114,3 +122,32 @@ def grade_choice(spec, expected, answer: str) -> Verdict:
     if missing:
         text += f", and {missing} right option{'s are' if missing > 1 else ' is'} missing"
     return Verdict(False, score, text + "." + reveal)
+
+
+def read_choice(spec: ChoiceSpec, text: str) -> Readability:
+    """How ``text`` reads as an answer to ``spec`` (:func:`.readability.readability`)."""
+    picks = _split(spec, text)
+    if isinstance(picks, str):
+        return Readability(False, picks)
+    if not spec.multiple and len(set(picks)) > 1:
+        return Readability(False, "choose only one option")
+    chosen = [o for o in spec.options if any(o.replace(" ", "").casefold() == p for p in picks)]
+    return Readability(True, "reads as " + ", ".join(chosen))
+
+
+def build_choice(record: dict, common: Common):
+    """A choice record's spec and reference (``dynagrade compare``, :mod:`.compare`)."""
+    choices = record.get("choices")
+    if not isinstance(choices, list) or not choices or not all(isinstance(c, str) for c in choices):
+        raise records.RecordError("field 'choices' must be a non-empty list of strings")
+    expected = record["expected"]
+    if isinstance(expected, list):
+        expected = tuple(expected)
+    if not (isinstance(expected, str) or (isinstance(expected, tuple) and all(isinstance(x, str) for x in expected))):
+        raise records.RecordError("field 'expected' of a choice must be a label or a list of labels")
+    aliases = record.get("aliases") or {}
+    if not isinstance(aliases, dict) or not all(isinstance(v, str) for v in aliases.values()):
+        raise records.RecordError("field 'aliases' must be an object of labels")
+    spec = ChoiceSpec(tuple(choices), multiple=records.flag(record, "multiple") or isinstance(expected, tuple),
+                      reveal=common.reveal, aliases=tuple(aliases.items()))
+    return spec, expected

@@ -1,11 +1,10 @@
-"""``grade(spec, expected, answer)``: one entry point for every kind of part."""
+"""``grade(spec, expected, answer)``: one entry point for every kind of part (the kinds
+and their functions: :mod:`.kinds`)."""
 
 from __future__ import annotations
 
-from importlib import import_module
-
 from .errors import AnswerError, SpecError
-from .spec import ChoiceSpec, NumericSpec, SymbolicSpec, VectorSpec
+from .kinds import kind_of
 from .verdict import Verdict, unreadable
 
 
@@ -39,32 +38,22 @@ def accepts(spec, expected, answer: str) -> bool:
     the feedback). For checking a part's own reference, near misses and misconceptions.
     Raises :class:`SpecError` where :func:`grade` does, except for a misconception whose
     value is unusable: only a wrong answer's feedback reads those."""
-    found = next((ACCEPTERS[c] for c in type(spec).__mro__ if c in ACCEPTERS), None)
-    if found is None or not isinstance(answer, str):
+    kind = kind_of(spec)
+    if kind is None or kind.accepts is None or not isinstance(answer, str):
         return grade(spec, expected, answer).correct
-    module, function = found
     try:
-        return getattr(import_module(f".{module}", __package__), function)(spec, expected,
-                                                                             answer)
+        return kind.function("accepts")(spec, expected, answer)
     except SpecError:
         raise
     except (AnswerError, RecursionError, MemoryError):
         return False
 
 
-#: the module and function that grade each kind of spec (imported on first use, so that
-#: grading a number never loads the symbolic machinery)
-GRADERS = {NumericSpec: ("numeric", "grade_numeric"), SymbolicSpec: ("symbolic", "grade_symbolic"),
-           VectorSpec: ("vector", "grade_vector"), ChoiceSpec: ("choice", "grade_choice")}
-#: the kinds that decide :func:`accepts` on their own (the others ask :func:`grade`)
-ACCEPTERS = {NumericSpec: ("numeric", "accepts_numeric"),
-             VectorSpec: ("vector", "accepts_vector")}
-
-
 def _grader(spec):
-    """The grading function of ``spec``'s kind (a subclass grades as its base)."""
-    found = next((GRADERS[c] for c in type(spec).__mro__ if c in GRADERS), None)
-    if found is None:
+    """The grading function of ``spec``'s kind (:mod:`.kinds`; a subclass grades as its
+    base), imported on first use so that grading a number never loads the symbolic
+    machinery."""
+    kind = kind_of(spec)
+    if kind is None:
         raise SpecError(f"unknown kind of part: {type(spec).__name__}")
-    module, function = found
-    return getattr(import_module(f".{module}", __package__), function)
+    return kind.function("grade")

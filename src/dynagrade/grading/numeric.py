@@ -1,4 +1,9 @@
-"""Grading of numeric parts: read the value, convert it to the part's unit, compare."""
+"""Grading of numeric parts: read the value, convert it to the part's unit, compare.
+
+The module is the kind's grading half (:mod:`.kinds`): besides grading it reads an answer
+without the reference (``read_numeric``) and builds the spec of a ``dynagrade compare`` record
+(``build_numeric``).
+"""
 
 from __future__ import annotations
 
@@ -12,6 +17,9 @@ from .quantity import Quantity, read_quantity, unit_info
 from .spec import NumericSpec
 from .tolerance import count_sigfigs, digits_needed, is_close, round_sig, same_sigfigs
 from .verdict import Verdict, unreadable
+from . import records
+from .readability import Readability
+from .records import Common
 
 
 def expected_value(expected) -> float:
@@ -174,3 +182,62 @@ def _digits_hint(spec: NumericSpec, e: float, q: Quantity, reading: _Reading) ->
 
 
 __all__ = ["grade_numeric", "accepts_numeric", "expected_value", "show_number"]
+
+
+def read_numeric(spec: NumericSpec, text: str) -> Readability:
+    """How ``text`` reads as an answer to ``spec`` (:func:`.readability.readability`)."""
+    quantity = read_quantity(text)
+    if not math.isfinite(quantity.value):
+        return Readability(False, "the answer is not a finite number")
+    factor, dim = unit_info(spec.unit)
+    reading = _read_in_part_unit(spec, quantity, factor, dim)
+    if not reading.unit_ok:
+        return Readability(False, f"unit problem: {reading.unit_problem}")
+    shown = show_value(reading.value, spec.unit)
+    if quantity.dim is None:
+        where = f" (a bare number is read in {spec.unit})" if spec.unit else ""
+        return Readability(True, f"reads as {shown}{where}")
+    if not reading.converted:
+        return Readability(True, f"reads as {shown}")
+    return Readability(True, f"reads as {text.strip()} = {shown}")
+
+
+def build_numeric(record: dict, common: Common):
+    """A numeric record's spec and reference (``dynagrade compare``, :mod:`.compare`)."""
+    expected, unit = _numeric_expected(record, common.unit)
+    sigfigs = records.number(record, "sigfigs", integer=True)
+    unit_credit = records.number(record, "unit_credit")
+    spec = NumericSpec(unit=unit, **common.tolerances(), sigfigs=sigfigs,
+                       misconceptions=common.misconceptions,
+                       require_unit=records.flag(record, "require_unit"),
+                       unit_credit=None if unit_credit is None else float(unit_credit),
+                       reveal=common.reveal)
+    return spec, expected
+
+
+def _numeric_expected(record: dict, unit: str | None):
+    """The reference as a float in the part's unit, and the unit (which a string
+    reference like "12.5 m/s" may define)."""
+    expected = record["expected"]
+    if isinstance(expected, bool):
+        raise records.RecordError("field 'expected' must be a number or a string with a unit")
+    if isinstance(expected, (int, float)):
+        if not math.isfinite(expected):
+            raise records.RecordError("field 'expected' must be finite")
+        return float(expected), unit
+    if not isinstance(expected, str):
+        raise records.RecordError("field 'expected' must be a number or a string with a unit")
+    try:
+        q = read_quantity(expected)
+    except AnswerError as error:
+        raise records.RecordError(f"cannot read 'expected': {error.message}") from None
+    if q.dim is None:
+        return q.value, unit
+    if unit is None:
+        if q.unit_text is None:
+            raise records.RecordError("cannot tell the unit of 'expected'; give the field 'unit'")
+        return q.value / q.unit_factor, q.unit_text.replace(" ", "")
+    factor, dim = unit_info(unit)
+    if not units.compatible(q.dim, dim):
+        raise records.RecordError(f"'expected' ({expected}) cannot be converted to '{unit}'")
+    return q.value / factor, unit

@@ -19,6 +19,10 @@ V(θ) whose zero level is a convention), the answer is compared by its differenc
 variables set to their values at the first point: point i agrees when
 ``|Δa_i - Δe_i| <= t_i + t_i°`` (the two points' tolerances). An answer right only up to
 such a constant is correct, and its feedback says the constant was ignored.
+
+The module is the kind's grading half (:mod:`.kinds`): besides grading it reads an answer
+without the reference (``read_symbolic``) and builds the spec of a ``dynagrade compare`` record
+(``build_symbolic``).
 """
 
 from __future__ import annotations
@@ -44,6 +48,9 @@ from .tolerance import median, point_tolerance
 from .precise import agree_precisely, extended
 from .tosympy import exactly_equal
 from .verdict import Verdict, unreadable
+from . import records
+from .readability import Readability
+from .records import Common
 
 _MAX_DRAWS = 12
 
@@ -311,3 +318,27 @@ def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray,
     if d != 0 and np.all(np.abs(offset - d) <= ref.tol) and names_in(ref.tree):
         return "constant term", "Your expression differs from the expected one by a constant term.", 0.0
     return None
+
+
+def read_symbolic(spec: SymbolicSpec, text: str) -> Readability:
+    """How ``text`` reads as an answer to ``spec`` (:func:`.readability.readability`)."""
+    allowed = tuple(spec.variables)
+    tree = parse_expression(text, allowed, spec.spellings)
+    unknown = sorted(names_in(tree) - set(allowed))
+    if unknown:
+        listed = ", ".join(allowed) or "none"
+        return Readability(False, f"'{unknown[0]}' is not a name of this part (allowed: "
+                                  f"{listed})")
+    return Readability(True, f"reads as {to_text(tree)}")
+
+
+def build_symbolic(record: dict, common: Common):
+    """A symbolic record's spec and reference (``dynagrade compare``, :mod:`.compare`)."""
+    expected = records.string(record, "expected", required=True)
+    form = record.get("form") or ()
+    if not isinstance(form, (list, tuple)) or not all(isinstance(f, str) for f in form):
+        raise records.RecordError("field 'form' must be a list of strings")
+    spec = SymbolicSpec(records.variables(record), **common.tolerances(("rtol",)),
+                        misconceptions=common.misconceptions, form=tuple(form),
+                        reveal=common.reveal, up_to_constant=records.constant_in(record))
+    return spec, expected

@@ -1,8 +1,23 @@
-"""Grading of vectors: every component read, converted and compared on its own."""
+"""Grading of vectors: every component read, converted and compared on its own.
+
+The credit rule (docs/grading.md, "Vectors") is one function, :func:`component_answers`:
+each component is held against the answers it may be, in order — the reference (full
+credit), then each declared misconception that differs from the reference in that
+component (its score) — and earns the credit of the first it lies within, 0 if none;
+the vector scores the mean credit of its components. The Moodle export writes the same
+answers as each component's alternatives (:mod:`dynagrade.render.moodle`), and Moodle
+marks a field by the first alternative within tolerance and a cloze question by the
+weighted mean, so an answer earns the same credit in both.
+
+The module is the kind's grading half (:mod:`.kinds`): besides grading it reads an answer
+without the reference (``read_vector``) and builds the spec of a ``dynagrade compare`` record
+(``build_vector``).
+"""
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -16,6 +31,9 @@ from .quantity import quantity_from_tree, unit_info
 from .spec import VectorSpec
 from .tolerance import allowed_error, is_close
 from .verdict import Verdict, unreadable
+from . import records
+from .readability import Readability
+from .records import Common
 
 
 def _expected(spec: VectorSpec, expected) -> np.ndarray:
@@ -40,6 +58,49 @@ def component_tolerance(spec: VectorSpec, e: np.ndarray) -> np.ndarray:
     return allowed_error(e, spec.rtol, spec.atol, component_scale(e))
 
 
+@dataclass(frozen=True)
+class ComponentAnswer:
+    """An answer a component may be: its ``value``, the ``credit`` it earns, the largest
+    error ``allowed`` around it (the component's tolerance) and the ``feedback`` it
+    carries (empty for the reference)."""
+
+    value: float
+    credit: float
+    allowed: float
+    feedback: str = ""
+
+
+def component_answers(spec: VectorSpec, expected) -> list[tuple[ComponentAnswer, ...]]:
+    """For each component, the answers it is graded against, in order: the reference
+    with credit 1, then every declared misconception whose value differs from the
+    reference in that component, with its score and feedback. A component earns the
+    credit of the first answer it lies within; the vector, the mean of its components'
+    credits (docs/grading.md, "Vectors"). A misconception of the wrong length or with a
+    non-finite component there never matches and is left out."""
+    e = _expected(spec, expected)
+    scale = component_scale(e)
+    allowed = component_tolerance(spec, e)
+    targets = [(known, _known_values(known)) for known in spec.misconceptions]
+    answers = []
+    for i, value in enumerate(e):
+        found = [ComponentAnswer(float(value), 1.0, float(allowed[i]))]
+        for known, target in targets:
+            if target.shape == e.shape and math.isfinite(target[i]) and not is_close(
+                    float(target[i]), float(value), spec.rtol, spec.atol, float(scale[i])):
+                found.append(ComponentAnswer(float(target[i]), known.score, float(allowed[i]),
+                                             known.feedback))
+        answers.append(tuple(found))
+    return answers
+
+
+def component_credits(spec: VectorSpec, expected, values: np.ndarray) -> list[float]:
+    """Each component's credit under :func:`component_answers`."""
+    scale = component_scale(_expected(spec, expected))
+    return [next((a.credit for a in candidates
+                  if is_close(float(v), a.value, spec.rtol, spec.atol, float(s))), 0.0)
+            for v, s, candidates in zip(values, scale, component_answers(spec, expected))]
+
+
 def grade_vector(spec: VectorSpec, expected, answer: str) -> Verdict:
     e = _expected(spec, expected)
     values = _answer_values(spec, answer)
@@ -53,12 +114,12 @@ def grade_vector(spec: VectorSpec, expected, answer: str) -> Verdict:
             (f" {spec.unit}." if spec.unit else ".")
     if right.all():
         return Verdict(True, 1.0, "Correct.")
+    score = float(sum(component_credits(spec, e, values))) / spec.size
     found = _misconception(spec, e, values, scale)
     if found is not None:
-        name, feedback, score = found
+        name, feedback = found
         return Verdict(False, score, feedback + reveal, misconception=name)
     marks = ", ".join(f"{i + 1}: {'✓ right' if ok else '✗ wrong'}" for i, ok in enumerate(right))
-    score = float(right.sum()) / spec.size
     return Verdict(False, score, f"Not correct: {int(right.sum())} of {spec.size} components are right ({marks})."
                    + reveal)
 
@@ -116,7 +177,18 @@ def _read(spec, components, unit_tree, text, part_factor, part_dim):
     return np.array(values, dtype=np.float64), None
 
 
+def _known_values(known) -> np.ndarray:
+    """A declared misconception's vector as numbers; SpecError when it is none."""
+    try:
+        return np.array([float(x) for x in known.value], dtype=np.float64)
+    except (TypeError, ValueError):
+        raise SpecError(f"misconception {known.name!r} needs a sequence of numbers") from None
+
+
 def _misconception(spec: VectorSpec, e: np.ndarray, values: np.ndarray, scale: np.ndarray):
+    """The (name, feedback) of the mistake the whole answer is: a declared misconception,
+    else a generic one (sign, order, factor 2). It names the mistake only; the score is
+    the components' credit (:func:`component_credits`)."""
     def close(a, b) -> bool:
         return bool(np.all(is_close(a, b, spec.rtol, spec.atol, scale)))
 
@@ -125,20 +197,46 @@ def _misconception(spec: VectorSpec, e: np.ndarray, values: np.ndarray, scale: n
         return target.shape == e.shape and close(values, target) and not close(e, target)
 
     for known in spec.misconceptions:
-        try:
-            target = np.array([float(x) for x in known.value], dtype=np.float64)
-        except (TypeError, ValueError):
-            raise SpecError(f"misconception {known.name!r} needs a sequence of numbers") from None
-        if matches(target):
-            return known.name, known.feedback, known.score
+        if matches(_known_values(known)):
+            return known.name, known.feedback
     if not spec.generic_misconceptions:
         return None
     if matches(-e):
-        return "sign", "Your vector points the opposite way: check the signs of the components.", 0.0
+        return "sign", "Your vector points the opposite way: check the signs of the components."
     if spec.size >= 2 and matches(e[::-1]):
-        return "swapped components", "Your components are in the wrong order.", 0.0
+        return "swapped components", "Your components are in the wrong order."
     if matches(2 * e):
-        return "factor 2", "Your vector is twice the expected one: check for an extra factor of 2.", 0.0
+        return "factor 2", "Your vector is twice the expected one: check for an extra factor of 2."
     if matches(e / 2):
-        return "factor 1/2", "Your vector is half the expected one: check for a missing factor of 2.", 0.0
+        return "factor 1/2", "Your vector is half the expected one: check for a missing factor of 2."
     return None
+
+
+def read_vector(spec: VectorSpec, text: str) -> Readability:
+    """How ``text`` reads as an answer to ``spec`` (:func:`.readability.readability`)."""
+    components, unit_tree = parse_vector(text)
+    factor, dim = unit_info(spec.unit)
+    values, problem = _read(spec, components, unit_tree, text, factor, dim)
+    if problem:
+        return Readability(False, f"unit problem: {problem}")
+    if len(values) != spec.size:
+        return Readability(False, f"the answer needs {spec.size} components, it has "
+                                  f"{len(values)}")
+    if not all(math.isfinite(v) for v in values):
+        return Readability(False, "a component is not a finite number")
+    shown = ", ".join(show_value(float(v), None) for v in values)
+    unit = f" {spec.unit}" if spec.unit else ""
+    return Readability(True, f"reads as ({shown}){unit}")
+
+
+def build_vector(record: dict, common: Common):
+    """A vector record's spec and reference (``dynagrade compare``, :mod:`.compare`)."""
+    expected = record["expected"]
+    if not isinstance(expected, list) or not all(
+            isinstance(x, (int, float)) and not isinstance(x, bool) for x in expected):
+        raise records.RecordError("field 'expected' of a vector must be a list of numbers")
+    size = records.number(record, "size", integer=True) or len(expected)
+    spec = VectorSpec(size, unit=common.unit, **common.tolerances(),
+                      misconceptions=common.misconceptions,
+                      require_unit=records.flag(record, "require_unit"), reveal=common.reveal)
+    return spec, tuple(float(x) for x in expected)

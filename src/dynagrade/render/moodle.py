@@ -14,9 +14,10 @@ What a question holds (Moodle's XML import format, ``question/format/xml/format.
 - an exercise with one numeric part: a ``numerical`` question; any other: a ``cloze``
   question with an embedded field per part (:mod:`.cloze`; a vector has one field per
   component, a choice part a drop-down of its options' text, several options check
-  boxes; :data:`MOODLE_KINDS` holds each kind's form). Numeric answers carry the
-  grader's own tolerance, then every declared misconception as a wrong answer with its
-  feedback (and its partial credit, if any);
+  boxes: each kind's part class says its form, :data:`FORMS` writes each form). Numeric
+  answers carry the grader's own tolerance, then every declared misconception as a
+  wrong answer with its feedback (and its partial credit, if any; a vector's, by the
+  grader's own rule, :func:`dynagrade.grading.vector.component_answers`);
 - marks as Moodle computes them: a cloze question's full mark is the sum of its fields'
   weights (:mod:`.cloze_marks`), in the proportions of the exam's part points;
 - parts Moodle cannot check (formulas) are left out of the question; the category's
@@ -44,11 +45,13 @@ from dataclasses import dataclass, field
 from typing import Callable, Mapping
 
 from ..exam.manifest import ExerciseEntry, Manifest, PartEntry, VariantEntry
+from ..exercise.kinds import MoodleForm, NotExported
 from ..exercise.model import Exercise
+from ..exercise.parts import PART_KINDS
 from ..exercise.numbers import format_number, points_phrase
 from ..exercise.statement import render_statement
 from ..exercise.units import pretty_unit
-from ..grading.spec import VectorSpec
+from ..grading.spec import KnownWrong, VectorSpec
 from ..grading.tolerance import allowed_error
 from .cloze import Alternative, choice_field, field as cloze_field, number_text
 from .cloze_marks import Weights, field_points, field_weights
@@ -105,14 +108,19 @@ def _number_alternatives(given: PartFields) -> list[Alternative]:
 
 
 def _vector_fields(given: PartFields, weights: list[int]) -> list[str]:
-    """A field per component; a misconception's vector gives each component a wrong
-    answer, judged with the component's tolerance as dynagrade judges it."""
-    part, values = given.part, [float(v) for v in given.value]
-    tolerances = vector_tolerances(values, part.rtol, part.atol)
-    return [cloze_field(w, "NUMERICAL", numeric_alternatives(
-                value, allowed, [(float(v[i]), allowed, feedback, score)
-                                 for _, v, feedback, score in given.wrong]))
-            for i, (w, value, allowed) in enumerate(zip(weights, values, tolerances))]
+    """A field per component, whose alternatives are the answers the grader holds that
+    component against, in its order (:func:`dynagrade.grading.vector.component_answers`:
+    the reference, then each misconception that differs there, with its score): Moodle's
+    first alternative within tolerance gives the credit dynagrade gives."""
+    from ..grading.vector import component_answers
+
+    part = given.part
+    spec = VectorSpec(int(part.size), rtol=part.rtol, atol=part.atol, misconceptions=tuple(
+        KnownWrong(name, tuple(value), feedback, score)
+        for name, value, feedback, score in given.wrong))
+    return [cloze_field(w, "NUMERICAL", [Alternative(a.value, a.credit, a.allowed, a.feedback)
+                                         for a in answers])
+            for w, answers in zip(weights, component_answers(spec, tuple(given.value)))]
 
 
 def numeric_alternatives(value: float, allowed: float, wrong) -> list[Alternative]:
@@ -134,25 +142,42 @@ def _choice_fields(given: PartFields, weights: list[int]) -> list[str]:
 
 
 @dataclass(frozen=True)
-class MoodleKind:
-    """How a kind of part goes into Moodle: ``fields(part_fields, weights)`` writes its
-    embedded cloze fields, ``count(part)`` of them (``fields`` None: Moodle cannot check
-    the part, and it is left out, for the staff note to name as ``absent``);
-    ``numerical``: a lone part of this kind becomes a ``numerical`` question."""
+class FormWriter:
+    """How one :class:`~dynagrade.exercise.kinds.MoodleForm` is written: ``fields(part_fields,
+    weights)`` gives its embedded cloze fields, ``count(part)`` of them; ``numerical``
+    says that a lone part of this form becomes a ``numerical`` question (its one field's
+    alternatives, :func:`_numerical_question`), which only a form of one number can."""
 
-    fields: Callable[[PartFields, list[int]], list[str]] | None
+    fields: Callable[[PartFields, list[int]], list[str]]
     count: Callable[[PartEntry], int] = lambda part: 1
     numerical: bool = False
-    absent: str = ""
 
 
-#: every part kind's Moodle form (a test holds it complete)
-MOODLE_KINDS: dict[str, MoodleKind] = {
-    "numeric": MoodleKind(_numeric_fields, numerical=True),
-    "vector": MoodleKind(_vector_fields, count=lambda part: int(part.size)),
-    "choice": MoodleKind(_choice_fields),
-    "symbolic": MoodleKind(None, absent="a formula"),
+#: the writer of every Moodle form a part kind may take (a test holds it complete); a
+#: kind's form is data on its part class (:attr:`dynagrade.exercise.parts.Part.moodle`)
+FORMS: dict[MoodleForm, FormWriter] = {
+    MoodleForm.NUMBER: FormWriter(_numeric_fields, numerical=True),
+    MoodleForm.COMPONENTS: FormWriter(_vector_fields, count=lambda part: int(part.size)),
+    MoodleForm.OPTIONS: FormWriter(_choice_fields),
 }
+
+
+def form_of(part) -> MoodleForm | NotExported:
+    """The Moodle form of a part or a manifest's part entry, from its kind."""
+    return PART_KINDS[part.kind].moodle
+
+
+def writer(part) -> FormWriter | None:
+    """How ``part`` is written into Moodle (None: Moodle cannot check it)."""
+    form = form_of(part)
+    return None if isinstance(form, NotExported) else FORMS[form]
+
+
+def part_fields(part: PartEntry, value, wrong: tuple, weights: list[int]) -> list[str]:
+    """The embedded fields of a manifest's part with reference ``value`` and the
+    misconceptions ``wrong`` ((name, value, feedback, score) in the part's unit), each
+    field of the given weight."""
+    return writer(part).fields(PartFields(part, value, wrong), weights)
 
 
 # -- marks --------------------------------------------------------------------------------
@@ -182,9 +207,9 @@ class Marks:
 def exercise_marks(described: ExerciseEntry) -> Marks:
     """The fields' weights of ``described``'s parts, proportional to the points the exam
     gives them (a vector's split over its components)."""
-    exported = tuple(p for p in described.parts if MOODLE_KINDS[p.kind].fields is not None)
-    left_out = tuple(p for p in described.parts if MOODLE_KINDS[p.kind].fields is None)
-    counts = [MOODLE_KINDS[p.kind].count(p) for p in exported]
+    exported = tuple(p for p in described.parts if writer(p) is not None)
+    left_out = tuple(p for p in described.parts if writer(p) is None)
+    counts = [writer(p).count(p) for p in exported]
     points = [share for p, n in zip(exported, counts) for share in field_points(p.points, n)]
     found: Weights = field_weights(points)
     weights, start = {}, 0
@@ -312,7 +337,7 @@ def staff_note(title: str, described: ExerciseEntry, marks: Marks,
         lines.append(
             "Not in Moodle (grade them from the fill-in files or by hand): "
             + "; ".join(f"{_html(p.label)} ({_asked(p.name, numbers)}{p.name}, "
-                        f"{MOODLE_KINDS[p.kind].absent}, {points_phrase(p.points)})"
+                        f"{form_of(p).absent}, {points_phrase(p.points)})"
                         for p in marks.left_out)
             + f"; together {points_phrase(share)}, "
               f"{format_number(100 * share / whole)} % of the exercise.")
@@ -333,7 +358,7 @@ def _question(quiz: ET.Element, category: Category, marks: Marks, variant: Varia
         text += _figure_html(exercise, described.id)
     wrong = _wrong_answers(exercise, variant)
     lone = described.parts[0] if len(described.parts) == 1 else None
-    if lone is not None and MOODLE_KINDS[lone.kind].numerical:
+    if lone is not None and writer(lone) is not None and writer(lone).numerical:
         question = _numerical_question(quiz, described, variant, text, wrong[lone.name])
     else:
         question = _cloze_question(quiz, described, marks, variant, text, wrong,
@@ -354,7 +379,7 @@ def _wrong_answers(exercise: Exercise, variant: VariantEntry) -> dict[str, tuple
     wrong = {}
     for part in exercise.parts:
         known = getattr(part.spec(params), "misconceptions", ()) \
-            if MOODLE_KINDS[part.kind].fields is not None else ()
+            if writer(part) is not None else ()
         wrong[part.name] = tuple((k.name, k.value, k.feedback, k.score) for k in known)
     return wrong
 
@@ -418,8 +443,8 @@ def _cloze_question(quiz: ET.Element, described: ExerciseEntry, marks: Marks,
     lines = []
     for part in marks.exported:
         unit = f" {_html(pretty_unit(part.unit))}" if part.unit else ""
-        given = PartFields(part, variant.answers[part.name], wrong[part.name])
-        fields = MOODLE_KINDS[part.kind].fields(given, marks.weights[part.name])
+        fields = part_fields(part, variant.answers[part.name], wrong[part.name],
+                             marks.weights[part.name])
         shown = fields[0] if len(fields) == 1 else "(" + ", ".join(fields) + ")"
         number = numbers.get(part.name)
         item = f'<li value="{number}">' if number is not None else "<li>"
