@@ -6,6 +6,7 @@ answer or that is not well formed SVG."""
 
 from __future__ import annotations
 
+import re
 import textwrap
 from pathlib import Path
 
@@ -342,3 +343,50 @@ def test_show_figure_of_an_exercise_without_one_is_an_error(run, tmp_path, bank)
     result = run(main, "show", plain, "--figure", tmp_path / "f.svg")
     assert f"{plain} draws no figure" in _error_line(result)
     assert not (tmp_path / "f.svg").exists()
+
+
+BROKEN_SOLVER = '''\
+from dynagrade.exercise import Exercise, Numeric, Uniform
+
+
+def solve(p):
+    return {"v": 1.0 / (p.a - p.a)}
+
+
+EXERCISE = Exercise(
+    id="broken-solver", title="Broken", source="Example 1.1", topics=("test",),
+    params=[Uniform("a", 1, 2, step=1, unit="m")],
+    statement="a = {{ a }}",
+    solve=solve,
+    parts=[Numeric("v", "speed", unit="m/s", points=1)],
+)
+'''
+
+
+@pytest.mark.parametrize("command", [
+    ["show", "broken-solver", "--seed", "7"],
+    ["verify", "broken-solver", "--variants", "2"],
+    ["exam", "{folder}/exam.toml", "--roster", "{folder}/roster.csv", "-o", "{folder}/out",
+     "--no-pdf"],
+])
+def test_a_solver_that_raises_is_one_line_naming_file_exercise_and_seed(tmp_path, command):
+    """A solver that fails for a variant once gave a traceback from ``dynagrade exam``;
+    each command now says on one line where (file and line), which exercise and which
+    seed, as it does for a failing figure."""
+    folder = tmp_path / "bank"
+    folder.mkdir()
+    (folder / "broken.py").write_text(BROKEN_SOLVER, encoding="utf-8")
+    (folder / "exam.toml").write_text('id = "e"\ntitle = "E"\ndate = 2025-04-14\n'
+                                      '[[exercise]]\nid = "broken-solver"\npoints = 1\n',
+                                      encoding="utf-8")
+    (folder / "roster.csv").write_text("student_id,name\ns1,A\n", encoding="utf-8")
+    args = ["--exercises", str(folder), *(a.format(folder=folder) for a in command)]
+    result = CliRunner().invoke(main, args)
+    assert result.exit_code != 0
+    assert "Traceback" not in result.output
+    lines = [line for line in result.output.splitlines() if "the solver fails" in line]
+    assert lines, result.output
+    for line in lines:
+        assert re.search(rf"{re.escape(str(folder / 'broken.py'))}, line 5: exercise "
+                         r"'broken-solver', seed \d+: the solver fails: ZeroDivisionError: "
+                         r"float division by zero$", line.strip().removeprefix("Error: ")), line

@@ -7,7 +7,7 @@ from __future__ import annotations
 import html
 import re
 
-from dynagrade.classgrade.grade import ClassOutcome
+from dynagrade.classgrade.outcome import ClassOutcome
 from dynagrade.classgrade.gradebook import GradebookRow, RowStatus
 from dynagrade.classgrade.report import report_html
 from dynagrade.classgrade.stats import (DECLARED, FOLLOW_THROUGH, FOLLOWED, MIN_STUDENTS, SLIP,

@@ -36,7 +36,7 @@ from __future__ import annotations
 import csv
 import io
 import time
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from pathlib import Path
 from typing import Mapping
 
@@ -54,60 +54,14 @@ from ..runs.caches import file_sha256
 from ..runs.files import write_atomic
 from ..runs.outputs import staging_folder, swap_in
 from ..runs.workers import Pool, default_jobs
-from .gradebook import (GRADEBOOK_FILES, GradebookRow, gradebook_csv, gradebook_row,
+from .gradebook import (GRADEBOOK_FILES, gradebook_csv, gradebook_row,
                         platform_gradebook)
 from .overrides import Override, apply_overrides, read_overrides
+from .outcome import ClassOutcome, StudentFeedback
 from .run import GradingRun
 from .solutions import feedback_solutions
 from .stats import StudentParts, declared_names, part_statistics
 from .submissions import Problem, Submission, collect
-
-@dataclass
-class StudentFeedback:
-    """What one student's feedback page shows: their results, their gradebook row, why
-    files they handed in were not graded, and their worked solutions where the policy
-    shows them."""
-
-    student: StudentEntry
-    results: dict[str, ExerciseResult | None]
-    row: GradebookRow
-    #: per exercise, why the files handed in for it were not graded
-    rejected: dict[str, list[str]] = field(default_factory=dict)
-    #: per exercise, the worked solution (None: it could not be rendered)
-    solutions: dict[str, str | None] = field(default_factory=dict)
-
-
-@dataclass
-class ClassOutcome:
-    """The gradebook and everything the report shows."""
-
-    exam_title: str
-    exercise_ids: list[str]
-    rows: list[GradebookRow]
-    problems: list[Problem]
-    stats: list = field(default_factory=list)
-    feedback: dict[str, StudentFeedback] = field(default_factory=dict)
-    timings: dict[str, float] = field(default_factory=dict)
-    rounding: Rounding = Rounding()
-    max_total: float = 0.0
-    #: the staff's comments on overridden parts, by student (for the platform feedback)
-    comments: dict[str, list[str]] = field(default_factory=dict)
-    #: how many parts the overrides replaced
-    overridden: int = 0
-
-    def summary(self) -> dict:
-        """The gradebook and the problems as ``dynagrade grade --json`` prints them."""
-        return {"exam": self.exam_title, "rows": [_row_json(r) for r in self.rows],
-                "problems": [p.__dict__ for p in self.problems]}
-
-
-def _row_json(row: GradebookRow) -> dict:
-    """A gradebook row as JSON: the fixed columns, and the exercises' points under
-    ``exercises``."""
-    return {"student_id": row.student_id, "name": row.name, "email": row.email,
-            "exercises": dict(row.cells), "total": row.total, "max_total": row.max_total,
-            "percent": row.percent, "status": str(row.status)}
-
 
 def _exercises(manifest: Manifest, bank: Bank, problems: list[Problem],
                where: str) -> dict[str, Exercise]:

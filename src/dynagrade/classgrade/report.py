@@ -23,7 +23,7 @@ from .stats import MIN_STUDENTS, PartStats
 
 if TYPE_CHECKING:
     from ..exam.manifest import ExamEntry, ExerciseEntry
-    from .grade import StudentFeedback
+    from .outcome import StudentFeedback
 
 
 NO_ANSWER = "— (no answer)"

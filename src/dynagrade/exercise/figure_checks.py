@@ -22,19 +22,17 @@ from __future__ import annotations
 import math
 import re
 from contextlib import contextmanager
-from pathlib import Path
 from typing import Callable, Iterator
 
 from ..errors import DynagradeError
 from .model import Exercise, Variant
 from .numbers import format_number
-from .source_lines import line_of_error
+from .source_lines import failure_line
 
 #: a number as a label writes it (not a subscript such as the 2 of ``m_2`` or ``v₂``)
 _NUMBER = re.compile(r"(?<![A-Za-z_{^])-?\d+(?:\.\d+)?(?:[eE]-?\d+)?")
 #: the SVG elements whose text a reader sees or hears
 _TEXT_ELEMENTS = {"text", "tspan", "textPath", "title", "desc"}
-_MESSAGE_LENGTH = 300
 
 
 class FigureError(DynagradeError):
@@ -55,27 +53,8 @@ def reported_figure_failure(exercise: Exercise, seed: int) -> Iterator[None]:
 
 def figure_failure(exercise: Exercise, seed: int, error: BaseException) -> str:
     """``FILE, line N: exercise 'id', seed S: the figure fails: TypeError: ...``."""
-    path, line = _where(exercise, error)
-    text = " ".join(str(error).split())
-    if len(text) > _MESSAGE_LENGTH:
-        text = text[:_MESSAGE_LENGTH] + " ..."
-    place = f"{path}, line {line}: " if path else ""
-    return (f"{place}exercise {exercise.id!r}, seed {seed}: the figure fails: "
-            f"{type(error).__name__}" + (f": {text}" if text else ""))
-
-
-def _where(exercise: Exercise, error: BaseException) -> tuple[str | None, str]:
-    """The exercise's file and the line in it where ``error`` arose: the innermost frame
-    in that file, else the line that defines the figure function."""
-    code = getattr(exercise.figure, "__code__", None)
-    path = exercise.path or (code.co_filename if code is not None else None)
-    if path is None:
-        return None, "?"
-    line = line_of_error(Path(path), error)
-    if line == "?" and code is not None and Path(code.co_filename).resolve() == \
-            Path(path).resolve():
-        line = str(code.co_firstlineno)
-    return path, line
+    return failure_line(exercise.path, exercise.figure, error,
+                        f"exercise {exercise.id!r}, seed {seed}: the figure fails")
 
 
 def figure_problems(exercise: Exercise, variant: Variant,

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import ast
 import inspect
+import re
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
@@ -71,6 +72,16 @@ def summary(exercise) -> dict:
     }
 
 
+#: the first number of a source ("Example 4.3"): its chapter
+_SOURCE_CHAPTER = re.compile(r"(\d+)(?:\.\d+)*")
+
+
+def chapter_of(source: str) -> int:
+    """The chapter of the notes a source names ("Example 4.3" -> 4), 0 when none."""
+    match = _SOURCE_CHAPTER.search(source)
+    return int(match.group(1)) if match else 0
+
+
 class _NotLiteral(DynagradeError):
     """A value the file computes: the listing cannot be read without running the file."""
 
@@ -78,8 +89,6 @@ class _NotLiteral(DynagradeError):
 def read_listing(path: str | Path) -> ExerciseListing | None:
     """The listing of the exercise file at ``path``, or ``None`` when the file does not
     state everything a listing needs as literals (then load the file)."""
-    from .model import chapter_of
-
     path = Path(path)
     try:
         tree = ast.parse(path.read_bytes(), filename=str(path))

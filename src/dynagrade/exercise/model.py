@@ -18,15 +18,15 @@ from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Mapping
 
 from ..errors import DefinitionError, DynagradeError, UnknownParameter, UnknownPart
-from .listing import summary
+from .listing import chapter_of, summary
 from .params import (Constraint, DrawTally, Parameter, ParamValues, symbol_domain,
                      to_si_values)
 from .parts import Part, Variable
-from .solution import check_solution
+from .solution_template import check_solution
+from .source_lines import failure_line
 from .statement import compile_statement, render_statement
 
 _ID = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
-_SOURCE_CHAPTER = re.compile(r"(\d+)(?:\.\d+)*")
 _MAX_DRAWS = 1000
 
 #: True while the loader runs an exercise file: the exercises it builds leave their
@@ -47,6 +47,11 @@ def templates_checked_by_caller():
         yield
     finally:
         _CALLER_CHECKS_TEMPLATES.reset(token)
+
+
+class SolverError(DynagradeError, ValueError):
+    """An exercise's solver raised for a variant; the message is one line naming the file
+    and line, the exercise and the seed."""
 
 
 class ConstraintError(DynagradeError, ValueError):
@@ -134,12 +139,13 @@ class Exercise:
 
     def check_templates(self) -> None:
         """Refuse a statement or worked-solution template that does not compile or names
-        what it cannot have (:func:`~.solution.check_solution`); checked once per exercise,
+        what it cannot have (:func:`~.solution_template.check_solution`); checked once per exercise,
         when it is built (or, for an exercise file, when the loader has run it)."""
         if self._templates_checked:
             return
         compile_statement(self.statement)
-        check_solution(self)
+        check_solution(self.id, self.solution, (p.name for p in self.params),
+                       (p.name for p in self.parts))
         object.__setattr__(self, "_templates_checked", True)
 
     # -- parameters -------------------------------------------------------------------
@@ -238,13 +244,23 @@ class Exercise:
     def variant_from_params(self, seed: int, values: Mapping[str, float],
                             warnings: tuple[str, ...] = (),
                             with_statement: bool = True) -> Variant:
-        """The variant with these parameter values, e.g. as stored in an exam manifest."""
+        """The variant with these parameter values, e.g. as stored in an exam manifest. A
+        solver that raises is a :class:`SolverError` of one line naming the file, the
+        exercise and the seed."""
         values = {p.name: float(values[p.name]) for p in self.params}
+        try:
+            answers = self.solve_in_part_units(values)
+        except DynagradeError:
+            raise
+        except Exception as error:  # the author's solver: reported, never a traceback
+            raise SolverError(failure_line(
+                self.path, self.solve, error,
+                f"exercise {self.id!r}, seed {int(seed)}: the solver fails")) from None
         return Variant(
             exercise_id=self.id,
             seed=int(seed),
             params=values,
-            answers=self.solve_in_part_units(values),
+            answers=answers,
             statement=(render_statement(self.statement, self.params, values)
                        if with_statement else ""),
             warnings=tuple(warnings),
@@ -255,10 +271,7 @@ class Exercise:
         return summary(self)
 
 
-def chapter_of(source: str) -> int:
-    """The chapter of the notes a source names ("Example 4.3" -> 4), 0 when none."""
-    match = _SOURCE_CHAPTER.search(source)
-    return int(match.group(1)) if match else 0
+
 
 
 def _require_unique(what: str, names: list[str], exercise_id: str) -> None:

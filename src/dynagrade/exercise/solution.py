@@ -16,33 +16,18 @@ The template's context (docs/authoring.md, "Worked solutions"):
 
 The solution is rendered from the parameter values alone (the solver runs again), so an
 exam manifest, which stores each variant's parameters, is all a later rendering needs.
-jinja2 is imported when a solution is first checked or rendered, as for statements.
+Its template is checked when the exercise is built (:mod:`.solution_template`); jinja2 is
+imported when a solution is first checked or rendered, as for statements.
 """
 
 from __future__ import annotations
 
-import math
-from functools import lru_cache
-from typing import TYPE_CHECKING, Any, Iterator, Mapping
+from typing import Any, Iterator, Mapping
 
-from ..errors import DefinitionError
+from .model import Exercise, Variant
 from .numbers import answer_text
+from .solution_template import SolutionError, compile_solution, map_value
 from .statement import ShownValue
-
-if TYPE_CHECKING:
-    import jinja2
-    from jinja2 import nodes
-
-    from .model import Exercise, Variant
-
-#: the names a solution template may use besides the exercise's parameters
-CONTEXT_NAMES = ("answers", "si")
-
-
-class SolutionError(DefinitionError):
-    """A solution template that does not compile, names what it cannot have, or fails to
-    render for a variant; the message names the exercise and what is wrong."""
-
 
 class SiValue:
     """A value the solver returned (or a parameter), in SI, as a solution prints it."""
@@ -57,10 +42,10 @@ class SiValue:
         return float(self.value)
 
     def __abs__(self) -> SiValue:
-        return SiValue(_map(abs, self.value))
+        return SiValue(map_value(abs, self.value))
 
     def __neg__(self) -> SiValue:
-        return SiValue(_map(lambda v: -v, self.value))
+        return SiValue(map_value(lambda v: -v, self.value))
 
     def __getitem__(self, index: int) -> SiValue:
         if not isinstance(self.value, (list, tuple)):
@@ -96,79 +81,6 @@ class _Named(Mapping[str, Any]):
 
     def __len__(self) -> int:
         return len(self._values)
-
-
-def degrees(value) -> str:
-    """The ``deg`` filter: an angle in radians (a number or an ``si`` value) in degrees."""
-    return answer_text(_map(math.degrees, getattr(value, "value", value)))
-
-
-def _map(function, value):
-    if isinstance(value, (list, tuple)):
-        return tuple(function(float(v)) for v in value)
-    return function(float(value))
-
-
-@lru_cache(maxsize=1)
-def _environment() -> jinja2.Environment:
-    import jinja2
-
-    environment = jinja2.Environment(undefined=jinja2.StrictUndefined, autoescape=False,
-                                     keep_trailing_newline=False)
-    environment.filters["deg"] = degrees
-    return environment
-
-
-@lru_cache(maxsize=512)
-def compile_solution(source: str) -> jinja2.Template:
-    """The compiled template; a syntax error (or an unknown filter) names the line."""
-    import jinja2
-
-    try:
-        return _environment().from_string(source)
-    except jinja2.TemplateSyntaxError as error:
-        raise SolutionError(f"solution template, line {error.lineno}: "
-                            f"{error.message}") from None
-
-
-def check_solution(exercise: Exercise) -> None:
-    """Refuse a solution template that does not compile or names context it cannot have:
-    a top-level name that is no parameter, ``answers`` or ``si``, or ``answers.X`` for an
-    ``X`` that is no part. (``si.X`` depends on what the solver returns; rendering checks
-    it, and ``dynagrade verify`` renders every variant.)"""
-    from jinja2 import meta
-
-    if exercise.solution is None:
-        return
-    where = f"exercise {exercise.id!r}"
-    try:
-        compile_solution(exercise.solution)
-    except SolutionError as error:
-        raise SolutionError(f"{where}: {error}") from None
-    tree = _environment().parse(exercise.solution)
-    known = {p.name for p in exercise.params} | set(CONTEXT_NAMES)
-    unknown = sorted(meta.find_undeclared_variables(tree) - known)
-    if unknown:
-        raise SolutionError(f"{where}: the solution template names {unknown}, which are "
-                            f"neither parameters nor {' or '.join(CONTEXT_NAMES)}")
-    parts = {p.name for p in exercise.parts}
-    asked = sorted(set(_members(tree, "answers")) - parts)
-    if asked:
-        raise SolutionError(f"{where}: the solution template prints answers.{asked[0]}, but "
-                            f"the exercise has no part {asked[0]!r}; its parts are "
-                            f"{sorted(parts)}")
-
-
-def _members(tree: nodes.Template, name: str) -> Iterator[str]:
-    """Every ``X`` of ``name.X`` and ``name["X"]`` in the template."""
-    from jinja2 import nodes
-
-    for node in tree.find_all((nodes.Getattr, nodes.Getitem)):
-        if isinstance(node.node, nodes.Name) and node.node.name == name:
-            if isinstance(node, nodes.Getattr):
-                yield node.attr
-            elif isinstance(node.arg, nodes.Const) and isinstance(node.arg.value, str):
-                yield node.arg.value
 
 
 def solution_context(exercise: Exercise, variant: Variant) -> dict[str, Any]:

@@ -5,6 +5,7 @@ Usage::
     line_of_error(path, error)        # "12": the innermost frame of ``error`` in the file
     line_of_string(source, "x_max")   # 31: where the literal "x_max" is first written
     line_of_assignment(source, "EXERCISE")  # 40: where EXERCISE = ... is written
+    failure_line(path, function, error)  # "FILE, line 12: " for a message about the error
 """
 
 from __future__ import annotations
@@ -22,6 +23,30 @@ def line_of_error(path: Path, error: BaseException) -> str:
         if Path(frame.filename).resolve() == path:
             return str(frame.lineno)
     return "?"
+
+
+#: the longest error message a one-line report of an author's code quotes
+MESSAGE_LENGTH = 300
+
+
+def failure_line(path: str | None, function, error: BaseException, what: str) -> str:
+    """One line for a failure of an exercise author's code: the file and line where it
+    arose (the innermost frame in ``path``, else the line that defines ``function``), what
+    failed and the error, its message folded onto one line and cut to
+    :data:`MESSAGE_LENGTH` characters: ``FILE, line 12: <what>: TypeError: ...``."""
+    code = getattr(function, "__code__", None)
+    path = path or (code.co_filename if code is not None else None)
+    place = ""
+    if path is not None:
+        line = line_of_error(Path(path), error)
+        if line == "?" and code is not None and \
+                Path(code.co_filename).resolve() == Path(path).resolve():
+            line = str(code.co_firstlineno)
+        place = f"{path}, line {line}: "
+    text = " ".join(str(error).split())
+    if len(text) > MESSAGE_LENGTH:
+        text = text[:MESSAGE_LENGTH] + " ..."
+    return f"{place}{what}: {type(error).__name__}" + (f": {text}" if text else "")
 
 
 def line_of_string(source: str | bytes, text: str) -> int | None:

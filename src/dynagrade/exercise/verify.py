@@ -27,7 +27,7 @@ from typing import Any, Callable, Iterable
 from ..grading.dispatch import accepts
 from .asked import question_problems, unshown_variables
 from .figure_checks import figure_problems
-from .model import ConstraintError, Exercise, Variant
+from .model import ConstraintError, Exercise, SolverError, Variant
 from .params import ParamValues
 from .parts import Part
 from .redraws import NO_DRAW, RedrawShare
@@ -70,7 +70,10 @@ def verify_exercise(exercise: Exercise, seeds: Iterable[int], require_solution: 
             report.redraws.record([NO_DRAW])
             report.failures.append(str(error))
             continue
-        except Exception as error:  # an author's solver or template failing is a finding
+        except SolverError as error:  # one line that names file, exercise and seed
+            report.failures.append(str(error))
+            continue
+        except Exception as error:  # an author's template failing is a finding too
             report.failures.append(f"seed {seed}: {type(error).__name__}: {error}")
             continue
         problems = variant_problems(exercise, variant)

@@ -19,7 +19,8 @@ from __future__ import annotations
 import csv
 import io
 
-from ..classgrade.grade import ClassOutcome, class_outcome
+from ..classgrade.grade import class_outcome
+from ..classgrade.outcome import ClassOutcome
 from ..classgrade.gradebook import exercise_columns, gradebook_csv
 from ..classgrade.stats import declared_names
 from ..classgrade.submissions import RESPONSE_HEADER
