@@ -14,7 +14,7 @@ import numpy as np
 import sympy as sp
 
 from dynagrade.mechanics import lagrange
-from dynagrade.mechanics._common import ArrayLike, Field, Quantity
+from dynagrade.mechanics._common import Field, Quantity
 from dynagrade.mechanics.lagrange import Coordinates
 
 
@@ -81,7 +81,7 @@ def linearized_mass_matrix(T: sp.Expr, q: Coordinates, t: sp.Symbol,
     return sp.simplify(M.subs(q_eq))
 
 
-def stability(K: ArrayLike, tol: float = 1e-12) -> str:
+def stability(K: Quantity, tol: float = 1e-12) -> str:
     """Stability of an equilibrium from its (numeric) stiffness matrix K, Section 4.2.
 
     "stable" if K is positive definite, "unstable" if it has a negative eigenvalue,

@@ -46,7 +46,7 @@ def lumped_mass_matrix(masses: ArrayLike) -> Quantity:
 
 # --- Section 4.4.2: free, undamped vibrations -------------------------------------------
 
-def natural_frequencies(K: ArrayLike, M: ArrayLike) -> Quantity:
+def natural_frequencies(K: Quantity, M: Quantity) -> Quantity:
     """Natural angular frequencies omega_i (ascending) from det(K - omega^2 M) = 0, Section 4.4.2.
 
     Rigid-body modes (zero eigenvalues, up to round-off) give omega = 0.
@@ -60,7 +60,7 @@ def natural_frequencies(K: ArrayLike, M: ArrayLike) -> Quantity:
     return np.sqrt(lam)
 
 
-def mode_shapes(K: ArrayLike, M: ArrayLike) -> Quantity:
+def mode_shapes(K: Quantity, M: Quantity) -> Quantity:
     """Modal matrix Phi whose columns are the mode shapes, Phi^T M Phi = I, Section 4.4.2.
 
     Columns are ordered like :func:`natural_frequencies`; the sign of each column is
@@ -76,18 +76,18 @@ def mode_shapes(K: ArrayLike, M: ArrayLike) -> Quantity:
     return Phi
 
 
-def amplitude_ratios(K: ArrayLike, M: ArrayLike) -> Quantity:
+def amplitude_ratios(K: Quantity, M: Quantity) -> Quantity:
     """Mode shapes scaled so that the first coordinate is 1 (columns), Section 4.4.2."""
     Phi = mode_shapes(K, M)
     return Phi / Phi[0, :]
 
 
-def frequency_determinant(K: ArrayLike, M: ArrayLike, omega: ArrayLike) -> float:
+def frequency_determinant(K: ArrayLike, M: ArrayLike, omega: Quantity) -> float:
     """Characteristic determinant det(K - omega^2 M), zero at the natural frequencies, Section 4.4.2."""
     return float(np.linalg.det(np.asarray(K) - omega**2 * np.asarray(M)))
 
 
-def rayleigh_quotient(K: ArrayLike, M: ArrayLike, x: ArrayLike) -> float:
+def rayleigh_quotient(K: Quantity, M: Quantity, x: Quantity) -> float:
     """Rayleigh quotient R(x) = x^T K x / x^T M x >= omega_1^2 for any trial vector x, Section 4.4.2."""
     x = np.asarray(x, dtype=float)
     return float(x @ K @ x / (x @ M @ x))
@@ -96,7 +96,7 @@ def rayleigh_quotient(K: ArrayLike, M: ArrayLike, x: ArrayLike) -> float:
 # --- Section 4.4.3: damped and forced vibrations ----------------------------------------
 
 def steady_state_amplitudes(K: ArrayLike, M: ArrayLike, C: ArrayLike, F: ArrayLike,
-                            Omega: ArrayLike) -> Quantity:
+                            Omega: Quantity) -> Quantity:
     """Complex amplitudes X = (K - Omega^2 M + i Omega C)^{-1} F under f(t) = Re(F e^{i Omega t}), Section 4.4.3.
 
     |X_j| is the amplitude of coordinate j, -angle(X_j) its phase lag behind the force.
@@ -106,7 +106,7 @@ def steady_state_amplitudes(K: ArrayLike, M: ArrayLike, C: ArrayLike, F: ArrayLi
     return solve(D, np.asarray(F, dtype=complex))
 
 
-def damped_eigenvalues(K: ArrayLike, M: ArrayLike, C: ArrayLike) -> Quantity:
+def damped_eigenvalues(K: Quantity, M: Quantity, C: Quantity) -> Quantity:
     """Eigenvalues lambda of the damped free vibration x = X e^{lambda t}, Section 4.4.3.
 
     Roots of det(lambda^2 M + lambda C + K) = 0 from the first-order form, sorted by
@@ -120,12 +120,12 @@ def damped_eigenvalues(K: ArrayLike, M: ArrayLike, C: ArrayLike) -> Quantity:
     return lam[np.argsort(lam.imag)]
 
 
-def tuned_absorber_stiffness(m_a: ArrayLike, Omega: ArrayLike) -> Quantity:
+def tuned_absorber_stiffness(m_a: Quantity, Omega: Quantity) -> Quantity:
     """Absorber stiffness k_a = m_a Omega^2 that keeps the main mass still at Omega, Section 4.4.3."""
     return m_a * Omega**2
 
 
-def absorber_amplitude(F0: ArrayLike, k_a: ArrayLike) -> Quantity:
+def absorber_amplitude(F0: Quantity, k_a: Quantity) -> Quantity:
     """Amplitude X_a = -F0 / k_a of a tuned absorber (main mass at rest) under F0 cos(Omega t), Section 4.4.3.
 
     The absorber spring then passes exactly the force -F0 cos(Omega t) to the main mass.
@@ -133,15 +133,15 @@ def absorber_amplitude(F0: ArrayLike, k_a: ArrayLike) -> Quantity:
     return -F0 / k_a
 
 
-def absorber_system_matrices(m: ArrayLike, k: ArrayLike, m_a: ArrayLike,
-                             k_a: ArrayLike) -> tuple[Quantity, Quantity]:
+def absorber_system_matrices(m: Quantity, k: Quantity, m_a: Quantity,
+                             k_a: Quantity) -> tuple[Quantity, Quantity]:
     """(K, M) of a main mass m on a spring k carrying an absorber m_a on a spring k_a, Section 4.4.3."""
     return chain_stiffness_matrix([k, k_a]), lumped_mass_matrix([m, m_a])
 
 
 # --- Section 4.4.4: modal decomposition ---------------------------------------------------
 
-def modal_matrices(K: ArrayLike, M: ArrayLike, C: ArrayLike | None = None) -> Quantity:
+def modal_matrices(K: Quantity, M: Quantity, C: Quantity | None = None) -> Quantity:
     """Modal mass, stiffness (and damping) matrices Phi^T M Phi, Phi^T K Phi (, Phi^T C Phi), Section 4.4.4."""
     Phi = mode_shapes(K, M)
     out = [Phi.T @ M @ Phi, Phi.T @ K @ Phi]
@@ -150,19 +150,19 @@ def modal_matrices(K: ArrayLike, M: ArrayLike, C: ArrayLike | None = None) -> Qu
     return tuple(out)
 
 
-def modal_damping_ratios(K: ArrayLike, M: ArrayLike, C: ArrayLike) -> Quantity:
+def modal_damping_ratios(K: Quantity, M: Quantity, C: Quantity) -> Quantity:
     """Modal damping ratios zeta_i = phi_i^T C phi_i / (2 omega_i) for proportional damping, Section 4.4.4."""
     Phi = mode_shapes(K, M)
     return np.diag(Phi.T @ C @ Phi) / (2.0 * natural_frequencies(K, M))
 
 
-def modal_coordinates(K: ArrayLike, M: ArrayLike, x: ArrayLike) -> Quantity:
+def modal_coordinates(K: Quantity, M: Quantity, x: ArrayLike) -> Quantity:
     """Modal coordinates eta = Phi^T M x of a displacement (or velocity) vector x, Section 4.4.4."""
     return mode_shapes(K, M).T @ M @ np.asarray(x, dtype=float)
 
 
-def modal_free_response(t: ArrayLike, K: ArrayLike, M: ArrayLike, x0: ArrayLike, v0: ArrayLike,
-                        C: ArrayLike | None = None) -> Quantity:
+def modal_free_response(t: Quantity, K: Quantity, M: Quantity, x0: Quantity, v0: Quantity,
+                        C: Quantity | None = None) -> Quantity:
     """Displacements x(t) (shape n x len(t)) of the free vibration by modal superposition, Section 4.4.4.
 
     x(t) = sum_i phi_i eta_i(t) with each modal coordinate a 1-DOF free response

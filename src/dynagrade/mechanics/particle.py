@@ -12,33 +12,33 @@ import numpy as np
 from dynagrade.mechanics._common import ArrayLike, Field, Quantity
 
 
-def particle_linear_momentum(m: ArrayLike, v: ArrayLike) -> Quantity:
+def particle_linear_momentum(m: Quantity, v: ArrayLike) -> Quantity:
     """Linear momentum P = m v, eq. (1.59)."""
     return m * np.asarray(v, dtype=float)
 
 
-def acceleration(m: ArrayLike, *forces: ArrayLike) -> Quantity:
+def acceleration(m: Quantity, *forces: Quantity) -> Quantity:
     """Acceleration from the linear momentum balance at constant mass, sum F = m a, eq. (1.63)."""
     return np.sum([np.asarray(f, dtype=float) for f in forces], axis=0) / m
 
 
-def resultant_force(m: ArrayLike, a: ArrayLike) -> Quantity:
+def resultant_force(m: Quantity, a: ArrayLike) -> Quantity:
     """Resultant force that gives a particle of constant mass m the acceleration a,
     sum F = m a, eq. (1.63)."""
     return m * np.asarray(a, dtype=float)
 
 
-def weight(m: ArrayLike, g: ArrayLike) -> Quantity:
+def weight(m: Quantity, g: ArrayLike) -> Quantity:
     """Weight m g for the gravity vector g (e.g. (0, -9.81)), eq. (1.96)."""
     return m * np.asarray(g, dtype=float)
 
 
-def spring_force(k: ArrayLike, x: ArrayLike, x0: ArrayLike) -> Quantity:
+def spring_force(k: Quantity, x: ArrayLike, x0: Quantity) -> Quantity:
     """Force of a linear spring along its axis, -k (x - x0), eq. (1.97)."""
     return -k * (np.asarray(x, dtype=float) - x0)
 
 
-def kinetic_friction(N: ArrayLike, v: ArrayLike, mu: ArrayLike) -> Quantity:
+def kinetic_friction(N: ArrayLike, v: Quantity, mu: Quantity) -> Quantity:
     """Coulomb sliding friction R = -mu |N| v/|v|, eq. (1.74)/(1.103); zero when v = 0."""
     v = np.asarray(v, dtype=float)
     speed = np.linalg.norm(v, axis=-1, keepdims=True)
@@ -47,24 +47,24 @@ def kinetic_friction(N: ArrayLike, v: ArrayLike, mu: ArrayLike) -> Quantity:
     return -mu * np.abs(np.asarray(N, dtype=float))[..., None] * direction
 
 
-def linear_drag_force(v: ArrayLike, k: ArrayLike) -> Quantity:
+def linear_drag_force(v: ArrayLike, k: Quantity) -> Quantity:
     """Viscous (Stokes) drag F_d = -k v, eq. (1.104)."""
     return -k * np.asarray(v, dtype=float)
 
 
-def quadratic_drag_force(v: ArrayLike, c: ArrayLike) -> Quantity:
+def quadratic_drag_force(v: Quantity, c: Quantity) -> Quantity:
     """Rayleigh drag F_d = -c |v| v (footnote 2 of Example 1.2)."""
     v = np.asarray(v, dtype=float)
     return -c * np.linalg.norm(v, axis=-1, keepdims=True) * v
 
 
-def floor_normal_force(m: ArrayLike, g: ArrayLike) -> Quantity:
+def floor_normal_force(m: Quantity, g: Quantity) -> Quantity:
     """Normal force on a particle sliding on a horizontal floor, N = m g, eq. (1.70)."""
     return m * g
 
 
-def floor_normal_force_under_pull(m: ArrayLike, g: ArrayLike, F: ArrayLike,
-                                  theta: ArrayLike) -> Quantity:
+def floor_normal_force_under_pull(m: Quantity, g: Quantity, F: Quantity,
+                                  theta: Quantity) -> Quantity:
     """Normal force on a particle kept on a horizontal floor while a force F pulls it at the
     angle theta above the floor: no acceleration normal to the floor, so
     N = m g - F sin(theta) (the e2 component of the balance, eqs. (1.68)-(1.69), with the
@@ -72,13 +72,13 @@ def floor_normal_force_under_pull(m: ArrayLike, g: ArrayLike, F: ArrayLike,
     return floor_normal_force(m, g) - F * np.sin(theta)
 
 
-def string_tension(m: ArrayLike, l: ArrayLike, omega: ArrayLike) -> Quantity:
+def string_tension(m: Quantity, l: Quantity, omega: Quantity) -> Quantity:
     """Magnitude of the string force on a particle circling at radius l with constant
     angular velocity omega (no gravity), |S| = m l omega^2, eq. (1.84)."""
     return m * l * omega**2
 
 
-def sliding_stop_time(v0: ArrayLike, mu: ArrayLike, g: ArrayLike) -> Quantity:
+def sliding_stop_time(v0: Quantity, mu: Quantity, g: Quantity) -> Quantity:
     """Time for Coulomb friction to stop a particle sliding on a horizontal floor,
     v0/(mu g), eq. (1.73) with alpha = 0 integrated as in Example 1.1 (the slope's time to
     rest with a level slope)."""
@@ -104,7 +104,7 @@ class Trajectory:
         return y[:d].T, y[d:].T
 
 
-def simulate(m: ArrayLike, r0: ArrayLike, v0: ArrayLike, force: Field, t_end: ArrayLike,
+def simulate(m: Quantity, r0: Quantity, v0: ArrayLike, force: Field, t_end: Quantity,
              events: Sequence[Field] = (), rtol: float = 1e-9, atol: float = 1e-12,
              method: str = "DOP853", max_step: float = np.inf) -> Trajectory:
     """Integrate the linear momentum balance m r'' = F(t, r, v) (eq. 1.61 at constant mass)
