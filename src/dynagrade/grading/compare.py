@@ -22,7 +22,7 @@ from __future__ import annotations
 import json
 import math
 from dataclasses import dataclass
-from typing import Iterable, Iterator
+from typing import Iterable, Iterator, TypedDict
 
 from ..errors import DynagradeError
 from .dispatch import grade
@@ -150,6 +150,14 @@ def _constant_in(record: dict) -> bool | tuple[str, ...]:
     return tuple(_strings(record, "up_to_constant", "the record"))
 
 
+class _RelativeTolerance(TypedDict, total=False):
+    rtol: float
+
+
+class _Tolerances(_RelativeTolerance, total=False):
+    atol: float
+
+
 @dataclass(frozen=True)
 class _Common:
     """The fields every kind of record may carry, already checked."""
@@ -160,10 +168,18 @@ class _Common:
     reveal: bool
     misconceptions: tuple[KnownWrong, ...]
 
-    def tolerances(self, names: tuple[str, ...] = ("rtol", "atol")) -> dict[str, float]:
+    def tolerances(self) -> _Tolerances:
         """The tolerances the record sets (a spec keeps its own default for the others)."""
-        values = {"rtol": self.rtol, "atol": self.atol}
-        return {name: float(values[name]) for name in names if values[name] is not None}
+        found: _Tolerances = {}
+        if self.rtol is not None:
+            found["rtol"] = float(self.rtol)
+        if self.atol is not None:
+            found["atol"] = float(self.atol)
+        return found
+
+    def relative_tolerance(self) -> _RelativeTolerance:
+        """The relative tolerance if the record sets one (a symbolic part has no other)."""
+        return {} if self.rtol is None else {"rtol": float(self.rtol)}
 
 
 def _numeric(record: dict, common: _Common):
@@ -183,7 +199,7 @@ def _symbolic(record: dict, common: _Common):
     form = record.get("form") or ()
     if not isinstance(form, (list, tuple)) or not all(isinstance(f, str) for f in form):
         raise RecordError("field 'form' must be a list of strings")
-    spec = SymbolicSpec(_variables(record), **common.tolerances(("rtol",)),
+    spec = SymbolicSpec(_variables(record), **common.relative_tolerance(),
                         misconceptions=common.misconceptions, form=tuple(form),
                         reveal=common.reveal, up_to_constant=_constant_in(record))
     return spec, expected

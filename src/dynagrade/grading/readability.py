@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any, Callable
 
 from .errors import AnswerError
 from .feedback import show_value
@@ -112,5 +113,5 @@ def _choice(spec: ChoiceSpec, text: str) -> Readability:
 
 
 #: how each kind of spec is read (the kinds of :data:`dynagrade.grading.dispatch.GRADERS`)
-READERS = {NumericSpec: _numeric, VectorSpec: _vector, SymbolicSpec: _symbolic,
+READERS: dict[type, Callable[[Any, str], Readability]] = {NumericSpec: _numeric, VectorSpec: _vector, SymbolicSpec: _symbolic,
            ChoiceSpec: _choice}

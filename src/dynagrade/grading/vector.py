@@ -126,6 +126,8 @@ def _misconception(spec: VectorSpec, e: np.ndarray, values: np.ndarray, scale: n
 
     for known in spec.misconceptions:
         try:
+            if isinstance(known.value, float):
+                raise TypeError("a number is no sequence")
             target = np.array([float(x) for x in known.value], dtype=np.float64)
         except (TypeError, ValueError):
             raise SpecError(f"misconception {known.name!r} needs a sequence of numbers") from None
