@@ -24,6 +24,10 @@ that is computed with directly is a Quantity instead."""
 Field = Callable[..., Quantity]
 """A function of position, time or state that returns a quantity (a force or a field)."""
 
+Function: TypeAlias = Callable[[float], float]
+"""A real function of one real variable (an acceleration a(t), a shape psi(x)): what
+scipy's quadrature and root finding call, one float at a time."""
+
 
 def as_floats(values: ArrayLike) -> np.ndarray:
     """The values as a float array (a 0-d array for a scalar)."""

@@ -68,7 +68,7 @@ def characteristic_function(beta_L: ArrayLike, support: str) -> Quantity:
     raise ValueError(f"support must be one of {SUPPORTS}")
 
 
-def beam_eigenvalues(support: str, n: int) -> Quantity:
+def beam_eigenvalues(support: str, n: int) -> np.ndarray:
     """First n positive roots beta_j L of the characteristic equation, Section 5.3.3.
 
     Found by brentq, the j-th root bracketed in [j pi, (j + 1) pi] except for the
@@ -81,10 +81,11 @@ def beam_eigenvalues(support: str, n: int) -> Quantity:
     shift = -1 if support == "cantilever" else 0
     roots = []
     for jj in j:
-        a, b = (jj + shift) * np.pi, (jj + shift + 1) * np.pi
+        a, b = float((jj + shift) * np.pi), float((jj + shift + 1) * np.pi)
         if support == "cantilever" and jj == 1:
             a = 0.0
-        roots.append(brentq(characteristic_function, a, b, args=(support,), xtol=1e-14))
+        roots.append(brentq(lambda bL: float(characteristic_function(bL, support)), a, b,
+                            xtol=1e-14))
     return np.array(roots)
 
 
@@ -94,7 +95,7 @@ def beam_natural_frequencies(EI: Quantity, rhoA: Quantity, L: Quantity, support:
     return beam_eigenvalues(support, n) ** 2 / L**2 * bending_wave_parameter(EI, rhoA)
 
 
-def cantilever_mode_shape(x: Quantity, L: Quantity, j: int) -> Quantity:
+def cantilever_mode_shape(x: ArrayLike, L: Quantity, j: int) -> Quantity:
     """Mode shape W_j(x) of the j-th mode of a cantilever clamped at x = 0 (W_j(L) = 2 (-1)^(j+1)), Section 5.3.3.
 
     W = cosh(bx) - cos(bx) - s (sinh(bx) - sin(bx)), s = (cos bL + cosh bL)/(sin bL + sinh bL).

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from dynagrade.mechanics._common import Quantity
+from dynagrade.mechanics._common import ArrayLike, Quantity
 from dynagrade.mechanics.systems import relative_kinetic_energy
 
 
@@ -20,8 +20,8 @@ from dynagrade.mechanics.systems import relative_kinetic_energy
 class PairVelocities:
     """Velocities of the two bodies after an impact."""
 
-    v1: object
-    v2: object
+    v1: Quantity
+    v2: Quantity
 
 
 def impact_impulse(w1: Quantity, w2: Quantity, approach_speed: Quantity,
@@ -49,18 +49,18 @@ def velocities_after_central_impact(m1: Quantity, m2: Quantity, v1: Quantity, v2
                           velocity_after_impulse(m2, v2, impulse))
 
 
-def velocities_after_oblique_impact(m1: Quantity, m2: Quantity, v1: Quantity, v2: Quantity,
-                                    n: Quantity, e: Quantity) -> PairVelocities:
+def velocities_after_oblique_impact(m1: Quantity, m2: Quantity, v1: ArrayLike, v2: ArrayLike,
+                                    n: ArrayLike, e: Quantity) -> PairVelocities:
     """Velocity vectors after an oblique collision of smooth particles: the normal
     components (along n, the line of impact) change as in a central impact, the tangential
     components are unchanged (Section 2.3.1)."""
     v1 = np.asarray(v1, dtype=float)
     v2 = np.asarray(v2, dtype=float)
     n = np.asarray(n, dtype=float)
-    n = n / np.linalg.norm(n)
-    approach = float(np.dot(v1 - v2, n))
+    e_n = n / np.linalg.norm(n)
+    approach = float(np.dot(v1 - v2, e_n))
     impulse = impact_impulse(1.0 / m1, 1.0 / m2, approach, e)
-    return PairVelocities(v1 - impulse / m1 * n, v2 + impulse / m2 * n)
+    return PairVelocities(v1 - impulse / m1 * e_n, v2 + impulse / m2 * e_n)
 
 
 def coefficient_of_restitution(v1: Quantity, v2: Quantity, v1_after: Quantity,

@@ -14,11 +14,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from dynagrade.mechanics._common import Field, Quantity
+from dynagrade.mechanics._common import Function, Quantity
 from dynagrade.mechanics.vibrations import natural_frequency
 
 
-def effective_mass(rhoA: Quantity | Field, shape: Field, L: Quantity) -> Quantity:
+def effective_mass(rhoA: float | Function, shape: Function, L: float) -> float:
     """Effective mass m_eff = int_0^L rho A psi(x)^2 dx of a body moving in the shape psi, Section 5.2.
 
     ``rhoA`` is the mass per length rho A (a number or a callable of x), ``shape`` the callable psi(x)
@@ -59,8 +59,8 @@ def rayleigh_frequency(k: Quantity, m: Quantity, m_eff: Quantity) -> Quantity:
     return natural_frequency(k, m + m_eff)
 
 
-def beam_rayleigh_quotient(EI: Quantity, rhoA: Quantity, w: Field, w_xx: Field,
-                           L: Quantity) -> Quantity:
+def beam_rayleigh_quotient(EI: float, rhoA: float, w: Function, w_xx: Function,
+                           L: float) -> float:
     """Rayleigh quotient int EI w''^2 dx / int rho A w^2 dx (an upper bound of omega_1^2), Section 5.2.
 
     ``w`` and ``w_xx`` are the trial deflection and its second derivative (callables);

@@ -4,12 +4,14 @@ Examples 1.11, 1.12 and 1.14.  SI units.
 """
 from __future__ import annotations
 
+from typing import Iterable
+
 import numpy as np
 
 from dynagrade.mechanics._common import ArrayLike, Field, Quantity
 
 
-def particle_kinetic_energy(m: Quantity, v: Quantity) -> Quantity:
+def particle_kinetic_energy(m: Quantity, v: ArrayLike) -> Quantity:
     """Kinetic energy T = m |v|^2 / 2, eq. (1.87); v a speed or a velocity vector (last axis)."""
     v = np.asarray(v, dtype=float)
     speed_sq = v**2 if v.ndim == 0 else np.sum(v**2, axis=-1)
@@ -32,8 +34,8 @@ def spring_potential_of_stretch(k: Quantity, stretch: ArrayLike) -> Quantity:
     return 0.5 * k * np.asarray(stretch, dtype=float) ** 2
 
 
-def work_along_path(force: Field, path: Field, velocity: Field, t1: Quantity,
-                    t2: Quantity) -> float:
+def work_along_path(force: Field, path: Field, velocity: Field, t1: float,
+                    t2: float) -> float:
     """Work of a force along a parametrised path, W12 = integral F . (dr/dt) dt, eq. (1.87),
     by quadrature.  ``path(t)`` and ``velocity(t) = dr/dt`` are callables returning vectors;
     ``force(r, v)`` gets the position and the velocity (so friction and drag can be given;
@@ -60,7 +62,7 @@ def speed_after_work(m: Quantity, v1: Quantity, W12: Quantity) -> Quantity:
         return np.where(T2 >= 0.0, np.sqrt(2.0 * np.maximum(T2, 0.0) / m), np.nan)
 
 
-def curl(force: Field, r: Quantity, step_size: float = 1e-5) -> Quantity:
+def curl(force: Field, r: ArrayLike, step_size: float = 1e-5) -> Quantity:
     """Curl of a 3D force field at r by central differences; it vanishes for a conservative
     force F = -dV/dr, eq. (1.94)."""
     r = np.asarray(r, dtype=float)
@@ -72,7 +74,7 @@ def curl(force: Field, r: Quantity, step_size: float = 1e-5) -> Quantity:
     return np.array([jac[2, 1] - jac[1, 2], jac[0, 2] - jac[2, 0], jac[1, 0] - jac[0, 1]])
 
 
-def is_conservative(force: Field, points: Quantity, scale: float = 1.0,
+def is_conservative(force: Field, points: Iterable[ArrayLike], scale: float = 1.0,
                     step_size: float = 1e-5, tol: float = 1e-6) -> bool:
     """Whether a position-dependent force field has zero curl at all the given sample points
     (to the relative tolerance ``tol`` of a typical force ``scale``), the test behind

@@ -14,7 +14,7 @@ import numpy as np
 import sympy as sp
 
 from dynagrade.mechanics import lagrange
-from dynagrade.mechanics._common import Field, Quantity
+from dynagrade.mechanics._common import Function, Quantity
 from dynagrade.mechanics.lagrange import Coordinates
 
 
@@ -50,7 +50,7 @@ def equilibrium_positions(V: sp.Expr, q: Coordinates) -> list[dict[sp.Expr, sp.E
     return [{back[d]: value for d, value in sol.items()} for sol in solutions]
 
 
-def equilibrium_positions_in_interval(dV_dq: Field, a: float, b: float,
+def equilibrium_positions_in_interval(dV_dq: Function, a: float, b: float,
                                       samples: int = 2001) -> list[float]:
     """Roots of a 1-DOF equilibrium condition dV/dq (a callable) on [a, b], Section 4.2.
 

@@ -23,7 +23,7 @@ def angular_acceleration_euler(principal_moments: ArrayLike, omega: ArrayLike,
                      (m3 + (i1 - i2) * w1 * w2) / i3])
 
 
-def gyroscopic_moment(principal_moments: ArrayLike, omega: Quantity,
+def gyroscopic_moment(principal_moments: ArrayLike, omega: ArrayLike,
                       omega_dot: ArrayLike) -> Quantity:
     """Moment needed to keep up a prescribed body-frame rotation,
     M = I omega_dot + omega x (I omega) (Euler's equations, Section 3.4.4)."""

@@ -19,7 +19,7 @@ def absolute_velocity(v_origin: ArrayLike, omega: ArrayLike, r: ArrayLike,
     return np.asarray(v_origin, dtype=float) + cross(omega, r) + np.asarray(v_rel, float)
 
 
-def coriolis_acceleration(omega: ArrayLike, v_rel: ArrayLike) -> Quantity:
+def coriolis_acceleration(omega: ArrayLike, v_rel: ArrayLike) -> np.ndarray:
     """Coriolis acceleration 2 Omega x v_rel (Section 3.4.2)."""
     return 2.0 * cross(omega, v_rel)
 
@@ -64,7 +64,7 @@ def bead_radial_speed(t: Quantity, r0: Quantity, radial_speed0: Quantity,
     return r0 * omega * np.sinh(omega * t) + radial_speed0 * np.cosh(omega * t)
 
 
-def bead_normal_force(m: Quantity, omega: Quantity, radial_speed: Quantity) -> Quantity:
+def bead_normal_force(m: Quantity, omega: float, radial_speed: float) -> Quantity:
     """Force of the spinning rod on the bead, perpendicular to the rod in the direction of
     rotation, N = 2 m Omega r_dot: the rod supplies the Coriolis term (Section 3.4.3).
     Signed: negative when the bead moves inward."""

@@ -39,7 +39,7 @@ def rebound_height(h0: Quantity, e: Quantity, n: int = 1) -> Quantity:
     return e ** (2 * n) * h0
 
 
-def rebound_velocity(v: Quantity, normal: ArrayLike, e: Quantity) -> Quantity:
+def rebound_velocity(v: ArrayLike, normal: ArrayLike, e: Quantity) -> Quantity:
     """Velocity after impact on a fixed smooth wall with unit normal ``normal``: the tangential
     part is kept, the normal part reversed and scaled by e, v' = v - (1 + e)(v.n) n
     (Section 1.2.4)."""

@@ -13,7 +13,7 @@ import numpy as np
 from dynagrade.mechanics._common import ArrayLike, Quantity
 
 
-def inertia_tensor_point_mass(m: Quantity, r: Quantity) -> Quantity:
+def inertia_tensor_point_mass(m: Quantity, r: ArrayLike) -> Quantity:
     """Inertia tensor of a point mass at r about the origin, m (|r|^2 1 - r (x) r)
     (Section 3.2.3)."""
     r = np.asarray(r, dtype=float)
@@ -82,7 +82,7 @@ def parallel_axis_moment(moment_centre: Quantity, m: Quantity, distance: Quantit
     return moment_centre + m * distance**2
 
 
-def rotated_inertia_tensor(inertia: ArrayLike, rotation: Quantity) -> Quantity:
+def rotated_inertia_tensor(inertia: ArrayLike, rotation: ArrayLike) -> Quantity:
     """Components of the inertia tensor of a body rotated by R (or, equivalently, of the
     same body in a frame rotated by R^T): I' = R I R^T (Section 3.2.3)."""
     rotation = np.asarray(rotation, dtype=float)

@@ -8,13 +8,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from dynagrade.mechanics._common import ArrayLike, Field, Quantity, spatial_vector
+from dynagrade.mechanics._common import ArrayLike, Function, Quantity, spatial_vector
 
 
 # --- 1.1.1 Cartesian frame: trajectories from a(t), a(v), a(x) ----------------------------
 
-def velocity_from_acceleration(acceleration: Quantity, t: Quantity, v0: Quantity,
-                               t0: Quantity = 0.0) -> Quantity:
+def velocity_from_acceleration(acceleration: Function, t: float, v0: float,
+                               t0: float = 0.0) -> float:
     """Velocity at time t from a known 1D acceleration a(t) (a callable), eq. (1.9):
     v(t) = v(t0) + integral_{t0}^{t} a(tau) dtau, by quadrature."""
     from scipy.integrate import quad
@@ -22,8 +22,8 @@ def velocity_from_acceleration(acceleration: Quantity, t: Quantity, v0: Quantity
     return v0 + integral
 
 
-def position_from_acceleration(acceleration: Field, t: Quantity, x0: Quantity, v0: Quantity,
-                               t0: Quantity = 0.0) -> Quantity:
+def position_from_acceleration(acceleration: Function, t: float, x0: float, v0: float,
+                               t0: float = 0.0) -> float:
     """Position at time t from a known 1D acceleration a(t), eq. (1.10) with (1.9):
     x(t) = x0 + v0 (t - t0) + integral_{t0}^{t} (t - tau) a(tau) dtau (both integrations in one)."""
     from scipy.integrate import quad
@@ -120,7 +120,7 @@ def quadratic_drag_distance_to_speed(v0: Quantity, v: Quantity, k: Quantity) -> 
     return np.log(v0 / v) / k
 
 
-def time_from_velocity_field(velocity: Field, x0: Quantity, x: Quantity) -> Quantity:
+def time_from_velocity_field(velocity: Function, x0: float, x: float) -> float:
     """Time to travel from x0 to x when the velocity is a known function v(x) of position
     (a callable, no sign change on the way), eq. (1.16): t = integral dx / v(x)."""
     from scipy.integrate import quad
@@ -128,8 +128,8 @@ def time_from_velocity_field(velocity: Field, x0: Quantity, x: Quantity) -> Quan
     return integral
 
 
-def speed_from_acceleration_field(acceleration: Quantity, x0: Quantity, x: Quantity,
-                                  v0: Quantity) -> Quantity:
+def speed_from_acceleration_field(acceleration: Function, x0: float, x: float,
+                                  v0: float) -> float:
     """Speed at position x when the acceleration is a known function a(x) (a callable),
     eq. (1.17): v^2/2 = v0^2/2 + integral_{x0}^{x} a(s) ds.  NaN where x is not reached."""
     from scipy.integrate import quad
@@ -144,7 +144,7 @@ def gravity_at_height(x: ArrayLike, g: Quantity, R: Quantity) -> Quantity:
     return g * R**2 / (R + np.asarray(x, dtype=float)) ** 2
 
 
-def rocket_speed_at_height(x: Quantity, v0: Quantity, g: Quantity, R: Quantity) -> Quantity:
+def rocket_speed_at_height(x: ArrayLike, v0: Quantity, g: Quantity, R: Quantity) -> Quantity:
     """Speed at height x of a body launched vertically with v0 under g(x) = g R^2/(R+x)^2,
     eq. (1.17) integrated: v^2 = v0^2 - 2 g R x / (R + x).  NaN above the peak."""
     x = np.asarray(x, dtype=float)
@@ -179,7 +179,7 @@ def degrees_of_freedom(d: Quantity, k: Quantity = 0) -> Quantity:
 
 # --- 1.1.3 polar coordinates --------------------------------------------------------------
 
-def polar_basis(phi: Quantity) -> tuple[Quantity, Quantity]:
+def polar_basis(phi: ArrayLike) -> tuple[Quantity, Quantity]:
     """Co-rotating unit vectors (e_r, e_phi) in Cartesian components, eq. (1.27)/(1.28)."""
     phi = np.asarray(phi, dtype=float)
     e_r = np.stack([np.cos(phi), np.sin(phi)], axis=-1)
@@ -243,7 +243,7 @@ def path_centripetal_acceleration(v: Quantity, rho: Quantity) -> Quantity:
 
 # --- 1.1.4 space curves -------------------------------------------------------------------
 
-def radius_of_curvature_of_graph(fp: ArrayLike, fpp: Quantity) -> Quantity:
+def radius_of_curvature_of_graph(fp: ArrayLike, fpp: ArrayLike) -> Quantity:
     """Radius of curvature of the plane curve x2 = f(x1) from f' and f'', eq. (1.48):
     rho = (1 + f'^2)^(3/2) / |f''| (infinite where f'' = 0)."""
     fpp = np.asarray(fpp, dtype=float)
@@ -257,13 +257,13 @@ def parabola_radius_of_curvature(c: Quantity, x1: ArrayLike) -> Quantity:
     return radius_of_curvature_of_graph(2.0 * c * np.asarray(x1, dtype=float), 2.0 * c)
 
 
-def unit_tangent(v: Quantity) -> Quantity:
+def unit_tangent(v: ArrayLike) -> Quantity:
     """Unit tangent e_t = v/|v| of the trajectory, eq. (1.41)."""
     v = np.asarray(v, dtype=float)
     return v / np.linalg.norm(v, axis=-1, keepdims=True)
 
 
-def tangential_acceleration(v: Quantity, a: ArrayLike) -> Quantity:
+def tangential_acceleration(v: ArrayLike, a: ArrayLike) -> Quantity:
     """Path acceleration s'' = a . e_t, the e_t component of eq. (1.51)."""
     return np.sum(np.asarray(a, dtype=float) * unit_tangent(v), axis=-1)
 
@@ -274,16 +274,16 @@ def normal_acceleration(v: ArrayLike, a: ArrayLike) -> Quantity:
     return np.linalg.norm(cross, axis=-1) / np.linalg.norm(np.asarray(v, dtype=float), axis=-1)
 
 
-def principal_normal(v: Quantity, a: Quantity) -> Quantity:
+def principal_normal(v: ArrayLike, a: ArrayLike) -> Quantity:
     """Principal normal e_n, the unit part of a normal to v, pointing to the centre of
     curvature, eqs. (1.44)-(1.50)."""
     a = np.asarray(a, dtype=float)
     e_t = unit_tangent(v)
-    a_n = a - tangential_acceleration(v, a)[..., None] * e_t
+    a_n = a - np.asarray(tangential_acceleration(v, a))[..., None] * e_t
     return a_n / np.linalg.norm(a_n, axis=-1, keepdims=True)
 
 
-def binormal(v: Quantity, a: Quantity) -> Quantity:
+def binormal(v: ArrayLike, a: ArrayLike) -> Quantity:
     """Binormal e_b = e_t x e_n, eq. (1.52) (3D components)."""
     return np.cross(spatial_vector(unit_tangent(v)), spatial_vector(principal_normal(v, a)))
 
@@ -306,12 +306,12 @@ def acceleration_magnitude(tangential: Quantity, normal: Quantity) -> Quantity:
 class PathAcceleration:
     """Acceleration in the space-curve frame, eq. (1.51): a = s'' e_t + (v^2/rho) e_n."""
 
-    tangential: float
-    normal: float
-    rho: float
+    tangential: Quantity
+    normal: Quantity
+    rho: Quantity
 
 
-def path_acceleration(v: Quantity, a: Quantity) -> PathAcceleration:
+def path_acceleration(v: ArrayLike, a: ArrayLike) -> PathAcceleration:
     """Split a known (v, a) into the space-curve components of eq. (1.51)."""
     return PathAcceleration(tangential=tangential_acceleration(v, a),
                             normal=normal_acceleration(v, a), rho=radius_of_curvature(v, a))

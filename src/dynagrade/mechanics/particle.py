@@ -5,11 +5,14 @@ SI units; vectors as numpy arrays of 2 or 3 components.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Sequence
+from typing import TYPE_CHECKING, Literal, Sequence
 
 import numpy as np
 
 from dynagrade.mechanics._common import ArrayLike, Field, Quantity
+
+if TYPE_CHECKING:
+    from scipy.integrate import OdeSolution
 
 
 def particle_linear_momentum(m: Quantity, v: ArrayLike) -> Quantity:
@@ -38,7 +41,7 @@ def spring_force(k: Quantity, x: ArrayLike, x0: Quantity) -> Quantity:
     return -k * (np.asarray(x, dtype=float) - x0)
 
 
-def kinetic_friction(N: ArrayLike, v: Quantity, mu: Quantity) -> Quantity:
+def kinetic_friction(N: ArrayLike, v: ArrayLike, mu: Quantity) -> Quantity:
     """Coulomb sliding friction R = -mu |N| v/|v|, eq. (1.74)/(1.103); zero when v = 0."""
     v = np.asarray(v, dtype=float)
     speed = np.linalg.norm(v, axis=-1, keepdims=True)
@@ -52,7 +55,7 @@ def linear_drag_force(v: ArrayLike, k: Quantity) -> Quantity:
     return -k * np.asarray(v, dtype=float)
 
 
-def quadratic_drag_force(v: Quantity, c: Quantity) -> Quantity:
+def quadratic_drag_force(v: ArrayLike, c: Quantity) -> Quantity:
     """Rayleigh drag F_d = -c |v| v (footnote 2 of Example 1.2)."""
     v = np.asarray(v, dtype=float)
     return -c * np.linalg.norm(v, axis=-1, keepdims=True) * v
@@ -95,7 +98,7 @@ class Trajectory:
     v: np.ndarray
     event_times: tuple
     event_states: tuple
-    solution: object
+    solution: OdeSolution
 
     def at(self, t):
         """Position and velocity at time(s) t from the dense output."""
@@ -104,9 +107,10 @@ class Trajectory:
         return y[:d].T, y[d:].T
 
 
-def simulate(m: Quantity, r0: Quantity, v0: ArrayLike, force: Field, t_end: Quantity,
+def simulate(m: Quantity, r0: ArrayLike, v0: ArrayLike, force: Field, t_end: float,
              events: Sequence[Field] = (), rtol: float = 1e-9, atol: float = 1e-12,
-             method: str = "DOP853", max_step: float = np.inf) -> Trajectory:
+             method: Literal["RK23", "RK45", "DOP853", "Radau", "BDF", "LSODA"] = "DOP853",
+             max_step: float = np.inf) -> Trajectory:
     """Integrate the linear momentum balance m r'' = F(t, r, v) (eq. 1.61 at constant mass)
     from r(0) = r0, v(0) = v0 up to t_end with scipy's solve_ivp.
 
@@ -121,19 +125,30 @@ def simulate(m: Quantity, r0: Quantity, v0: ArrayLike, force: Field, t_end: Quan
     def rhs(t, y):
         return np.concatenate([y[d:], np.asarray(force(t, y[:d], y[d:]), dtype=float) / m])
 
-    wrapped = []
-    for event in events:
-        def on_state(t, y, event=event):
-            return event(t, y[:d], y[d:])
-        on_state.terminal = getattr(event, "terminal", False)
-        on_state.direction = getattr(event, "direction", 0)
-        wrapped.append(on_state)
+    wrapped = [_StateEvent(event, d) for event in events]
     y0 = np.concatenate([r0, np.asarray(v0, dtype=float)])
     sol = solve_ivp(rhs, (0.0, t_end), y0, method=method, events=wrapped or None,
                     rtol=rtol, atol=atol, dense_output=True, max_step=max_step)
     if sol.status < 0:
         raise RuntimeError(f"integration failed: {sol.message}")
-    event_times = tuple(sol.t_events) if wrapped else ()
-    event_states = tuple(sol.y_events) if wrapped else ()
+    if sol.sol is None:  # dense_output=True always gives one
+        raise RuntimeError("the integration returned no dense solution")
+    # solve_ivp gives the events' lists when it was given events, None otherwise
+    event_times = tuple(sol.t_events or ())
+    event_states = tuple(sol.y_events or ())
     return Trajectory(t=sol.t, r=sol.y[:d].T, v=sol.y[d:].T, event_times=event_times,
                       event_states=event_states, solution=sol.sol)
+
+
+class _StateEvent:
+    """An event ``event(t, r, v)`` of :func:`simulate` as solve_ivp calls it, on the
+    state y = (r, v), with the event's ``terminal`` and ``direction``."""
+
+    def __init__(self, event: Field, d: int) -> None:
+        self.event = event
+        self.d = d
+        self.terminal = getattr(event, "terminal", False)
+        self.direction = getattr(event, "direction", 0)
+
+    def __call__(self, t: float, y: np.ndarray) -> float:
+        return float(self.event(t, y[:self.d], y[self.d:]))

@@ -19,7 +19,7 @@ def _planar_or_spatial(omega, r):
     return spatial_cross(omega, r)
 
 
-def velocity_of_point(v_a: ArrayLike, omega: Quantity, r_ab: Quantity) -> Quantity:
+def velocity_of_point(v_a: ArrayLike, omega: Quantity, r_ab: Quantity) -> np.ndarray:
     """Velocity of a point B of a rigid body from that of A, v_B = v_A + omega x r_AB
     (velocity transfer, Sections 3.1.1 and 3.1.2)."""
     return np.asarray(v_a, dtype=float) + _planar_or_spatial(omega, r_ab)

@@ -40,7 +40,7 @@ def angular_acceleration_about_fixed_axis(moment: Quantity,
     return angular_acceleration(moment, moment_of_inertia)
 
 
-def rotational_kinetic_energy(inertia: ArrayLike, omega: Quantity) -> float:
+def rotational_kinetic_energy(inertia: ArrayLike, omega: ArrayLike) -> float:
     """Kinetic energy of the rotation, 1/2 omega . I omega (Section 3.2.5)."""
     omega = np.asarray(omega, dtype=float)
     return float(0.5 * omega @ np.asarray(inertia, dtype=float) @ omega)

@@ -53,7 +53,7 @@ def particle_velocity(sigma: Quantity, rho: Quantity, c: Quantity) -> Quantity:
     return sigma / (rho * c)
 
 
-def rod_wavenumbers(L: Quantity, n: int, ends: str) -> Quantity:
+def rod_wavenumbers(L: Quantity, n: int, ends: str) -> np.ndarray:
     """Wavenumbers k_j = omega_j / c of the first n natural modes of a rod, Section 5.3.1.
 
     fixed-fixed and free-free: k_j = j pi / L (free-free without its rigid-body mode);
@@ -72,7 +72,7 @@ def rod_natural_frequencies(c: Quantity, L: Quantity, n: int, ends: str) -> Quan
     return c * rod_wavenumbers(L, n, ends)
 
 
-def rod_mode_shape(x: Quantity, L: Quantity, j: int, ends: str) -> Quantity:
+def rod_mode_shape(x: ArrayLike, L: Quantity, j: int, ends: str) -> Quantity:
     """Mode shape U_j(x) of the j-th natural mode of a rod (maximum 1), Section 5.3.1."""
     k = rod_wavenumbers(L, j, ends)[-1]
     x = np.asarray(x, dtype=float)
@@ -95,7 +95,8 @@ def tip_mass_fundamental_frequency(c: Quantity, L: Quantity, m_rod: Quantity,
     """
     from scipy.optimize import brentq
     ratio = m_rod / m_tip
-    kL = brentq(tip_mass_wavenumber_equation, 1e-12, np.pi / 2.0, args=(ratio,), xtol=1e-14)
+    kL = brentq(lambda kL: float(tip_mass_wavenumber_equation(kL, ratio)), 1e-12, np.pi / 2.0,
+                xtol=1e-14)
     return c * kL / L
 
 

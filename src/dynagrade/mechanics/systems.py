@@ -94,11 +94,11 @@ def relative_speed_from_internal_work(m1: Quantity, m2: Quantity, internal_work:
 class PairSpeeds:
     """Speeds of the two particles of a pair."""
 
-    v1: float
-    v2: float
+    v1: Quantity
+    v2: Quantity
 
 
-def speeds_relative_to_centre_of_mass(m1: Quantity, m2: Quantity,
+def speeds_relative_to_centre_of_mass(m1: float, m2: float,
                                       relative_speed: Quantity) -> PairSpeeds:
     """How the relative speed of two particles splits between them in the centre-of-mass
     frame: m1 v1 = m2 v2 (total momentum zero) and v1 + v2 = v_rel give

@@ -53,7 +53,7 @@ def natural_frequency_from_static_deflection(delta_st: Quantity, g: Quantity) ->
     return np.sqrt(g / delta_st)
 
 
-def equivalent_mass(inertias: Quantity, ratios: Quantity) -> float:
+def equivalent_mass(inertias: ArrayLike, ratios: ArrayLike) -> float:
     """Equivalent mass m_eq = sum_i m_i (d u_i / d q)^2 of a 1-DOF system, Section 4.3.1.
 
     ``inertias`` are the masses (or mass moments of inertia) of the bodies, ``ratios``
@@ -65,7 +65,7 @@ def equivalent_mass(inertias: Quantity, ratios: Quantity) -> float:
     return float(np.sum(inertias * ratios**2))
 
 
-def equivalent_stiffness(stiffnesses: Quantity, ratios: Quantity) -> float:
+def equivalent_stiffness(stiffnesses: ArrayLike, ratios: ArrayLike) -> float:
     """Equivalent stiffness k_eq = sum_i k_i (d u_i / d q)^2 of a 1-DOF system, Section 4.3.1.
 
     ``ratios`` are the elongations of the springs per unit generalized coordinate, so that
@@ -104,7 +104,7 @@ def damped_frequency(omega_n: Quantity, zeta: Quantity) -> Quantity:
     return omega_n * np.sqrt(1.0 - zeta**2)
 
 
-def damping_regime(zeta: Quantity, tol: float = 1e-9) -> str:
+def damping_regime(zeta: float, tol: float = 1e-9) -> str:
     """Name of the free-vibration regime for a damping ratio zeta, Section 4.3.2.
 
     One of "undamped", "underdamped", "critically damped", "overdamped".

@@ -36,7 +36,7 @@ def hoop_potential_curvature(theta: Quantity, m: Quantity, R: Quantity, Omega: Q
     return m * R * (g * np.cos(theta) - R * Omega**2 * np.cos(2.0 * theta))
 
 
-def hoop_oscillation_frequency(R: Quantity, Omega: Quantity, g: Quantity) -> Quantity:
+def hoop_oscillation_frequency(R: float, Omega: float, g: float) -> Quantity:
     """Angular frequency of small oscillations of the bead about its stable equilibrium, Section 4.2.
 
     sqrt(g/R - Omega^2) about the lowest point for Omega < sqrt(g/R); Omega sin(theta*)

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from dynagrade.mechanics._common import Quantity
+from dynagrade.mechanics._common import ArrayLike, Quantity
 
 
 def speed(phi: Quantity, v0: Quantity, R: Quantity, g: Quantity) -> Quantity:
@@ -74,7 +74,7 @@ def support_reactions(phi: Quantity, m: Quantity, v0: Quantity, R: Quantity,
     return SupportReactions(A1=-N * np.sin(phi), A2=N * np.cos(phi), MA=N * R * np.sin(phi))
 
 
-def static_support_reactions(phi: Quantity, m: Quantity, R: Quantity,
+def static_support_reactions(phi: ArrayLike, m: Quantity, R: Quantity,
                              g: Quantity) -> SupportReactions:
     """Support reactions with the particle held at rest at phi, eq. (1.123):
     A1 = 0, A2 = m g, MA = m g R sin(phi)."""

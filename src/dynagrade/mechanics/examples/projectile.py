@@ -8,10 +8,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from dynagrade.mechanics._common import Quantity
+from dynagrade.mechanics._common import ArrayLike, Quantity
 
 
-def position(t: Quantity, v0: Quantity, alpha: Quantity,
+def position(t: ArrayLike, v0: Quantity, alpha: Quantity,
              g: Quantity) -> tuple[Quantity, Quantity]:
     """Position (x1, x2) at time t of the throw, eq. (1.78)."""
     t = np.asarray(t, dtype=float)
@@ -20,7 +20,7 @@ def position(t: Quantity, v0: Quantity, alpha: Quantity,
     return x1, x2
 
 
-def velocity(t: Quantity, v0: Quantity, alpha: Quantity,
+def velocity(t: ArrayLike, v0: Quantity, alpha: Quantity,
              g: Quantity) -> tuple[Quantity, Quantity]:
     """Velocity (v1, v2) at time t, the time derivative of eq. (1.78) (see eq. 1.77)."""
     t = np.asarray(t, dtype=float)
@@ -54,7 +54,7 @@ def optimal_launch_angle() -> Quantity:
     return np.pi / 4.0
 
 
-def trajectory_height(x1: Quantity, v0: Quantity, alpha: Quantity, g: Quantity) -> Quantity:
+def trajectory_height(x1: ArrayLike, v0: Quantity, alpha: Quantity, g: Quantity) -> Quantity:
     """Height x2 of the flight parabola above horizontal position x1 (eq. 1.78 with t eliminated)."""
     x1 = np.asarray(x1, dtype=float)
     return x1 * np.tan(alpha) - g * x1**2 / (2.0 * v0**2 * np.cos(alpha) ** 2)
