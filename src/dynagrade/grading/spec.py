@@ -166,7 +166,7 @@ class SymbolicSpec:
     @property
     def constant_in(self) -> tuple[str, ...]:
         """The variables named by ``up_to_constant``, ``True`` spelled out as all of them."""
-        if isinstance(self.up_to_constant, bool):  # only before __post_init__ has run
+        if isinstance(self.up_to_constant, bool):  # not after __post_init__, which spells it out
             return tuple(self.variables) if self.up_to_constant else ()
         return self.up_to_constant
 

@@ -21,7 +21,7 @@ times) or an array.  Only for arguments a function first converts with ``as_floa
 another numpy function); a sequence or a string supports no arithmetic, so an argument
 that is computed with directly is a Quantity instead."""
 
-Field = Callable[..., Quantity]
+Field: TypeAlias = Callable[..., Quantity]
 """A function of position, time or state that returns a quantity (a force or a field)."""
 
 Function: TypeAlias = Callable[[float], float]
