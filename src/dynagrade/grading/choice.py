@@ -86,7 +86,7 @@ def _split(spec, answer: str) -> list[str] | str:
         words = chunk.translate(_BRACKETS_AS_SPACES).split()
         labels = [_label(w, keys) for w in words]
         if len(words) > 1 and all(labels):
-            picks.extend(labels)
+            picks.extend(label for label in labels if label)
             continue
         shown = chunk if len(chunk) <= 30 else chunk[:30] + "…"
         numbered = f" (or {', '.join(a for a, _ in spec.aliases)})" if spec.aliases else ""

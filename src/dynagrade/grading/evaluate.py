@@ -8,7 +8,7 @@ point". Nothing is ever computed exactly, so ``9^9^9^9`` is just ``inf``.
 from __future__ import annotations
 
 import warnings
-from typing import Mapping
+from typing import Any, Mapping
 
 import numpy as np
 
@@ -22,9 +22,9 @@ class EvaluationError(DynagradeError):
     """A name without a value (an internal inconsistency, not an answer problem)."""
 
 
-def evaluate(expr: Expr, env: Mapping[str, np.ndarray], units: Mapping[str, float] | None = None,
-             dtype=np.float64):
-    """Value of ``expr`` with variables from ``env`` (arrays broadcast together).
+def evaluate(expr: Expr, env: Mapping[str, np.ndarray | np.floating[Any]],
+             units: Mapping[str, float] | None = None, dtype=np.float64):
+    """Value of ``expr`` with variables from ``env`` (arrays, or numpy scalars, broadcast together).
 
     ``units`` maps unit names to their factor (used for quantity answers). Returns a
     ``dtype`` array (or numpy scalar); non-finite entries mark undefined points.
@@ -35,7 +35,8 @@ def evaluate(expr: Expr, env: Mapping[str, np.ndarray], units: Mapping[str, floa
         return _eval(expr, env, units or {}, dtype, None)
 
 
-def evaluate_with_magnitude(expr: Expr, env: Mapping[str, np.ndarray], dtype=np.float64):
+def evaluate_with_magnitude(expr: Expr, env: Mapping[str, np.ndarray | np.floating[Any]],
+                            dtype=np.float64):
     """The value of ``expr``, per point the largest magnitude of any value met on the
     way, and the number of nodes evaluated (its rounding error is of the order of
     ``eps`` times that magnitude times that number)."""

@@ -116,12 +116,12 @@ def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False,
             i = end
             continue
         if ch in ("µ", "μ") and quantity and i + 1 < n and text[i + 1] in _LETTERS:
-            m = _NAME.match(text, i + 1)
+            m = _match_at(_NAME, text, i + 1)
             tokens.append(Token(NAME, "u" + m.group(), i))
             i = m.end()
             continue
         if ch in GREEK:
-            m = _NAME_TAIL.match(text, i + 1)
+            m = _match_at(_NAME_TAIL, text, i + 1)
             tokens.append(Token(NAME, GREEK[ch] + m.group(), i))
             i = m.end()
             continue
@@ -205,7 +205,7 @@ def _name(text: str, i: int) -> tuple[str, int]:
     """A formula's name at ``i``: a letter, then letters, digits, ``_`` and subscript
     digits; Greek letters are spelled out (``ω_n`` -> ``omega_n``) and subscript digits
     follow an ``_`` (``x₁`` -> ``x_1``)."""
-    m = _FORMULA_NAME.match(text, i)
+    m = _match_at(_FORMULA_NAME, text, i)
     word = _SUBSCRIPT_DIGITS.sub(lambda s: "_" + "".join(SUBSCRIPTS[c] for c in s.group(1)),
                                  m.group())
     return word.translate(_SPELLED_OUT), m.end()
@@ -229,5 +229,13 @@ def _spelled_symbol(text: str, i: int, spellings: tuple) -> tuple[str, int] | No
 
 def _unit_name(text: str, i: int) -> tuple[str, int]:
     """A unit's name at ``i``: ASCII letters, digits and ``_``."""
-    m = _NAME.match(text, i)
+    m = _match_at(_NAME, text, i)
     return m.group(), m.end()
+
+
+def _match_at(pattern: re.Pattern[str], text: str, i: int) -> re.Match[str]:
+    """The match of ``pattern`` at ``i``, where the caller has seen a character that
+    starts one (a letter before a name) or the pattern also matches nothing."""
+    m = pattern.match(text, i)
+    assert m is not None, (pattern.pattern, text, i)
+    return m

@@ -143,6 +143,8 @@ def _verdict(spec: NumericSpec, e: float, q: Quantity, reading: _Reading) -> Ver
 def _misconception(spec: NumericSpec, e: float, value: float, q: Quantity):
     for known in spec.misconceptions:
         try:
+            if isinstance(known.value, tuple):
+                raise TypeError("a tuple is no number")
             wrong = float(known.value)
         except (TypeError, ValueError):
             raise SpecError(f"misconception {known.name!r} needs a number, got {known.value!r}") from None

@@ -143,7 +143,7 @@ def unit_info(unit: str | None) -> tuple[float, tuple]:
         quantity = quantity_from_tree(tree, unit, require_number=False) if has_units(tree) else None
     except AnswerError as error:
         raise SpecError(f"cannot read the unit {unit!r}: {error.message}") from None
-    if quantity is None:
+    if quantity is None or quantity.dim is None:
         raise SpecError(f"the unit {unit!r} contains no unit")
     if not (math.isfinite(quantity.value) and quantity.value > 0):
         raise SpecError(f"the unit {unit!r} is not a usable unit")

@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import math
 from dataclasses import dataclass
+from typing import TypedDict
 
 from ..errors import DynagradeError
 from .spec import KnownWrong, Variable
@@ -106,6 +107,18 @@ def constant_in(record: dict) -> bool | tuple[str, ...]:
     return tuple(strings(record, "up_to_constant", "the record"))
 
 
+class RelativeTolerance(TypedDict, total=False):
+    """A relative tolerance, where a record sets one (a spec's keyword argument)."""
+
+    rtol: float
+
+
+class Tolerances(RelativeTolerance, total=False):
+    """The tolerances a record sets, as a spec's keyword arguments."""
+
+    atol: float
+
+
 @dataclass(frozen=True)
 class Common:
     """The fields every kind of record may carry, already checked."""
@@ -116,7 +129,15 @@ class Common:
     reveal: bool
     misconceptions: tuple[KnownWrong, ...]
 
-    def tolerances(self, names: tuple[str, ...] = ("rtol", "atol")) -> dict[str, float]:
+    def tolerances(self) -> Tolerances:
         """The tolerances the record sets (a spec keeps its own default for the others)."""
-        values = {"rtol": self.rtol, "atol": self.atol}
-        return {name: float(values[name]) for name in names if values[name] is not None}
+        found: Tolerances = {}
+        if self.rtol is not None:
+            found["rtol"] = float(self.rtol)
+        if self.atol is not None:
+            found["atol"] = float(self.atol)
+        return found
+
+    def relative_tolerance(self) -> RelativeTolerance:
+        """The relative tolerance if the record sets one (a formula has no other)."""
+        return {} if self.rtol is None else {"rtol": float(self.rtol)}

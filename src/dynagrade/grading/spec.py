@@ -99,6 +99,13 @@ class Variable:
         """Whether both bounds are given."""
         return self.min is not None and self.max is not None
 
+    @property
+    def domain(self) -> tuple[float, float]:
+        """(min, max), for a variable that has both (every variable of a SymbolicSpec)."""
+        if self.min is None or self.max is None:
+            raise ValueError("this variable has no domain: Variable(min, max)")
+        return self.min, self.max
+
 
 @dataclass(frozen=True)
 class SymbolicSpec:
@@ -155,6 +162,13 @@ class SymbolicSpec:
             raise ValueError(f"form_credit must lie in [0, 1], got {self.form_credit}")
         if not 4 <= self.points <= 200:
             raise ValueError(f"points must be in 4..200, got {self.points}")
+
+    @property
+    def constant_in(self) -> tuple[str, ...]:
+        """The variables named by ``up_to_constant``, ``True`` spelled out as all of them."""
+        if isinstance(self.up_to_constant, bool):  # not after __post_init__, which spells it out
+            return tuple(self.variables) if self.up_to_constant else ()
+        return self.up_to_constant
 
     def __hash__(self) -> int:
         return hash((tuple(sorted(self.variables.items())), self.rtol, self.misconceptions,

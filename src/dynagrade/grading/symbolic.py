@@ -87,12 +87,13 @@ def _parse_reference(text, names, what: str) -> Expr:
 def _reference(spec: SymbolicSpec, expected: str) -> _Reference:
     names = frozenset(spec.variables)
     tree = _parse_reference(expected, names, "reference")
-    factors, dims = {}, {}
+    factors: dict[str, float] = {}
+    dims: dict[str, tuple] = {}
     for name, var in spec.variables.items():
-        factor, dim = unit_info(var.unit) if var.unit is not None else (1.0, None)
-        factors[name] = factor
-        dims[name] = dim
-    all_dims = None if any(d is None for d in dims.values()) else dims
+        factors[name], dim = unit_info(var.unit) if var.unit is not None else (1.0, None)
+        if dim is not None:
+            dims[name] = dim
+    all_dims = dims if len(dims) == len(spec.variables) else None
     env, values = _sample(spec, expected, tree, factors)
     tol = point_tolerance(values, spec.rtol)
     ref_dim = None
@@ -104,13 +105,13 @@ def _reference(spec: SymbolicSpec, expected: str) -> _Reference:
     swapped = None
     if any(isinstance(n, Call) and n.func in ("sin", "cos") for n in walk(tree)):
         swapped = _values(_swap_sin_cos(tree), env, values.shape)
-    based = _based(env, spec.up_to_constant)
+    based = _based(env, spec.constant_in)
     known = []
     for wrong in spec.misconceptions:
         wrong_tree = _parse_reference(wrong.value, names, f"misconception {wrong.name!r}")
         known.append((wrong, _values(wrong_tree, env, values.shape),
                       None if based is None else _values(wrong_tree, based, values.shape)))
-    domains = {n: (v.min * factors[n], v.max * factors[n]) for n, v in spec.variables.items()}
+    domains = {n: (v.domain[0] * factors[n], v.domain[1] * factors[n]) for n, v in spec.variables.items()}
     base = None if based is None else _values(tree, based, values.shape)
     return _Reference(tree, names, env, values, tol, all_dims, ref_dim, swapped, tuple(known), domains, spec.rtol,
                       extended(tree, env), based, base,
@@ -137,7 +138,7 @@ def _sample(spec: SymbolicSpec, expected: str, tree: Expr, factors: dict):
     kept: list[np.ndarray] = []
     count = 0
     for _ in range(_MAX_DRAWS):
-        batch = {n: _uniform(rng, v.min, v.max, 2 * want) * factors[n] for n, v in spec.variables.items()}
+        batch = {n: _uniform(rng, *v.domain, 2 * want) * factors[n] for n, v in spec.variables.items()}
         vals = _values(tree, batch, (2 * want,))
         ok = np.isfinite(vals)
         for n in batch:
@@ -182,7 +183,7 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
         return unreadable(str(error))
     reveal = f" The expected answer is {to_text(ref.tree)}." if spec.reveal else ""
     hint = "".join(" " + h for h in reading_hints(tree))
-    if ref.dims is not None:
+    if ref.dims is not None and ref.dim is not None:
         try:
             dim = dimension(tree, ref.dims)
         except DimensionIssue as issue:
@@ -200,8 +201,8 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
     if _equivalent(tree, ref, values, deadline):
         return _form_verdict(spec, ref, tree)
     base = None if ref.based is None else _values(tree, ref.based, values.shape)
-    if base is not None and _same_differences(values, base, ref.values, ref.base,
-                                              ref.tol + ref.base_tol):
+    if base is not None and ref.base is not None and ref.base_tol is not None and \
+            _same_differences(values, base, ref.values, ref.base, ref.tol + ref.base_tol):
         return _form_verdict(spec, ref, tree, constant_ignored(spec))
     hints = " ".join(reading_hints(tree))
     with np.errstate(all="ignore"):  # ratios of values near the float limit overflow
@@ -232,7 +233,7 @@ def _equivalent(tree: Expr, ref: _Reference, values: np.ndarray, deadline: Deadl
 
 def constant_ignored(spec: SymbolicSpec) -> str:
     """What a formula right up to an additive constant is told."""
-    names = [n for n in spec.variables if n in spec.up_to_constant]
+    names = [n for n in spec.variables if n in spec.constant_in]
     detail = "" if len(names) == len(spec.variables) else f" (one independent of {', '.join(names)})"
     return (f"Your expression differs from the expected one by an additive constant{detail}, "
             "which this part ignores: only changes of its value matter.")
@@ -338,7 +339,7 @@ def build_symbolic(record: dict, common: Common):
     form = record.get("form") or ()
     if not isinstance(form, (list, tuple)) or not all(isinstance(f, str) for f in form):
         raise records.RecordError("field 'form' must be a list of strings")
-    spec = SymbolicSpec(records.variables(record), **common.tolerances(("rtol",)),
+    spec = SymbolicSpec(records.variables(record), **common.relative_tolerance(),
                         misconceptions=common.misconceptions, form=tuple(form),
                         reveal=common.reveal, up_to_constant=records.constant_in(record))
     return spec, expected

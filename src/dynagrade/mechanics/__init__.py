@@ -28,9 +28,11 @@ Argument convention
     every public signature against this list.
 
 Types
-    Every public function carries type hints.  Scalars and vectors are accepted as floats
-    or numpy arrays (``ArrayLike`` of :mod:`dynagrade.mechanics._common`) and returned as
-    ``Quantity`` (a float or an array), so one call evaluates a whole grid of values.
+    Every public function carries type hints.  A quantity a function computes with is a
+    ``Quantity`` of :mod:`dynagrade.mechanics._common` (a float or a numpy array, so one
+    call evaluates a whole grid of values) and results are returned as one; an argument
+    the function first converts to an array (a vector, a list of masses or times) is
+    ``ArrayLike`` and may also be a list or a tuple.
 
 Imports
     Importing a core module does not import scipy: the functions that integrate, solve or

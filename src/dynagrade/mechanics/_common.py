@@ -5,19 +5,28 @@ the other way round), so this module imports nothing of dynagrade.
 """
 from __future__ import annotations
 
-from typing import Callable, Union
+from typing import Callable, TypeAlias
 
 import numpy as np
 import numpy.typing as npt
 
-ArrayLike = npt.ArrayLike
-"""An input quantity: a float, a sequence of floats (a vector) or a numpy array."""
+Quantity: TypeAlias = float | np.ndarray
+"""A quantity, given or computed: a float, or a numpy array of values evaluated element by
+element.  Functions that compute with an argument directly (``E / (2 (1 + nu))``) take it
+as a Quantity, and return one: a float for floats, an array when an input was an array."""
 
-Quantity = Union[float, np.ndarray]
-"""A computed quantity: a float, or an array when the inputs were arrays or vectors."""
+ArrayLike: TypeAlias = npt.ArrayLike
+"""Anything numpy turns into an array: a float, a sequence of floats (a vector, a list of
+times) or an array.  Only for arguments a function first converts with ``as_floats`` (or
+another numpy function); a sequence or a string supports no arithmetic, so an argument
+that is computed with directly is a Quantity instead."""
 
-Field = Callable[..., ArrayLike]
+Field: TypeAlias = Callable[..., Quantity]
 """A function of position, time or state that returns a quantity (a force or a field)."""
+
+Function: TypeAlias = Callable[[float], float]
+"""A real function of one real variable (an acceleration a(t), a shape psi(x)): what
+scipy's quadrature and root finding call, one float at a time."""
 
 
 def as_floats(values: ArrayLike) -> np.ndarray:

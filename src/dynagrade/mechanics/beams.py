@@ -17,33 +17,33 @@ from dynagrade.mechanics._common import ArrayLike, Quantity
 SUPPORTS = ("simply supported", "cantilever", "clamped-clamped", "free-free", "clamped-pinned")
 
 
-def bending_wave_parameter(EI: ArrayLike, rhoA: ArrayLike) -> Quantity:
+def bending_wave_parameter(EI: Quantity, rhoA: Quantity) -> Quantity:
     """Beam constant a = sqrt(E I / (rho A)) (in m^2/s) of the dispersion relation, Section 5.3.3."""
     return np.sqrt(EI / rhoA)
 
 
-def wavelength(k: ArrayLike) -> Quantity:
+def wavelength(k: Quantity) -> Quantity:
     """Wavelength lambda = 2 pi / k of a harmonic wave exp(i (k x - omega t)) of wavenumber k,
     Section 5.3."""
     return 2 * np.pi / k
 
 
-def flexural_frequency(k: ArrayLike, EI: ArrayLike, rhoA: ArrayLike) -> Quantity:
+def flexural_frequency(k: Quantity, EI: Quantity, rhoA: Quantity) -> Quantity:
     """Angular frequency omega = k^2 sqrt(EI / (rho A)) of a flexural wave of wavenumber k, Section 5.3.3."""
     return k**2 * bending_wave_parameter(EI, rhoA)
 
 
-def flexural_wavenumber(omega: ArrayLike, EI: ArrayLike, rhoA: ArrayLike) -> Quantity:
+def flexural_wavenumber(omega: Quantity, EI: Quantity, rhoA: Quantity) -> Quantity:
     """Wavenumber k = sqrt(omega / sqrt(EI / (rho A))) of a flexural wave, Section 5.3.3."""
     return np.sqrt(omega / bending_wave_parameter(EI, rhoA))
 
 
-def flexural_phase_speed(omega: ArrayLike, EI: ArrayLike, rhoA: ArrayLike) -> Quantity:
+def flexural_phase_speed(omega: Quantity, EI: Quantity, rhoA: Quantity) -> Quantity:
     """Phase speed c_p = omega / k = sqrt(omega) (EI / (rho A))^(1/4) of flexural waves, Section 5.3.3."""
     return omega / flexural_wavenumber(omega, EI, rhoA)
 
 
-def flexural_group_speed(omega: ArrayLike, EI: ArrayLike, rhoA: ArrayLike) -> Quantity:
+def flexural_group_speed(omega: Quantity, EI: Quantity, rhoA: Quantity) -> Quantity:
     """Group speed c_g = d omega / d k = 2 c_p of flexural waves, Section 5.3.3."""
     return 2.0 * bending_wave_parameter(EI, rhoA) * flexural_wavenumber(omega, EI, rhoA)
 
@@ -68,7 +68,7 @@ def characteristic_function(beta_L: ArrayLike, support: str) -> Quantity:
     raise ValueError(f"support must be one of {SUPPORTS}")
 
 
-def beam_eigenvalues(support: str, n: int) -> Quantity:
+def beam_eigenvalues(support: str, n: int) -> np.ndarray:
     """First n positive roots beta_j L of the characteristic equation, Section 5.3.3.
 
     Found by brentq, the j-th root bracketed in [j pi, (j + 1) pi] except for the
@@ -81,20 +81,21 @@ def beam_eigenvalues(support: str, n: int) -> Quantity:
     shift = -1 if support == "cantilever" else 0
     roots = []
     for jj in j:
-        a, b = (jj + shift) * np.pi, (jj + shift + 1) * np.pi
+        a, b = float((jj + shift) * np.pi), float((jj + shift + 1) * np.pi)
         if support == "cantilever" and jj == 1:
             a = 0.0
-        roots.append(brentq(characteristic_function, a, b, args=(support,), xtol=1e-14))
+        roots.append(brentq(lambda bL: float(characteristic_function(bL, support)), a, b,
+                            xtol=1e-14))
     return np.array(roots)
 
 
-def beam_natural_frequencies(EI: ArrayLike, rhoA: ArrayLike, L: ArrayLike, support: str,
+def beam_natural_frequencies(EI: Quantity, rhoA: Quantity, L: Quantity, support: str,
                              n: int) -> Quantity:
     """First n natural angular frequencies omega_j = (beta_j L)^2 sqrt(EI/(rho A)) / L^2, Section 5.3.3."""
     return beam_eigenvalues(support, n) ** 2 / L**2 * bending_wave_parameter(EI, rhoA)
 
 
-def cantilever_mode_shape(x: ArrayLike, L: ArrayLike, j: int) -> Quantity:
+def cantilever_mode_shape(x: ArrayLike, L: Quantity, j: int) -> Quantity:
     """Mode shape W_j(x) of the j-th mode of a cantilever clamped at x = 0 (W_j(L) = 2 (-1)^(j+1)), Section 5.3.3.
 
     W = cosh(bx) - cos(bx) - s (sinh(bx) - sin(bx)), s = (cos bL + cosh bL)/(sin bL + sinh bL).

@@ -4,36 +4,38 @@ Examples 1.11, 1.12 and 1.14.  SI units.
 """
 from __future__ import annotations
 
+from typing import Iterable
+
 import numpy as np
 
 from dynagrade.mechanics._common import ArrayLike, Field, Quantity
 
 
-def particle_kinetic_energy(m: ArrayLike, v: ArrayLike) -> Quantity:
+def particle_kinetic_energy(m: Quantity, v: ArrayLike) -> Quantity:
     """Kinetic energy T = m |v|^2 / 2, eq. (1.87); v a speed or a velocity vector (last axis)."""
     v = np.asarray(v, dtype=float)
     speed_sq = v**2 if v.ndim == 0 else np.sum(v**2, axis=-1)
     return 0.5 * m * speed_sq
 
 
-def gravity_potential(m: ArrayLike, r: ArrayLike, g: ArrayLike) -> Quantity:
+def gravity_potential(m: Quantity, r: ArrayLike, g: ArrayLike) -> Quantity:
     """Potential energy of gravity V(r) = -m r . g for the gravity vector g, eq. (1.96)."""
     return -m * np.sum(np.asarray(r, dtype=float) * np.asarray(g, dtype=float), axis=-1)
 
 
-def spring_potential(k: ArrayLike, x: ArrayLike, x0: ArrayLike = 0.0) -> Quantity:
+def spring_potential(k: Quantity, x: ArrayLike, x0: Quantity = 0.0) -> Quantity:
     """Potential energy of a linear spring V = k (x - x0)^2 / 2, eq. (1.97)."""
     return 0.5 * k * (np.asarray(x, dtype=float) - x0) ** 2
 
 
-def spring_potential_of_stretch(k: ArrayLike, stretch: ArrayLike) -> Quantity:
+def spring_potential_of_stretch(k: Quantity, stretch: ArrayLike) -> Quantity:
     """Potential energy of a linear spring stretched (or compressed) by ``stretch``, k s^2/2
     (eq. 1.97, the form used in eqs. 1.107 and 1.124)."""
     return 0.5 * k * np.asarray(stretch, dtype=float) ** 2
 
 
-def work_along_path(force: Field, path: Field, velocity: Field, t1: ArrayLike,
-                    t2: ArrayLike) -> float:
+def work_along_path(force: Field, path: Field, velocity: Field, t1: float,
+                    t2: float) -> float:
     """Work of a force along a parametrised path, W12 = integral F . (dr/dt) dt, eq. (1.87),
     by quadrature.  ``path(t)`` and ``velocity(t) = dr/dt`` are callables returning vectors;
     ``force(r, v)`` gets the position and the velocity (so friction and drag can be given;
@@ -47,12 +49,12 @@ def work_along_path(force: Field, path: Field, velocity: Field, t1: ArrayLike,
     return value
 
 
-def work_from_potential(V1: ArrayLike, V2: ArrayLike) -> Quantity:
+def work_from_potential(V1: Quantity, V2: Quantity) -> Quantity:
     """Work of a conservative force between two points, W12 = V(r1) - V(r2), eq. (1.99)."""
     return V1 - V2
 
 
-def speed_after_work(m: ArrayLike, v1: ArrayLike, W12: ArrayLike) -> Quantity:
+def speed_after_work(m: Quantity, v1: Quantity, W12: Quantity) -> Quantity:
     """Speed after work W12 was done on a particle with speed v1, from the work-energy
     balance T2 - T1 = W12, eq. (1.87).  NaN when the work exceeds the kinetic energy."""
     T2 = particle_kinetic_energy(m, v1) + W12
@@ -72,7 +74,7 @@ def curl(force: Field, r: ArrayLike, step_size: float = 1e-5) -> Quantity:
     return np.array([jac[2, 1] - jac[1, 2], jac[0, 2] - jac[2, 0], jac[1, 0] - jac[0, 1]])
 
 
-def is_conservative(force: Field, points: ArrayLike, scale: float = 1.0,
+def is_conservative(force: Field, points: Iterable[ArrayLike], scale: float = 1.0,
                     step_size: float = 1e-5, tol: float = 1e-6) -> bool:
     """Whether a position-dependent force field has zero curl at all the given sample points
     (to the relative tolerance ``tol`` of a typical force ``scale``), the test behind
@@ -80,38 +82,38 @@ def is_conservative(force: Field, points: ArrayLike, scale: float = 1.0,
     return all(np.linalg.norm(curl(force, p, step_size)) <= tol * scale for p in points)
 
 
-def friction_work_on_floor(mu: ArrayLike, m: ArrayLike, g: ArrayLike,
-                           distance: ArrayLike) -> Quantity:
+def friction_work_on_floor(mu: Quantity, m: Quantity, g: Quantity,
+                           distance: Quantity) -> Quantity:
     """Work of sliding friction on a horizontal floor over a distance, -mu m g dx, eq. (1.89)."""
     return -mu * m * g * distance
 
 
-def sliding_stopping_distance(v0: ArrayLike, mu: ArrayLike, g: ArrayLike) -> Quantity:
+def sliding_stopping_distance(v0: Quantity, mu: Quantity, g: Quantity) -> Quantity:
     """Distance a particle sliding on a horizontal floor travels before friction stops it,
     dx = v0^2 / (2 mu g), eq. (1.91): eq. (1.128) with alpha = 0, as the notes remark."""
     return v0**2 / (2.0 * (g * mu))
 
 
-def height_gain(v1: ArrayLike, v2: ArrayLike, g: ArrayLike) -> Quantity:
+def height_gain(v1: Quantity, v2: Quantity, g: Quantity) -> Quantity:
     """Height gained while gravity alone slows a particle from speed v1 to v2,
     (v1^2 - v2^2)/(2 g), from conservation of energy eq. (1.102) as in eq. (1.106)."""
     return (v1**2 - v2**2) / (2.0 * g)
 
 
-def spring_launch_height(k: ArrayLike, compression: ArrayLike, m: ArrayLike,
-                         g: ArrayLike) -> Quantity:
+def spring_launch_height(k: Quantity, compression: Quantity, m: Quantity,
+                         g: Quantity) -> Quantity:
     """Greatest height of a particle launched upward from rest by a spring compressed by
     dx, x_2,max = k dx^2 / (2 m g), eq. (1.108)."""
     return spring_potential_of_stretch(k, compression) / (m * g)
 
 
-def slingshot_stretch(dx: ArrayLike, l0: ArrayLike) -> Quantity:
+def slingshot_stretch(dx: Quantity, l0: Quantity) -> Quantity:
     """Elongation of a slingshot spring of natural length l0 when its end is pulled
     sideways by dx, sqrt(dx^2 + l0^2) - l0 (Example 1.14, eq. 1.124)."""
     return np.hypot(dx, l0) - l0
 
 
-def slingshot_speed(k: ArrayLike, m: ArrayLike, dx: ArrayLike, l0: ArrayLike) -> Quantity:
+def slingshot_speed(k: Quantity, m: Quantity, dx: Quantity, l0: Quantity) -> Quantity:
     """Speed of the slingshot's particle when the spring is back at its natural length,
     v = sqrt(k/m) (sqrt(dx^2 + l0^2) - l0), eq. (1.125)."""
     return np.sqrt(k / m) * slingshot_stretch(dx, l0)

@@ -14,7 +14,7 @@ import numpy as np
 import sympy as sp
 
 from dynagrade.mechanics import lagrange
-from dynagrade.mechanics._common import ArrayLike, Field, Quantity
+from dynagrade.mechanics._common import Function, Quantity
 from dynagrade.mechanics.lagrange import Coordinates
 
 
@@ -50,7 +50,7 @@ def equilibrium_positions(V: sp.Expr, q: Coordinates) -> list[dict[sp.Expr, sp.E
     return [{back[d]: value for d, value in sol.items()} for sol in solutions]
 
 
-def equilibrium_positions_in_interval(dV_dq: Field, a: float, b: float,
+def equilibrium_positions_in_interval(dV_dq: Function, a: float, b: float,
                                       samples: int = 2001) -> list[float]:
     """Roots of a 1-DOF equilibrium condition dV/dq (a callable) on [a, b], Section 4.2.
 
@@ -81,7 +81,7 @@ def linearized_mass_matrix(T: sp.Expr, q: Coordinates, t: sp.Symbol,
     return sp.simplify(M.subs(q_eq))
 
 
-def stability(K: ArrayLike, tol: float = 1e-12) -> str:
+def stability(K: Quantity, tol: float = 1e-12) -> str:
     """Stability of an equilibrium from its (numeric) stiffness matrix K, Section 4.2.
 
     "stable" if K is positive definite, "unstable" if it has a negative eigenvalue,

@@ -33,7 +33,7 @@ def gyroscopic_moment(principal_moments: ArrayLike, omega: ArrayLike,
 
 
 def perturbation_growth_exponent_squared(principal_moments: ArrayLike, axis: int,
-                                         spin_rate: ArrayLike) -> Quantity:
+                                         spin_rate: Quantity) -> Quantity:
     """Squared growth rate of small perturbations of a steady rotation with rate Omega about
     the principal axis k: lambda^2 = Omega^2 (I_k - I_i)(I_j - I_k) / (I_i I_j), with i, j
     the other two axes. lambda^2 < 0: the perturbation oscillates (stable rotation);
@@ -45,21 +45,21 @@ def perturbation_growth_exponent_squared(principal_moments: ArrayLike, axis: int
     return spin_rate**2 * (ik - inertia[i]) * (inertia[j] - ik) / (inertia[i] * inertia[j])
 
 
-def wobble_frequency(principal_moments: ArrayLike, axis: int, spin_rate: ArrayLike) -> Quantity:
+def wobble_frequency(principal_moments: Quantity, axis: int, spin_rate: Quantity) -> Quantity:
     """Angular frequency of the small wobble of a stable rotation about principal axis k,
     sqrt(-lambda^2) (Section 3.4.4)."""
     return np.sqrt(-perturbation_growth_exponent_squared(principal_moments, axis, spin_rate))
 
 
-def is_stable_rotation_axis(principal_moments: ArrayLike, axis: int) -> bool:
+def is_stable_rotation_axis(principal_moments: Quantity, axis: int) -> bool:
     """True if torque-free rotation about principal axis k is (linearly) stable: k is the
     axis of the largest or of the smallest of three distinct principal moments
     (Section 3.4.4)."""
     return bool(perturbation_growth_exponent_squared(principal_moments, axis, 1.0) < 0.0)
 
 
-def body_precession_rate(axial_moment: ArrayLike, transverse_moment: ArrayLike,
-                         axial_rate: ArrayLike) -> Quantity:
+def body_precession_rate(axial_moment: Quantity, transverse_moment: Quantity,
+                         axial_rate: Quantity) -> Quantity:
     """Rate at which omega circles the symmetry axis of a torque-free axisymmetric body,
     seen in the body frame, Omega_p = (I3 - I1) omega3 / I1 (Section 3.4.4)."""
     return (axial_moment - transverse_moment) * axial_rate / transverse_moment

@@ -19,7 +19,7 @@ def absolute_velocity(v_origin: ArrayLike, omega: ArrayLike, r: ArrayLike,
     return np.asarray(v_origin, dtype=float) + cross(omega, r) + np.asarray(v_rel, float)
 
 
-def coriolis_acceleration(omega: ArrayLike, v_rel: ArrayLike) -> Quantity:
+def coriolis_acceleration(omega: ArrayLike, v_rel: ArrayLike) -> np.ndarray:
     """Coriolis acceleration 2 Omega x v_rel (Section 3.4.2)."""
     return 2.0 * cross(omega, v_rel)
 
@@ -30,8 +30,8 @@ def frame_centripetal_acceleration(omega: ArrayLike, r: ArrayLike) -> Quantity:
     return cross(omega, cross(omega, r))
 
 
-def absolute_acceleration(a_origin: ArrayLike, omega: ArrayLike, omega_dot: ArrayLike, r: ArrayLike,
-                          v_rel: ArrayLike, a_rel: ArrayLike) -> Quantity:
+def absolute_acceleration(a_origin: ArrayLike, omega: Quantity, omega_dot: ArrayLike, r: Quantity,
+                          v_rel: Quantity, a_rel: ArrayLike) -> Quantity:
     """Absolute acceleration of a point moving in a rotating frame,
     a = a_O' + Omega_dot x r + Omega x (Omega x r) + 2 Omega x v_rel + a_rel (Section 3.4.2)."""
     return (np.asarray(a_origin, dtype=float) + cross(omega_dot, r)
@@ -39,8 +39,8 @@ def absolute_acceleration(a_origin: ArrayLike, omega: ArrayLike, omega_dot: Arra
             + np.asarray(a_rel, dtype=float))
 
 
-def relative_acceleration(force: ArrayLike, m: ArrayLike, a_origin: ArrayLike, omega: ArrayLike,
-                          omega_dot: ArrayLike, r: ArrayLike, v_rel: ArrayLike) -> Quantity:
+def relative_acceleration(force: ArrayLike, m: Quantity, a_origin: Quantity, omega: Quantity,
+                          omega_dot: Quantity, r: Quantity, v_rel: Quantity) -> Quantity:
     """Acceleration seen in the rotating frame from the balance of linear momentum,
     m a_rel = F - m [a_O' + Omega_dot x r + Omega x (Omega x r) + 2 Omega x v_rel]
     (fictitious forces, Section 3.4.3)."""
@@ -49,30 +49,30 @@ def relative_acceleration(force: ArrayLike, m: ArrayLike, a_origin: ArrayLike, o
     return np.asarray(force, dtype=float) / m - frame_terms
 
 
-def bead_radial_position(t: ArrayLike, r0: ArrayLike, radial_speed0: ArrayLike,
-                         omega: ArrayLike) -> Quantity:
+def bead_radial_position(t: Quantity, r0: Quantity, radial_speed0: Quantity,
+                         omega: Quantity) -> Quantity:
     """Distance of a bead sliding without friction on a rod that spins at constant rate
     Omega in a horizontal plane: r_ddot = Omega^2 r, so
     r(t) = r0 cosh(Omega t) + (v0/Omega) sinh(Omega t) (Section 3.4.3)."""
     return r0 * np.cosh(omega * t) + radial_speed0 / omega * np.sinh(omega * t)
 
 
-def bead_radial_speed(t: ArrayLike, r0: ArrayLike, radial_speed0: ArrayLike,
-                      omega: ArrayLike) -> Quantity:
+def bead_radial_speed(t: Quantity, r0: Quantity, radial_speed0: Quantity,
+                      omega: Quantity) -> Quantity:
     """Radial speed of the bead on the spinning rod,
     r_dot(t) = r0 Omega sinh(Omega t) + v0 cosh(Omega t) (Section 3.4.3)."""
     return r0 * omega * np.sinh(omega * t) + radial_speed0 * np.cosh(omega * t)
 
 
-def bead_normal_force(m: ArrayLike, omega: ArrayLike, radial_speed: ArrayLike) -> Quantity:
+def bead_normal_force(m: Quantity, omega: float, radial_speed: float) -> Quantity:
     """Force of the spinning rod on the bead, perpendicular to the rod in the direction of
     rotation, N = 2 m Omega r_dot: the rod supplies the Coriolis term (Section 3.4.3).
     Signed: negative when the bead moves inward."""
     return m * float(coriolis_acceleration([0.0, 0.0, omega], [radial_speed, 0.0, 0.0])[1])
 
 
-def eastward_deflection_of_falling_body(h: ArrayLike, latitude: ArrayLike, earth_rate: ArrayLike,
-                                        g: ArrayLike) -> Quantity:
+def eastward_deflection_of_falling_body(h: Quantity, latitude: Quantity, earth_rate: Quantity,
+                                        g: Quantity) -> Quantity:
     """Eastward deflection of a body dropped from rest from height h at latitude lambda,
     to first order in the Earth's rate Omega: d = (1/3) Omega g cos(lambda) t^3 with the
     fall time t = sqrt(2 h / g) (Coriolis term, Section 3.4.3)."""

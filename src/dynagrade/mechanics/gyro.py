@@ -13,11 +13,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from dynagrade.mechanics._common import ArrayLike, Quantity
+from dynagrade.mechanics._common import Quantity
 
 
-def body_angular_velocity_from_euler_rates(theta: ArrayLike, phi: ArrayLike, psi_rate: ArrayLike,
-                                           theta_rate: ArrayLike, phi_rate: ArrayLike) -> Quantity:
+def body_angular_velocity_from_euler_rates(theta: Quantity, phi: Quantity, psi_rate: Quantity,
+                                           theta_rate: Quantity, phi_rate: Quantity) -> Quantity:
     """Body-frame components of the angular velocity from the Euler-angle rates,
     omega = (psi' sin(theta) sin(phi) + theta' cos(phi),
              psi' sin(theta) cos(phi) - theta' sin(phi),
@@ -35,9 +35,9 @@ class PrecessionRates:
     fast: float
 
 
-def steady_precession_rates(m: ArrayLike, g: ArrayLike, l: ArrayLike, transverse_moment: ArrayLike,
-                            axial_moment: ArrayLike, axial_rate: ArrayLike,
-                            theta: ArrayLike) -> PrecessionRates:
+def steady_precession_rates(m: Quantity, g: Quantity, l: Quantity, transverse_moment: Quantity,
+                            axial_moment: Quantity, axial_rate: Quantity,
+                            theta: Quantity) -> PrecessionRates:
     """Precession rates psi' of steady precession at constant tilt theta (0 < theta < pi/2):
     angular momentum balance about O gives m g l = psi' (I3 omega3 - I1 psi' cos(theta)),
     a quadratic in psi' whose smaller root is the slow and larger the fast precession
@@ -51,15 +51,15 @@ def steady_precession_rates(m: ArrayLike, g: ArrayLike, l: ArrayLike, transverse
     return PrecessionRates(slow=float(slow), fast=float(fast))
 
 
-def minimum_spin_for_steady_precession(m: ArrayLike, g: ArrayLike, l: ArrayLike,
-                                       transverse_moment: ArrayLike, axial_moment: ArrayLike,
-                                       theta: ArrayLike) -> Quantity:
+def minimum_spin_for_steady_precession(m: Quantity, g: Quantity, l: Quantity,
+                                       transverse_moment: Quantity, axial_moment: Quantity,
+                                       theta: Quantity) -> Quantity:
     """Smallest axial rate omega3 for which steady precession at tilt theta exists,
     omega3_min = sqrt(4 I1 m g l cos(theta)) / I3 (Section 3.5.2)."""
     return np.sqrt(4.0 * transverse_moment * m * g * l * np.cos(theta)) / axial_moment
 
 
-def gyroscopic_precession_rate(moment: ArrayLike, spin_angular_momentum: ArrayLike) -> Quantity:
+def gyroscopic_precession_rate(moment: Quantity, spin_angular_momentum: Quantity) -> Quantity:
     """Precession rate of a gyroscope whose spin angular momentum H (along its axis) is
     turned by a moment M perpendicular to the axis and to the vertical: from
     dH/dt = psi' e3 x H, psi' = M / (H sin(theta)); for a horizontal axis psi' = M / H
@@ -67,8 +67,8 @@ def gyroscopic_precession_rate(moment: ArrayLike, spin_angular_momentum: ArrayLi
     return moment / spin_angular_momentum
 
 
-def fast_top_precession_rate(m: ArrayLike, g: ArrayLike, l: ArrayLike, axial_moment: ArrayLike,
-                             axial_rate: ArrayLike) -> Quantity:
+def fast_top_precession_rate(m: Quantity, g: Quantity, l: Quantity, axial_moment: Quantity,
+                             axial_rate: Quantity) -> Quantity:
     """Slow precession rate of a fast top, psi' = m g l / (I3 omega3), independent of the
     tilt (fast-top approximation, Section 3.5.2)."""
     return gyroscopic_precession_rate(m * g * l, axial_moment * axial_rate)

@@ -8,13 +8,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from dynagrade.mechanics._common import ArrayLike, Field, Quantity, spatial_vector
+from dynagrade.mechanics._common import ArrayLike, Function, Quantity, spatial_vector
 
 
 # --- 1.1.1 Cartesian frame: trajectories from a(t), a(v), a(x) ----------------------------
 
-def velocity_from_acceleration(acceleration: ArrayLike, t: ArrayLike, v0: ArrayLike,
-                               t0: ArrayLike = 0.0) -> Quantity:
+def velocity_from_acceleration(acceleration: Function, t: float, v0: float,
+                               t0: float = 0.0) -> float:
     """Velocity at time t from a known 1D acceleration a(t) (a callable), eq. (1.9):
     v(t) = v(t0) + integral_{t0}^{t} a(tau) dtau, by quadrature."""
     from scipy.integrate import quad
@@ -22,8 +22,8 @@ def velocity_from_acceleration(acceleration: ArrayLike, t: ArrayLike, v0: ArrayL
     return v0 + integral
 
 
-def position_from_acceleration(acceleration: Field, t: ArrayLike, x0: ArrayLike, v0: ArrayLike,
-                               t0: ArrayLike = 0.0) -> Quantity:
+def position_from_acceleration(acceleration: Function, t: float, x0: float, v0: float,
+                               t0: float = 0.0) -> float:
     """Position at time t from a known 1D acceleration a(t), eq. (1.10) with (1.9):
     x(t) = x0 + v0 (t - t0) + integral_{t0}^{t} (t - tau) a(tau) dtau (both integrations in one)."""
     from scipy.integrate import quad
@@ -32,14 +32,14 @@ def position_from_acceleration(acceleration: Field, t: ArrayLike, x0: ArrayLike,
     return x0 + v0 * (t - t0) + integral
 
 
-def release_velocity(t: ArrayLike, v0: ArrayLike, g: ArrayLike) -> Quantity:
+def release_velocity(t: Quantity, v0: ArrayLike, g: ArrayLike) -> Quantity:
     """Velocity vector of a particle released with velocity v0 under gravity g (a vector,
     e.g. (0, -9.81, 0)), eq. (1.11): v(t) = v(0) + g t.  Broadcasts over a column of times."""
     t = np.asarray(t, dtype=float)[..., None]
     return np.asarray(v0, dtype=float) + np.asarray(g, dtype=float) * t
 
 
-def release_position(t: ArrayLike, r0: ArrayLike, v0: ArrayLike, g: ArrayLike) -> Quantity:
+def release_position(t: Quantity, r0: ArrayLike, v0: ArrayLike, g: ArrayLike) -> Quantity:
     """Position vector of a particle released from r0 with velocity v0 under gravity g
     (a vector), eq. (1.12): r(t) = g t^2/2 + v(0) t + r(0)."""
     t = np.asarray(t, dtype=float)[..., None]
@@ -47,80 +47,80 @@ def release_position(t: ArrayLike, r0: ArrayLike, v0: ArrayLike, g: ArrayLike) -
             + 0.5 * np.asarray(g, dtype=float) * t**2)
 
 
-def speed_at_constant_acceleration(t: ArrayLike, v0: ArrayLike, a: ArrayLike) -> Quantity:
+def speed_at_constant_acceleration(t: Quantity, v0: Quantity, a: Quantity) -> Quantity:
     """Speed (or path velocity s') after a time t under a constant acceleration a (or constant
     tangential acceleration a_t = s''), eq. (1.9) with a = const (cf. eq. 1.11): v = v0 + a t."""
     return v0 + a * t
 
 
-def distance_at_constant_acceleration(t: ArrayLike, v0: ArrayLike, a: ArrayLike) -> Quantity:
+def distance_at_constant_acceleration(t: Quantity, v0: Quantity, a: Quantity) -> Quantity:
     """Distance (or path length s along a space curve) covered in a time t from the speed v0
     under a constant (tangential) acceleration a, eq. (1.10) with a = const (cf. eq. 1.12):
     s = v0 t + a t^2 / 2."""
     return v0 * t + 0.5 * a * t**2
 
 
-def time_from_rest_over_distance(s: ArrayLike, a: ArrayLike) -> Quantity:
+def time_from_rest_over_distance(s: Quantity, a: Quantity) -> Quantity:
     """Time to cover the distance s from rest under a constant acceleration a > 0, eq. (1.12)
     solved for t: s = a t^2 / 2, so t = sqrt(2 s / a)."""
     return np.sqrt(2.0 * s / a)
 
 
-def linear_drag_velocity(t: ArrayLike, v0: ArrayLike, k: ArrayLike) -> Quantity:
+def linear_drag_velocity(t: ArrayLike, v0: Quantity, k: Quantity) -> Quantity:
     """Velocity under linear (Stokes) drag a = -k v, eq. (1.14): v(t) = v0 exp(-k t).
     Component-wise for vectors, eq. (1.15)."""
     return v0 * np.exp(-k * np.asarray(t, dtype=float))
 
 
-def linear_drag_position(t: ArrayLike, v0: ArrayLike, k: ArrayLike,
-                         x0: ArrayLike = 0.0) -> Quantity:
+def linear_drag_position(t: ArrayLike, v0: Quantity, k: Quantity,
+                         x0: Quantity = 0.0) -> Quantity:
     """Position under linear drag, eq. (1.14) integrated once more with eq. (1.10):
     x(t) = x0 + v0 (1 - exp(-k t)) / k."""
     return x0 + v0 * (1.0 - np.exp(-k * np.asarray(t, dtype=float))) / k
 
 
-def linear_drag_time_to_speed(v0: ArrayLike, v: ArrayLike, k: ArrayLike) -> Quantity:
+def linear_drag_time_to_speed(v0: Quantity, v: Quantity, k: Quantity) -> Quantity:
     """Time for linear drag to slow the particle from v0 to v (same sign), eq. (1.13)/(1.14):
     t = ln(v0/v)/k."""
     return np.log(v0 / v) / k
 
 
-def linear_drag_distance_to_speed(v0: ArrayLike, v: ArrayLike, k: ArrayLike) -> Quantity:
+def linear_drag_distance_to_speed(v0: Quantity, v: Quantity, k: Quantity) -> Quantity:
     """Distance covered while linear drag slows the particle from v0 to v, from
     a(x) = v dv/dx = -k v (eq. 1.17): x = (v0 - v)/k."""
     return (v0 - v) / k
 
 
-def half_life(decay_rate: ArrayLike) -> Quantity:
+def half_life(decay_rate: Quantity) -> Quantity:
     """Half-life ln(2) / k of a quantity decaying as exp(-k t), eq. (1.14): the time for
     linear drag to halve the speed."""
     return linear_drag_time_to_speed(1.0, 0.5, decay_rate)
 
 
-def linear_drag_coasting_distance(v0: ArrayLike, k: ArrayLike) -> Quantity:
+def linear_drag_coasting_distance(v0: Quantity, k: Quantity) -> Quantity:
     """Total distance until rest under linear drag (t -> infinity), v0/k, limit of eq. (1.14)."""
     return v0 / k
 
 
-def quadratic_drag_velocity(t: ArrayLike, v0: ArrayLike, k: ArrayLike) -> Quantity:
+def quadratic_drag_velocity(t: ArrayLike, v0: Quantity, k: Quantity) -> Quantity:
     """Velocity under quadratic (Rayleigh) drag a = -k v^2 (v0 > 0), separation of variables
     as in eq. (1.13), footnote 2: v(t) = v0 / (1 + k v0 t)."""
     return v0 / (1.0 + k * v0 * np.asarray(t, dtype=float))
 
 
-def quadratic_drag_position(t: ArrayLike, v0: ArrayLike, k: ArrayLike,
-                            x0: ArrayLike = 0.0) -> Quantity:
+def quadratic_drag_position(t: ArrayLike, v0: Quantity, k: Quantity,
+                            x0: Quantity = 0.0) -> Quantity:
     """Position under quadratic drag a = -k v^2: x(t) = x0 + ln(1 + k v0 t)/k (eq. 1.10)."""
     return x0 + np.log1p(k * v0 * np.asarray(t, dtype=float)) / k
 
 
-def quadratic_drag_distance_to_speed(v0: ArrayLike, v: ArrayLike, k: ArrayLike) -> Quantity:
+def quadratic_drag_distance_to_speed(v0: Quantity, v: Quantity, k: Quantity) -> Quantity:
     """Distance over which quadratic drag slows the particle from v0 to v, eq. (1.17):
     x = ln(v0/v)/k."""
     return np.log(v0 / v) / k
 
 
-def time_from_velocity_field(velocity: Field, x0: ArrayLike, x: ArrayLike) -> Quantity:
+def time_from_velocity_field(velocity: Function, x0: float, x: float) -> float:
     """Time to travel from x0 to x when the velocity is a known function v(x) of position
     (a callable, no sign change on the way), eq. (1.16): t = integral dx / v(x)."""
     from scipy.integrate import quad
@@ -128,8 +128,8 @@ def time_from_velocity_field(velocity: Field, x0: ArrayLike, x: ArrayLike) -> Qu
     return integral
 
 
-def speed_from_acceleration_field(acceleration: ArrayLike, x0: ArrayLike, x: ArrayLike,
-                                  v0: ArrayLike) -> Quantity:
+def speed_from_acceleration_field(acceleration: Function, x0: float, x: float,
+                                  v0: float) -> float:
     """Speed at position x when the acceleration is a known function a(x) (a callable),
     eq. (1.17): v^2/2 = v0^2/2 + integral_{x0}^{x} a(s) ds.  NaN where x is not reached."""
     from scipy.integrate import quad
@@ -138,13 +138,13 @@ def speed_from_acceleration_field(acceleration: ArrayLike, x0: ArrayLike, x: Arr
     return float(np.sqrt(v_sq)) if v_sq >= 0.0 else float("nan")
 
 
-def gravity_at_height(x: ArrayLike, g: ArrayLike, R: ArrayLike) -> Quantity:
+def gravity_at_height(x: ArrayLike, g: Quantity, R: Quantity) -> Quantity:
     """Gravitational acceleration (magnitude) at height x above a planet of radius R with
     surface value g, g(x) = g R^2 / (R + x)^2 (the rocket of Example 1.2, eq. 1.17)."""
     return g * R**2 / (R + np.asarray(x, dtype=float)) ** 2
 
 
-def rocket_speed_at_height(x: ArrayLike, v0: ArrayLike, g: ArrayLike, R: ArrayLike) -> Quantity:
+def rocket_speed_at_height(x: ArrayLike, v0: Quantity, g: Quantity, R: Quantity) -> Quantity:
     """Speed at height x of a body launched vertically with v0 under g(x) = g R^2/(R+x)^2,
     eq. (1.17) integrated: v^2 = v0^2 - 2 g R x / (R + x).  NaN above the peak."""
     x = np.asarray(x, dtype=float)
@@ -153,7 +153,7 @@ def rocket_speed_at_height(x: ArrayLike, v0: ArrayLike, g: ArrayLike, R: ArrayLi
         return np.where(v_sq >= 0.0, np.sqrt(np.maximum(v_sq, 0.0)), np.nan)
 
 
-def rocket_peak_height(v0: ArrayLike, g: ArrayLike, R: ArrayLike) -> Quantity:
+def rocket_peak_height(v0: Quantity, g: Quantity, R: Quantity) -> Quantity:
     """Greatest height reached under g(x) = g R^2/(R+x)^2, where v of eq. (1.17) vanishes:
     h = R v0^2 / (2 g R - v0^2); infinite at or above the escape speed."""
     denominator = np.asarray(2.0 * g * R - v0**2, dtype=float)
@@ -161,7 +161,7 @@ def rocket_peak_height(v0: ArrayLike, g: ArrayLike, R: ArrayLike) -> Quantity:
     return np.where(denominator > 0.0, R * v0**2 / safe, np.inf)
 
 
-def escape_speed(g: ArrayLike, R: ArrayLike) -> Quantity:
+def escape_speed(g: Quantity, R: Quantity) -> Quantity:
     """Launch speed above which eq. (1.17) with g(x) = g R^2/(R+x)^2 never gives v = 0:
     sqrt(2 g R)."""
     return np.sqrt(2.0 * g * R)
@@ -169,7 +169,7 @@ def escape_speed(g: ArrayLike, R: ArrayLike) -> Quantity:
 
 # --- 1.1.2 constrained motion -------------------------------------------------------------
 
-def degrees_of_freedom(d: ArrayLike, k: ArrayLike = 0) -> Quantity:
+def degrees_of_freedom(d: Quantity, k: Quantity = 0) -> Quantity:
     """Degrees of freedom of a particle in d dimensions under k kinematic constraints,
     eqs. (1.2) and (1.21): d - k."""
     if not 1 <= d <= 3 or not 0 <= k <= d:
@@ -187,19 +187,19 @@ def polar_basis(phi: ArrayLike) -> tuple[Quantity, Quantity]:
     return e_r, e_phi
 
 
-def polar_velocity(r: ArrayLike, rdot: ArrayLike, phidot: ArrayLike) -> tuple[Quantity, Quantity]:
+def polar_velocity(r: Quantity, rdot: Quantity, phidot: Quantity) -> tuple[Quantity, Quantity]:
     """Polar components (v_r, v_phi) = (r', r phi') of the velocity, eq. (1.31)."""
     return rdot + 0.0 * r, r * phidot
 
 
-def polar_acceleration(r: ArrayLike, rdot: ArrayLike, rddot: ArrayLike, phidot: ArrayLike,
-                       phiddot: ArrayLike) -> tuple[Quantity, Quantity]:
+def polar_acceleration(r: Quantity, rdot: Quantity, rddot: Quantity, phidot: Quantity,
+                       phiddot: Quantity) -> tuple[Quantity, Quantity]:
     """Polar components (a_r, a_phi) = (r'' - r phi'^2, 2 r' phi' + r phi'') of the
     acceleration, eq. (1.33)."""
     return rddot - r * phidot**2, 2.0 * rdot * phidot + r * phiddot
 
 
-def polar_to_cartesian(radial: ArrayLike, circumferential: ArrayLike, phi: ArrayLike) -> Quantity:
+def polar_to_cartesian(radial: ArrayLike, circumferential: ArrayLike, phi: Quantity) -> Quantity:
     """Cartesian components of the vector radial e_r + circumferential e_phi, eq. (1.29)
     with (1.27); e.g. eq. (1.25) for the velocity."""
     e_r, e_phi = polar_basis(phi)
@@ -207,36 +207,36 @@ def polar_to_cartesian(radial: ArrayLike, circumferential: ArrayLike, phi: Array
             + np.asarray(circumferential, dtype=float)[..., None] * e_phi)
 
 
-def circular_position(r: ArrayLike, phi: ArrayLike) -> Quantity:
+def circular_position(r: Quantity, phi: Quantity) -> Quantity:
     """Position on a circle of radius r about the origin, eq. (1.18)."""
     return polar_to_cartesian(r, 0.0 * np.asarray(phi, dtype=float), phi)
 
 
-def circular_velocity(r: ArrayLike, phi: ArrayLike, phidot: ArrayLike) -> Quantity:
+def circular_velocity(r: Quantity, phi: Quantity, phidot: Quantity) -> Quantity:
     """Velocity vector on a circle of constant radius r, eq. (1.19): r phi' e_phi."""
     return polar_to_cartesian(*polar_velocity(r, 0.0, phidot), phi)
 
 
-def circular_acceleration(r: ArrayLike, phi: ArrayLike, phidot: ArrayLike,
-                          phiddot: ArrayLike) -> Quantity:
+def circular_acceleration(r: Quantity, phi: Quantity, phidot: Quantity,
+                          phiddot: Quantity) -> Quantity:
     """Acceleration vector on a circle of constant radius r, eq. (1.20):
     -r phi'^2 e_r + r phi'' e_phi."""
     return polar_to_cartesian(*polar_acceleration(r, 0.0, 0.0, phidot, phiddot), phi)
 
 
-def circular_speed(r: ArrayLike, phidot: ArrayLike) -> Quantity:
+def circular_speed(r: Quantity, phidot: Quantity) -> Quantity:
     """Speed on a circle of constant radius r at angular rate phi', v = r |phi'|,
     eqs. (1.19) and (1.53)."""
     return r * np.abs(phidot)
 
 
-def angle_from_arc_length(s: ArrayLike, R: ArrayLike) -> Quantity:
+def angle_from_arc_length(s: Quantity, R: Quantity) -> Quantity:
     """Angle swept on a circle of radius R along the path length s, phi = s/R
     (s = R phi, Example 1.6, eq. (1.53))."""
     return s / R
 
 
-def path_centripetal_acceleration(v: ArrayLike, rho: ArrayLike) -> Quantity:
+def path_centripetal_acceleration(v: Quantity, rho: Quantity) -> Quantity:
     """Magnitude of the acceleration towards the centre of curvature, v^2/rho, eqs. (1.37), (1.51)."""
     return v**2 / rho
 
@@ -251,7 +251,7 @@ def radius_of_curvature_of_graph(fp: ArrayLike, fpp: ArrayLike) -> Quantity:
         return (1.0 + np.asarray(fp, dtype=float) ** 2) ** 1.5 / np.abs(fpp)
 
 
-def parabola_radius_of_curvature(c: ArrayLike, x1: ArrayLike) -> Quantity:
+def parabola_radius_of_curvature(c: Quantity, x1: ArrayLike) -> Quantity:
     """Radius of curvature of the parabola x2 = c x1^2 at x1, eq. (1.49):
     rho = (1 + (2 c x1)^2)^(3/2) / (2 |c|)."""
     return radius_of_curvature_of_graph(2.0 * c * np.asarray(x1, dtype=float), 2.0 * c)
@@ -279,7 +279,7 @@ def principal_normal(v: ArrayLike, a: ArrayLike) -> Quantity:
     curvature, eqs. (1.44)-(1.50)."""
     a = np.asarray(a, dtype=float)
     e_t = unit_tangent(v)
-    a_n = a - tangential_acceleration(v, a)[..., None] * e_t
+    a_n = a - np.asarray(tangential_acceleration(v, a))[..., None] * e_t
     return a_n / np.linalg.norm(a_n, axis=-1, keepdims=True)
 
 
@@ -296,7 +296,7 @@ def radius_of_curvature(v: ArrayLike, a: ArrayLike) -> Quantity:
         return speed**3 / np.linalg.norm(np.cross(spatial_vector(v), spatial_vector(a)), axis=-1)
 
 
-def acceleration_magnitude(tangential: ArrayLike, normal: ArrayLike) -> Quantity:
+def acceleration_magnitude(tangential: Quantity, normal: Quantity) -> Quantity:
     """Magnitude of the acceleration from its space-curve components,
     |a| = sqrt(s''^2 + (v^2/rho)^2), e_t and e_n being orthonormal in eq. (1.51)."""
     return np.hypot(tangential, normal)
@@ -306,9 +306,9 @@ def acceleration_magnitude(tangential: ArrayLike, normal: ArrayLike) -> Quantity
 class PathAcceleration:
     """Acceleration in the space-curve frame, eq. (1.51): a = s'' e_t + (v^2/rho) e_n."""
 
-    tangential: float
-    normal: float
-    rho: float
+    tangential: Quantity
+    normal: Quantity
+    rho: Quantity
 
 
 def path_acceleration(v: ArrayLike, a: ArrayLike) -> PathAcceleration:

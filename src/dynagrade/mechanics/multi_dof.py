@@ -11,13 +11,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from dynagrade.mechanics._common import ArrayLike, Quantity
+from dynagrade.mechanics._common import ArrayLike, Quantity, as_floats
 from dynagrade.mechanics import vibrations
 
 
 # --- Section 4.4.1: equations of motion -----------------------------------------------
 
-def chain_stiffness_matrix(springs: ArrayLike, right_wall: bool = False) -> Quantity:
+def chain_stiffness_matrix(springs: ArrayLike, right_wall: bool = False) -> np.ndarray:
     """Stiffness matrix of masses in a line joined by springs, Section 4.4.1.
 
     ``springs[0]`` ties mass 1 to a fixed wall, ``springs[i]`` joins masses i and i+1;
@@ -39,20 +39,20 @@ def chain_stiffness_matrix(springs: ArrayLike, right_wall: bool = False) -> Quan
     return K
 
 
-def lumped_mass_matrix(masses: ArrayLike) -> Quantity:
+def lumped_mass_matrix(masses: ArrayLike) -> np.ndarray:
     """Diagonal mass matrix of point masses, Section 4.4.1."""
     return np.diag(np.asarray(masses, dtype=float))
 
 
 # --- Section 4.4.2: free, undamped vibrations -------------------------------------------
 
-def natural_frequencies(K: ArrayLike, M: ArrayLike) -> Quantity:
+def natural_frequencies(K: ArrayLike, M: ArrayLike) -> np.ndarray:
     """Natural angular frequencies omega_i (ascending) from det(K - omega^2 M) = 0, Section 4.4.2.
 
     Rigid-body modes (zero eigenvalues, up to round-off) give omega = 0.
     """
     from scipy.linalg import eigh
-    lam = eigh(K, M, eigvals_only=True)
+    lam = eigh(as_floats(K), as_floats(M), eigvals_only=True)
     scale = max(1.0, float(np.max(np.abs(lam))))
     lam = np.where(np.abs(lam) < 1e-12 * scale, 0.0, lam)
     if np.any(lam < 0):
@@ -60,14 +60,14 @@ def natural_frequencies(K: ArrayLike, M: ArrayLike) -> Quantity:
     return np.sqrt(lam)
 
 
-def mode_shapes(K: ArrayLike, M: ArrayLike) -> Quantity:
+def mode_shapes(K: ArrayLike, M: ArrayLike) -> np.ndarray:
     """Modal matrix Phi whose columns are the mode shapes, Phi^T M Phi = I, Section 4.4.2.
 
     Columns are ordered like :func:`natural_frequencies`; the sign of each column is
     fixed so that its first non-zero entry is positive.
     """
     from scipy.linalg import eigh
-    _, Phi = eigh(K, M)
+    _, Phi = eigh(as_floats(K), as_floats(M))
     for j in range(Phi.shape[1]):
         col = Phi[:, j]
         idx = np.flatnonzero(np.abs(col) > 1e-12 * np.max(np.abs(col)))[0]
@@ -76,27 +76,27 @@ def mode_shapes(K: ArrayLike, M: ArrayLike) -> Quantity:
     return Phi
 
 
-def amplitude_ratios(K: ArrayLike, M: ArrayLike) -> Quantity:
+def amplitude_ratios(K: ArrayLike, M: ArrayLike) -> np.ndarray:
     """Mode shapes scaled so that the first coordinate is 1 (columns), Section 4.4.2."""
     Phi = mode_shapes(K, M)
     return Phi / Phi[0, :]
 
 
-def frequency_determinant(K: ArrayLike, M: ArrayLike, omega: ArrayLike) -> float:
+def frequency_determinant(K: ArrayLike, M: ArrayLike, omega: Quantity) -> float:
     """Characteristic determinant det(K - omega^2 M), zero at the natural frequencies, Section 4.4.2."""
     return float(np.linalg.det(np.asarray(K) - omega**2 * np.asarray(M)))
 
 
 def rayleigh_quotient(K: ArrayLike, M: ArrayLike, x: ArrayLike) -> float:
     """Rayleigh quotient R(x) = x^T K x / x^T M x >= omega_1^2 for any trial vector x, Section 4.4.2."""
-    x = np.asarray(x, dtype=float)
-    return float(x @ K @ x / (x @ M @ x))
+    x = as_floats(x)
+    return float(x @ as_floats(K) @ x / (x @ as_floats(M) @ x))
 
 
 # --- Section 4.4.3: damped and forced vibrations ----------------------------------------
 
 def steady_state_amplitudes(K: ArrayLike, M: ArrayLike, C: ArrayLike, F: ArrayLike,
-                            Omega: ArrayLike) -> Quantity:
+                            Omega: float) -> np.ndarray:
     """Complex amplitudes X = (K - Omega^2 M + i Omega C)^{-1} F under f(t) = Re(F e^{i Omega t}), Section 4.4.3.
 
     |X_j| is the amplitude of coordinate j, -angle(X_j) its phase lag behind the force.
@@ -106,26 +106,27 @@ def steady_state_amplitudes(K: ArrayLike, M: ArrayLike, C: ArrayLike, F: ArrayLi
     return solve(D, np.asarray(F, dtype=complex))
 
 
-def damped_eigenvalues(K: ArrayLike, M: ArrayLike, C: ArrayLike) -> Quantity:
+def damped_eigenvalues(K: ArrayLike, M: ArrayLike, C: ArrayLike) -> np.ndarray:
     """Eigenvalues lambda of the damped free vibration x = X e^{lambda t}, Section 4.4.3.
 
     Roots of det(lambda^2 M + lambda C + K) = 0 from the first-order form, sorted by
     imaginary part; Re(lambda) < 0 is the decay rate, Im(lambda) the damped frequency.
     """
     from scipy.linalg import eig
+    K, C = as_floats(K), as_floats(C)
     n = len(K)
-    Minv = np.linalg.inv(M)
+    Minv = np.linalg.inv(as_floats(M))
     A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ K, -Minv @ C]])
     lam = eig(A, right=False)
     return lam[np.argsort(lam.imag)]
 
 
-def tuned_absorber_stiffness(m_a: ArrayLike, Omega: ArrayLike) -> Quantity:
+def tuned_absorber_stiffness(m_a: Quantity, Omega: Quantity) -> Quantity:
     """Absorber stiffness k_a = m_a Omega^2 that keeps the main mass still at Omega, Section 4.4.3."""
     return m_a * Omega**2
 
 
-def absorber_amplitude(F0: ArrayLike, k_a: ArrayLike) -> Quantity:
+def absorber_amplitude(F0: Quantity, k_a: Quantity) -> Quantity:
     """Amplitude X_a = -F0 / k_a of a tuned absorber (main mass at rest) under F0 cos(Omega t), Section 4.4.3.
 
     The absorber spring then passes exactly the force -F0 cos(Omega t) to the main mass.
@@ -133,36 +134,36 @@ def absorber_amplitude(F0: ArrayLike, k_a: ArrayLike) -> Quantity:
     return -F0 / k_a
 
 
-def absorber_system_matrices(m: ArrayLike, k: ArrayLike, m_a: ArrayLike,
-                             k_a: ArrayLike) -> tuple[Quantity, Quantity]:
+def absorber_system_matrices(m: float, k: float, m_a: float,
+                             k_a: float) -> tuple[np.ndarray, np.ndarray]:
     """(K, M) of a main mass m on a spring k carrying an absorber m_a on a spring k_a, Section 4.4.3."""
     return chain_stiffness_matrix([k, k_a]), lumped_mass_matrix([m, m_a])
 
 
 # --- Section 4.4.4: modal decomposition ---------------------------------------------------
 
-def modal_matrices(K: ArrayLike, M: ArrayLike, C: ArrayLike | None = None) -> Quantity:
+def modal_matrices(K: ArrayLike, M: ArrayLike, C: ArrayLike | None = None) -> tuple[np.ndarray, ...]:
     """Modal mass, stiffness (and damping) matrices Phi^T M Phi, Phi^T K Phi (, Phi^T C Phi), Section 4.4.4."""
     Phi = mode_shapes(K, M)
-    out = [Phi.T @ M @ Phi, Phi.T @ K @ Phi]
+    out = [Phi.T @ as_floats(M) @ Phi, Phi.T @ as_floats(K) @ Phi]
     if C is not None:
-        out.append(Phi.T @ C @ Phi)
+        out.append(Phi.T @ as_floats(C) @ Phi)
     return tuple(out)
 
 
-def modal_damping_ratios(K: ArrayLike, M: ArrayLike, C: ArrayLike) -> Quantity:
+def modal_damping_ratios(K: ArrayLike, M: ArrayLike, C: ArrayLike) -> np.ndarray:
     """Modal damping ratios zeta_i = phi_i^T C phi_i / (2 omega_i) for proportional damping, Section 4.4.4."""
     Phi = mode_shapes(K, M)
-    return np.diag(Phi.T @ C @ Phi) / (2.0 * natural_frequencies(K, M))
+    return np.diag(Phi.T @ as_floats(C) @ Phi) / (2.0 * natural_frequencies(K, M))
 
 
-def modal_coordinates(K: ArrayLike, M: ArrayLike, x: ArrayLike) -> Quantity:
+def modal_coordinates(K: ArrayLike, M: ArrayLike, x: ArrayLike) -> np.ndarray:
     """Modal coordinates eta = Phi^T M x of a displacement (or velocity) vector x, Section 4.4.4."""
-    return mode_shapes(K, M).T @ M @ np.asarray(x, dtype=float)
+    return mode_shapes(K, M).T @ as_floats(M) @ as_floats(x)
 
 
 def modal_free_response(t: ArrayLike, K: ArrayLike, M: ArrayLike, x0: ArrayLike, v0: ArrayLike,
-                        C: ArrayLike | None = None) -> Quantity:
+                        C: ArrayLike | None = None) -> np.ndarray:
     """Displacements x(t) (shape n x len(t)) of the free vibration by modal superposition, Section 4.4.4.
 
     x(t) = sum_i phi_i eta_i(t) with each modal coordinate a 1-DOF free response

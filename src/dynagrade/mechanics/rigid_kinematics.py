@@ -19,14 +19,14 @@ def _planar_or_spatial(omega, r):
     return spatial_cross(omega, r)
 
 
-def velocity_of_point(v_a: ArrayLike, omega: ArrayLike, r_ab: ArrayLike) -> Quantity:
+def velocity_of_point(v_a: ArrayLike, omega: Quantity, r_ab: Quantity) -> np.ndarray:
     """Velocity of a point B of a rigid body from that of A, v_B = v_A + omega x r_AB
     (velocity transfer, Sections 3.1.1 and 3.1.2)."""
     return np.asarray(v_a, dtype=float) + _planar_or_spatial(omega, r_ab)
 
 
-def acceleration_of_point(a_a: ArrayLike, omega: ArrayLike, alpha: ArrayLike,
-                          r_ab: ArrayLike) -> Quantity:
+def acceleration_of_point(a_a: ArrayLike, omega: Quantity, alpha: Quantity,
+                          r_ab: Quantity) -> Quantity:
     """Acceleration of a point B of a rigid body from that of A,
     a_B = a_A + alpha x r_AB + omega x (omega x r_AB) (Sections 3.1.1 and 3.1.2);
     in 2D the last term is -omega^2 r_AB."""
@@ -44,20 +44,20 @@ def planar_angular_velocity(r_a: ArrayLike, v_a: ArrayLike, r_b: ArrayLike,
     return float(spatial_cross(r_ab, dv)[2] / np.dot(r_ab, r_ab))
 
 
-def instantaneous_centre_of_rotation(r_a: ArrayLike, v_a: ArrayLike, omega: ArrayLike) -> Quantity:
+def instantaneous_centre_of_rotation(r_a: ArrayLike, v_a: Quantity, omega: Quantity) -> Quantity:
     """Position of the instantaneous centre of rotation (the point of zero velocity) of a
     body in plane motion, r_ICR = r_A + (e3 x v_A) / omega, omega != 0 (Section 3.1.1)."""
     return np.asarray(r_a, dtype=float) + _planar_or_spatial(1.0, v_a) / omega
 
 
-def rolling_angular_velocity(centre_speed: ArrayLike, R: ArrayLike) -> Quantity:
+def rolling_angular_velocity(centre_speed: Quantity, R: Quantity) -> Quantity:
     """Angular velocity of a wheel rolling without slipping, omega = v_C / R; the contact
     point is the instantaneous centre of rotation (Section 3.1.1). Positive omega is
     clockwise for a wheel rolling in +e1 (the signed value about e3 is -v_C/R)."""
     return centre_speed / R
 
 
-def rim_point_velocity(centre_speed: ArrayLike, R: ArrayLike, phi: ArrayLike) -> Quantity:
+def rim_point_velocity(centre_speed: Quantity, R: Quantity, phi: Quantity) -> Quantity:
     """Velocity (e1, e2 components) of a point on the rim of a wheel rolling without
     slipping to the right with centre speed v_C; the point sits at the angle phi measured
     from the contact point, counter-clockwise seen from +e3 about the centre. By velocity
@@ -67,15 +67,15 @@ def rim_point_velocity(centre_speed: ArrayLike, R: ArrayLike, phi: ArrayLike) ->
     return velocity_of_point(np.array([centre_speed, 0.0]), omega, r_cp)
 
 
-def connecting_rod_angle(crank_radius: ArrayLike, rod_length: ArrayLike,
-                         crank_angle: ArrayLike) -> Quantity:
+def connecting_rod_angle(crank_radius: Quantity, rod_length: Quantity,
+                         crank_angle: Quantity) -> Quantity:
     """Angle beta of the connecting rod of a crank-slider mechanism with the slider on the
     line through the crank pivot: l sin(beta) = r sin(theta) (Section 3.1.1)."""
     return np.arcsin(crank_radius * np.sin(crank_angle) / rod_length)
 
 
-def connecting_rod_angular_velocity(crank_radius: ArrayLike, rod_length: ArrayLike,
-                                    crank_angle: ArrayLike, crank_rate: ArrayLike) -> Quantity:
+def connecting_rod_angular_velocity(crank_radius: Quantity, rod_length: Quantity,
+                                    crank_angle: Quantity, crank_rate: Quantity) -> Quantity:
     """Angular velocity of the connecting rod, beta_dot = r omega cos(theta) /
     (l cos(beta)), from transferring the crank-pin velocity to the slider whose velocity
     is along the slider line (Section 3.1.1). Signed like theta_dot, beta measured
@@ -84,8 +84,8 @@ def connecting_rod_angular_velocity(crank_radius: ArrayLike, rod_length: ArrayLi
     return crank_radius * crank_rate * np.cos(crank_angle) / (rod_length * np.cos(beta))
 
 
-def slider_velocity(crank_radius: ArrayLike, rod_length: ArrayLike, crank_angle: ArrayLike,
-                    crank_rate: ArrayLike) -> float:
+def slider_velocity(crank_radius: Quantity, rod_length: Quantity, crank_angle: Quantity,
+                    crank_rate: Quantity) -> float:
     """Velocity of the slider of a crank-slider mechanism along the slider line (positive
     away from the crank pivot): crank pin A at r(cos theta, sin theta), slider B at
     (r cos theta + l cos beta, 0), v_B = v_A + omega_rod x r_AB (Section 3.1.1)."""

@@ -14,7 +14,7 @@ from dynagrade.mechanics.energy import particle_kinetic_energy as translational_
 from dynagrade.mechanics.systems import angular_momentum_transfer
 
 
-def rigid_body_linear_momentum(m: ArrayLike, v_c: ArrayLike) -> Quantity:
+def rigid_body_linear_momentum(m: Quantity, v_c: Quantity) -> Quantity:
     """Linear momentum of a rigid body, P = m v_C (Section 3.2.1)."""
     return particle.particle_linear_momentum(m, v_c)
 
@@ -25,16 +25,16 @@ def rigid_body_angular_momentum(inertia: ArrayLike, omega: ArrayLike) -> Quantit
     return np.asarray(inertia, dtype=float) @ np.asarray(omega, dtype=float)
 
 
-def rigid_body_angular_momentum_about_point(inertia_centre: ArrayLike, omega: ArrayLike,
-                                            m: ArrayLike, r_bc: ArrayLike,
-                                            v_c: ArrayLike) -> Quantity:
+def rigid_body_angular_momentum_about_point(inertia_centre: Quantity, omega: Quantity,
+                                            m: Quantity, r_bc: Quantity,
+                                            v_c: Quantity) -> Quantity:
     """Angular momentum of a rigid body about an arbitrary point B,
     H_B = I_C omega + r_BC x m v_C (angular momentum transfer formula, Section 3.2.4)."""
     return angular_momentum_transfer(rigid_body_angular_momentum(inertia_centre, omega), m, r_bc, v_c)
 
 
-def angular_acceleration_about_fixed_axis(moment: ArrayLike,
-                                          moment_of_inertia: ArrayLike) -> Quantity:
+def angular_acceleration_about_fixed_axis(moment: Quantity,
+                                          moment_of_inertia: Quantity) -> Quantity:
     """Angular acceleration of a body rotating about a fixed axis, omega_dot = M / I with
     M and I about that axis (balance of angular momentum, Section 3.2.2)."""
     return angular_acceleration(moment, moment_of_inertia)
@@ -46,58 +46,58 @@ def rotational_kinetic_energy(inertia: ArrayLike, omega: ArrayLike) -> float:
     return float(0.5 * omega @ np.asarray(inertia, dtype=float) @ omega)
 
 
-def rigid_body_kinetic_energy(m: ArrayLike, v_c: ArrayLike, inertia_centre: ArrayLike,
-                              omega: ArrayLike) -> Quantity:
+def rigid_body_kinetic_energy(m: Quantity, v_c: Quantity, inertia_centre: Quantity,
+                              omega: Quantity) -> Quantity:
     """Kinetic energy of a rigid body, T = 1/2 m |v_C|^2 + 1/2 omega . I_C omega
     (translation of the centre of mass plus rotation about it, Section 3.2.5)."""
     return (float(translational_kinetic_energy(m, v_c))
             + rotational_kinetic_energy(inertia_centre, omega))
 
 
-def rolling_acceleration_on_incline(alpha: ArrayLike, g: ArrayLike, m: ArrayLike, R: ArrayLike,
-                                    moment_centre: ArrayLike) -> Quantity:
+def rolling_acceleration_on_incline(alpha: Quantity, g: Quantity, m: Quantity, R: Quantity,
+                                    moment_centre: Quantity) -> Quantity:
     """Acceleration of the centre of a round body rolling without slipping down an incline
     of angle alpha: a = g sin(alpha) / (1 + I_C / (m R^2)) (linear and angular momentum
     balance, Sections 3.2.1-3.2.2)."""
     return g * np.sin(alpha) / (1.0 + moment_centre / (m * R**2))
 
 
-def rolling_speed_after_drop(h: ArrayLike, g: ArrayLike, m: ArrayLike, R: ArrayLike,
-                             moment_centre: ArrayLike) -> Quantity:
+def rolling_speed_after_drop(h: Quantity, g: Quantity, m: Quantity, R: Quantity,
+                             moment_centre: Quantity) -> Quantity:
     """Speed of the centre of a body rolling without slipping after descending a height h
     from rest: m g h = 1/2 m v^2 + 1/2 I_C (v/R)^2 (work-energy balance, Section 3.2.5)."""
     return np.sqrt(2.0 * g * h / (1.0 + moment_centre / (m * R**2)))
 
 
-def friction_for_rolling_on_incline(alpha: ArrayLike, g: ArrayLike, m: ArrayLike, R: ArrayLike,
-                                    moment_centre: ArrayLike) -> Quantity:
+def friction_for_rolling_on_incline(alpha: Quantity, g: Quantity, m: Quantity, R: Quantity,
+                                    moment_centre: Quantity) -> Quantity:
     """Static friction force on a body rolling without slipping down an incline,
     F = I_C a / R^2 (angular momentum balance about the centre, Section 3.2.2)."""
     a = rolling_acceleration_on_incline(alpha, g, m, R, moment_centre)
     return moment_centre * a / R**2
 
 
-def minimum_friction_coefficient_for_rolling(alpha: ArrayLike, g: ArrayLike, m: ArrayLike,
-                                             R: ArrayLike, moment_centre: ArrayLike) -> Quantity:
+def minimum_friction_coefficient_for_rolling(alpha: Quantity, g: Quantity, m: Quantity,
+                                             R: Quantity, moment_centre: Quantity) -> Quantity:
     """Smallest static friction coefficient that allows rolling without slipping down an
     incline, mu_min = F / (m g cos(alpha)) (Sections 3.2.1-3.2.2)."""
     friction = friction_for_rolling_on_incline(alpha, g, m, R, moment_centre)
     return friction / (m * g * np.cos(alpha))
 
 
-def compound_pendulum_angular_acceleration(phi: ArrayLike, g: ArrayLike, m: ArrayLike,
-                                           pivot_to_centre: ArrayLike,
-                                           moment_pivot: ArrayLike) -> Quantity:
+def compound_pendulum_angular_acceleration(phi: Quantity, g: Quantity, m: Quantity,
+                                           pivot_to_centre: Quantity,
+                                           moment_pivot: Quantity) -> Quantity:
     """Angular acceleration of a compound (physical) pendulum about its fixed pivot,
     phi_ddot = -m g d sin(phi) / I_O (Section 3.2.2)."""
     return angular_acceleration_about_fixed_axis(-m * g * pivot_to_centre * np.sin(phi),
                                                  moment_pivot)
 
 
-def angular_speed_of_pendulum_from_energy(phi1: ArrayLike, phi2: ArrayLike, g: ArrayLike,
-                                          m: ArrayLike, pivot_to_centre: ArrayLike,
-                                          moment_pivot: ArrayLike,
-                                          phidot1: ArrayLike = 0.0) -> Quantity:
+def angular_speed_of_pendulum_from_energy(phi1: Quantity, phi2: Quantity, g: Quantity,
+                                          m: Quantity, pivot_to_centre: Quantity,
+                                          moment_pivot: Quantity,
+                                          phidot1: Quantity = 0.0) -> Quantity:
     """Angular speed of a compound pendulum at angle phi2 after swinging from phi1 with
     rate phi1_dot: 1/2 I_O phi_dot^2 - m g d cos(phi) is conserved (Section 3.2.5)."""
     energy = 0.5 * moment_pivot * phidot1**2 + m * g * pivot_to_centre * (

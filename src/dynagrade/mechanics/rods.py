@@ -16,22 +16,22 @@ from dynagrade.mechanics import multi_dof
 END_CONDITIONS = ("fixed-fixed", "free-free", "fixed-free")
 
 
-def longitudinal_wave_speed(E: ArrayLike, rho: ArrayLike) -> Quantity:
+def longitudinal_wave_speed(E: Quantity, rho: Quantity) -> Quantity:
     """Speed c = sqrt(E / rho) of longitudinal waves in a slender rod, Section 5.3.1."""
     return np.sqrt(E / rho)
 
 
-def torsional_wave_speed(G: ArrayLike, rho: ArrayLike) -> Quantity:
+def torsional_wave_speed(G: Quantity, rho: Quantity) -> Quantity:
     """Speed c_T = sqrt(G / rho) of torsional waves in a rod of circular section, Section 5.3.2."""
     return np.sqrt(G / rho)
 
 
-def travel_time(L: ArrayLike, c: ArrayLike) -> Quantity:
+def travel_time(L: Quantity, c: Quantity) -> Quantity:
     """Time t = L / c a wave front needs to cross a distance L, Section 5.3.1."""
     return L / c
 
 
-def dalembert_displacement(x: ArrayLike, t: ArrayLike, c: ArrayLike, f: Field,
+def dalembert_displacement(x: ArrayLike, t: Quantity, c: Quantity, f: Field,
                            g: Field) -> Quantity:
     """d'Alembert solution u(x, t) = f(x - c t) + g(x + c t) of the wave equation, Section 5.3.1.
 
@@ -40,7 +40,7 @@ def dalembert_displacement(x: ArrayLike, t: ArrayLike, c: ArrayLike, f: Field,
     return f(np.asarray(x) - c * t) + g(np.asarray(x) + c * t)
 
 
-def impact_stress(rho: ArrayLike, c: ArrayLike, v: ArrayLike) -> Quantity:
+def impact_stress(rho: Quantity, c: Quantity, v: Quantity) -> Quantity:
     """Stress sigma = rho c v carried by a wave whose particle velocity is v, Section 5.3.1.
 
     Compressive when the rod end is pushed into the rod at speed v (for a step in velocity).
@@ -48,12 +48,12 @@ def impact_stress(rho: ArrayLike, c: ArrayLike, v: ArrayLike) -> Quantity:
     return rho * c * v
 
 
-def particle_velocity(sigma: ArrayLike, rho: ArrayLike, c: ArrayLike) -> Quantity:
+def particle_velocity(sigma: Quantity, rho: Quantity, c: Quantity) -> Quantity:
     """Particle velocity v = sigma / (rho c) behind a wave front of stress sigma, Section 5.3.1."""
     return sigma / (rho * c)
 
 
-def rod_wavenumbers(L: ArrayLike, n: int, ends: str) -> Quantity:
+def rod_wavenumbers(L: Quantity, n: int, ends: str) -> np.ndarray:
     """Wavenumbers k_j = omega_j / c of the first n natural modes of a rod, Section 5.3.1.
 
     fixed-fixed and free-free: k_j = j pi / L (free-free without its rigid-body mode);
@@ -67,19 +67,19 @@ def rod_wavenumbers(L: ArrayLike, n: int, ends: str) -> Quantity:
     raise ValueError(f"ends must be one of {END_CONDITIONS}")
 
 
-def rod_natural_frequencies(c: ArrayLike, L: ArrayLike, n: int, ends: str) -> Quantity:
+def rod_natural_frequencies(c: Quantity, L: Quantity, n: int, ends: str) -> Quantity:
     """First n natural angular frequencies omega_j = c k_j of a rod, Sections 5.3.1-5.3.2."""
     return c * rod_wavenumbers(L, n, ends)
 
 
-def rod_mode_shape(x: ArrayLike, L: ArrayLike, j: int, ends: str) -> Quantity:
+def rod_mode_shape(x: ArrayLike, L: Quantity, j: int, ends: str) -> Quantity:
     """Mode shape U_j(x) of the j-th natural mode of a rod (maximum 1), Section 5.3.1."""
     k = rod_wavenumbers(L, j, ends)[-1]
     x = np.asarray(x, dtype=float)
     return np.cos(k * x) if ends == "free-free" else np.sin(k * x)
 
 
-def tip_mass_wavenumber_equation(kL: ArrayLike, mass_ratio: ArrayLike) -> Quantity:
+def tip_mass_wavenumber_equation(kL: Quantity, mass_ratio: Quantity) -> Quantity:
     """Frequency equation kL tan(kL) - m_rod/m_tip of a fixed-free rod with a tip mass, Section 5.3.1.
 
     Written as kL sin(kL) - ratio cos(kL), which is free of the poles of tan.
@@ -87,19 +87,20 @@ def tip_mass_wavenumber_equation(kL: ArrayLike, mass_ratio: ArrayLike) -> Quanti
     return kL * np.sin(kL) - mass_ratio * np.cos(kL)
 
 
-def tip_mass_fundamental_frequency(c: ArrayLike, L: ArrayLike, m_rod: ArrayLike,
-                                   m_tip: ArrayLike) -> Quantity:
+def tip_mass_fundamental_frequency(c: Quantity, L: Quantity, m_rod: Quantity,
+                                   m_tip: Quantity) -> Quantity:
     """Lowest natural frequency omega_1 = c k_1 of a fixed-free rod carrying a tip mass, Section 5.3.1.
 
     k_1 L is the root in (0, pi/2) of kL tan(kL) = m_rod / m_tip.
     """
     from scipy.optimize import brentq
     ratio = m_rod / m_tip
-    kL = brentq(tip_mass_wavenumber_equation, 1e-12, np.pi / 2.0, args=(ratio,), xtol=1e-14)
+    kL = brentq(lambda kL: float(tip_mass_wavenumber_equation(kL, ratio)), 1e-12, np.pi / 2.0,
+                xtol=1e-14)
     return c * kL / L
 
 
-def lumped_rod_matrices(E: ArrayLike, A: ArrayLike, rho: ArrayLike, L: ArrayLike, N: int,
+def lumped_rod_matrices(E: Quantity, A: Quantity, rho: Quantity, L: Quantity, N: int,
                         ends: str = "fixed-free") -> tuple[Quantity, Quantity]:
     """(K, M) of a rod cut into N equal elements, each a spring E A N / L with its mass
     rho A L / N split onto its two end nodes, Sections 4.4.1 and 5.3.1.

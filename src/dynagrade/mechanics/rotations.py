@@ -18,7 +18,7 @@ def skew_matrix(w: ArrayLike) -> Quantity:
     return np.array([[0.0, -w3, w2], [w3, 0.0, -w1], [-w2, w1, 0.0]])
 
 
-def rotation_matrix(axis: ArrayLike, phi: ArrayLike) -> Quantity:
+def rotation_matrix(axis: ArrayLike, phi: float) -> np.ndarray:
     """Rotation by the angle phi about the unit axis n (right-hand rule), Rodrigues'
     formula R = cos(phi) I + sin(phi) [n]x + (1 - cos(phi)) n n^T (Section 3.4.1)."""
     n = np.asarray(axis, dtype=float)
@@ -27,7 +27,7 @@ def rotation_matrix(axis: ArrayLike, phi: ArrayLike) -> Quantity:
     return c * np.eye(3) + s * skew_matrix(n) + (1.0 - c) * np.outer(n, n)
 
 
-def actively_rotated_vector(rotation: ArrayLike, vector: ArrayLike) -> Quantity:
+def actively_rotated_vector(rotation: ArrayLike, vector: ArrayLike) -> np.ndarray:
     """Vector obtained by rotating v with R (active rotation), v' = R v, components in the
     same frame (Section 3.4.1)."""
     return np.asarray(rotation, dtype=float) @ np.asarray(vector, dtype=float)
@@ -53,7 +53,7 @@ def angular_velocity_from_rotation_rate(rotation: ArrayLike, rotation_rate: Arra
     return np.array([w[2, 1], w[0, 2], w[1, 0]])
 
 
-def euler_angle_rotation(psi: ArrayLike, theta: ArrayLike, phi: ArrayLike) -> Quantity:
+def euler_angle_rotation(psi: float, theta: float, phi: float) -> np.ndarray:
     """Rotation matrix of the Euler angles of a top: precession psi about e3, nutation
     theta about the line of nodes, spin phi about the body's symmetry axis,
     R = R3(psi) R1(theta) R3(phi) (Sections 3.4.1 and 3.5.1)."""

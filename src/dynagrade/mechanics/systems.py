@@ -26,7 +26,7 @@ def centre_of_mass(masses: ArrayLike, positions: ArrayLike) -> Quantity:
     return (m[:, None] * r).sum(axis=0) / m.sum()
 
 
-def centre_of_mass_velocity(masses: ArrayLike, velocities: ArrayLike) -> Quantity:
+def centre_of_mass_velocity(masses: Quantity, velocities: Quantity) -> Quantity:
     """Velocity of the centre of mass, v_C = dr_C/dt = (1/M) sum m_i v_i, the mass-weighted
     mean of the particles' velocities (the time derivative of r_C, Section 2.1)."""
     return centre_of_mass(masses, velocities)
@@ -48,7 +48,7 @@ def total_momentum(masses: ArrayLike, velocities: ArrayLike) -> Quantity:
     return (m[:, None] * v).sum(axis=0)
 
 
-def centre_of_mass_acceleration(total_external_force: ArrayLike, M: ArrayLike) -> Quantity:
+def centre_of_mass_acceleration(total_external_force: ArrayLike, M: Quantity) -> Quantity:
     """Acceleration of the centre of mass a_C = F_ext / M: the centre of mass moves like a
     particle of the total mass under the total external force; internal forces cancel
     pairwise (balance of linear momentum of a system, Section 2.2.1)."""
@@ -70,19 +70,19 @@ def kinetic_energy_relative_to_centre_of_mass(masses: ArrayLike, velocities: Arr
     return system_kinetic_energy(m, v - v_c)
 
 
-def reduced_mass(m1: ArrayLike, m2: ArrayLike) -> Quantity:
+def reduced_mass(m1: Quantity, m2: Quantity) -> Quantity:
     """Reduced mass mu = m1 m2 / (m1 + m2) of two particles (Sections 2.2.2 and 2.3.1)."""
     return m1 * m2 / (m1 + m2)
 
 
-def relative_kinetic_energy(m1: ArrayLike, m2: ArrayLike, relative_speed: ArrayLike) -> Quantity:
+def relative_kinetic_energy(m1: Quantity, m2: Quantity, relative_speed: Quantity) -> Quantity:
     """Kinetic energy of the relative motion of two particles, 1/2 mu v_rel^2: the part
     of T that internal forces between the two can change (Section 2.2.2)."""
     return 0.5 * reduced_mass(m1, m2) * relative_speed**2
 
 
-def relative_speed_from_internal_work(m1: ArrayLike, m2: ArrayLike, internal_work: ArrayLike,
-                                      initial_relative_speed: ArrayLike = 0.0) -> Quantity:
+def relative_speed_from_internal_work(m1: Quantity, m2: Quantity, internal_work: Quantity,
+                                      initial_relative_speed: Quantity = 0.0) -> Quantity:
     """Relative speed of two particles after internal forces did the work W_int on them
     (e.g. a compressed spring between two carts released): 1/2 mu v_rel^2 grows by W_int
     while the centre-of-mass motion is unchanged (work-energy balance, Section 2.2.2)."""
@@ -94,12 +94,12 @@ def relative_speed_from_internal_work(m1: ArrayLike, m2: ArrayLike, internal_wor
 class PairSpeeds:
     """Speeds of the two particles of a pair."""
 
-    v1: float
-    v2: float
+    v1: Quantity
+    v2: Quantity
 
 
-def speeds_relative_to_centre_of_mass(m1: ArrayLike, m2: ArrayLike,
-                                      relative_speed: ArrayLike) -> PairSpeeds:
+def speeds_relative_to_centre_of_mass(m1: float, m2: float,
+                                      relative_speed: Quantity) -> PairSpeeds:
     """How the relative speed of two particles splits between them in the centre-of-mass
     frame: m1 v1 = m2 v2 (total momentum zero) and v1 + v2 = v_rel give
     v1 = m2/(m1+m2) v_rel, v2 = m1/(m1+m2) v_rel, opposite in direction
@@ -129,7 +129,7 @@ def angular_momentum_about_centre_of_mass(masses: ArrayLike, positions: ArrayLik
     return system_angular_momentum_about_point(m, r, v - v_c, centre_of_mass(m, r))
 
 
-def angular_momentum_transfer(h_c: ArrayLike, M: ArrayLike, r_bc: ArrayLike,
+def angular_momentum_transfer(h_c: ArrayLike, M: Quantity, r_bc: ArrayLike,
                               v_c: ArrayLike) -> Quantity:
     """Angular momentum about a point B from that about the centre of mass,
     H_B = H_C + r_BC x M v_C (Section 2.2.3; for rigid bodies Section 3.2.4)."""

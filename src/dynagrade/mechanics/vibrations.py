@@ -17,38 +17,38 @@ from dynagrade.mechanics.energy import particle_kinetic_energy, spring_potential
 
 # --- Section 4.3.1: definitions, equivalent mass and stiffness -------------------
 
-def natural_frequency(k: ArrayLike, m: ArrayLike) -> Quantity:
+def natural_frequency(k: Quantity, m: Quantity) -> Quantity:
     """Undamped natural (angular) frequency omega_n = sqrt(k/m) in rad/s, Section 4.3.1."""
     return np.sqrt(k / m)
 
 
-def frequency_in_hertz(omega: ArrayLike) -> Quantity:
+def frequency_in_hertz(omega: Quantity) -> Quantity:
     """Frequency f = omega / (2 pi) in Hz of an angular frequency omega, Section 4.3.1."""
     return omega / (2.0 * np.pi)
 
 
-def period(omega: ArrayLike) -> Quantity:
+def period(omega: Quantity) -> Quantity:
     """Period T = 2 pi / omega of a vibration with angular frequency omega, Section 4.3.1."""
     return 2.0 * np.pi / omega
 
 
-def angular_frequency_from_period(T: ArrayLike) -> Quantity:
+def angular_frequency_from_period(T: Quantity) -> Quantity:
     """Angular frequency omega = 2 pi / T in rad/s of a vibration with period T, Section 4.3.1."""
     return 2.0 * np.pi / T
 
 
-def stiffness_from_natural_frequency(m: ArrayLike, omega_n: ArrayLike) -> Quantity:
+def stiffness_from_natural_frequency(m: Quantity, omega_n: Quantity) -> Quantity:
     """Stiffness k = m omega_n^2 that gives the mass m the natural frequency omega_n,
     omega_n = sqrt(k/m) solved for k, Section 4.3.1."""
     return m * omega_n**2
 
 
-def static_deflection(m: ArrayLike, k: ArrayLike, g: ArrayLike) -> Quantity:
+def static_deflection(m: Quantity, k: Quantity, g: Quantity) -> Quantity:
     """Static deflection delta_st = m g / k of a mass hanging on a spring, Section 4.3.1."""
     return m * g / k
 
 
-def natural_frequency_from_static_deflection(delta_st: ArrayLike, g: ArrayLike) -> Quantity:
+def natural_frequency_from_static_deflection(delta_st: Quantity, g: Quantity) -> Quantity:
     """Natural frequency omega_n = sqrt(g / delta_st) from the static deflection, Section 4.3.1."""
     return np.sqrt(g / delta_st)
 
@@ -76,7 +76,7 @@ def equivalent_stiffness(stiffnesses: ArrayLike, ratios: ArrayLike) -> float:
     return float(np.sum(stiffnesses * ratios**2))
 
 
-def mechanical_energy(x: ArrayLike, v: ArrayLike, k: ArrayLike, m: ArrayLike) -> Quantity:
+def mechanical_energy(x: Quantity, v: ArrayLike, k: Quantity, m: Quantity) -> Quantity:
     """Total mechanical energy E = m v^2/2 + k x^2/2 of the oscillator, Section 4.3.1."""
     # v is a (possibly time-sampled) scalar velocity: one component per sample
     return particle_kinetic_energy(m, np.asarray(v, dtype=float)[..., None]) + spring_potential(k, x)
@@ -84,27 +84,27 @@ def mechanical_energy(x: ArrayLike, v: ArrayLike, k: ArrayLike, m: ArrayLike) ->
 
 # --- Section 4.3.2: free vibrations ------------------------------------------------
 
-def critical_damping(k: ArrayLike, m: ArrayLike) -> Quantity:
+def critical_damping(k: Quantity, m: Quantity) -> Quantity:
     """Critical damping coefficient c_cr = 2 sqrt(k m), Section 4.3.2."""
     return 2.0 * np.sqrt(k * m)
 
 
-def damping_ratio(c: ArrayLike, k: ArrayLike, m: ArrayLike) -> Quantity:
+def damping_ratio(c: Quantity, k: Quantity, m: Quantity) -> Quantity:
     """Damping ratio (Lehr's damping) zeta = c / (2 sqrt(k m)), Section 4.3.2."""
     return c / critical_damping(k, m)
 
 
-def damping_coefficient(zeta: ArrayLike, k: ArrayLike, m: ArrayLike) -> Quantity:
+def damping_coefficient(zeta: Quantity, k: Quantity, m: Quantity) -> Quantity:
     """Viscous damping coefficient c = 2 zeta sqrt(k m) for a damping ratio zeta, Section 4.3.2."""
     return zeta * critical_damping(k, m)
 
 
-def damped_frequency(omega_n: ArrayLike, zeta: ArrayLike) -> Quantity:
+def damped_frequency(omega_n: Quantity, zeta: Quantity) -> Quantity:
     """Damped natural frequency omega_d = omega_n sqrt(1 - zeta^2) (zeta < 1), Section 4.3.2."""
     return omega_n * np.sqrt(1.0 - zeta**2)
 
 
-def damping_regime(zeta: ArrayLike, tol: float = 1e-9) -> str:
+def damping_regime(zeta: float, tol: float = 1e-9) -> str:
     """Name of the free-vibration regime for a damping ratio zeta, Section 4.3.2.
 
     One of "undamped", "underdamped", "critically damped", "overdamped".
@@ -118,23 +118,23 @@ def damping_regime(zeta: ArrayLike, tol: float = 1e-9) -> str:
     return "underdamped" if zeta < 1.0 else "overdamped"
 
 
-def natural_frequency_from_damped(omega_d: ArrayLike, zeta: ArrayLike) -> Quantity:
+def natural_frequency_from_damped(omega_d: Quantity, zeta: Quantity) -> Quantity:
     """Undamped natural frequency omega_n = omega_d / sqrt(1 - zeta^2) from a measured damped one, Section 4.3.2."""
     return omega_d / np.sqrt(1.0 - zeta**2)
 
 
-def logarithmic_decrement(zeta: ArrayLike) -> Quantity:
+def logarithmic_decrement(zeta: Quantity) -> Quantity:
     """Logarithmic decrement delta = ln(x_i / x_{i+1}) = 2 pi zeta / sqrt(1 - zeta^2), Section 4.3.2."""
     return 2.0 * np.pi * zeta / np.sqrt(1.0 - zeta**2)
 
 
-def logarithmic_decrement_from_amplitudes(x_first: ArrayLike, x_later: ArrayLike,
+def logarithmic_decrement_from_amplitudes(x_first: Quantity, x_later: Quantity,
                                           cycles: int) -> Quantity:
     """Logarithmic decrement delta = ln(x_0 / x_n) / n from two peaks n cycles apart, Section 4.3.2."""
     return np.log(x_first / x_later) / cycles
 
 
-def damping_ratio_from_decrement(delta: ArrayLike) -> Quantity:
+def damping_ratio_from_decrement(delta: Quantity) -> Quantity:
     """Damping ratio zeta = delta / sqrt(4 pi^2 + delta^2) from the logarithmic decrement, Section 4.3.2."""
     return delta / np.sqrt(4.0 * np.pi**2 + delta**2)
 
@@ -170,8 +170,8 @@ def _free_response_state(t, x0, v0, omega_n, zeta):
     return x, v
 
 
-def free_response(t: ArrayLike, x0: ArrayLike, v0: ArrayLike, omega_n: ArrayLike,
-                  zeta: ArrayLike) -> Quantity:
+def free_response(t: Quantity, x0: Quantity, v0: Quantity, omega_n: Quantity,
+                  zeta: Quantity) -> Quantity:
     """Displacement x(t) of the free vibration with x(0) = x0, x'(0) = v0, Section 4.3.2.
 
     Covers the undamped (zeta = 0), underdamped (0 < zeta < 1), critically damped
@@ -180,20 +180,20 @@ def free_response(t: ArrayLike, x0: ArrayLike, v0: ArrayLike, omega_n: ArrayLike
     return _free_response_state(t, x0, v0, omega_n, zeta)[0]
 
 
-def free_response_velocity(t: ArrayLike, x0: ArrayLike, v0: ArrayLike, omega_n: ArrayLike,
-                           zeta: ArrayLike) -> Quantity:
+def free_response_velocity(t: Quantity, x0: Quantity, v0: Quantity, omega_n: Quantity,
+                           zeta: Quantity) -> Quantity:
     """Velocity x'(t) of the free vibration with x(0) = x0, x'(0) = v0, Section 4.3.2."""
     return _free_response_state(t, x0, v0, omega_n, zeta)[1]
 
 
 # --- Section 4.3.3: forced vibrations ----------------------------------------------
 
-def frequency_ratio(Omega: ArrayLike, omega_n: ArrayLike) -> Quantity:
+def frequency_ratio(Omega: Quantity, omega_n: Quantity) -> Quantity:
     """Frequency ratio eta = Omega / omega_n of excitation and natural frequency, Section 4.3.3."""
     return Omega / omega_n
 
 
-def amplification_factor(eta: ArrayLike, zeta: ArrayLike) -> Quantity:
+def amplification_factor(eta: Quantity, zeta: Quantity) -> Quantity:
     """Dynamic amplification V = 1 / sqrt((1 - eta^2)^2 + (2 zeta eta)^2), Section 4.3.3.
 
     Ratio of the steady-state amplitude to the static deflection F0/k under a harmonic force.
@@ -201,7 +201,7 @@ def amplification_factor(eta: ArrayLike, zeta: ArrayLike) -> Quantity:
     return 1.0 / np.sqrt((1.0 - eta**2) ** 2 + (2.0 * zeta * eta) ** 2)
 
 
-def phase_lag(eta: ArrayLike, zeta: ArrayLike) -> Quantity:
+def phase_lag(eta: Quantity, zeta: Quantity) -> Quantity:
     """Phase lag phi in [0, pi] of the steady-state response behind the force, Section 4.3.3.
 
     tan(phi) = 2 zeta eta / (1 - eta^2); x(t) = X cos(Omega t - phi).
@@ -209,14 +209,14 @@ def phase_lag(eta: ArrayLike, zeta: ArrayLike) -> Quantity:
     return np.arctan2(2.0 * zeta * eta, 1.0 - eta**2)
 
 
-def steady_state_amplitude(F0: ArrayLike, k: ArrayLike, eta: ArrayLike,
-                           zeta: ArrayLike) -> Quantity:
+def steady_state_amplitude(F0: Quantity, k: Quantity, eta: Quantity,
+                           zeta: Quantity) -> Quantity:
     """Steady-state amplitude X = (F0/k) V(eta, zeta) under F0 cos(Omega t), Section 4.3.3."""
     return F0 / k * amplification_factor(eta, zeta)
 
 
-def steady_state_response(t: ArrayLike, F0: ArrayLike, k: ArrayLike, m: ArrayLike, c: ArrayLike,
-                          Omega: ArrayLike) -> Quantity:
+def steady_state_response(t: ArrayLike, F0: Quantity, k: Quantity, m: Quantity, c: Quantity,
+                          Omega: Quantity) -> Quantity:
     """Steady-state displacement x_p(t) = X cos(Omega t - phi) under F0 cos(Omega t), Section 4.3.3."""
     w = natural_frequency(k, m)
     zeta = damping_ratio(c, k, m)
@@ -225,17 +225,17 @@ def steady_state_response(t: ArrayLike, F0: ArrayLike, k: ArrayLike, m: ArrayLik
     return X * np.cos(Omega * np.asarray(t, dtype=float) - phase_lag(eta, zeta))
 
 
-def resonance_frequency_ratio(zeta: ArrayLike) -> Quantity:
+def resonance_frequency_ratio(zeta: Quantity) -> Quantity:
     """Frequency ratio eta_res = sqrt(1 - 2 zeta^2) of the amplitude peak (zeta < 1/sqrt 2), Section 4.3.3."""
     return np.sqrt(1.0 - 2.0 * zeta**2)
 
 
-def peak_amplification(zeta: ArrayLike) -> Quantity:
+def peak_amplification(zeta: Quantity) -> Quantity:
     """Largest dynamic amplification V_max = 1 / (2 zeta sqrt(1 - zeta^2)) (zeta < 1/sqrt 2), Section 4.3.3."""
     return 1.0 / (2.0 * zeta * np.sqrt(1.0 - zeta**2))
 
 
-def transmissibility(eta: ArrayLike, zeta: ArrayLike) -> Quantity:
+def transmissibility(eta: Quantity, zeta: Quantity) -> Quantity:
     """Transmissibility TR = sqrt(1 + (2 zeta eta)^2) V(eta, zeta), Section 4.3.3.
 
     Ratio of the absolute amplitude of a base-excited mass to the base amplitude, and
@@ -244,30 +244,30 @@ def transmissibility(eta: ArrayLike, zeta: ArrayLike) -> Quantity:
     return np.sqrt(1.0 + (2.0 * zeta * eta) ** 2) * amplification_factor(eta, zeta)
 
 
-def road_forcing_frequency(v: ArrayLike, wavelength: ArrayLike) -> Quantity:
+def road_forcing_frequency(v: Quantity, wavelength: Quantity) -> Quantity:
     """Forcing frequency Omega = 2 pi v / lambda of the base of a vehicle driving at speed v over
     a wavy road of wavelength lambda (base excitation y = Y cos(Omega t)), Section 4.3.3."""
     return 2 * np.pi * v / wavelength
 
 
-def road_speed_for_forcing_frequency(Omega: ArrayLike, wavelength: ArrayLike) -> Quantity:
+def road_speed_for_forcing_frequency(Omega: Quantity, wavelength: Quantity) -> Quantity:
     """Driving speed v = Omega lambda / (2 pi) at which a wavy road of wavelength lambda excites
     the base with the frequency Omega (road_forcing_frequency solved for v), Section 4.3.3."""
     return Omega * wavelength / (2 * np.pi)
 
 
-def base_excitation_amplitude(Y: ArrayLike, eta: ArrayLike, zeta: ArrayLike) -> Quantity:
+def base_excitation_amplitude(Y: Quantity, eta: Quantity, zeta: Quantity) -> Quantity:
     """Absolute steady-state amplitude X = Y TR of a mass whose base moves as Y cos(Omega t), Section 4.3.3."""
     return Y * transmissibility(eta, zeta)
 
 
-def relative_base_excitation_amplitude(Y: ArrayLike, eta: ArrayLike, zeta: ArrayLike) -> Quantity:
+def relative_base_excitation_amplitude(Y: Quantity, eta: Quantity, zeta: Quantity) -> Quantity:
     """Amplitude Z = Y eta^2 V of the spring deflection under base motion Y cos(Omega t), Section 4.3.3."""
     return Y * eta**2 * amplification_factor(eta, zeta)
 
 
-def unbalance_amplitude(m_u: ArrayLike, e: ArrayLike, M: ArrayLike, eta: ArrayLike,
-                        zeta: ArrayLike) -> Quantity:
+def unbalance_amplitude(m_u: Quantity, e: Quantity, M: Quantity, eta: Quantity,
+                        zeta: Quantity) -> Quantity:
     """Steady-state amplitude X = (m_u e / M) eta^2 V of a machine with rotating unbalance, Section 4.3.3.
 
     ``M`` is the total vibrating mass (including the unbalance mass m_u at eccentricity e).
@@ -275,7 +275,7 @@ def unbalance_amplitude(m_u: ArrayLike, e: ArrayLike, M: ArrayLike, eta: ArrayLi
     return m_u * e / M * eta**2 * amplification_factor(eta, zeta)
 
 
-def transmitted_force_amplitude(X: ArrayLike, k: ArrayLike, c: ArrayLike,
-                                Omega: ArrayLike) -> Quantity:
+def transmitted_force_amplitude(X: Quantity, k: Quantity, c: Quantity,
+                                Omega: Quantity) -> Quantity:
     """Amplitude F_T = X sqrt(k^2 + (c Omega)^2) of the force spring and damper pass to the ground, Section 4.3.3."""
     return X * np.sqrt(k**2 + (c * Omega) ** 2)

@@ -10,46 +10,46 @@ import numpy as np
 from dynagrade.mechanics._common import ArrayLike, Quantity
 
 
-def incline_normal_force(m: ArrayLike, alpha: ArrayLike, g: ArrayLike) -> Quantity:
+def incline_normal_force(m: Quantity, alpha: Quantity, g: Quantity) -> Quantity:
     """Normal force of the slope on the block, N = m g cos(alpha), eq. (1.72)."""
     return m * g * np.cos(alpha)
 
 
-def friction_force(m: ArrayLike, alpha: ArrayLike, mu: ArrayLike, g: ArrayLike) -> Quantity:
+def friction_force(m: Quantity, alpha: Quantity, mu: Quantity, g: Quantity) -> Quantity:
     """Magnitude of the kinetic friction force while sliding, R = mu m g cos(alpha), eq. (1.73)."""
     return mu * incline_normal_force(m, alpha, g)
 
 
-def sliding_acceleration(alpha: ArrayLike, mu: ArrayLike, g: ArrayLike) -> Quantity:
+def sliding_acceleration(alpha: Quantity, mu: Quantity, g: Quantity) -> Quantity:
     """Acceleration of a block sliding DOWN the slope, down-slope positive:
     g (sin(alpha) - mu cos(alpha)), eq. (1.73).  Negative means it decelerates."""
     return g * (np.sin(alpha) - mu * np.cos(alpha))
 
 
-def deceleration_up_slope(alpha: ArrayLike, mu: ArrayLike, g: ArrayLike) -> Quantity:
+def deceleration_up_slope(alpha: Quantity, mu: Quantity, g: Quantity) -> Quantity:
     """Magnitude of the deceleration of a block sliding UP the slope,
     g (sin(alpha) + mu cos(alpha)) (Example 1.15, friction and gravity both act down-slope)."""
     return g * (np.sin(alpha) + mu * np.cos(alpha))
 
 
-def distance_up_slope(v0: ArrayLike, alpha: ArrayLike, mu: ArrayLike, g: ArrayLike) -> Quantity:
+def distance_up_slope(v0: Quantity, alpha: Quantity, mu: Quantity, g: Quantity) -> Quantity:
     """Distance travelled up the slope until rest, v0^2 / (2 g (sin a + mu cos a)), eq. (1.128)."""
     return v0**2 / (2.0 * deceleration_up_slope(alpha, mu, g))
 
 
-def time_up_slope(v0: ArrayLike, alpha: ArrayLike, mu: ArrayLike, g: ArrayLike) -> Quantity:
+def time_up_slope(v0: Quantity, alpha: Quantity, mu: Quantity, g: Quantity) -> Quantity:
     """Time until a block launched up the slope with speed v0 comes to rest (Example 1.15)."""
     return v0 / deceleration_up_slope(alpha, mu, g)
 
 
-def decelerates_down_slope(alpha: ArrayLike, mu: ArrayLike) -> Quantity:
+def decelerates_down_slope(alpha: Quantity, mu: ArrayLike) -> Quantity:
     """Whether a block sliding down decelerates (and eventually stops): mu > tan(alpha),
     discussion after eq. (1.73)."""
     return np.asarray(mu) > np.tan(alpha)
 
 
-def stopping_distance_down_slope(v0: ArrayLike, alpha: ArrayLike, mu: ArrayLike,
-                                 g: ArrayLike) -> Quantity:
+def stopping_distance_down_slope(v0: Quantity, alpha: Quantity, mu: Quantity,
+                                 g: Quantity) -> Quantity:
     """Distance a block sliding down with speed v0 travels until rest when mu > tan(alpha),
     v0^2 / (2 g (mu cos a - sin a)) (eq. 1.73 integrated as in Example 1.11); inf otherwise."""
     a = sliding_acceleration(alpha, mu, g)

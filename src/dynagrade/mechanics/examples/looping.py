@@ -12,7 +12,7 @@ import numpy as np
 from dynagrade.mechanics._common import ArrayLike, Quantity
 
 
-def speed(phi: ArrayLike, v0: ArrayLike, R: ArrayLike, g: ArrayLike) -> Quantity:
+def speed(phi: Quantity, v0: Quantity, R: Quantity, g: Quantity) -> Quantity:
     """Speed at angle phi from energy conservation, sqrt(v0^2 - 2 g R (1 - cos phi)), eq. (1.110).
 
     NaN where the car cannot reach phi (v0^2 < 2 g R (1 - cos phi))."""
@@ -21,35 +21,35 @@ def speed(phi: ArrayLike, v0: ArrayLike, R: ArrayLike, g: ArrayLike) -> Quantity
         return np.where(v_sq >= 0.0, np.sqrt(np.maximum(v_sq, 0.0)), np.nan)
 
 
-def minimum_speed(v0: ArrayLike, R: ArrayLike, g: ArrayLike) -> Quantity:
+def minimum_speed(v0: Quantity, R: Quantity, g: Quantity) -> Quantity:
     """Lowest speed in the looping, at the top phi = pi: sqrt(v0^2 - 4 g R), eq. (1.111)."""
     return speed(np.pi, v0, R, g)
 
 
-def speed_to_reach_top(R: ArrayLike, g: ArrayLike) -> Quantity:
+def speed_to_reach_top(R: Quantity, g: Quantity) -> Quantity:
     """Necessary entry speed for reaching the top, 2 sqrt(g R), eq. (1.112)."""
     return 2.0 * np.sqrt(g * R)
 
 
-def looping_normal_force(phi: ArrayLike, m: ArrayLike, v0: ArrayLike, R: ArrayLike,
-                         g: ArrayLike) -> Quantity:
+def looping_normal_force(phi: Quantity, m: Quantity, v0: Quantity, R: Quantity,
+                         g: Quantity) -> Quantity:
     """Normal force of the track on the car, m v0^2/R + m g (3 cos phi - 2), eq. (1.116).
 
     Valid while the car stays on the track (N >= 0 along the way, eq. 1.113)."""
     return m * v0**2 / R + m * g * (3.0 * np.cos(phi) - 2.0)
 
 
-def minimum_entry_speed(R: ArrayLike, g: ArrayLike) -> Quantity:
+def minimum_entry_speed(R: Quantity, g: Quantity) -> Quantity:
     """Smallest entry speed that keeps the car on the track, sqrt(5 g R), eq. (1.118)."""
     return np.sqrt(5.0 * g * R)
 
 
-def maximum_normal_force(m: ArrayLike, v0: ArrayLike, R: ArrayLike, g: ArrayLike) -> Quantity:
+def maximum_normal_force(m: Quantity, v0: Quantity, R: Quantity, g: Quantity) -> Quantity:
     """Largest normal force, at the bottom (phi = 0 or 2 pi): m v0^2/R + m g, eq. (1.116)/(1.119)."""
     return looping_normal_force(0.0, m, v0, R, g)
 
 
-def lift_off_angle(v0: ArrayLike, R: ArrayLike, g: ArrayLike) -> Quantity:
+def lift_off_angle(v0: Quantity, R: Quantity, g: Quantity) -> Quantity:
     """Angle in (0, pi] at which N(phi) of eq. (1.116) first vanishes, NaN if it never does."""
     c = (2.0 - v0**2 / (g * R)) / 3.0
     with np.errstate(invalid="ignore"):
@@ -66,16 +66,16 @@ class SupportReactions:
     MA: np.ndarray
 
 
-def support_reactions(phi: ArrayLike, m: ArrayLike, v0: ArrayLike, R: ArrayLike,
-                      g: ArrayLike) -> SupportReactions:
+def support_reactions(phi: Quantity, m: Quantity, v0: Quantity, R: Quantity,
+                      g: Quantity) -> SupportReactions:
     """Support reactions of the looping while the car is at phi, eq. (1.122):
     A1 = -N sin(phi), A2 = N cos(phi), MA = N R sin(phi) with N from eq. (1.116)."""
     N = looping_normal_force(phi, m, v0, R, g)
     return SupportReactions(A1=-N * np.sin(phi), A2=N * np.cos(phi), MA=N * R * np.sin(phi))
 
 
-def static_support_reactions(phi: ArrayLike, m: ArrayLike, R: ArrayLike,
-                             g: ArrayLike) -> SupportReactions:
+def static_support_reactions(phi: ArrayLike, m: Quantity, R: Quantity,
+                             g: Quantity) -> SupportReactions:
     """Support reactions with the particle held at rest at phi, eq. (1.123):
     A1 = 0, A2 = m g, MA = m g R sin(phi)."""
     phi = np.asarray(phi, dtype=float)

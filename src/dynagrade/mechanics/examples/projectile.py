@@ -11,8 +11,8 @@ import numpy as np
 from dynagrade.mechanics._common import ArrayLike, Quantity
 
 
-def position(t: ArrayLike, v0: ArrayLike, alpha: ArrayLike,
-             g: ArrayLike) -> tuple[Quantity, Quantity]:
+def position(t: ArrayLike, v0: Quantity, alpha: Quantity,
+             g: Quantity) -> tuple[Quantity, Quantity]:
     """Position (x1, x2) at time t of the throw, eq. (1.78)."""
     t = np.asarray(t, dtype=float)
     x1 = v0 * t * np.cos(alpha)
@@ -20,8 +20,8 @@ def position(t: ArrayLike, v0: ArrayLike, alpha: ArrayLike,
     return x1, x2
 
 
-def velocity(t: ArrayLike, v0: ArrayLike, alpha: ArrayLike,
-             g: ArrayLike) -> tuple[Quantity, Quantity]:
+def velocity(t: ArrayLike, v0: Quantity, alpha: Quantity,
+             g: Quantity) -> tuple[Quantity, Quantity]:
     """Velocity (v1, v2) at time t, the time derivative of eq. (1.78) (see eq. 1.77)."""
     t = np.asarray(t, dtype=float)
     v1 = v0 * np.cos(alpha) + 0.0 * t
@@ -29,22 +29,22 @@ def velocity(t: ArrayLike, v0: ArrayLike, alpha: ArrayLike,
     return v1, v2
 
 
-def flight_time(v0: ArrayLike, alpha: ArrayLike, g: ArrayLike) -> Quantity:
+def flight_time(v0: Quantity, alpha: Quantity, g: Quantity) -> Quantity:
     """Time at which the particle lands on level ground again, t_1,max of eq. (1.79)."""
     return 2.0 * v0 * np.sin(alpha) / g
 
 
-def horizontal_range(v0: ArrayLike, alpha: ArrayLike, g: ArrayLike) -> Quantity:
+def horizontal_range(v0: Quantity, alpha: Quantity, g: Quantity) -> Quantity:
     """Horizontal distance to the landing point, x_1,max = v0^2 sin(2 alpha)/g, eq. (1.80)."""
     return 2.0 * v0**2 * np.sin(alpha) * np.cos(alpha) / g
 
 
-def peak_time(v0: ArrayLike, alpha: ArrayLike, g: ArrayLike) -> Quantity:
+def peak_time(v0: Quantity, alpha: Quantity, g: Quantity) -> Quantity:
     """Time at which the highest point is reached, t_2,max of eq. (1.81)."""
     return v0 * np.sin(alpha) / g
 
 
-def peak_height(v0: ArrayLike, alpha: ArrayLike, g: ArrayLike) -> Quantity:
+def peak_height(v0: Quantity, alpha: Quantity, g: Quantity) -> Quantity:
     """Maximum height of the flight parabola, x_2,max = v0^2 sin^2(alpha)/(2g), eq. (1.82)."""
     return v0**2 * np.sin(alpha) ** 2 / (2.0 * g)
 
@@ -54,7 +54,7 @@ def optimal_launch_angle() -> Quantity:
     return np.pi / 4.0
 
 
-def trajectory_height(x1: ArrayLike, v0: ArrayLike, alpha: ArrayLike, g: ArrayLike) -> Quantity:
+def trajectory_height(x1: ArrayLike, v0: Quantity, alpha: Quantity, g: Quantity) -> Quantity:
     """Height x2 of the flight parabola above horizontal position x1 (eq. 1.78 with t eliminated)."""
     x1 = np.asarray(x1, dtype=float)
     return x1 * np.tan(alpha) - g * x1**2 / (2.0 * v0**2 * np.cos(alpha) ** 2)
