@@ -99,7 +99,7 @@ class Part(ABC):
     #: the grader's half of the kind (every concrete kind sets its own, :mod:`.kinds`)
     grading: ClassVar[object] = None
     #: how the kind goes into Moodle (a :class:`MoodleForm`, or :class:`NotExported`)
-    moodle: ClassVar[object] = None
+    moodle: ClassVar[MoodleForm | NotExported | None] = None
 
     def __init_subclass__(cls, **kwargs):
         """A class that declares its own ``kind`` is a part kind: checked and registered
