@@ -150,6 +150,14 @@ class Exercise:
 
     # -- parameters -------------------------------------------------------------------
 
+    @property
+    def file(self) -> str:
+        """The file the exercise was loaded from (``path``); an exercise built in code,
+        which has none, cannot go into an exam's manifest."""
+        if self.path is None:
+            raise DefinitionError(f"exercise {self.id!r} was not loaded from a file")
+        return self.path
+
     def parameter(self, name: str) -> Parameter:
         for p in self.params:
             if p.name == name:
