@@ -78,6 +78,23 @@ class Misconception:
         """Whether this misconception is tried in the variant with ``params``."""
         return self.applies is None or bool(self.applies(params))
 
+    def wrong_value(self, params: ParamValues) -> Any:
+        """The wrong answer (SI) in the variant with ``params``: a numeric or vector
+        part's misconception is a function of the parameters."""
+        if isinstance(self.value, str):
+            raise DefinitionError(f"misconception {self.name!r}: a number's or vector's "
+                                  "misconception is a function of the parameters, not "
+                                  f"the formula {self.value!r}")
+        return self.value(params)
+
+    @property
+    def formula(self) -> str:
+        """The wrong formula: a symbolic part's misconception is an expression."""
+        if not isinstance(self.value, str):
+            raise DefinitionError(f"misconception {self.name!r}: a formula's misconception "
+                                  "is an expression string, not a function")
+        return self.value
+
 
 @dataclass(frozen=True)
 class Part(ABC):
@@ -142,7 +159,7 @@ class Part(ABC):
 
     def _known_wrong(self, params: ParamValues) -> tuple[KnownWrong, ...]:
         return tuple(
-            KnownWrong(m.name, self.in_part_unit(m.value(params)), m.feedback, m.score)
+            KnownWrong(m.name, self.in_part_unit(m.wrong_value(params)), m.feedback, m.score)
             for m in self.misconceptions_for(params)
         )
 
@@ -155,6 +172,16 @@ class Part(ABC):
         """Whether a wrong answer may be graded again against the student's own earlier
         answers (:mod:`.scoring`)."""
         return False
+
+    def follow_through_uses(self) -> tuple[str, ...]:
+        """The earlier parts a follow-through reference is computed from (none here)."""
+        return ()
+
+    def followed_reference(self, params: ParamValues, earlier: Mapping[str, float]) -> Any:
+        """The reference recomputed, in the part's unit, from the student's ``earlier``
+        answers (SI, by the names of :meth:`follow_through_uses`); only a part that
+        :attr:`follows_through` has one."""
+        raise TypeError(f"{type(self).__name__} {self.name!r} does not follow through")
 
     @abstractmethod
     def asks(self) -> str:
@@ -193,7 +220,7 @@ class Part(ABC):
 
     def misconception_answer(self, misconception: Misconception, params: ParamValues) -> str:
         """The answer a declared misconception gives in the variant with ``params``."""
-        return self.answer_text(self.in_part_unit(misconception.value(params)))
+        return self.answer_text(self.in_part_unit(misconception.wrong_value(params)))
 
     def cross_check(self, params: ParamValues, answers: Mapping[str, Any],
                     part: Callable[[str], Part]) -> list[str]:
@@ -240,6 +267,14 @@ class Numeric(Part):
     @property
     def follows_through(self) -> bool:
         return self.follow_through is not None
+
+    def follow_through_uses(self) -> tuple[str, ...]:
+        return self.uses
+
+    def followed_reference(self, params: ParamValues, earlier: Mapping[str, float]) -> Any:
+        if self.follow_through is None:
+            return super().followed_reference(params, earlier)
+        return from_si(self.follow_through(params, earlier), self.unit)
 
     def asks(self) -> str:
         return f"a number in {self.unit}" if self.unit else "a number"
@@ -339,7 +374,7 @@ class Symbolic(Part):
         return [(f"{1 + PERTURBATION}*({expected})", "the formula times 1.05")]
 
     def misconception_answer(self, misconception, params):
-        return misconception.value
+        return misconception.formula
 
     def own_checks_key(self, params, expected):
         """The reference, and which misconceptions apply: a formula's spec, its near miss
@@ -372,7 +407,7 @@ class Symbolic(Part):
     def _spec(self, misconceptions: tuple[Misconception, ...]) -> SymbolicSpec:
         """The spec with ``misconceptions`` (when the part is built, every one: no
         variant's parameters say which apply)."""
-        known = tuple(KnownWrong(m.name, m.value, m.feedback, m.score)
+        known = tuple(KnownWrong(m.name, m.formula, m.feedback, m.score)
                       for m in misconceptions)
         return SymbolicSpec(variables=dict(self.variables), misconceptions=known,
                             form=tuple(self.form), form_credit=self.form_credit,
