@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import textwrap
 from abc import ABC, abstractmethod
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, ClassVar, Mapping
 
 from ..grading.kinds import GRADING_KINDS
@@ -172,6 +172,16 @@ class Part(ABC):
         """Whether a wrong answer may be graded again against the student's own earlier
         answers (:mod:`.scoring`)."""
         return False
+
+    def spellings(self) -> Mapping[str, str]:
+        """Each spelling an answer may use for a variable of the part's formula, to the
+        variable's name (none: the answer is no formula)."""
+        return {}
+
+    def with_variables(self, variables: Mapping[str, Variable]) -> Part:
+        """The part with its formula's ``variables`` completed (:mod:`.model`); only a
+        part whose answer is a formula has them."""
+        raise TypeError(f"{type(self).__name__} {self.name!r} has no variables")
 
     def follow_through_uses(self) -> tuple[str, ...]:
         """The earlier parts a follow-through reference is computed from (none here)."""
@@ -361,6 +371,9 @@ class Symbolic(Part):
     def reference(self, solved):
         return self.expected
 
+    def with_variables(self, variables: Mapping[str, Variable]) -> Part:
+        return replace(self, variables=variables)
+
     def asks(self) -> str:
         """``a formula in h, lat (λ)``: each variable's name, and the symbol the
         statement prints for it where that reads otherwise."""
@@ -385,6 +398,9 @@ class Symbolic(Part):
 
     def check_names(self) -> None:
         self._spec(self.misconceptions)
+
+    def spellings(self) -> Mapping[str, str]:
+        return self._spec(()).spellings
 
     def cross_check(self, params, answers, part):
         """The formula, evaluated at the variant's parameters, against the numeric part it
@@ -490,3 +506,12 @@ def shortened(text: str, width: int) -> str:
     " [...]" to fit ``width``; a line that fits as it is (most) skips the wrapper."""
     words = " ".join(text.split())
     return words if len(words) <= width else textwrap.shorten(words, width)
+
+
+def part_class(class_name: str) -> type[Part] | None:
+    """The part kind whose class is named ``class_name`` (``"Numeric"``) as an exercise
+    file calls it; None for any other name (:mod:`.listing` reads calls unrun)."""
+    cls = globals().get(class_name)
+    if isinstance(cls, type) and issubclass(cls, Part) and cls in PART_KINDS.values():
+        return cls
+    return None
