@@ -102,7 +102,6 @@ def score_bins(percents: list[float]) -> tuple[tuple[str, int], ...]:
 def histogram(percents: list[float]) -> Histogram:
     """Histogram of the students' percentages in bins of 10 %, with its data."""
     from matplotlib.figure import Figure
-
     from matplotlib.ticker import MaxNLocator
 
     bins = score_bins(percents)
