@@ -26,6 +26,7 @@ from pathlib import Path
 import pytest
 
 from dynagrade.classgrade.grade import grade_class
+from dynagrade.classgrade.gradebook import GradebookRow, RowStatus
 from dynagrade.generation.generate import generate_exam
 from dynagrade.render.figures import figure_svg
 from dynagrade.render.mathtex import to_mathml
@@ -468,8 +469,9 @@ def test_the_sheet_writes_the_bold_vectors_of_its_statement_as_bold_characters(o
 
 
 def test_the_median_of_an_even_count_is_the_mean_of_the_two_middle_values():
-    rows = [{"status": "graded", "percent": p} for p in (100.0, 70.0, 100.0, 85.0)]
-    rows.append({"status": "absent", "percent": 0.0})
+    rows = [GradebookRow(f"s{i}", "", "", {}, p, 100.0, RowStatus.GRADED)
+            for i, p in enumerate((100.0, 70.0, 100.0, 85.0))]
+    rows.append(GradebookRow("s4", "", "", {}, None, 100.0, RowStatus.ABSENT))
     summary = class_summary(rows)
     assert summary["median"] == "92.5"  # (85 + 100) / 2, not the upper middle 100
     assert summary["mean"] == "88.75"
