@@ -20,6 +20,7 @@ import json
 import os
 import sys
 from pathlib import Path
+from typing import Any
 
 import click
 
@@ -28,12 +29,12 @@ from .errors import DynagradeError
 from .exercise import loader
 
 
-class _ReportsErrors:
+class _ReportsErrors(click.Command):
     """The one place where dynagrade's errors become command-line errors: the message
     of any :class:`DynagradeError` raised by a command is printed as ``Error: ...`` and
     the command exits with status 1, without a traceback."""
 
-    def invoke(self, ctx):
+    def invoke(self, ctx: click.Context) -> Any:
         try:
             return super().invoke(ctx)
         except DynagradeError as error:
@@ -44,7 +45,7 @@ class _Group(_ReportsErrors, click.Group):
     """A command group whose subcommands report dynagrade's errors as messages."""
 
 
-class _Command(_ReportsErrors, click.Command):
+class _Command(_ReportsErrors):
     """A command that reports dynagrade's errors as messages."""
 
 
@@ -58,7 +59,7 @@ class _Context:
     def __init__(self, folders: tuple[str, ...], project: Project):
         self.command_line = list(folders)
         self.project = project
-        self._bank = None
+        self._bank: loader.Bank | None = None
 
     @property
     def folders(self) -> tuple[str, ...]:
@@ -232,9 +233,11 @@ def sheet(context, exercise_id, student, output, solution):
     if figure is not None:
         from .render.figures import figure_svg
 
-        figure_path = Path(output).parent / figure
-        figure_path.write_text(figure_svg(exercise, variant), encoding="utf-8")
-        click.echo(f"wrote {figure_path}: its figure", err=True)
+        svg = figure_svg(exercise, variant)  # an exercise with a figure draws one
+        if svg is not None:
+            figure_path = Path(output).parent / figure
+            figure_path.write_text(svg, encoding="utf-8")
+            click.echo(f"wrote {figure_path}: its figure", err=True)
 
 
 @main.command()

@@ -207,10 +207,11 @@ def class_outcome(manifest: Manifest, graded: list[dict[str, ExerciseResult | No
                             rounding=rounding)
         rows.append(row)
         feedback[student.student_id] = StudentFeedback(student, results, row, handed_in)
-        submitted = [e for e in exercise_ids if results[e] is not None]
-        if submitted:
+        submitted = {e: result for e in exercise_ids if (result := results[e]) is not None}
+        # a student who handed something in has a total (only the absent have none)
+        if submitted and row.total is not None:
             analysed.append(StudentParts(row.total, {
-                (e, p.name): p for e in submitted for p in results[e].parts}))
+                (e, p.name): p for e, result in submitted.items() for p in result.parts}))
     ordered_parts = [(e.id, p) for e in manifest.exercises for p in e.parts]
     return ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
                         part_statistics(ordered_parts, analysed, declared=declared), feedback,
@@ -223,7 +224,9 @@ def part_errors(manifest: Manifest,
     found = []
     for student in manifest.students:
         for exercise_id, result in graded[student.student_id].items():
-            for part in result.parts if result is not None else ():
+            if result is None:
+                continue
+            for part in result.parts:
                 if part.status is Status.ERROR:
                     found.append(Problem("error", result.source,
                                          f"part {part.name}: {part.feedback}",

@@ -152,7 +152,8 @@ def apply_overrides(overrides: tuple[Override, ...], where: str,
     of an exercise the student handed nothing in for is an :class:`OverrideError`,
     listing every such row."""
     results = {student: dict(by_exercise) for student, by_exercise in results_by_student.items()}
-    problems, comments = [], {}
+    problems: list[str] = []
+    comments: dict[str, list[str]] = {}
     for override in overrides:
         result = results[override.student_id][override.exercise]
         if result is None:

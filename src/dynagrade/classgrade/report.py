@@ -102,6 +102,7 @@ def score_bins(percents: list[float]) -> tuple[tuple[str, int], ...]:
 def histogram(percents: list[float]) -> Histogram:
     """Histogram of the students' percentages in bins of 10 %, with its data."""
     from matplotlib.figure import Figure
+    from matplotlib.ticker import MaxNLocator
 
     bins = score_bins(percents)
     figure = Figure(figsize=(6.0, 2.8))
@@ -111,7 +112,9 @@ def histogram(percents: list[float]) -> Histogram:
     axes.set_xlabel("score (%)")
     axes.set_ylabel("students")
     axes.set_xlim(0, 100)
-    axes.yaxis.get_major_locator().set_params(integer=True)
+    locator = axes.yaxis.get_major_locator()
+    if isinstance(locator, MaxNLocator):  # always: a linear axis's AutoLocator is one
+        locator.set_params(integer=True)
     counted = [f"{band}: {count}" for band, count in bins]
     description = (f"Bar chart of the scores of {len(percents)} students in bands of 10 %, "
                    f"students per band: {sentence_list(counted)}.")

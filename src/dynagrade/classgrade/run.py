@@ -23,4 +23,4 @@ class GradingRun:
 
     def __setstate__(self, state):
         paths, parts = state
-        self.__init__(load_exercises(paths), parts)
+        GradingRun.__init__(self, load_exercises(paths), parts)

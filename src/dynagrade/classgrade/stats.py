@@ -132,9 +132,9 @@ def part_statistics(exercise_parts: list[tuple[str, PartEntry]], graded: list[St
             item.difficulty = sum(fractions) / len(fractions)
             item.point_biserial = correlation(fractions, rest)
             item.upper_lower = upper_lower_index(fractions, totals)
-            wrong = Counter()
-            matched: dict[str, Counter] = {}
-            named = Counter()
+            wrong: Counter[str] = Counter()
+            matched: dict[str, Counter[str]] = {}
+            named: Counter[str] = Counter()
             for entry, _ in entries:
                 if entry.status in (Status.WRONG, Status.PARTIAL) and entry.answer:
                     text = " ".join(entry.answer.split())

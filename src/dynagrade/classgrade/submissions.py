@@ -139,7 +139,7 @@ def _download_files(archive: Path, people: Identities | None, platform: str | No
     """The files of a platform's download, each with its student; every entry refused or
     unmatched is reported, with the exercise its file name points to (so that a student's
     feedback says what was handed in and not graded)."""
-    found = []
+    found: list[Found] = []
     for entry in read_download(archive, people, platform):
         source = archive / entry.name
         if entry.problem:
@@ -242,7 +242,7 @@ def _read_sheet(found: Found, exam: _Exam, problems: list[Problem]) -> list[Subm
     path, whose = found.path, found.owner or ""
     source = str(path)
     try:
-        sheet = (sheet_from_bytes(found.content, source) if found.downloaded
+        sheet = (sheet_from_bytes(found.content, source) if found.content is not None
                  else read_sheet(path))
     except SheetError as error:
         problems.append(Problem("error", source, "corrupt, skipped: "
@@ -291,7 +291,8 @@ def _without_path(error: Exception, path: Path) -> str:
 def _read_responses(found: Found, exam: _Exam, problems: list[Problem]) -> list[Submission]:
     source, whose = str(found.path), found.owner or ""
     try:
-        raw = found.content if found.downloaded else read_data_file(found.path, MAX_CSV_BYTES)
+        raw = (found.content if found.content is not None
+               else read_data_file(found.path, MAX_CSV_BYTES))
     except DataFileError as error:
         problems.append(Problem("error", source, f"corrupt, skipped: {error}", whose))
         return []

@@ -47,7 +47,7 @@ import json
 import os
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable, Mapping
+from typing import Any, Callable, Mapping, TypeGuard, TypeVar
 
 from ..errors import DynagradeError
 from ..exercise.parts import PART_KINDS
@@ -59,6 +59,9 @@ VERSION = 1
 __all__ = ["FORMAT", "VERSION", "ManifestError", "Manifest", "Generator", "ExamEntry",
            "ExerciseEntry", "PartEntry", "StudentEntry", "VariantEntry", "Redraw", "load",
            "dump", "from_dict", "to_dict", "text"]
+
+
+_T = TypeVar("_T")
 
 
 class ManifestError(DynagradeError, ValueError):
@@ -201,16 +204,16 @@ def _plain(value):
     return list(value) if isinstance(value, tuple) else value
 
 
-def _part_dict(part: PartEntry) -> dict:
-    entry = {"name": part.name, "label": part.label, "kind": part.kind, "unit": part.unit,
+def _part_dict(part: PartEntry) -> dict[str, Any]:
+    entry: dict[str, Any] = {"name": part.name, "label": part.label, "kind": part.kind, "unit": part.unit,
              "points": part.points}
     for name in PART_KINDS[part.kind].manifest_fields:
         entry[name] = _plain(getattr(part, name))
     return entry
 
 
-def _exam_dict(exam: ExamEntry) -> dict:
-    entry = {"id": exam.id, "title": exam.title, "date": exam.date,
+def _exam_dict(exam: ExamEntry) -> dict[str, Any]:
+    entry: dict[str, Any] = {"id": exam.id, "title": exam.title, "date": exam.date,
              "instructions": exam.instructions}
     if exam.policy is not None:
         entry["policy"] = dict(exam.policy)
@@ -224,7 +227,7 @@ def _exam_dict(exam: ExamEntry) -> dict:
     return entry
 
 
-def to_dict(manifest: Manifest) -> dict:
+def to_dict(manifest: Manifest) -> dict[str, Any]:
     """The manifest as the JSON document stores it."""
     return {
         "format": manifest.format, "version": manifest.version,
@@ -295,7 +298,7 @@ def from_dict(data: Any) -> Manifest:
         generator=Generator(generator.string("dynagrade"), generator.string("numpy")),
         exam=ExamEntry(exam.string("id"), exam.string("title"), exam.string("date"),
                        exam.string("instructions"), exam.number("points"),
-                       exam.mapping("policy", optional=True),
+                       exam.optional_mapping("policy"),
                        exam.string("language") if "language" in exam.data else "en",
                        exam.string("secret") if "secret" in exam.data else None,
                        _step(exam) if "round" in exam.data else DEFAULT_STEP),
@@ -318,53 +321,55 @@ class _Object:
     def path(self, key: str) -> str:
         return f"{self.where}.{key}" if self.where else key
 
-    def _get(self, key: str, optional: bool = False):
+    def _get(self, key: str) -> object:
         if key not in self.data:
-            if optional:
-                return None
             raise ManifestError(f"{self.where or 'the manifest'}: missing {key!r}")
         return self.data[key]
 
-    def _typed(self, key: str, check: Callable[[Any], bool], expected: str,
-               nullable: bool = False):
+    def _typed(self, key: str, check: Callable[[object], TypeGuard[_T]], expected: str) -> _T:
         value = self._get(key)
-        if value is None and nullable:
-            return None
         if not check(value):
             raise ManifestError(f"{self.path(key)}: expected {expected}, got {_shown(value)}")
         return value
 
-    def string(self, key: str, nullable: bool = False) -> str | None:
-        return self._typed(key, lambda v: isinstance(v, str), "text", nullable)
+    def string(self, key: str) -> str:
+        return self._typed(key, _is_text, "text")
 
-    def number(self, key: str, nullable: bool = False) -> float | None:
-        return self._typed(key, _is_number, "a number", nullable)
+    def string_or_null(self, key: str) -> str | None:
+        return None if self._get(key) is None else self.string(key)
+
+    def number(self, key: str) -> float:
+        return self._typed(key, _is_number, "a number")
+
+    def number_or_null(self, key: str) -> float | None:
+        return None if self._get(key) is None else self.number(key)
 
     def integer(self, key: str) -> int:
-        return self._typed(key, lambda v: isinstance(v, int) and not isinstance(v, bool),
-                           "a whole number")
+        return self._typed(key, _is_integer, "a whole number")
 
     def boolean(self, key: str) -> bool:
-        return self._typed(key, lambda v: isinstance(v, bool), "true or false")
+        return self._typed(key, _is_boolean, "true or false")
 
     def strings(self, key: str) -> tuple[str, ...]:
-        values = self._typed(key, lambda v: isinstance(v, list), "a list of texts")
+        values = self._typed(key, _is_list, "a list of texts")
         for index, value in enumerate(values):
             if not isinstance(value, str):
                 raise ManifestError(f"{self.path(key)}[{index}]: expected text, "
                                     f"got {_shown(value)}")
         return tuple(values)
 
-    def mapping(self, key: str, optional: bool = False) -> dict | None:
-        if optional and key not in self.data:
-            return None
-        return self._typed(key, lambda v: isinstance(v, dict), "an object")
+    def mapping(self, key: str) -> dict[str, Any]:
+        return self._typed(key, _is_object, "an object")
+
+    def optional_mapping(self, key: str) -> dict[str, Any] | None:
+        """The object at ``key``, None when the field is absent (not when it is null)."""
+        return self.mapping(key) if key in self.data else None
 
     def object(self, key: str) -> _Object:
         return _Object(self._get(key), self.path(key))
 
     def objects(self, key: str) -> list[_Object]:
-        values = self._typed(key, lambda v: isinstance(v, list), "a list")
+        values = self._typed(key, _is_list, "a list")
         return [_Object(value, f"{self.path(key)}[{index}]")
                 for index, value in enumerate(values)]
 
@@ -376,8 +381,29 @@ def _step(exam: _Object) -> float:
     return float(step)
 
 
-def _is_number(value) -> bool:
+def _is_number(value: object) -> TypeGuard[float]:
     return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def _is_integer(value: object) -> TypeGuard[int]:
+    return isinstance(value, int) and not isinstance(value, bool)
+
+
+def _is_boolean(value: object) -> TypeGuard[bool]:
+    return isinstance(value, bool)
+
+
+def _is_text(value: object) -> TypeGuard[str]:
+    return isinstance(value, str)
+
+
+def _is_list(value: object) -> TypeGuard[list[Any]]:
+    return isinstance(value, list)
+
+
+def _is_object(value: object) -> TypeGuard[dict[str, Any]]:
+    """A JSON object: its keys are always text."""
+    return isinstance(value, dict)
 
 
 def _shown(value) -> str:
@@ -387,7 +413,7 @@ def _shown(value) -> str:
 
 _SETTING_READERS: dict[str, Callable[[_Object, str], Any]] = {
     "rtol": lambda o, k: o.number(k),
-    "atol": lambda o, k: o.number(k, nullable=True),
+    "atol": lambda o, k: o.number_or_null(k),
     "size": lambda o, k: o.integer(k),
     "options": lambda o, k: o.strings(k),
     "multiple": lambda o, k: o.boolean(k),
@@ -402,7 +428,7 @@ def _part(item: _Object) -> PartEntry:
     settings = {name: _SETTING_READERS[name](item, name)
                 for name in PART_KINDS[kind].manifest_fields}
     return PartEntry(item.string("name"), item.string("label"), kind,
-                     item.string("unit", nullable=True), item.number("points"), **settings)
+                     item.string_or_null("unit"), item.number("points"), **settings)
 
 
 def _exercise(item: _Object) -> ExerciseEntry:

@@ -23,7 +23,7 @@ from __future__ import annotations
 import datetime as dt
 import math
 from dataclasses import dataclass
-from typing import Callable
+from typing import Any, Callable, Mapping
 
 from ..errors import DynagradeError
 from .solution_policy import SOLUTIONS, default_solutions
@@ -50,10 +50,10 @@ class Policy:
     penalty: float = 0.0
     feedback: str = "after-close"
     counts: str = "last"
-    solutions: str | None = None  # None: the mode's default (solution_policy.py)
+    solutions: str = ""  # "": the mode's default (solution_policy.py)
 
     def __post_init__(self):
-        if self.solutions is None:
+        if not self.solutions:
             object.__setattr__(self, "solutions", default_solutions(self.mode))
 
     def is_open(self, now: dt.datetime) -> bool:
@@ -78,13 +78,13 @@ class Policy:
                 "solutions": self.solutions}
 
     @classmethod
-    def from_json(cls, data: dict | None) -> "Policy":
+    def from_json(cls, data: Mapping[str, Any] | None) -> "Policy":
         """The policy a manifest stored (a manifest without one: the exam defaults)."""
         if not data:
             return cls()
         return cls(data["mode"], _parse_iso(data.get("opens")), _parse_iso(data.get("closes")),
                    int(data["attempts"]), float(data["penalty"]), data["feedback"],
-                   data["counts"], data.get("solutions"))
+                   data["counts"], data.get("solutions") or "")
 
 
 def read_policy(data: dict, where: str, line_of: Callable[[str], str]) -> Policy:

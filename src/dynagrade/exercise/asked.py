@@ -61,7 +61,7 @@ def unshown_variables(exercise: Exercise) -> list[str]:
         variables = getattr(part, "variables", None)
         if not variables:
             continue
-        spellings = part.spec(None).spellings
+        spellings = part.spellings()
         for name, variable in variables.items():
             accepted = {name} | {s for s, n in spellings.items() if n == name}
             printed = [variable.symbol] if variable.symbol and \

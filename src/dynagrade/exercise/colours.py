@@ -39,7 +39,8 @@ def to_rgb(colour) -> tuple[float, float, float]:
     if text.startswith("#") and len(text) in (4, 7):
         digits = text[1:] if len(text) == 7 else "".join(c * 2 for c in text[1:])
         if all(c in "0123456789abcdef" for c in digits):
-            return tuple(int(digits[i:i + 2], 16) / 255 for i in (0, 2, 4))
+            red, green, blue = (int(digits[i:i + 2], 16) / 255 for i in (0, 2, 4))
+            return red, green, blue
     else:
         try:
             level = float(text)

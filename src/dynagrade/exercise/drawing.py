@@ -213,7 +213,8 @@ class Canvas:
             self.arrows.append(arrow)
             self._order.append(arrow)
         if text:
-            return self.text(*start, text, **options)
+            x, y = start
+            return self.text(x, y, text, **options)
         _take(options, "fontsize", "size")
         _no_more(options, "annotate")
         return None

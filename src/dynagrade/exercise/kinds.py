@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from enum import Enum
+from typing import ClassVar, Protocol
 
 from ..errors import DefinitionError
 from ..grading.kinds import GRADING_KINDS, GradingKind
@@ -52,8 +53,19 @@ class NotExported:
                                   "the part (e.g. 'a formula')")
 
 
+class PartKind(Protocol):
+    """A part as the layers above read its kind from :data:`PART_KINDS` (whose values are
+    the part classes): the class attributes :func:`check_part_kind` guarantees.
+    :class:`dynagrade.exercise.parts.Part` is one; this module cannot import it, since
+    ``parts`` imports this module."""
+
+    manifest_fields: ClassVar[tuple[str, ...]]
+    answer_varies: ClassVar[bool]
+    moodle: ClassVar[MoodleForm | NotExported | None]
+
+
 #: every part kind by its name (the ``kind`` of a part and of a manifest's part entry)
-PART_KINDS: dict[str, type] = {}
+PART_KINDS: dict[str, type[PartKind]] = {}
 
 
 def check_part_kind(cls: type) -> None:
@@ -82,7 +94,7 @@ def check_part_kind(cls: type) -> None:
                               f"{PART_KINDS[name].__name__}")
 
 
-def register_part_kind(cls: type) -> None:
+def register_part_kind(cls: type[PartKind]) -> None:
     """Check ``cls`` (:func:`check_part_kind`) and register it under its ``kind``."""
     check_part_kind(cls)
     PART_KINDS[cls.__dict__["kind"]] = cls

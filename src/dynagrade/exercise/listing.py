@@ -162,9 +162,12 @@ def _calls(node: ast.expr, names: dict[str, ast.expr]) -> list[ast.Call]:
     node = _resolved(node, names)
     if not isinstance(node, (ast.Tuple, ast.List)):
         raise _NotLiteral("not a literal sequence")
-    calls = [_resolved(e, names) for e in node.elts]
-    if not all(isinstance(c, ast.Call) for c in calls):
-        raise _NotLiteral("not a call")
+    calls = []
+    for element in node.elts:
+        call = _resolved(element, names)
+        if not isinstance(call, ast.Call):
+            raise _NotLiteral("not a call")
+        calls.append(call)
     return calls
 
 
@@ -191,20 +194,29 @@ def _parameter_names(cls: type) -> tuple[str, ...]:
 
 
 def _parameter(call: ast.Call, names) -> Parameter:
-    if _callee(call) not in _PARAMETER_CALLS:
+    callee = _callee(call)
+    if callee is None or callee not in _PARAMETER_CALLS:
         raise _NotLiteral("not a parameter")
     from . import params
 
-    written = _arguments(call, getattr(params, _callee(call)), ("name", "unit", "symbol"))
+    written = _arguments(call, getattr(params, callee), ("name", "unit", "symbol"))
     return Parameter(**{k: _literal(v, names) for k, v in written.items()})
 
 
 def _part(call: ast.Call, names) -> Part:
-    cls = getattr(_parts, _callee(call) or "", None)
-    if cls not in _parts.PART_KINDS.values():
+    cls = _parts.part_class(_callee(call) or "")
+    if cls is None:
         raise _NotLiteral("not a part kind")
     written = _arguments(call, cls, ("name", "label", "points", "unit"))
     return cls(**{k: _literal(v, names) for k, v in written.items()})
+
+
+def _variable_key(key: ast.expr | None, names: dict[str, ast.expr]):
+    """A key of a Symbolic part's ``variables`` as written (None: ``**other``, whose names
+    are not written out)."""
+    if key is None:
+        raise _NotLiteral("unpacked variables")
+    return _literal(key, names)
 
 
 def _written_formula(call: ast.Call, names) -> list[tuple[str, str, str, tuple[str, ...]]]:
@@ -219,7 +231,7 @@ def _written_formula(call: ast.Call, names) -> list[tuple[str, str, str, tuple[s
     name = _literal(written["name"], names)
     variables = _resolved(written.get("variables", ast.Tuple(elts=[])), names)
     keys = variables.keys if isinstance(variables, ast.Dict) else [variables]
-    variable_names = tuple(n for key in keys for n in _flat(_literal(key, names)))
+    variable_names = tuple(n for key in keys for n in _flat(_variable_key(key, names)))
     formulas = [(name, "expected formula", _literal(written["expected"], names),
                  variable_names)]
     for wrong in _calls(written.get("misconceptions", ast.Tuple(elts=[])), names):

@@ -70,7 +70,7 @@ def search_path(extra: Iterable[str | os.PathLike] = ()) -> list[Path]:
     for folder in folders:
         if not folder.is_dir():
             raise ExerciseFileError(f"exercise folder {folder} does not exist")
-    unique = {}
+    unique: dict[Path, Path] = {}
     for folder in folders:
         unique.setdefault(folder.resolve(), folder)
     return list(unique.values()) + [builtin_bank()]
@@ -132,6 +132,8 @@ def _run(path: Path, source: bytes, module_name: str) -> ModuleType:
     exercises it builds leave their templates to :func:`load_file`."""
     loader = _SourceLoader(module_name, path, source)
     spec = importlib.util.spec_from_loader(module_name, loader, origin=str(path))
+    if spec is None:  # never: spec_from_loader makes one whenever given a loader
+        raise ExerciseFileError(f"{path}: cannot be loaded as a module")
     module = importlib.util.module_from_spec(spec)
     try:
         with templates_checked_by_caller():
@@ -251,7 +253,7 @@ class Bank:
         read from the files without running them where they allow it (see
         :mod:`dynagrade.exercise.listing`); a listing renders no template, so a file that
         has to be run is not checked for them, as a file read statically is not."""
-        listings = {}
+        listings: dict[str, ExerciseListing] = {}
         for path in sorted(set(self._index().values())):
             listing = read_listing(path) or ExerciseListing.of(load_file(path, templates=False))
             _require_readable_formulas(Path(path), listing.id,
@@ -268,7 +270,7 @@ def _declared_ids(path: Path) -> list[tuple[str, int | str]]:
         text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as error:
         raise ExerciseFileError(f"{path}: cannot read the file ({error})") from None
-    declared = [(match.group(1), text.count("\n", 0, match.start()) + 1)
+    declared: list[tuple[str, int | str]] = [(match.group(1), text.count("\n", 0, match.start()) + 1)
                 for match in _DECLARED_ID.finditer(text)
                 if _starts_a_word(text, match.start())]
     if declared:

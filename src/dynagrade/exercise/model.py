@@ -150,6 +150,14 @@ class Exercise:
 
     # -- parameters -------------------------------------------------------------------
 
+    @property
+    def file(self) -> str:
+        """The file the exercise was loaded from (``path``); an exercise built in code,
+        which has none, cannot go into an exam's manifest."""
+        if self.path is None:
+            raise DefinitionError(f"exercise {self.id!r} was not loaded from a file")
+        return self.path
+
     def parameter(self, name: str) -> Parameter:
         for p in self.params:
             if p.name == name:
@@ -180,7 +188,7 @@ class Exercise:
         for name in overrides:
             self.parameter(name)
         rng = np.random.default_rng(seed)
-        first = None
+        first: tuple[dict[str, float], list[str]] | None = None
         broken_counts: dict[str, int] = {}
         for _ in range(_MAX_DRAWS):
             values = {p.name: p.draw(rng) for p in self.params}
@@ -195,9 +203,10 @@ class Exercise:
                 broken_counts[description] = broken_counts.get(description, 0) + 1
             if not any(p.varies for p in self.params if p.name not in overrides):
                 break
-        if not strict:
+        # every draw that is not returned is remembered, so ``first`` is set here
+        if not strict and first is not None:
             return first[0], tuple(first[1])
-        worst = max(broken_counts, key=broken_counts.get)
+        worst = max(broken_counts, key=broken_counts.__getitem__)
         raise ConstraintError(f"exercise {self.id!r}, seed {seed}: no draw of the parameters "
                               f"meets the constraint '{worst}'")
 
@@ -307,13 +316,15 @@ def _with_parameter_domains(exercise_id: str, part: Part,
             f"exercise {exercise_id!r}, part {part.name!r}: the symbols {missing} are no "
             f"parameters, so they need a domain: Variable(min, max, unit); the parameters "
             f"are {list(by_name)}")
-    return replace(part, variables={
+    return part.with_variables({
         name: _with_parameter(variable, by_name.get(name)) for name, variable in named.items()})
 
 
 def _with_parameter(variable: Variable | None, parameter: Parameter | None) -> Variable:
     """A formula's variable completed from the parameter of the same name (if any)."""
     if parameter is None:
+        if variable is None:  # refused by the caller: a symbol no parameter names
+            raise DefinitionError("a formula's symbol that is no parameter needs a domain")
         return variable
     if variable is None:
         return symbol_domain(parameter)

@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import textwrap
 from abc import ABC, abstractmethod
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, ClassVar, Mapping
 
 from ..grading.kinds import GRADING_KINDS
@@ -78,6 +78,23 @@ class Misconception:
         """Whether this misconception is tried in the variant with ``params``."""
         return self.applies is None or bool(self.applies(params))
 
+    def wrong_value(self, params: ParamValues) -> Any:
+        """The wrong answer (SI) in the variant with ``params``: a numeric or vector
+        part's misconception is a function of the parameters."""
+        if isinstance(self.value, str):
+            raise DefinitionError(f"misconception {self.name!r}: a number's or vector's "
+                                  "misconception is a function of the parameters, not "
+                                  f"the formula {self.value!r}")
+        return self.value(params)
+
+    @property
+    def formula(self) -> str:
+        """The wrong formula: a symbolic part's misconception is an expression."""
+        if not isinstance(self.value, str):
+            raise DefinitionError(f"misconception {self.name!r}: a formula's misconception "
+                                  "is an expression string, not a function")
+        return self.value
+
 
 @dataclass(frozen=True)
 class Part(ABC):
@@ -99,7 +116,7 @@ class Part(ABC):
     #: the grader's half of the kind (every concrete kind sets its own, :mod:`.kinds`)
     grading: ClassVar[object] = None
     #: how the kind goes into Moodle (a :class:`MoodleForm`, or :class:`NotExported`)
-    moodle: ClassVar[object] = None
+    moodle: ClassVar[MoodleForm | NotExported | None] = None
 
     def __init_subclass__(cls, **kwargs):
         """A class that declares its own ``kind`` is a part kind: checked and registered
@@ -142,7 +159,7 @@ class Part(ABC):
 
     def _known_wrong(self, params: ParamValues) -> tuple[KnownWrong, ...]:
         return tuple(
-            KnownWrong(m.name, self.in_part_unit(m.value(params)), m.feedback, m.score)
+            KnownWrong(m.name, self.in_part_unit(m.wrong_value(params)), m.feedback, m.score)
             for m in self.misconceptions_for(params)
         )
 
@@ -155,6 +172,26 @@ class Part(ABC):
         """Whether a wrong answer may be graded again against the student's own earlier
         answers (:mod:`.scoring`)."""
         return False
+
+    def spellings(self) -> Mapping[str, str]:
+        """Each spelling an answer may use for a variable of the part's formula, to the
+        variable's name (none: the answer is no formula)."""
+        return {}
+
+    def with_variables(self, variables: Mapping[str, Variable]) -> Part:
+        """The part with its formula's ``variables`` completed (:mod:`.model`); only a
+        part whose answer is a formula has them."""
+        raise TypeError(f"{type(self).__name__} {self.name!r} has no variables")
+
+    def follow_through_uses(self) -> tuple[str, ...]:
+        """The earlier parts a follow-through reference is computed from (none here)."""
+        return ()
+
+    def followed_reference(self, params: ParamValues, earlier: Mapping[str, float]) -> Any:
+        """The reference recomputed, in the part's unit, from the student's ``earlier``
+        answers (SI, by the names of :meth:`follow_through_uses`); only a part that
+        :attr:`follows_through` has one."""
+        raise TypeError(f"{type(self).__name__} {self.name!r} does not follow through")
 
     @abstractmethod
     def asks(self) -> str:
@@ -193,7 +230,7 @@ class Part(ABC):
 
     def misconception_answer(self, misconception: Misconception, params: ParamValues) -> str:
         """The answer a declared misconception gives in the variant with ``params``."""
-        return self.answer_text(self.in_part_unit(misconception.value(params)))
+        return self.answer_text(self.in_part_unit(misconception.wrong_value(params)))
 
     def cross_check(self, params: ParamValues, answers: Mapping[str, Any],
                     part: Callable[[str], Part]) -> list[str]:
@@ -240,6 +277,14 @@ class Numeric(Part):
     @property
     def follows_through(self) -> bool:
         return self.follow_through is not None
+
+    def follow_through_uses(self) -> tuple[str, ...]:
+        return self.uses
+
+    def followed_reference(self, params: ParamValues, earlier: Mapping[str, float]) -> Any:
+        if self.follow_through is None:
+            return super().followed_reference(params, earlier)
+        return from_si(self.follow_through(params, earlier), self.unit)
 
     def asks(self) -> str:
         return f"a number in {self.unit}" if self.unit else "a number"
@@ -326,6 +371,9 @@ class Symbolic(Part):
     def reference(self, solved):
         return self.expected
 
+    def with_variables(self, variables: Mapping[str, Variable]) -> Part:
+        return replace(self, variables=variables)
+
     def asks(self) -> str:
         """``a formula in h, lat (λ)``: each variable's name, and the symbol the
         statement prints for it where that reads otherwise."""
@@ -339,7 +387,7 @@ class Symbolic(Part):
         return [(f"{1 + PERTURBATION}*({expected})", "the formula times 1.05")]
 
     def misconception_answer(self, misconception, params):
-        return misconception.value
+        return misconception.formula
 
     def own_checks_key(self, params, expected):
         """The reference, and which misconceptions apply: a formula's spec, its near miss
@@ -350,6 +398,9 @@ class Symbolic(Part):
 
     def check_names(self) -> None:
         self._spec(self.misconceptions)
+
+    def spellings(self) -> Mapping[str, str]:
+        return self._spec(()).spellings
 
     def cross_check(self, params, answers, part):
         """The formula, evaluated at the variant's parameters, against the numeric part it
@@ -372,7 +423,7 @@ class Symbolic(Part):
     def _spec(self, misconceptions: tuple[Misconception, ...]) -> SymbolicSpec:
         """The spec with ``misconceptions`` (when the part is built, every one: no
         variant's parameters say which apply)."""
-        known = tuple(KnownWrong(m.name, m.value, m.feedback, m.score)
+        known = tuple(KnownWrong(m.name, m.formula, m.feedback, m.score)
                       for m in misconceptions)
         return SymbolicSpec(variables=dict(self.variables), misconceptions=known,
                             form=tuple(self.form), form_credit=self.form_credit,
@@ -455,3 +506,12 @@ def shortened(text: str, width: int) -> str:
     " [...]" to fit ``width``; a line that fits as it is (most) skips the wrapper."""
     words = " ".join(text.split())
     return words if len(words) <= width else textwrap.shorten(words, width)
+
+
+def part_class(class_name: str) -> type[Part] | None:
+    """The part kind whose class is named ``class_name`` (``"Numeric"``) as an exercise
+    file calls it; None for any other name (:mod:`.listing` reads calls unrun)."""
+    cls = globals().get(class_name)
+    if isinstance(cls, type) and issubclass(cls, Part) and cls in PART_KINDS.values():
+        return cls
+    return None

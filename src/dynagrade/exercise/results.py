@@ -88,8 +88,8 @@ class GradedPart:
     override: StaffOverride | None = None
     #: the reference answer, where the record is shown to the staff or after the key
     expected: Any = None
-    #: the unit of the reference answer
-    unit: str = ""
+    #: the unit of the reference answer (None: it has none)
+    unit: str | None = None
 
     @property
     def score(self) -> float:

@@ -10,12 +10,12 @@ from __future__ import annotations
 
 from typing import Mapping
 
-from ..grading import grade, read_number
+from ..grading import Verdict, grade, read_number
 from ..grading.errors import AnswerError
 from .model import Exercise, Variant
-from .parts import Numeric, Part
+from .parts import Part
 from .results import ExerciseResult, GradedPart, Status
-from .units import from_si, to_si
+from .units import to_si
 
 
 def grade_variant(exercise: Exercise, variant: Variant,
@@ -45,7 +45,7 @@ def _graded_part(exercise: Exercise, part: Part, variant: Variant,
         verdict = grade(part.spec(params_si), variant.answers[part.name], text)
         followed = None
         if not verdict.correct and part.follows_through:
-            followed = _follow_through(exercise, part, variant, answers)
+            followed = _follow_through(exercise, part, variant, answers, text)
     except Exception as error:  # noqa: BLE001 - isolation is the point
         return graded_error(part, text, error)
     verdict = followed or verdict
@@ -62,28 +62,28 @@ def graded_error(part: Part, text: str | None, error: BaseException) -> GradedPa
                    "staff will look at it")
 
 
-def _follow_through(exercise: Exercise, part: Numeric, variant: Variant,
-                    answers: Mapping[str, str | None]):
+def _follow_through(exercise: Exercise, part: Part, variant: Variant,
+                    answers: Mapping[str, str | None], text: str) -> Verdict | None:
     """The verdict against the reference recomputed from the student's earlier answers,
     when it is correct; ``None`` when the earlier answers cannot be read or it is wrong."""
-    own = {}
-    for name in part.uses:
+    own: dict[str, float] = {}
+    for name in part.follow_through_uses():
         earlier = exercise.part(name)
-        text = answers.get(name)
-        if text is None:
+        earlier_text = answers.get(name)
+        if earlier_text is None:
             return None
         try:
-            own[name] = to_si(read_number(text, earlier.unit), earlier.unit)
+            own[name] = to_si(read_number(earlier_text, earlier.unit), earlier.unit)
         except AnswerError:
             return None
     params_si = exercise.si(variant.params)
-    recomputed = from_si(part.follow_through(params_si, own), part.unit)
-    verdict = grade(part.spec(params_si), recomputed, answers[part.name])
+    recomputed = part.followed_reference(params_si, own)
+    verdict = grade(part.spec(params_si), recomputed, text)
     if not verdict.correct:
         return None
     return type(verdict)(correct=False, score=verdict.score, misconception=None,
                          error=None, feedback="consistent with your earlier answer to "
-                         + ", ".join(part.uses) + ", which was not right: follow-through "
+                         + ", ".join(part.follow_through_uses()) + ", which was not right: follow-through "
                          "credit")
 
 

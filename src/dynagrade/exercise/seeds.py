@@ -48,7 +48,7 @@ def exam_seed(secret: str, exam_id: str, student_id: str, exercise_id: str,
               attempt: int = 0) -> int:
     """The seed of a student's ``attempt``-th draw of an exercise in an exam (0: the
     first; later ones replace draws that cannot discriminate)."""
-    keys = ("exam", exam_id, student_id, exercise_id)
+    keys: tuple[str, ...] = ("exam", exam_id, student_id, exercise_id)
     if attempt:
         keys += ("redraw", str(attempt))
     return int.from_bytes(_keyed(secret, *keys)[:4], "big")

@@ -157,6 +157,7 @@ def from_matplotlib(patch) -> Shape:
              "edgecolor": _visible(patch.get_edgecolor())}
     if not style["fill"]:
         style["facecolor"] = None
+    shape: Shape
     if kind == "Circle":
         shape = Circle(patch.center, patch.radius, **style)
     elif kind == "Ellipse":

@@ -156,8 +156,10 @@ def parse_sheet(text: str, where: str = "<sheet>") -> Sheet:
             problems[name] = f"line {line}: {message}"
             answers[name] = None
     for node in tree.body:
-        if isinstance(node, ast.Assign) and all(isinstance(t, ast.Name) for t in node.targets):
-            for target in node.targets:
+        names = [t for t in node.targets if isinstance(t, ast.Name)] \
+            if isinstance(node, ast.Assign) else []
+        if isinstance(node, ast.Assign) and len(names) == len(node.targets):
+            for target in names:
                 _take(target.id, node, header, answers, problems)
         else:
             for name, message in _other_shapes(node):
@@ -183,7 +185,7 @@ def _parse_around_broken_lines(text: str, where: str):
     """The syntax tree of ``text`` with every line Python cannot read blanked out, and
     for each such line ``(line, name it assigns or None, message)``."""
     lines = text.split("\n")
-    broken = []
+    broken: list[tuple[int, str | None, str]] = []
     for _ in range(_MAX_REPAIRS):
         try:
             return ast.parse("\n".join(lines), filename=where), broken
@@ -249,7 +251,12 @@ def _other_shapes(node: ast.stmt):
         shape = _SHAPES.get(type(inner))
         if shape is None:
             continue
-        targets = inner.targets if isinstance(inner, ast.Assign) else [inner.target]
+        if isinstance(inner, ast.Assign):
+            targets = inner.targets
+        elif isinstance(inner, (ast.AnnAssign, ast.AugAssign, ast.NamedExpr)):
+            targets = [inner.target]
+        else:  # no other statement is in _SHAPES
+            continue
         for target in targets:
             for name in (n.id for n in ast.walk(target) if isinstance(n, ast.Name)):
                 kind = "an assignment inside another statement" if nested else shape
@@ -319,9 +326,10 @@ def _literal(node: ast.expr) -> str | None:
         return ast.unparse(node)
     if isinstance(node, (ast.List, ast.Tuple)):
         items = [_literal(element) for element in node.elts]
-        if any(item is None for item in items):
+        written = [item for item in items if item is not None]
+        if len(written) < len(items):
             raise ValueError("a vector answer must not contain None")
-        return "[" + ", ".join(items) + "]"
+        return "[" + ", ".join(written) + "]"
     kind = {ast.Call: "a function call", ast.Name: "a bare name", ast.BinOp: "arithmetic",
             ast.Attribute: "an attribute"}.get(type(node), type(node).__name__)
     raise ValueError(f"the answer is {kind}; write a number or put the answer in quotes, "

@@ -82,7 +82,7 @@ def verify_exercise(exercise: Exercise, seeds: Iterable[int], require_solution: 
         report.failures += [f"seed {seed}: {p}" for p in solution_problems(exercise, variant)]
         if render_figure is not None:
             report.failures += figure_problems(exercise, variant, render_figure)
-        if not math_checked:
+        if not math_checked and math_check is not None:
             math_checked = True
             report.failures += [f"seed {seed}: solution: {p}"
                                 for p in _solution_math(exercise, variant, math_check)]
@@ -92,7 +92,8 @@ def verify_exercise(exercise: Exercise, seeds: Iterable[int], require_solution: 
 def _solution_math(exercise: Exercise, variant: Variant,
                    math_check: Callable[[str], list[str]]) -> list[str]:
     try:
-        return math_check(render_solution(exercise, variant))
+        solution = render_solution(exercise, variant)
+        return math_check(solution) if solution is not None else []
     except SolutionError:  # solution_problems reported it
         return []
 
@@ -117,7 +118,7 @@ def variant_problems(exercise: Exercise, variant: Variant,
     if own_problems is None:
         own_problems = part_own_problems
     params = exercise.si(variant.params)
-    problems = []
+    problems: list[str] = []
     for part in exercise.parts:
         problems += own_problems(exercise, part, params, variant.answers[part.name])
         problems += part.cross_check(params, variant.answers, exercise.part)

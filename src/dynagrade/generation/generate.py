@@ -264,9 +264,19 @@ def _write_printing_pdfs(run: GenerationRun, roster: list[Student],
                         f"{run.spec.title}: all sheets", "sheets.pdf")
     progress("combined PDFs", 1, steps)
     if run.solutions:
-        _write_combined_pdf(run, roster, "solution.pdf", [r.solution_body for r in results],
+        _write_combined_pdf(run, roster, "solution.pdf", _solution_bodies(results),
                             solutions_title(run.spec.title), "solutions.pdf")
         progress("combined PDFs", 2, steps)
+
+
+def _solution_bodies(results: list[StudentResult]) -> list[str]:
+    """Every student's solution sheet body, which each student's job writes when the run
+    has ``--solutions``."""
+    bodies = [r.solution_body for r in results]
+    missing = [r.entry.student_id for r, body in zip(results, bodies) if body is None]
+    if missing:
+        raise RuntimeError(f"no solution sheet was written for {missing}")
+    return [body for body in bodies if body is not None]
 
 
 def _write_combined_pdf(run: GenerationRun, roster: list[Student], student_pdf: str,
@@ -298,8 +308,8 @@ def build_manifest(spec: ExamSpec, exercises: dict[str, Exercise],
     described = tuple(
         ExerciseEntry(exercises[item.id].id, exercises[item.id].title,
                       exercises[item.id].source, item.points, dict(item.set),
-                      "/".join(Path(exercises[item.id].path).parts[-2:]),
-                      file_sha256(exercises[item.id].path), parts[item.id])
+                      "/".join(Path(exercises[item.id].file).parts[-2:]),
+                      file_sha256(exercises[item.id].file), parts[item.id])
         for item in spec.exercises)
     exam = ExamEntry(spec.id, spec.title, spec.date, spec.instructions, spec.total_points,
                      spec.policy.to_json() if spec.policy != type(spec.policy)() else None,

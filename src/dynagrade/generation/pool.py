@@ -46,7 +46,8 @@ def pool_categories(exercises: list[Exercise], count: int,
 
 
 def _distinct_variants(exercise: Exercise, count: int, secret: str) -> list[VariantEntry]:
-    variants, seen = [], set()
+    variants: list[VariantEntry] = []
+    seen = set()
     for slot in range(ATTEMPTS_PER_VARIANT * count + 10):
         if len(variants) == count:
             break

@@ -53,4 +53,5 @@ class GenerationRun:
 
     def __setstate__(self, state):
         spec, paths, parts, out_dir, pdf, solutions = state
-        self.__init__(spec, load_exercises(paths), parts, out_dir, pdf, solutions)
+        GenerationRun.__init__(self, spec, load_exercises(paths), parts, out_dir, pdf,
+                               solutions)

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import io
 import re
+from typing import TYPE_CHECKING
 
 from ..exercise.drawing import Drawing
 from ..exercise.figure_checks import reported_figure_failure
@@ -25,7 +26,11 @@ from ..exercise.model import Exercise, Variant
 from .accessible_svg import accessible_svg, figure_description, prefixed_ids
 from .svg_figure import drawing_svg
 
-SVG_SETTINGS = {"svg.hashsalt": "dynagrade", "svg.fonttype": "path", "svg.image_inline": True,
+if TYPE_CHECKING:
+    from matplotlib.typing import RcKeyType
+
+#: matplotlib's settings (rcParams) for an SVG that is the same on every run
+SVG_SETTINGS: dict[RcKeyType, object] = {"svg.hashsalt": "dynagrade", "svg.fonttype": "path", "svg.image_inline": True,
                 "path.simplify": False}
 #: the margin (inches) around the cropped figure
 PAD_INCHES = 0.04
