@@ -2,13 +2,15 @@
 
 They are what ``/api/openapi.json`` describes. The routes build the responses from what
 the server's own modules compute (:func:`dynagrade.serve.submit.submit`,
-:meth:`ExamData.preview <dynagrade.serve.exam_data.ExamData.preview>`); a field that is
-absent from that result stays absent from the JSON (the routes answer with
-``response_model_exclude_unset``), so verdicts appear only where the exam's policy shows
-them.
+:meth:`ExamData.preview <dynagrade.serve.exam_data.ExamData.preview>`,
+:func:`dynagrade.serve.gradebook.gradebook_rows`); a field that is absent from that result
+stays absent from the JSON (the routes answer with ``response_model_exclude_unset``), so
+verdicts appear only where the exam's policy shows them.
 """
 
 from __future__ import annotations
+
+from typing import Literal
 
 from pydantic import BaseModel, Field
 
@@ -82,3 +84,35 @@ class PreviewResponse(BaseModel):
     readable: bool
     message: str
     formula: str | None = Field(description="a readable formula typeset as MathML")
+
+
+class GradebookRow(BaseModel):
+    """One roster student's row of the gradebook (the columns of ``grades.csv``)."""
+
+    student_id: str
+    name: str
+    email: str
+    exercises: dict[str, float | None] = Field(
+        description="points per exercise id (null: absent, no grade)")
+    total: float | None
+    max_total: float
+    percent: float | None
+    status: Literal["graded", "incomplete", "absent", "rejected"]
+
+
+class Gradebook(BaseModel):
+    """``GET /api/v1/gradebook``: every roster student's row, in roster order."""
+
+    exercise_ids: list[str]
+    rows: list[GradebookRow]
+
+    @classmethod
+    def from_rows(cls, exercise_ids: list[str], rows: list[dict]) -> "Gradebook":
+        """The model of :func:`~dynagrade.serve.gradebook.gradebook_rows`' dicts, the
+        exercise cells set apart from the fixed columns."""
+        return cls(exercise_ids=list(exercise_ids), rows=[
+            GradebookRow(student_id=row["student_id"], name=row["name"], email=row["email"],
+                         exercises={e: row[e] for e in exercise_ids}, total=row["total"],
+                         max_total=row["max_total"], percent=row["percent"],
+                         status=row["status"]) for row in rows])
+

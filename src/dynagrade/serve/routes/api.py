@@ -1,7 +1,7 @@
 """The JSON API under ``/api/v1``: the token in ``Authorization: Bearer <token>``.
 
 Students submit answers and preview how an answer reads; staff download the gradebook
-and the counted answers. Every JSON body has its model in
+(as JSON or CSV) and the counted answers. Every JSON body has its model in
 :mod:`dynagrade.serve.models`.
 """
 
@@ -11,10 +11,10 @@ from typing import Annotated
 
 from fastapi import APIRouter, Header
 
-from .. import downloads
-from ..deps import REFUSALS, Now, Pool, ServerDep, StaffBearer, StudentBearer
+from .. import db, downloads, gradebook
+from ..deps import REFUSALS, Data, Now, Pool, ServerDep, StaffBearer, StudentBearer
 from ..downloads import CsvResponse
-from ..models import (AnswersBody, PreviewBody, PreviewResponse, SubmitResponse,
+from ..models import (AnswersBody, Gradebook, PreviewBody, PreviewResponse, SubmitResponse,
                       problem)
 from ..practice import practice_seed
 from ..submit import Refused, submit
@@ -52,6 +52,14 @@ async def preview(caller: StudentBearer, body: PreviewBody, server: ServerDep,
     seed = practice_seed(server.secret, caller.student_id, body.exercise, body.practice)
     read = await pool.read(caller.student_id, body.exercise, body.part, body.answer, seed)
     return PreviewResponse.model_validate(read or _UNREADABLE_IN_TIME)
+
+
+@router.get("/gradebook")
+def gradebook_json(caller: StaffBearer, server: ServerDep, data: Data) -> Gradebook:
+    """The gradebook as JSON: every roster student's row, in roster order."""
+    stored = db.all_answers(server.engine, data.exam_id)
+    rows = gradebook.gradebook_rows(data, gradebook.counted_answers(data, stored))
+    return Gradebook.from_rows(data.exercise_ids, rows)
 
 
 @router.get("/grades.csv", response_class=CsvResponse)
