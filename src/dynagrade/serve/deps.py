@@ -26,6 +26,7 @@ from typing import Annotated, Callable
 
 from fastapi import Depends, HTTPException, Path, Request
 from fastapi.security import HTTPAuthorizationCredentials, HTTPBearer
+from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import FormData
 
 from . import db, limits
@@ -105,13 +106,17 @@ class Caller:
     student_id: str | None
 
 
-def identify(server: Server, token: str, role: str) -> Caller:
-    """The holder of ``token``, who must have ``role``; refuses as the module says."""
+async def identify(server: Server, token: str, role: str) -> Caller:
+    """The holder of ``token``, who must have ``role``; refuses as the module says.
+
+    A token seen in the last seconds is known without leaving the event loop; an unseen
+    one is looked up in the database in a thread, off the loop."""
     if not server.limiter.allow(token):
         raise HTTPException(429, "too many requests; slow down", headers={"Retry-After": "1"})
     identity = server.identities.get(token)
     if identity is None:
-        identity = db.identify(server.engine, server.data.exam_id, token)
+        identity = await run_in_threadpool(db.identify, server.engine, server.data.exam_id,
+                                           token)
         server.identities.put(token, identity)
     if identity is None:
         raise HTTPException(401, "unknown link")
@@ -120,28 +125,24 @@ def identify(server: Server, token: str, role: str) -> Caller:
     return Caller(token, identity.role, identity.student_id)
 
 
-# Plain (not async) functions: FastAPI runs them in its thread pool, off the event loop,
-# since an unseen token is looked up in the database.
-
-
-def student_by_link(server: ServerDep, token: LinkToken) -> Caller:
+async def student_by_link(server: ServerDep, token: LinkToken) -> Caller:
     """The student whose link this page is."""
-    return identify(server, token, STUDENT)
+    return await identify(server, token, STUDENT)
 
 
-def staff_by_link(server: ServerDep, token: LinkToken) -> Caller:
+async def staff_by_link(server: ServerDep, token: LinkToken) -> Caller:
     """The staff member whose link this page is."""
-    return identify(server, token, STAFF)
+    return await identify(server, token, STAFF)
 
 
-def student_by_bearer(server: ServerDep, token: BearerToken) -> Caller:
+async def student_by_bearer(server: ServerDep, token: BearerToken) -> Caller:
     """The student whose token the request carries."""
-    return identify(server, token, STUDENT)
+    return await identify(server, token, STUDENT)
 
 
-def staff_by_bearer(server: ServerDep, token: BearerToken) -> Caller:
+async def staff_by_bearer(server: ServerDep, token: BearerToken) -> Caller:
     """The staff member whose token the request carries."""
-    return identify(server, token, STAFF)
+    return await identify(server, token, STAFF)
 
 
 StudentLink = Annotated[Caller, Depends(student_by_link)]
