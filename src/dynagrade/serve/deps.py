@@ -50,10 +50,12 @@ ServerDep = Annotated[Server, Depends(server)]
 
 
 async def exam_data(server: ServerDep) -> ExamData:
+    """The exam this worker serves."""
     return server.data
 
 
 async def grading_pool(server: ServerDep) -> GradingPool:
+    """This worker's grading processes."""
     if server.pool is None:  # only between create_app and the app's start
         raise RuntimeError("the grading pool starts with the app")
     return server.pool

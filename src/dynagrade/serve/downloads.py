@@ -14,11 +14,6 @@ class CsvResponse(PlainTextResponse):
     media_type = "text/csv"
 
 
-#: how the OpenAPI document describes a CSV download
-CSV_DOCS = {200: {"description": "the CSV file",
-                  "content": {"text/csv": {"schema": {"type": "string"}}}}}
-
-
 def grades(server: Server) -> CsvResponse:
     """``grades.csv``: the gradebook as class grading writes it."""
     return _download(server, gradebook.grades_csv, "grades.csv")
