@@ -194,8 +194,13 @@ class Served:
     def staff_get(self, path: str):
         return self.client.get(path, headers={"Authorization": f"Bearer {self.staff}"})
 
+    @property
+    def server(self):
+        """The app's :class:`dynagrade.serve.state.Server` (its exam, its database)."""
+        return self.app.state.server
+
     def variant(self, student: str, exercise: str):
-        return self.app.state.data.entry(student, exercise)
+        return self.server.data.entry(student, exercise)
 
 
 class Clock:
@@ -220,10 +225,10 @@ def serve(manifest: Path, db_url: str | None = None, clock=None):
         from dynagrade.serve.app import create_app
 
         app = create_app(manifest, db_url, grading_workers=1, clock=clock)
-        data = app.state.data
-        tokens = {s: t for s, t in db.issue_tokens(app.state.engine, data.exam_id,
+        data, engine = app.state.server.data, app.state.server.engine
+        tokens = {s: t for s, t in db.issue_tokens(engine, data.exam_id,
                                                    list(data.students)).items()}
-        staff = db.issue_staff_token(app.state.engine, data.exam_id)
+        staff = db.issue_staff_token(engine, data.exam_id)
         with TestClient(app) as client:
             yield Served(client, app, tokens, staff)
 

@@ -33,7 +33,7 @@ def database(request, tmp_path):
 
 
 def _points(served, exercise) -> dict[str, float]:
-    return {p.name: p.points for p in served.app.state.data.parts(exercise)}
+    return {p.name: p.points for p in served.server.data.parts(exercise)}
 
 
 def _off(text: str, factor: float) -> str:
@@ -174,7 +174,7 @@ def test_tokens_decide_who_you_are(exam_dir, tmp_path, database):
         from dynagrade.serve import db
         import sqlalchemy as sa
 
-        with served.app.state.engine.connect() as connection:
+        with served.server.engine.connect() as connection:
             stored = set(connection.execute(sa.select(db.tokens.c.token_hash)).scalars())
         assert served.tokens["s1"] not in stored and db.hash_token(served.tokens["s1"]) in stored
 
@@ -202,13 +202,13 @@ def test_malformed_bodies_get_422(exam_dir, tmp_path, database):
         big = post("/api/v1/answers", content=b"x" * 70_000, headers={
             **headers, "Content-Type": "application/json"})
         assert big.status_code == 413
-        assert served.app.state.data and _count(served) == 0
+        assert served.server.data and _count(served) == 0
 
 
 def _count(served) -> int:
     from dynagrade.serve import db
 
-    return db.counts(served.app.state.engine, served.app.state.data.exam_id)["submissions"]
+    return db.counts(served.server.engine, served.server.data.exam_id)["submissions"]
 
 
 # -- faults: idempotency, pathological answers --------------------------------------------
@@ -317,7 +317,7 @@ def test_practice_draws_are_graded_but_not_counted(exam_dir, tmp_path, database)
         value = re.search(r"practice=projectile-range:([0-9]+\.[0-9a-f]+)",
                           drawn.headers["location"]).group(1)
         seed = int(value.split(".")[0])
-        data = served.app.state.data
+        data = served.server.data
         fresh = data.entry("s1", "projectile-range", seed).answers["x_max"]
         submitted = served.client.post(f"/s/{token}/submit", data={
             "csrf": csrf, "exercise": "projectile-range", "practice": value,
@@ -325,7 +325,7 @@ def test_practice_draws_are_graded_but_not_counted(exam_dir, tmp_path, database)
         assert submitted.status_code == 303
         from dynagrade.serve import db
 
-        stored = db.student_answers(served.app.state.engine, data.exam_id, "s1")
+        stored = db.student_answers(served.server.engine, data.exam_id, "s1")
         assert [(a.counted, a.correct, a.seed) for a in stored] == [(False, True, seed)]
         grades = served.staff_get("/api/v1/grades.csv").text
         # a practice draw counts for nothing: s1 is absent, with empty cells (no grade)

@@ -118,7 +118,7 @@ def test_the_servers_gradebook_is_dynagrade_grade_of_its_own_submissions(
     manifest = exam_copy(exams[step], folder / "exam", mode=mode, counts=counts,
                          attempts=attempts, penalty=0.0, feedback=FEEDBACK[mode])
     with serve(manifest) as served:
-        data = served.app.state.data
+        data = served.server.data
         for student, per_exercise in zip(sorted(data.students), work):
             for exercise, submits in zip(data.exercise_ids, per_exercise):
                 names = [p.name for p in data.parts(exercise)]
@@ -147,7 +147,7 @@ def test_parts_are_rounded_before_they_are_added_as_dynagrade_grade_rounds_them(
 
     manifest = exam_copy(exams[0.5], tmp_path / "exam", mode="homework")
     with serve(manifest) as served:
-        data = served.app.state.data
+        data = served.server.data
         parts = data.manifest_parts["projectile-range"]
         low = [p for p in parts if p.points == 1.0][:2]
         assert len(low) == 2, [p.points for p in parts]  # the split of 6 points over 2+1+1+1
@@ -169,7 +169,7 @@ def test_a_penalised_part_earns_the_attempts_share_of_its_points_rounded(exams, 
                          feedback="immediate")
     with serve(manifest) as served:
         right = reference_answers(served, "s1", "projectile-range")
-        parts = {p.name: p.points for p in served.app.state.data.parts("projectile-range")}
+        parts = {p.name: p.points for p in served.server.data.parts("projectile-range")}
         assert parts["x_max"] == 2.5
         wrong = repr(2 * float(right["x_max"]))
         assert served.submit("s1", "projectile-range", {"x_max": wrong}).status_code == 200

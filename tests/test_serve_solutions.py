@@ -22,7 +22,7 @@ def _page(served, student: str) -> str:
 
 def _key_answer(served, student: str, exercise_id: str, part: str) -> str:
     """The part's reference answer as the key prints it, for this student's variant."""
-    data = served.app.state.data
+    data = served.server.data
     exercise = data.exercises[exercise_id]
     variant = stored_variant(exercise, data.entry(student, exercise_id))
     return exercise.part(part).shown_answer(variant.answers[part])

@@ -72,18 +72,12 @@ def serve(context, manifest, db_url, host, port, base_url, workers, grading_work
     """Serve the exam or homework that `dynagrade exam` generated."""
     import uvicorn
 
+    from .state import ENVIRONMENT, Settings
+
     data, engine = _open(manifest, db_url, context.folders)  # migrate once, fail early
     engine.dispose()
-    os.environ["DYNAGRADE_SERVE"] = _settings(manifest, db_url, context.folders, base_url,
-                                              grading_workers)
+    os.environ[ENVIRONMENT] = Settings(Path(manifest), db_url, tuple(context.folders),
+                                       base_url, grading_workers).to_json()
     click.echo(f"serving {data.title!r} ({data.policy.mode}) on http://{host}:{port}")
     uvicorn.run("dynagrade.serve.app:app_from_environment", factory=True, host=host,
                 port=port, workers=workers, proxy_headers=True, log_level="info")
-
-
-def _settings(manifest, db_url, folders, base_url, grading_workers) -> str:
-    import json
-
-    return json.dumps({"manifest": str(Path(manifest).resolve()), "db": db_url,
-                       "folders": [str(Path(f).resolve()) for f in folders],
-                       "base_url": base_url, "grading_workers": grading_workers})

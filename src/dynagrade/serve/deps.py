@@ -1,0 +1,186 @@
+"""The dependencies routes declare: the server's state, and who is calling.
+
+A route says in its signature what it needs and who may call it, e.g.::
+
+    @router.get("/s/{token}")
+    def student_page(caller: StudentLink, server: ServerDep) -> HTMLResponse: ...
+
+State (the one :class:`~dynagrade.serve.state.Server` of this worker process):
+``ServerDep``, ``Data`` (the exam), ``Pool`` (the grading pool), ``Now`` (the server's
+clock), ``RootPath`` (the path the app is served under).
+
+Callers. A token is either in a page's path (``/s/{token}``, ``/i/{token}``:
+``LinkToken``) or in the header ``Authorization: Bearer <token>`` (the JSON API:
+``BearerToken``). ``StudentLink``, ``StaffLink``, ``StudentBearer`` and ``StaffBearer``
+are the :class:`Caller` holding a token of that role, taken from that place, after the
+guards, in this order: the token's rate limit (429 with ``Retry-After``), an unknown or
+missing token (401), a token of the other role (403). ``StudentForm`` is a form posted
+from a student's page, after those and the form's CSRF field (403).
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+from dataclasses import dataclass
+from typing import Annotated, Callable
+
+from fastapi import Depends, HTTPException, Path, Request
+from fastapi.security import HTTPAuthorizationCredentials, HTTPBearer
+from starlette.concurrency import run_in_threadpool
+from starlette.datastructures import FormData
+
+from . import db, limits
+from .exam_data import ExamData
+from .grading_pool import GradingPool
+from .models import problem
+from .state import Server
+
+STUDENT, STAFF = "student", "staff"
+
+
+# -- the server's state -------------------------------------------------------------------
+
+
+async def server(request: Request) -> Server:
+    """This worker's server (set by ``create_app``)."""
+    return request.app.state.server
+
+
+ServerDep = Annotated[Server, Depends(server)]
+
+
+async def exam_data(server: ServerDep) -> ExamData:
+    """The exam this worker serves."""
+    return server.data
+
+
+async def grading_pool(server: ServerDep) -> GradingPool:
+    """This worker's grading processes."""
+    if server.pool is None:  # only between create_app and the app's start
+        raise RuntimeError("the grading pool starts with the app")
+    return server.pool
+
+
+async def now(server: ServerDep) -> dt.datetime:
+    """The server's clock (the policy's opening and closing are read against it)."""
+    return server.clock()
+
+
+async def root_path(request: Request) -> str:
+    """The path the app is served under (``--base-url``'s path; ``""`` at the root)."""
+    return request.scope.get("root_path", "")
+
+
+Data = Annotated[ExamData, Depends(exam_data)]
+Pool = Annotated[GradingPool, Depends(grading_pool)]
+Now = Annotated[dt.datetime, Depends(now)]
+RootPath = Annotated[str, Depends(root_path)]
+
+
+# -- tokens -------------------------------------------------------------------------------
+
+LinkToken = Annotated[str, Path(description="the secret token of the link")]
+
+_bearer_scheme = HTTPBearer(auto_error=False, description="a student or staff link's token")
+
+
+async def bearer_token(credentials: Annotated[HTTPAuthorizationCredentials | None,
+                                              Depends(_bearer_scheme)]) -> str:
+    """The token of ``Authorization: Bearer <token>``; 401 without one."""
+    if credentials is None:
+        raise HTTPException(401, "send the token as 'Authorization: Bearer <token>'",
+                            headers={"WWW-Authenticate": "Bearer"})
+    return credentials.credentials
+
+
+BearerToken = Annotated[str, Depends(bearer_token)]
+
+
+# -- callers ------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Caller:
+    """Who is asking: the token they hold, its role and (a student's) their id."""
+
+    token: str
+    role: str
+    student_id: str | None
+
+
+async def identify(server: Server, token: str, role: str) -> Caller:
+    """The holder of ``token``, who must have ``role``; refuses as the module says.
+
+    A token seen in the last seconds is known without leaving the event loop; an unseen
+    one is looked up in the database in a thread, off the loop."""
+    if not server.limiter.allow(token):
+        raise HTTPException(429, "too many requests; slow down", headers={"Retry-After": "1"})
+    identity = server.identities.get(token)
+    if identity is None:
+        identity = await run_in_threadpool(db.identify, server.engine, server.data.exam_id,
+                                           token)
+        server.identities.put(token, identity)
+    if identity is None:
+        raise HTTPException(401, "unknown link")
+    if identity.role != role:
+        raise HTTPException(403, "not a link for this page")
+    return Caller(token, identity.role, identity.student_id)
+
+
+async def student_by_link(server: ServerDep, token: LinkToken) -> Caller:
+    """The student whose link this page is."""
+    return await identify(server, token, STUDENT)
+
+
+async def staff_by_link(server: ServerDep, token: LinkToken) -> Caller:
+    """The staff member whose link this page is."""
+    return await identify(server, token, STAFF)
+
+
+async def student_by_bearer(server: ServerDep, token: BearerToken) -> Caller:
+    """The student whose token the request carries."""
+    return await identify(server, token, STUDENT)
+
+
+async def staff_by_bearer(server: ServerDep, token: BearerToken) -> Caller:
+    """The staff member whose token the request carries."""
+    return await identify(server, token, STAFF)
+
+
+StudentLink = Annotated[Caller, Depends(student_by_link)]
+StaffLink = Annotated[Caller, Depends(staff_by_link)]
+StudentBearer = Annotated[Caller, Depends(student_by_bearer)]
+StaffBearer = Annotated[Caller, Depends(staff_by_bearer)]
+
+#: how the OpenAPI document describes the refusals of a caller dependency
+REFUSALS = {401: problem("no token, or an unknown one"),
+            403: problem("a token of the other role, or a refusal of the exam's rules"),
+            429: problem("beyond the token's rate limit (`Retry-After`)")}
+
+#: every caller dependency: the role it admits and where it takes the token from
+CALLERS: dict[Callable[..., Caller], tuple[str, str]] = {
+    student_by_link: (STUDENT, "path"), staff_by_link: (STAFF, "path"),
+    student_by_bearer: (STUDENT, "bearer"), staff_by_bearer: (STAFF, "bearer")}
+
+
+# -- forms --------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class PostedForm:
+    """A form posted from a student's page: its caller, its fields, its exercise."""
+
+    caller: Caller
+    fields: FormData
+    exercise_id: str
+
+
+async def student_form(request: Request, caller: StudentLink, server: ServerDep) -> PostedForm:
+    """The form a student posted from their page, once its CSRF field is checked."""
+    form = await request.form()
+    if not limits.csrf_ok(server.secret, caller.token, form.get("csrf")):
+        raise HTTPException(403, "the form is stale or not from this page; reload it")
+    return PostedForm(caller, form, str(form.get("exercise", "")))
+
+
+StudentForm = Annotated[PostedForm, Depends(student_form)]

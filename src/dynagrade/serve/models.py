@@ -1,0 +1,121 @@
+"""The JSON bodies of the API, requests and responses, as pydantic models.
+
+They are what ``/api/openapi.json`` describes. The routes build the responses from what
+the server's own modules compute (:func:`dynagrade.serve.submit.submit`,
+:meth:`ExamData.preview <dynagrade.serve.exam_data.ExamData.preview>`,
+:func:`dynagrade.serve.gradebook.outcome`); a field that is absent from that result
+stays absent from the JSON (the routes answer with ``response_model_exclude_unset``), so
+verdicts appear only where the exam's policy shows them.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Literal
+
+from pydantic import BaseModel, Field
+
+from .exam_data import MAX_ANSWER_CHARS
+
+if TYPE_CHECKING:
+    from ..classgrade.gradebook import GradebookRow as Row
+
+# -- requests -----------------------------------------------------------------------------
+
+
+class AnswersBody(BaseModel):
+    """``POST /api/v1/answers``: one exercise's answers, part name → text."""
+
+    exercise: str = Field(max_length=200)
+    answers: dict[str, str]
+
+
+class PreviewBody(BaseModel):
+    """``POST /api/v1/preview``: how one answer reads."""
+
+    exercise: str = Field(max_length=200)
+    part: str = Field(max_length=200)
+    answer: str = Field(max_length=MAX_ANSWER_CHARS)
+    practice: str | None = Field(default=None, max_length=200,
+                                 description="a practice draw's signed value, from the page")
+
+
+# -- responses ----------------------------------------------------------------------------
+
+
+class Problem(BaseModel):
+    """Every refusal: what is wrong, for the student or the client's author."""
+
+    detail: str
+
+
+def problem(description: str) -> dict:
+    """How the OpenAPI document describes a refusal: ``{"detail": ...}`` as JSON, whatever
+    the route answers when it does not refuse (a page, a CSV file)."""
+    return {"description": description,
+            "content": {"application/json": {"schema": Problem.model_json_schema()}}}
+
+
+class PartVerdict(BaseModel):
+    """One submitted part: how it read and, where the policy shows verdicts, the verdict."""
+
+    name: str
+    readable: bool
+    message: str = Field(description="how the answer reads, or why it cannot be read")
+    correct: bool | None = Field(default=None, description="only where verdicts are shown")
+    score: float | None = Field(default=None, description="points earned, penalty applied; "
+                                                          "only where verdicts are shown")
+    feedback: str | None = Field(default=None, description="only where verdicts are shown")
+
+
+class SubmitResponse(BaseModel):
+    """``POST /api/v1/answers``: the stored submit, as the policy lets the student see it."""
+
+    exercise: str
+    attempt: int = Field(description="the student's submits of this exercise, numbered")
+    idempotency_key: str
+    parts: list[PartVerdict]
+    score: float | None = Field(default=None, description="of the parts in this submit, "
+                                                          "only where verdicts are shown")
+    max_score: float | None = Field(default=None, description="only where verdicts are shown")
+    replayed: bool | None = Field(default=None, description="true when the key was stored "
+                                                            "already (nothing stored again)")
+
+
+class PreviewResponse(BaseModel):
+    """``POST /api/v1/preview``: how an answer reads; never right or wrong."""
+
+    readable: bool
+    message: str
+    formula: str | None = Field(description="a readable formula typeset as MathML")
+
+
+class GradebookRow(BaseModel):
+    """One roster student's row of the gradebook (the columns of ``grades.csv``)."""
+
+    student_id: str
+    name: str
+    email: str
+    exercises: dict[str, float | None] = Field(
+        description="points per exercise id (null: absent, no grade)")
+    total: float | None
+    max_total: float
+    percent: float | None
+    status: Literal["graded", "incomplete", "absent", "rejected"]
+
+
+class Gradebook(BaseModel):
+    """``GET /api/v1/gradebook``: every roster student's row, in roster order."""
+
+    exercise_ids: list[str]
+    rows: list[GradebookRow]
+
+    @classmethod
+    def from_rows(cls, exercise_ids: list[str], rows: list[Row]) -> "Gradebook":
+        """The model of class grading's gradebook rows (:func:`dynagrade.serve.gradebook.
+        outcome`), the exercise cells apart from the fixed columns as the rows keep them."""
+        return cls(exercise_ids=list(exercise_ids), rows=[
+            GradebookRow(student_id=row.student_id, name=row.name, email=row.email,
+                         exercises=dict(row.cells), total=row.total,
+                         max_total=row.max_total, percent=row.percent,
+                         status=row.status.value) for row in rows])
+

@@ -1,0 +1,16 @@
+"""The server's routes, one router per audience (docs/serve.md lists them all).
+
+- :mod:`.health`: ``GET /healthz``, for monitoring; no token.
+- :mod:`.student`: the student's page ``/s/{token}`` and its forms.
+- :mod:`.staff`: the staff page ``/i/{token}`` and its downloads.
+- :mod:`.api`: the JSON API under ``/api/v1``, tokens in ``Authorization: Bearer``.
+
+Each route names who may call it in its signature (:mod:`dynagrade.serve.deps`);
+tests/test_serve_routes.py holds every route of every router to that.
+"""
+
+from __future__ import annotations
+
+from . import api, health, staff, student
+
+ROUTERS = (health.router, student.router, staff.router, api.router)

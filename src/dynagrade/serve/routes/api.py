@@ -1,0 +1,73 @@
+"""The JSON API under ``/api/v1``: the token in ``Authorization: Bearer <token>``.
+
+Students submit answers and preview how an answer reads; staff download the gradebook
+(as JSON or CSV) and the counted answers. Every JSON body has its model in
+:mod:`dynagrade.serve.models`.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+from fastapi import APIRouter, Header
+
+from .. import db, downloads, gradebook
+from ..deps import REFUSALS, Data, Now, Pool, ServerDep, StaffBearer, StudentBearer
+from ..downloads import CsvResponse
+from ..models import (AnswersBody, Gradebook, PreviewBody, PreviewResponse, SubmitResponse,
+                      problem)
+from ..practice import practice_seed
+from ..submit import Refused, submit
+
+router = APIRouter(prefix="/api/v1", tags=["api"], responses=REFUSALS)
+
+_UNREADABLE_IN_TIME = {"readable": False, "message": "could not be read in time",
+                       "formula": None}
+
+
+@router.post("/answers", response_model_exclude_unset=True, responses={
+    413: problem("a body over 64 KiB"),
+    422: problem("an exercise, part or answer the exam's rules refuse (a malformed body: "
+                 "`detail` is a list of errors)"),
+    503: problem("the grading queue is full (`Retry-After`)")})
+async def submit_answers(caller: StudentBearer, body: AnswersBody, server: ServerDep,
+                         now: Now, idempotency_key: Annotated[str | None, Header(
+                             description="8-100 of A-Z a-z 0-9 . _ : -; a retry with the "
+                                         "same key stores nothing twice")] = None
+                         ) -> SubmitResponse:
+    """Grade and store one exercise's answers; the answer shows what the policy allows."""
+    result = await submit(server, caller.student_id, body.exercise, body.answers,
+                          idempotency_key, None, now)
+    return SubmitResponse.model_validate(result)
+
+
+@router.post("/preview")
+async def preview(caller: StudentBearer, body: PreviewBody, server: ServerDep,
+                  pool: Pool) -> PreviewResponse:
+    """How an answer reads (never whether it is right)."""
+    data = server.data
+    if body.exercise not in data.exercises_meta or \
+            body.part not in {p.name for p in data.parts(body.exercise)}:
+        raise Refused(422, "no such exercise or part in this exam")
+    seed = practice_seed(server.secret, caller.student_id, body.exercise, body.practice)
+    read = await pool.read(caller.student_id, body.exercise, body.part, body.answer, seed)
+    return PreviewResponse.model_validate(read or _UNREADABLE_IN_TIME)
+
+
+@router.get("/gradebook")
+def gradebook_json(caller: StaffBearer, server: ServerDep, data: Data) -> Gradebook:
+    """The gradebook as JSON: every roster student's row, in roster order."""
+    stored = db.all_answers(server.engine, data.exam_id)
+    return Gradebook.from_rows(data.exercise_ids, gradebook.outcome(data, stored).rows)
+
+
+@router.get("/grades.csv", response_class=CsvResponse)
+def grades_csv(caller: StaffBearer, server: ServerDep) -> CsvResponse:
+    """The gradebook as class grading's ``grades.csv``."""
+    return downloads.grades(server)
+
+
+@router.get("/submissions.csv", response_class=CsvResponse)
+def submissions_csv(caller: StaffBearer, server: ServerDep) -> CsvResponse:
+    """The counted answers as the responses CSV ``dynagrade grade --manifest`` reads."""
+    return downloads.submissions(server)
