@@ -4,9 +4,10 @@ the number written beside each, which may only go down (docs/design.md, "Type ch
 
 A package that is not clean yet joins ``RATCHET`` with its count (``mypy
 src/dynagrade/<package>`` gives it), and ``CLEAN`` once the count is 0; mechanics/ is
-at 0 already.
+at 0 already, render/ (most of its errors in moodle.py, which reads the manifest's
+optional part settings) at 42.
 
-One mypy run checks every listed file (126 of them), with mypy's cache in the
+One mypy run checks every listed file (169 of them), with mypy's cache in the
 repository's ``.cache/mypy``. Measured on a two-core machine shared with other work (load
 1.1 to 1.4), the module's tests take 20 s cold (no cache: 21 s CPU, most of it reading
 numpy's, scipy's and matplotlib's stubs) and 0.5 s warm (nothing changed since the last
@@ -24,11 +25,11 @@ ROOT = Path(__file__).resolve().parent.parent
 PACKAGE = "src/dynagrade"
 
 #: files and folders (relative to src/dynagrade) with no mypy error at all
-CLEAN = ("grading", "config.py", "errors.py", "exercise", "exam", "generation", "classgrade", "runs",
-         "cli.py")
+CLEAN = ("grading", "config.py", "errors.py", "exercise", "exam", "generation", "classgrade",
+         "runs", "serve", "cli.py")
 
 #: files and folders (relative to src/dynagrade) and the most errors each may have
-RATCHET = {"mechanics": 0}
+RATCHET = {"mechanics": 0, "render": 42}
 
 ERROR = re.compile(r"^(?P<path>[^:\n]+\.py):\d+: error: ", re.MULTILINE)
 CHECKED = re.compile(r"^(?:Success: no issues found in |Found \d+ errors? in \d+ files? \(checked )"

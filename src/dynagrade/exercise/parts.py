@@ -178,6 +178,10 @@ class Part(ABC):
         variable's name (none: the answer is no formula)."""
         return {}
 
+    def variable_names(self) -> tuple[str, ...]:
+        """The variables of the part's formula (none: the answer is no formula)."""
+        return ()
+
     def with_variables(self, variables: Mapping[str, Variable]) -> Part:
         """The part with its formula's ``variables`` completed (:mod:`.model`); only a
         part whose answer is a formula has them."""
@@ -401,6 +405,9 @@ class Symbolic(Part):
 
     def spellings(self) -> Mapping[str, str]:
         return self._spec(()).spellings
+
+    def variable_names(self) -> tuple[str, ...]:
+        return tuple(self.variables)
 
     def cross_check(self, params, answers, part):
         """The formula, evaluated at the variant's parameters, against the numeric part it

@@ -68,12 +68,14 @@ def build_app(settings: Settings, clock: Callable[[], dt.datetime] | None = None
     return app
 
 
-async def _refused(request: Request, error: Refused) -> JSONResponse:
+async def _refused(request: Request, error: Exception) -> JSONResponse:
     """A refusal of the exam's rules: its status, ``{"detail": message}``."""
+    if not isinstance(error, Refused):  # registered for Refused only
+        raise error
     return JSONResponse({"detail": error.message}, status_code=error.status)
 
 
-async def _busy(request: Request, error: Busy) -> JSONResponse:
+async def _busy(request: Request, error: Exception) -> JSONResponse:
     """The grading queue is full: 503, try again shortly."""
     return JSONResponse({"detail": "the server is busy grading; try again shortly"},
                         status_code=503, headers={"Retry-After": "2"})

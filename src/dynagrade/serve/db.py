@@ -116,7 +116,8 @@ def connect(url: str) -> sa.Engine:
     if url.startswith("sqlite"):
         engine = sa.create_engine(url, connect_args={"timeout": 30})
         sa.event.listen(engine, "connect", _sqlite_pragmas)
-        _WRITER_LOCKS.setdefault(engine.url.database, _WriterLock(engine.url.database))
+        database = engine.url.database or ":memory:"
+        _WRITER_LOCKS.setdefault(database, _WriterLock(database))
     else:
         engine = sa.create_engine(url, pool_pre_ping=True, pool_size=5, max_overflow=5)
     migrate(engine)
@@ -153,7 +154,8 @@ _WRITER_LOCKS: dict[str, _WriterLock] = {}
 
 
 def _writing(engine: sa.Engine):
-    lock = _WRITER_LOCKS.get(engine.url.database) if engine.dialect.name == "sqlite" else None
+    lock = _WRITER_LOCKS.get(engine.url.database or ":memory:") \
+        if engine.dialect.name == "sqlite" else None
     return lock.held() if lock is not None else contextlib.nullcontext()
 
 

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import datetime as dt
 from dataclasses import dataclass
-from typing import Annotated, Callable
+from typing import Annotated, Any, Awaitable, Callable
 
 from fastapi import Depends, HTTPException, Path, Request
 from fastapi.security import HTTPAuthorizationCredentials, HTTPBearer
@@ -101,14 +101,20 @@ BearerToken = Annotated[str, Depends(bearer_token)]
 
 @dataclass(frozen=True)
 class Caller:
-    """Who is asking: the token they hold, its role and (a student's) their id."""
+    """Who is asking: the token they hold and its role."""
 
     token: str
     role: str
-    student_id: str | None
 
 
-async def identify(server: Server, token: str, role: str) -> Caller:
+@dataclass(frozen=True)
+class StudentCaller(Caller):
+    """A student asking: their token, and whose it is."""
+
+    student_id: str
+
+
+async def identify(server: Server, token: str, role: str) -> db.Identity:
     """The holder of ``token``, who must have ``role``; refuses as the module says.
 
     A token seen in the last seconds is known without leaving the event loop; an unseen
@@ -124,41 +130,53 @@ async def identify(server: Server, token: str, role: str) -> Caller:
         raise HTTPException(401, "unknown link")
     if identity.role != role:
         raise HTTPException(403, "not a link for this page")
-    return Caller(token, identity.role, identity.student_id)
+    return identity
 
 
-async def student_by_link(server: ServerDep, token: LinkToken) -> Caller:
+async def _student(server: Server, token: str) -> StudentCaller:
+    identity = await identify(server, token, STUDENT)
+    if identity.student_id is None:  # a student's token always names its student
+        raise HTTPException(401, "unknown link")
+    return StudentCaller(token, STUDENT, identity.student_id)
+
+
+async def _staff(server: Server, token: str) -> Caller:
+    await identify(server, token, STAFF)
+    return Caller(token, STAFF)
+
+
+async def student_by_link(server: ServerDep, token: LinkToken) -> StudentCaller:
     """The student whose link this page is."""
-    return await identify(server, token, STUDENT)
+    return await _student(server, token)
 
 
 async def staff_by_link(server: ServerDep, token: LinkToken) -> Caller:
     """The staff member whose link this page is."""
-    return await identify(server, token, STAFF)
+    return await _staff(server, token)
 
 
-async def student_by_bearer(server: ServerDep, token: BearerToken) -> Caller:
+async def student_by_bearer(server: ServerDep, token: BearerToken) -> StudentCaller:
     """The student whose token the request carries."""
-    return await identify(server, token, STUDENT)
+    return await _student(server, token)
 
 
 async def staff_by_bearer(server: ServerDep, token: BearerToken) -> Caller:
     """The staff member whose token the request carries."""
-    return await identify(server, token, STAFF)
+    return await _staff(server, token)
 
 
-StudentLink = Annotated[Caller, Depends(student_by_link)]
+StudentLink = Annotated[StudentCaller, Depends(student_by_link)]
 StaffLink = Annotated[Caller, Depends(staff_by_link)]
-StudentBearer = Annotated[Caller, Depends(student_by_bearer)]
+StudentBearer = Annotated[StudentCaller, Depends(student_by_bearer)]
 StaffBearer = Annotated[Caller, Depends(staff_by_bearer)]
 
 #: how the OpenAPI document describes the refusals of a caller dependency
-REFUSALS = {401: problem("no token, or an unknown one"),
+REFUSALS: dict[int | str, dict[str, Any]] = {401: problem("no token, or an unknown one"),
             403: problem("a token of the other role, or a refusal of the exam's rules"),
             429: problem("beyond the token's rate limit (`Retry-After`)")}
 
 #: every caller dependency: the role it admits and where it takes the token from
-CALLERS: dict[Callable[..., Caller], tuple[str, str]] = {
+CALLERS: dict[Callable[..., Awaitable[Caller]], tuple[str, str]] = {
     student_by_link: (STUDENT, "path"), staff_by_link: (STAFF, "path"),
     student_by_bearer: (STUDENT, "bearer"), staff_by_bearer: (STAFF, "bearer")}
 
@@ -170,7 +188,7 @@ CALLERS: dict[Callable[..., Caller], tuple[str, str]] = {
 class PostedForm:
     """A form posted from a student's page: its caller, its fields, its exercise."""
 
-    caller: Caller
+    caller: StudentCaller
     fields: FormData
     exercise_id: str
 

@@ -85,7 +85,11 @@ class ExamData:
               seed: int | None = None) -> VariantEntry:
         """The student's variant as the manifest stores it, or a practice draw ``seed``."""
         if seed is None:
-            return self.students[student_id].variant(exercise_id)
+            entry = self.students[student_id].variant(exercise_id)
+            if entry is None:
+                raise ManifestError(f"{self.path}: {student_id} has no variant of "
+                                    f"{exercise_id!r}")
+            return entry
         return _practice_entry(self, exercise_id, seed)
 
     def statement_html(self, student_id: str, exercise_id: str,
@@ -133,11 +137,10 @@ class ExamData:
 
         readable, message = self.read(student_id, exercise_id, part, text, seed)
         asked = self.exercises[exercise_id].part(part)
-        variables = getattr(asked, "variables", None)
+        variables = asked.variable_names()
         shown = None
-        if readable and variables:
-            spellings = asked.spec(None).spellings  # a formula's spec needs no parameters
-            shown = formula_mathml(text, tuple(variables), spellings)
+        if readable and variables:  # a formula: typeset it as it was read
+            shown = formula_mathml(text, variables, asked.spellings())
         return {"readable": readable, "message": message, "formula": shown}
 
     def grade(self, student_id: str, exercise_id: str, answers: dict[str, str],
@@ -175,6 +178,8 @@ class ExamData:
         graded = grade_student(student, {exercise_id: self.manifest_parts[exercise_id]},
                                {exercise_id: self.exercises[exercise_id]},
                                {exercise_id: submission})[exercise_id]
+        if graded is None:  # cannot be: the submission is there
+            raise ManifestError(f"{self.path}: {exercise_id!r} was not graded")
         return {part.name: part for part in graded.parts if part.name in answers}
 
     def new_practice_seed(self, exercise_id: str) -> int:

@@ -25,7 +25,8 @@ from ..classgrade.gradebook import exercise_columns, gradebook_csv
 from ..classgrade.stats import declared_names
 from ..classgrade.submissions import RESPONSE_HEADER
 from ..exercise.numbers import percent_text
-from ..exercise.results import ExerciseResult
+from ..exam.manifest import PartEntry
+from ..exercise.results import ExerciseResult, GradedPart
 from .db import StoredAnswer
 from .exam_data import ExamData
 from .verdicts import SubmittedPart, not_answered
@@ -59,13 +60,18 @@ def counted_results(data: ExamData, chosen: dict[tuple[str, str, str], StoredAns
             if not any(answers.values()):
                 results[exercise_id] = None
                 continue
-            parts = tuple(SubmittedPart.stored(answers[p.name], p.label).verdict
-                          if answers[p.name] is not None else not_answered(p)
-                          for p in entries)
+            parts = tuple(_counted_part(answers[p.name], p) for p in entries)
             source = f"server, {exercise_id}"
             results[exercise_id] = ExerciseResult(exercise_id, None, parts, source)
         graded.append(results)
     return graded
+
+
+def _counted_part(answer: StoredAnswer | None, part: PartEntry) -> GradedPart:
+    """The verdict on ``part`` that counts: its stored answer's, or not answered."""
+    if answer is None:
+        return not_answered(part)
+    return SubmittedPart.stored(answer, part.label).verdict
 
 
 def outcome(data: ExamData, stored: list[StoredAnswer]) -> ClassOutcome:
@@ -88,11 +94,10 @@ def staff_table(data: ExamData, stored: list[StoredAnswer]) -> tuple[list[str], 
                "percent", "status"]
     rows = []
     for row in graded.rows:
-        cells = [row.student_id, *(row.cells[e] for e in data.exercise_ids), row.total,
-                 row.max_total]
-        shown = [cells[0], *(None if v is None else rounding.text(v) for v in cells[1:])]
-        rows.append(dict(zip(columns, [*shown, percent_text(row.percent, None),
-                                       str(row.status)])))
+        points = [*(row.cells[e] for e in data.exercise_ids), row.total, row.max_total]
+        shown = [None if value is None else rounding.text(value) for value in points]
+        percent = None if row.percent is None else percent_text(row.percent)
+        rows.append(dict(zip(columns, [row.student_id, *shown, percent, str(row.status)])))
     return columns, rows
 
 

@@ -15,10 +15,15 @@ import multiprocessing
 from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 
+from typing import TYPE_CHECKING
+
 from ..errors import DynagradeError
 from ..grading.timing import ANSWER_BUDGET
 
-_EXAM = {}
+if TYPE_CHECKING:
+    from .exam_data import ExamData
+
+_EXAM: dict[str, ExamData] = {}
 
 
 class Busy(DynagradeError):

@@ -49,8 +49,11 @@ def csrf_field(secret: str, token: str) -> str:
     return hmac.new(secret.encode(), b"csrf:" + token.encode(), hashlib.sha256).hexdigest()
 
 
-def csrf_ok(secret: str, token: str, value: str | None) -> bool:
-    return bool(value) and hmac.compare_digest(csrf_field(secret, token), value)
+def csrf_ok(secret: str, token: str, value: object) -> bool:
+    """Whether ``value`` (a posted field: text, a file or nothing) is the CSRF value of
+    ``token``'s pages."""
+    return isinstance(value, str) and bool(value) and \
+        hmac.compare_digest(csrf_field(secret, token), value)
 
 
 def sign(secret: str, text: str) -> str:

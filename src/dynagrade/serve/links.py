@@ -33,16 +33,19 @@ def write_links(data: ExamData, engine, out: Path, base_url: str,
     """Write ``out`` (student_id,name,email,url per roster student); returns notices."""
     previous = {} if rotate else _previous_urls(out)
     issued = db.issue_tokens(engine, data.exam_id, list(data.students), rotate=rotate)
-    rows, unknown = [], []
+    rows: list[tuple[str, str, str, str]] = []
+    unknown: list[str] = []
     for student_id, student in data.students.items():
         token = issued[student_id]
+        kept = None if token is not None else \
+            _still_valid(engine, data.exam_id, student_id, previous.get(student_id))
         if token is not None:
             url = student_url(base_url, token)
+        elif kept is not None:
+            url = kept
         else:
-            url = _still_valid(engine, data.exam_id, student_id, previous.get(student_id))
-            if url is None:
-                unknown.append(student_id)
-                url = ""
+            unknown.append(student_id)
+            url = ""
         rows.append((student_id, student.name, student.email, url))
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")

@@ -10,7 +10,7 @@ verdicts appear only where the exam's policy shows them.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 from pydantic import BaseModel, Field
 
@@ -48,7 +48,7 @@ class Problem(BaseModel):
     detail: str
 
 
-def problem(description: str) -> dict:
+def problem(description: str) -> dict[str, Any]:
     """How the OpenAPI document describes a refusal: ``{"detail": ...}`` as JSON, whatever
     the route answers when it does not refuse (a page, a CSV file)."""
     return {"description": description,

@@ -13,11 +13,14 @@ import datetime as dt
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable
+from typing import TYPE_CHECKING, Callable
 
 from . import limits
 from .exam_data import ExamData
 from .grading_pool import GradingPool
+
+if TYPE_CHECKING:
+    from sqlalchemy import Engine
 
 #: the environment variable that carries the settings to every worker process
 ENVIRONMENT = "DYNAGRADE_SERVE"
@@ -60,7 +63,7 @@ class Server:
 
     settings: Settings
     data: ExamData
-    engine: object  # sqlalchemy.Engine (not imported here: it loads with db.py)
+    engine: Engine
     secret: str
     clock: Callable[[], dt.datetime]
     limiter: limits.RateLimiter = field(default_factory=limits.RateLimiter)

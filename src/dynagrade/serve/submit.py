@@ -109,6 +109,8 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
         except db.DuplicateSubmission:  # the same key arrived twice at once: the other was stored
             stored = await run_in_threadpool(db.find_submission, state.engine,
                                              data.exam_id, key)
+            if stored is None:  # the other submit's transaction was rolled back: retry
+                continue
             return _replay(data, student_id, stored, now, key)
         return describe(data, exercise_id, attempt, rows, policy.shows_verdicts(now), key)
     raise Refused(503, "too many submits at once; try again")

@@ -7,6 +7,8 @@ the page again with the reason, under the status of the refusal.
 
 from __future__ import annotations
 
+from typing import Any
+
 from fastapi import APIRouter, HTTPException
 from fastapi.responses import HTMLResponse, RedirectResponse
 from starlette.concurrency import run_in_threadpool
@@ -19,7 +21,8 @@ from ..submit import Refused, submit
 
 router = APIRouter(prefix="/s/{token}", tags=["student pages"], responses=REFUSALS)
 
-_BACK = {303: {"description": "done: back to the page (`Location`)"}}
+_BACK: dict[int | str, dict[str, Any]] = {
+    303: {"description": "done: back to the page (`Location`)"}}
 
 
 @router.get("", response_class=HTMLResponse)
@@ -39,7 +42,8 @@ async def submit_answers(form: StudentForm, server: ServerDep, now: Now, base: R
     ``practice``), by the rules of :mod:`dynagrade.serve.submit`."""
     caller, fields, exercise_id = form.caller, form.fields, form.exercise_id
     answers = {k[len("answer."):]: str(v) for k, v in fields.items() if k.startswith("answer.")}
-    practice = fields.get("practice") or None
+    posted = fields.get("practice")
+    practice = posted if isinstance(posted, str) and posted else None
     try:
         seed = practice_seed(server.secret, caller.student_id, exercise_id, practice)
         await submit(server, caller.student_id, exercise_id, answers,
