@@ -16,7 +16,11 @@ import dynagrade
 
 SOURCE = Path(dynagrade.__file__).parent
 
-#: what each package may import, besides itself and ``errors`` (which every layer may)
+#: the modules beside the layers, which every layer may import (and which import nothing
+#: of dynagrade): the error root and the interface's languages
+BESIDE_THE_LAYERS = ("errors", "i18n")
+
+#: what each package may import, besides itself and the modules beside the layers
 ALLOWED = {
     "mechanics": set(),
     "grading": set(),
@@ -64,7 +68,7 @@ MODULES = sorted(p for p in SOURCE.rglob("*.py") if _package_of(p) in ALLOWED)
 @pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(SOURCE)))
 def test_a_module_imports_only_the_packages_below_its_own(path):
     own = _package_of(path)
-    upward = _imported_packages(path) - ALLOWED[own] - {own, "errors"}
+    upward = _imported_packages(path) - ALLOWED[own] - {own, *BESIDE_THE_LAYERS}
     assert not upward, f"{path.relative_to(SOURCE)} ({own}) imports {sorted(upward)}"
 
 

@@ -12,6 +12,7 @@ from typing import Mapping
 
 from ..grading import Verdict, grade, read_number
 from ..grading.errors import AnswerError
+from ..i18n import _
 from .model import Exercise, Variant
 from .parts import Part
 from .results import ExerciseResult, GradedPart, Status
@@ -31,7 +32,7 @@ def grade_variant(exercise: Exercise, variant: Variant,
             results.append(_result(part, text, Status.WRONG, 0.0,
                                    f"could not read the answer: {problems[part.name]}"))
         elif text is None or not text.strip():
-            results.append(_result(part, None, Status.NOT_ANSWERED, 0.0, "not answered"))
+            results.append(_result(part, None, Status.NOT_ANSWERED, 0.0, _("not answered")))
         else:
             results.append(_graded_part(exercise, part, variant, answers, params_si, text))
     return ExerciseResult(exercise.id, variant.seed, tuple(results))

@@ -60,6 +60,7 @@ def build_app(settings: Settings, clock: Callable[[], dt.datetime] | None = None
                   openapi_url="/api/openapi.json")
     app.add_middleware(limits.BodySizeLimit)
     app.add_middleware(limits.PrivateHeaders)
+    app.add_middleware(limits.ExamLanguage, code=data.manifest.exam.language)
     app.state.server = server
     app.add_exception_handler(Refused, _refused)
     app.add_exception_handler(Busy, _busy)

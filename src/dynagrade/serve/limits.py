@@ -16,6 +16,7 @@ import threading
 import time
 
 from ..errors import DynagradeError
+from ..i18n import language
 
 MAX_BODY_BYTES = 64 * 1024
 RATE = 5.0    # requests per second, sustained, per token
@@ -113,6 +114,18 @@ class PrivateHeaders:
             await send(message)
 
         await self.app(scope, receive, with_headers)
+
+
+class ExamLanguage:
+    """Answer every request in the exam's language (``language`` of exam.toml; docs/serve.md,
+    "Languages"): the active language of :mod:`dynagrade.i18n` for the request's work."""
+
+    def __init__(self, app, code: str):
+        self.app, self.code = app, code
+
+    async def __call__(self, scope, receive, send):
+        with language(self.code):
+            await self.app(scope, receive, send)
 
 
 class BodySizeLimit:

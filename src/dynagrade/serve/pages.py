@@ -12,6 +12,7 @@ from markupsafe import Markup
 
 from ..exam.solution_policy import solution_visible
 from . import db, gradebook, limits
+from ..i18n import _, ngettext
 from .exam_data import MAX_ANSWER_CHARS, ExamData
 from .practice import practice_seed
 from .state import Server
@@ -20,6 +21,8 @@ from .submit import Refused
 _TEMPLATES = jinja2.Environment(
     loader=jinja2.FileSystemLoader(Path(__file__).resolve().parent / "templates"),
     autoescape=True, trim_blocks=True, lstrip_blocks=True)
+#: a template's fixed strings are ``{{ _("...") }}``, in the language of the request
+_TEMPLATES.globals.update(_=_, ngettext=ngettext)
 
 
 def student_html(server: Server, token: str, student_id: str, practice: str | None,
