@@ -8,8 +8,12 @@ Tables (created by the Alembic migrations in ``migrations/``; see docs/serve.md)
                  idempotency key, time, whether it counts (practice draws do not)
 ``answers``      one row per part of a submission: the raw text, how it read, the verdict
                  (status, points, feedback, the mistake the grader named)
+``drafts``       what a student typed and has not submitted: one row per part, replaced
+                 as they type (never counted)
+``audit_log``    every change the staff make (a policy change, ...): who, when, what,
+                 and the JSON before and after
 
-Submissions and answers are only ever inserted, never updated or deleted. A submit is
+Submissions, answers and the audit log are only ever inserted, never updated or deleted. A submit is
 one transaction; the caller acknowledges it only after :func:`record_submission`
 returned, i.e. after the commit.
 
@@ -84,6 +88,29 @@ answers = sa.Table(
     sa.Column("feedback", sa.Text, nullable=False),
     sa.Column("misconception", sa.Text, nullable=True),
     sa.UniqueConstraint("submission_id", "part", name="uq_answers_part"),
+)
+
+drafts = sa.Table(
+    "drafts", metadata,
+    sa.Column("exam_id", sa.String(200), primary_key=True),
+    sa.Column("student_id", sa.String(200), primary_key=True),
+    sa.Column("exercise_id", sa.String(200), primary_key=True),
+    sa.Column("part", sa.String(200), primary_key=True),
+    sa.Column("text", sa.Text, nullable=False),
+    sa.Column("saved_at", sa.DateTime(timezone=True), nullable=False),
+)
+
+audit_log = sa.Table(
+    "audit_log", metadata,
+    sa.Column("id", sa.Integer, primary_key=True, autoincrement=True),
+    sa.Column("exam_id", sa.String(200), nullable=False),
+    sa.Column("at", sa.DateTime(timezone=True), nullable=False),
+    sa.Column("actor", sa.String(200), nullable=False),
+    sa.Column("action", sa.String(64), nullable=False),
+    sa.Column("subject", sa.String(200), nullable=False),
+    sa.Column("before", sa.Text, nullable=True),  # JSON
+    sa.Column("after", sa.Text, nullable=True),  # JSON
+    sa.Index("ix_audit_log_exam_action", "exam_id", "action"),
 )
 
 
@@ -265,6 +292,9 @@ def issue_staff_token(engine: sa.Engine, exam_id: str) -> str:
     return token
 
 
+# -- drafts -------------------------------------------------------------------------------
+
+
 # -- submissions --------------------------------------------------------------------------
 
 
@@ -389,3 +419,6 @@ def _answers(connection, condition) -> list[StoredAnswer]:
         .select_from(answers.join(submissions)).where(condition)
         .order_by(s.id, a.id)).all()
     return [StoredAnswer(*row) for row in rows]
+
+
+# -- the staff's changes: policy and the audit log -----------------------------------------
