@@ -35,7 +35,7 @@ def student_html(server: Server, token: str, student_id: str, practice: str | No
     data = server.data
     verdicts = data.policy.shows_verdicts(now)
     stored = db.student_answers(server.engine, data.exam_id, student_id)
-    practice_of, _, practice_value = (practice or "").partition(":")
+    practice_of, _colon, practice_value = (practice or "").partition(":")
     exercises = []
     for exercise_id in data.exercise_ids:
         meta = data.exercises_meta[exercise_id]

@@ -24,7 +24,7 @@ def practice_seed(secret: str, student_id: str, exercise_id: str,
     when the value is not a draw of this student and exercise."""
     if not value:
         return None
-    seed, _, signature = value.partition(".")
+    seed, _dot, signature = value.partition(".")
     if not seed.isdigit() or not limits.signed_ok(
             secret, _signed_text(student_id, exercise_id, seed), signature):
         raise Refused(422, _("not a practice variant of this page"))

@@ -86,7 +86,7 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
     if counted:
         _check_open(policy, now)
     if counted and policy.attempts:  # refuse before grading; checked again when storing
-        _, per_part = await run_in_threadpool(db.part_attempts, state.engine, data.exam_id,
+        _last, per_part = await run_in_threadpool(db.part_attempts, state.engine, data.exam_id,
                                               student_id, exercise_id)
         _check_attempts(policy, per_part, given)
     graded = await state.pool.grade(student_id, exercise_id, given, practice_seed)
@@ -94,7 +94,7 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
         graded = [_not_in_time(data, exercise_id, name, text) for name, text in given.items()]
     seed = practice_seed if practice_seed is not None else \
         data.entry(student_id, exercise_id).seed
-    for _ in range(20):
+    for _try in range(20):
         last, per_part = await run_in_threadpool(
             db.part_attempts, state.engine, data.exam_id, student_id, exercise_id, counted)
         if counted:
