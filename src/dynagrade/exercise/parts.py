@@ -26,6 +26,7 @@ its own unit, which is also the unit a bare number is read in.
 
 from __future__ import annotations
 
+from ..i18n import _
 import textwrap
 from abc import ABC, abstractmethod
 from dataclasses import dataclass, field, replace
@@ -329,7 +330,7 @@ class Vector(Part):
         return f"a vector of {self.size} components" + (f" in {self.unit}" if self.unit else "")
 
     def input_hint(self) -> str:
-        return f"{self.size} components"
+        return _("{n} components").format(n=self.size)
 
     def near_misses(self, expected):
         if not any(expected):
@@ -385,7 +386,7 @@ class Symbolic(Part):
                                              for name, variable in self.variables.items())
 
     def input_hint(self) -> str:
-        return "in " + ", ".join(self.variables)
+        return _("in {names}").format(names=", ".join(self.variables))
 
     def near_misses(self, expected):
         return [(f"{1 + PERTURBATION}*({expected})", "the formula times 1.05")]
@@ -474,9 +475,12 @@ class Options(Part):
         return self.input_hint()
 
     def input_hint(self) -> str:
-        numbers = f" (or 1–{len(self.options)})" if self.numbered else ""
-        return ("one or more of " if self.multiple else "one of ") + ", ".join(self.options) \
-            + numbers
+        from ..grading.choice import shown_option
+
+        options = ", ".join(shown_option(o) for o in self.options)
+        numbers = " " + _("(or 1–{n})").format(n=len(self.options)) if self.numbered else ""
+        return (_("one or more of {options}") if self.multiple else _("one of {options}")).format(
+            options=options) + numbers
 
     def input_options(self) -> tuple[str, ...]:
         return tuple(self.options)

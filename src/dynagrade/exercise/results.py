@@ -20,6 +20,7 @@ score with a derived total::
 
 from __future__ import annotations
 
+from ..i18n import N_, _
 from dataclasses import dataclass, field, replace
 from enum import StrEnum
 from typing import Any, Protocol, Sequence
@@ -28,15 +29,22 @@ from typing import Any, Protocol, Sequence
 class Status(StrEnum):
     """What the grader made of one part's answer."""
 
-    CORRECT = "correct"
+    # stored and exported as these English words; marked for the catalogs and shown through
+    # :attr:`shown` in the page's language
+    CORRECT = N_("correct")
     #: wrong against the reference, right against the student's own earlier answers
-    FOLLOW_THROUGH = "follow-through"
+    FOLLOW_THROUGH = N_("follow-through")
     #: some credit, not all (e.g. some components of a vector)
-    PARTIAL = "partial"
-    WRONG = "wrong"
-    NOT_ANSWERED = "not answered"
+    PARTIAL = N_("partial")
+    WRONG = N_("wrong")
+    NOT_ANSWERED = N_("not answered")
     #: grading itself failed; the staff look at it
-    ERROR = "error"
+    ERROR = N_("error")
+
+    @property
+    def shown(self) -> str:
+        """The status as a person reads it, in the active language."""
+        return _(self.value)
 
     @property
     def answered_wrong(self) -> bool:
@@ -130,8 +138,8 @@ class GradedPart:
         if self.override is None:
             return ""
         text = rule.text if rule is not None else (lambda value: f"{value:g}")
-        note = (f"Points set by the staff: {text(self.override.points)} (graded "
-                f"{text(self.auto_score)})")
+        note = _("Points set by the staff: {points} (graded {graded})").format(
+            points=text(self.override.points), graded=text(self.auto_score))
         return note + (f": {self.override.comment}" if self.override.comment else "")
 
     def to_json(self) -> dict:

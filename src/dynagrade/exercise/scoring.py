@@ -30,7 +30,8 @@ def grade_variant(exercise: Exercise, variant: Variant,
         text = answers.get(part.name)
         if part.name in problems:
             results.append(_result(part, text, Status.WRONG, 0.0,
-                                   f"could not read the answer: {problems[part.name]}"))
+                                   _("could not read the answer: {problem}").format(
+                                       problem=problems[part.name])))
         elif text is None or not text.strip():
             results.append(_result(part, None, Status.NOT_ANSWERED, 0.0, _("not answered")))
         else:
@@ -59,8 +60,8 @@ def graded_error(part: Part, text: str | None, error: BaseException) -> GradedPa
     """The result of a part whose grading failed: status ``error`` with the message."""
     message = str(error) or type(error).__name__
     return _result(part, text, Status.ERROR, 0.0,
-                   f"could not be graded ({type(error).__name__}: {message}); the course "
-                   "staff will look at it")
+                   _("could not be graded ({error}: {message}); the course staff will look "
+                     "at it").format(error=type(error).__name__, message=message))
 
 
 def _follow_through(exercise: Exercise, part: Part, variant: Variant,
@@ -83,9 +84,9 @@ def _follow_through(exercise: Exercise, part: Part, variant: Variant,
     if not verdict.correct:
         return None
     return type(verdict)(correct=False, score=verdict.score, misconception=None,
-                         error=None, feedback="consistent with your earlier answer to "
-                         + ", ".join(part.follow_through_uses()) + ", which was not right: follow-through "
-                         "credit")
+                         error=None, feedback=_("consistent with your earlier answer to {parts}, "
+                                                "which was not right: follow-through credit")
+                         .format(parts=", ".join(part.follow_through_uses())))
 
 
 def _result(part: Part, answer: str | None, status: Status, fraction: float, feedback: str,

@@ -4,7 +4,9 @@ Labels are matched ignoring case and spaces, and may be written ``b``, ``(b)``,
 ``b)``, ``[b]``, ``{b}`` or ``b.``; an option may also be named by its aliases (the
 number or letter the statement gives it: ``spec.aliases``). A multiple-choice answer lists labels separated by
 commas, semicolons, spaces or "and" (``a, c``, ``(a) (c)``, ``a) and c)``), in any
-mix of these forms. Answers longer than :data:`lexer.MAX_LENGTH` are refused before
+mix of these forms. An option labelled with a word of the interface (``yes``, ``no``,
+``true``, ``false``: :data:`CHOICE_WORDS`) may also be written in the active language
+(``ja``, ``nein`` in a German exam); English exams accept the English words only. Answers longer than :data:`lexer.MAX_LENGTH` are refused before
 any other work. Partial credit for multiple
 choice: ``max(0, (right picks - wrong picks) / number of right options)``; only the
 exact set is correct.
@@ -16,6 +18,7 @@ without the reference (``read_choice``) and builds the spec of a ``dynagrade com
 
 from __future__ import annotations
 
+from ..i18n import N_, _, ngettext
 import re
 
 from .errors import SpecError
@@ -29,6 +32,9 @@ from .spec import ChoiceSpec
 
 #: What may separate the labels of several options.
 _SEPARATORS = re.compile(r"[,;]|\band\b")
+#: Option labels that are words of the interface: in another language, the word's
+#: translation names the same option too (docs/grading.md, "Choice words").
+CHOICE_WORDS = (N_("yes"), N_("no"), N_("true"), N_("false"))
 #: Brackets around labels in a run of labels (``(a)(c)``, ``a) c)``) separate them.
 _BRACKETS_AS_SPACES = str.maketrans("()[]{}", "      ")
 
@@ -42,7 +48,16 @@ def _keys(spec) -> dict[str, str]:
     keys = {_key(o): _key(o) for o in spec.options}
     for alias, option in spec.aliases:
         keys.setdefault(_key(alias), _key(option))
+    for word in CHOICE_WORDS:  # ``ja`` for ``yes`` in German; nothing new in English
+        if _key(word) in keys and keys[_key(word)] == _key(word):
+            keys.setdefault(_key(_(word)), _key(word))
     return keys
+
+
+def shown_option(label: str) -> str:
+    """An option's label as the interface shows it: a choice word in the active language
+    (``ja`` for ``yes`` in German), any other label as the author wrote it."""
+    return _(label) if label in CHOICE_WORDS else label
 
 
 def _expected(spec, expected) -> set[str]:
@@ -66,11 +81,13 @@ def _label(word: str, keys: dict) -> str | None:
 
 def _split(spec, answer: str) -> list[str] | str:
     if len(answer) > MAX_LENGTH:
-        return f"the answer is too long ({len(answer)} characters; at most {MAX_LENGTH})"
+        return _("the answer is too long ({length} characters; at most {limit})").format(
+            length=len(answer), limit=MAX_LENGTH)
     keys = _keys(spec)
     text = answer.strip()
     if not text.strip("()[]{}").strip():
-        return "the answer is empty: choose " + ("one or more options" if spec.multiple else "an option")
+        return (_("the answer is empty: choose one or more options") if spec.multiple
+                else _("the answer is empty: choose an option"))
     whole = _label(text, keys)
     if whole is not None:
         return [whole]
@@ -89,10 +106,14 @@ def _split(spec, answer: str) -> list[str] | str:
             picks.extend(label for label in labels if label)
             continue
         shown = chunk if len(chunk) <= 30 else chunk[:30] + "…"
-        numbered = f" (or {', '.join(a for a, _ in spec.aliases)})" if spec.aliases else ""
-        return f"unknown option '{shown}'; the options are: {', '.join(spec.options)}{numbered}"
+        options = ", ".join(shown_option(o) for o in spec.options)
+        if spec.aliases:
+            return _("unknown option '{given}'; the options are: {options} (or {aliases})").format(
+                given=shown, options=options, aliases=", ".join(a for a, _o in spec.aliases))
+        return _("unknown option '{given}'; the options are: {options}").format(
+            given=shown, options=options)
     if not picks:
-        return "the answer is empty: choose an option"
+        return _("the answer is empty: choose an option")
     return picks
 
 
@@ -105,22 +126,25 @@ def grade_choice(spec, expected, answer: str) -> Verdict:
     reveal = ""
     if spec.reveal:
         labels = [o for o in spec.options if _key(o) in right]
-        reveal = " The right option" + ("s are " if len(labels) > 1 else " is ") + ", ".join(labels) + "."
+        reveal = " " + ngettext("The right option is {options}.", "The right options are {options}.",
+                                len(labels)).format(options=", ".join(shown_option(o) for o in labels))
     if not spec.multiple:
         if len(chosen) > 1:
-            return Verdict(False, 0.0, "Choose only one option." + reveal)
+            return Verdict(False, 0.0, _("Choose only one option.") + reveal)
         if chosen == right:
-            return Verdict(True, 1.0, "Correct.")
-        return Verdict(False, 0.0, "Not correct." + reveal)
+            return Verdict(True, 1.0, _("Correct."))
+        return Verdict(False, 0.0, _("Not correct.") + reveal)
     if chosen == right:
-        return Verdict(True, 1.0, "Correct.")
+        return Verdict(True, 1.0, _("Correct."))
     hits = len(chosen & right)
     wrong = len(chosen - right)
     score = max(0.0, (hits - wrong) / len(right))
-    text = f"Not correct: {hits} of your {len(chosen)} choices are right"
+    text = _("Not correct: {hits} of your {chosen} choices are right").format(
+        hits=hits, chosen=len(chosen))
     missing = len(right - chosen)
     if missing:
-        text += f", and {missing} right option{'s are' if missing > 1 else ' is'} missing"
+        text += ngettext(", and {missing} right option is missing",
+                         ", and {missing} right options are missing", missing).format(missing=missing)
     return Verdict(False, score, text + "." + reveal)
 
 
@@ -130,9 +154,10 @@ def read_choice(spec: ChoiceSpec, text: str) -> Readability:
     if isinstance(picks, str):
         return Readability(False, picks)
     if not spec.multiple and len(set(picks)) > 1:
-        return Readability(False, "choose only one option")
+        return Readability(False, _("choose only one option"))
     chosen = [o for o in spec.options if any(o.replace(" ", "").casefold() == p for p in picks)]
-    return Readability(True, "reads as " + ", ".join(chosen))
+    return Readability(True, _("reads as {answer}").format(
+        answer=", ".join(shown_option(o) for o in chosen)))
 
 
 def build_choice(record: dict, common: Common):

@@ -8,6 +8,7 @@ compared as radians = 1.
 
 from __future__ import annotations
 
+from ..i18n import _
 from typing import Mapping
 
 from ..errors import DynagradeError
@@ -61,7 +62,8 @@ def _dim(node: Expr, variables) -> tuple:
             return units.add(a, units.scale(b, -1.0))
         if not units.same(a, b, ignore_angle=True):
             raise DimensionIssue(
-                f"your expression adds or subtracts terms with different units ({show(a)} and {show(b)})")
+                _("your expression adds or subtracts terms with different units ({first} and "
+                  "{second})").format(first=show(a), second=show(b)))
         return a if units.has_angle(a) else b
     if isinstance(node, Call):
         return _call(node, variables)
@@ -70,19 +72,23 @@ def _dim(node: Expr, variables) -> tuple:
 
 def _power(node: BinOp, base: tuple, variables) -> tuple:
     if has_units(node.right):
-        raise DimensionIssue(f"an exponent must be a pure number, not a unit ('{to_text(node.right)}')")
+        raise DimensionIssue(_("an exponent must be a pure number, not a unit ('{unit}')").format(
+            unit=to_text(node.right)))
     exponent_dim = _dim(node.right, variables)
     if not units.is_dimensionless(exponent_dim):
-        raise DimensionIssue(f"an exponent must be a pure number, but '{to_text(node.right)}' "
-                             f"has units of {show(exponent_dim)}")
+        raise DimensionIssue(_("an exponent must be a pure number, but '{exponent}' has units "
+                               "of {units}").format(exponent=to_text(node.right),
+                                                    units=show(exponent_dim)))
     if units.is_dimensionless(base, ignore_angle=False):
         return units.DIMENSIONLESS
     if names_in(node.right):
-        raise DimensionIssue(f"'{to_text(node.left)}' has units of {show(base)} and cannot be raised "
-                             f"to a power that depends on the variables")
+        raise DimensionIssue(_("'{base}' has units of {units} and cannot be raised to a power "
+                               "that depends on the variables").format(base=to_text(node.left),
+                                                                      units=show(base)))
     power = evaluate_constant(node.right)
     if not abs(power) < 1e6:
-        raise DimensionIssue(f"the exponent of '{to_text(node.left)}' is not a usable number")
+        raise DimensionIssue(_("the exponent of '{base}' is not a usable number").format(
+            base=to_text(node.left)))
     return units.scale(base, power)
 
 
@@ -92,17 +98,20 @@ def _call(node: Call, variables) -> tuple:
     rule = FUNCTIONS[func]
     if rule.dims == "trig":
         if not units.is_dimensionless(args[0]):
-            raise DimensionIssue(f"the argument of {func} must be an angle or a pure number, "
-                                 f"but it has units of {show(args[0])}")
+            raise DimensionIssue(_("the argument of {function} must be an angle or a pure "
+                                   "number, but it has units of {units}").format(
+                function=func, units=show(args[0])))
         return units.DIMENSIONLESS
     if rule.dims in ("pure", "inverse_trig"):
         if not units.is_dimensionless(args[0]):
-            raise DimensionIssue(f"the argument of {func} must be a pure number, "
-                                 f"but it has units of {show(args[0])}")
+            raise DimensionIssue(_("the argument of {function} must be a pure number, but it "
+                                   "has units of {units}").format(function=func,
+                                                                  units=show(args[0])))
         return _ANGLE if rule.dims == "inverse_trig" else units.DIMENSIONLESS
     if rule.dims == "atan2":
         if not units.same(args[0], args[1], ignore_angle=True):
-            raise DimensionIssue(f"the two arguments of atan2 must have the same units "
-                                 f"({show(args[0])} and {show(args[1])} given)")
+            raise DimensionIssue(_("the two arguments of atan2 must have the same units ({first} "
+                                   "and {second} given)").format(first=show(args[0]),
+                                                                 second=show(args[1])))
         return _ANGLE
     return units.scale(args[0], rule.power)  # roots and abs

@@ -3,6 +3,7 @@ and their functions: :mod:`.kinds`)."""
 
 from __future__ import annotations
 
+from ..i18n import _
 from .errors import AnswerError, SpecError
 from .kinds import kind_of
 from .verdict import Verdict, unreadable
@@ -18,7 +19,7 @@ def grade(spec, expected, answer: str) -> Verdict:
     when the spec or the reference is unusable, whatever the answer.
     """
     if not isinstance(answer, str):
-        return unreadable("the answer must be text")
+        return unreadable(_("the answer must be text"))
     grader = _grader(spec)
     try:
         return grader(spec, expected, answer)
@@ -27,9 +28,9 @@ def grade(spec, expected, answer: str) -> Verdict:
     except AnswerError as error:
         return unreadable(str(error))
     except RecursionError:
-        return unreadable("the answer is too deeply nested to read")
+        return unreadable(_("the answer is too deeply nested to read"))
     except MemoryError:
-        return unreadable("the answer is too large to read")
+        return unreadable(_("the answer is too large to read"))
 
 
 def accepts(spec, expected, answer: str) -> bool:

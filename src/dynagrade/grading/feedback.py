@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from ..i18n import _
 import math
 
 from .nodes import BinOp, Expr, walk
@@ -35,7 +36,7 @@ def show_tolerance(rtol: float, atol: float | None, unit: str | None) -> str:
         parts.append(f"{show_number(rtol * 100, 3)} %")
     if atol:
         parts.append(f"{show_value(atol, unit)}")
-    return " or ".join(parts) if parts else "exactly"
+    return _(" or ").join(parts) if parts else _("exactly")
 
 
 def reading_hints(tree: Expr) -> list[str]:
@@ -43,5 +44,5 @@ def reading_hints(tree: Expr) -> list[str]:
     for node in walk(tree):
         if isinstance(node, BinOp) and node.op == "*" and node.implicit and \
                 isinstance(node.left, BinOp) and node.left.op == "/":
-            return ["Note: a/2g is read as (a/2)·g; write a/(2g) if you mean to divide by 2g."]
+            return [_("Note: a/2g is read as (a/2)·g; write a/(2g) if you mean to divide by 2g.")]
     return []

@@ -18,6 +18,7 @@ Everything else is refused with a positioned message.
 
 from __future__ import annotations
 
+from ..i18n import N_, _
 import re
 from typing import NamedTuple
 
@@ -49,21 +50,21 @@ NUM, NAME, OP, LPAR, RPAR, COMMA, SEMI, SUP, ROOT, EQUALS, END = (
 
 _BRACKETS = {"(": LPAR, "[": LPAR, "{": LPAR, ")": RPAR, "]": RPAR, "}": RPAR}
 _REFUSED_CHARS = {
-    "'": "quotes are not allowed in an answer",
-    '"': "quotes are not allowed in an answer",
-    "!": "factorials are not supported",
-    "∞": "infinity is not a valid answer",
+    "'": N_("quotes are not allowed in an answer"),
+    '"': N_("quotes are not allowed in an answer"),
+    "!": N_("factorials are not supported"),
+    "∞": N_("infinity is not a valid answer"),
     "=": "",
-    "%": "percent signs are not supported; give a plain number",
-    "\\": "backslashes are not allowed (no LaTeX commands)",
-    "$": "dollar signs are not allowed (no LaTeX)",
-    ":": "':' is not allowed in an answer",
-    "@": "'@' is not allowed in an answer",
-    "#": "'#' is not allowed in an answer",
-    "&": "'&' is not allowed in an answer",
-    "|": "use abs(...) instead of |...|",
-    "<": "comparisons are not allowed in an answer",
-    ">": "comparisons are not allowed in an answer",
+    "%": N_("percent signs are not supported; give a plain number"),
+    "\\": N_("backslashes are not allowed (no LaTeX commands)"),
+    "$": N_("dollar signs are not allowed (no LaTeX)"),
+    ":": N_("':' is not allowed in an answer"),
+    "@": N_("'@' is not allowed in an answer"),
+    "#": N_("'#' is not allowed in an answer"),
+    "&": N_("'&' is not allowed in an answer"),
+    "|": N_("use abs(...) instead of |...|"),
+    "<": N_("comparisons are not allowed in an answer"),
+    ">": N_("comparisons are not allowed in an answer"),
 }
 
 
@@ -86,9 +87,10 @@ def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False,
     read whole, longest first, as one name token.
     """
     if not isinstance(text, str):
-        raise AnswerError("the answer must be text")
+        raise AnswerError(_("the answer must be text"))
     if len(text) > MAX_LENGTH:
-        raise AnswerError(f"the answer is too long ({len(text)} characters; at most {MAX_LENGTH})")
+        raise AnswerError(_("the answer is too long ({length} characters; at most {limit})").format(
+            length=len(text), limit=MAX_LENGTH))
     number_re = _NUMBER_COMMA if decimal_comma else _NUMBER
     tokens: list[Token] = []
     i, n = 0, len(text)
@@ -98,7 +100,8 @@ def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False,
             i += 1
             continue
         if len(tokens) >= MAX_TOKENS:
-            raise AnswerError(f"the answer is too long (more than {MAX_TOKENS} symbols)", i, text)
+            raise AnswerError(_("the answer is too long (more than {limit} symbols)").format(
+                limit=MAX_TOKENS), i, text)
         if ch in _DIGITS or (ch == "." and i + 1 < n and text[i + 1] in _DIGITS):
             token, i = _number(text, i, number_re, decimal_comma, names)
             tokens.append(token)
@@ -111,7 +114,7 @@ def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False,
         if ch in _LETTERS or ch == "_" or (ch in GREEK and not quantity):
             word, end = _unit_name(text, i) if quantity else _name(text, i)
             if end < n and text[end] == "." and end + 1 < n and (text[end + 1] in _LETTERS or text[end + 1] == "_"):
-                raise AnswerError("attribute access like a.b is not allowed", end, text)
+                raise AnswerError(_("attribute access like a.b is not allowed"), end, text)
             tokens.append(Token(NAME, word, i))
             i = end
             continue
@@ -131,14 +134,14 @@ def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False,
                 j += 1
             exponent = "".join(SUPERSCRIPTS[c] for c in text[i:j])
             if not _SUPERSCRIPT_VALUE.fullmatch(exponent):
-                raise AnswerError("this superscript is not a whole-number exponent", i, text)
+                raise AnswerError(_("this superscript is not a whole-number exponent"), i, text)
             tokens.append(Token(SUP, exponent, i))
             i = j
             continue
         if ch == "°":
             if not quantity:
-                raise AnswerError("the degree sign is only allowed after a number; "
-                                  "formulas use radians", i, text)
+                raise AnswerError(_("the degree sign is only allowed after a number; "
+                                    "formulas use radians"), i, text)
             tokens.append(Token(NAME, "deg", i))
             i += 1
             continue
@@ -172,9 +175,9 @@ def tokenize(text: str, *, quantity: bool = False, decimal_comma: bool = False,
             i += 1
             continue
         if ch in _REFUSED_CHARS:
-            raise AnswerError(_REFUSED_CHARS[ch], i, text)
+            raise AnswerError(_(_REFUSED_CHARS[ch]), i, text)
         shown = ch if ch.isprintable() else f"U+{ord(ch):04X}"
-        raise AnswerError(f"unexpected character '{shown}'", i, text)
+        raise AnswerError(_("unexpected character '{character}'").format(character=shown), i, text)
     tokens.append(Token(END, "", n))
     return tokens
 
@@ -184,20 +187,21 @@ def _number(text: str, i: int, number_re, decimal_comma: bool, names: frozenset)
     n = len(text)
     end = number_re.match(text, i).end()
     if end < n and text[end] == "." and end + 1 < n and text[end + 1] in _DIGITS:
-        raise AnswerError("a number cannot have two decimal points", end, text)
+        raise AnswerError(_("a number cannot have two decimal points"), end, text)
     if end < n and text[end] == "," and decimal_comma and end + 1 < n and text[end + 1] in _DIGITS:
-        raise AnswerError("a number cannot have two decimal commas", end, text)
+        raise AnswerError(_("a number cannot have two decimal commas"), end, text)
     if end < n and text[end] in "eE" and text[end] not in names:
         after = text[end + 1] if end + 1 < n else ""
         if after in MINUS_SIGNS or after in PLUS_SIGNS or not (after in _NAME_CHARS or after in GREEK):
             mantissa = text[i:end]
-            raise AnswerError(f"'{mantissa}{text[end]}' is an unfinished number: write the exponent's digits "
-                              f"({mantissa}{text[end]}3, {mantissa}{text[end]}-3), or '{mantissa}*e' for "
-                              "a product with Euler's number", end, text)
+            raise AnswerError(_("'{number}' is an unfinished number: write the exponent's digits "
+                                "({number}3, {number}-3), or '{mantissa}*e' for a product with "
+                                "Euler's number").format(number=mantissa + text[end],
+                                                         mantissa=mantissa), end, text)
     literal = text[i:end].translate(_ASCII_SIGNS)
     value = float(literal.replace(",", "."))
     if value == float("inf"):
-        raise AnswerError("this number is too large", i, text)
+        raise AnswerError(_("this number is too large"), i, text)
     return Token(NUM, literal, i), end
 
 

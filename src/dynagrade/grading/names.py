@@ -5,6 +5,7 @@ The functions themselves (arguments, values, units) are the table in :mod:`funct
 
 from __future__ import annotations
 
+from ..i18n import N_
 import difflib
 import re
 import math
@@ -22,20 +23,21 @@ FUNCTION_ALIASES: dict[str, str] = {
 #: Mathematical constants: a declared variable of the same name wins over these.
 CONSTANTS: dict[str, float] = {"pi": math.pi, "e": math.e}
 
-#: Functions we recognise but do not offer, with the reason shown to the student.
+#: Functions we recognise but do not offer, with the reason shown to the student (marked for
+#: the catalogs, translated where shown).
 REFUSED_FUNCTIONS: dict[str, str] = {
-    "factorial": "factorials are not supported",
-    "gamma": "the gamma function is not supported",
-    "eval": "that name is not allowed",
-    "exec": "that name is not allowed",
-    "lambda": "that name is not allowed",
-    "int": "that name is not allowed",
-    "float": "that name is not allowed",
-    "pow": "write powers with ^ or **",
-    "max": "max is not supported",
-    "min": "min is not supported",
-    "diff": "derivatives are not supported; give the result",
-    "integrate": "integrals are not supported; give the result",
+    "factorial": N_("factorials are not supported"),
+    "gamma": N_("the gamma function is not supported"),
+    "eval": N_("that name is not allowed"),
+    "exec": N_("that name is not allowed"),
+    "lambda": N_("that name is not allowed"),
+    "int": N_("that name is not allowed"),
+    "float": N_("that name is not allowed"),
+    "pow": N_("write powers with ^ or **"),
+    "max": N_("max is not supported"),
+    "min": N_("min is not supported"),
+    "diff": N_("derivatives are not supported; give the result"),
+    "integrate": N_("integrals are not supported; give the result"),
 }
 
 #: Greek letters (and common variants) -> ASCII names as used in exercise files.

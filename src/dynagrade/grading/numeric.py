@@ -7,6 +7,7 @@ without the reference (``read_numeric``) and builds the spec of a ``dynagrade co
 
 from __future__ import annotations
 
+from ..i18n import _, ngettext
 import math
 
 from . import units
@@ -67,7 +68,7 @@ def _read(spec: NumericSpec, answer: str) -> tuple[Quantity, _Reading]:
     part_factor, part_dim = unit_info(spec.unit)
     q = read_quantity(answer)
     if not math.isfinite(q.value):
-        raise AnswerError("your answer is not a finite number (it overflows or is undefined)")
+        raise AnswerError(_("your answer is not a finite number (it overflows or is undefined)"))
     return q, _read_in_part_unit(spec, q, part_factor, part_dim)
 
 
@@ -85,7 +86,7 @@ def _read_in_part_unit(spec: NumericSpec, q: Quantity, part_factor: float, part_
     wants_unit = not units.is_dimensionless(part_dim, ignore_angle=False)
     if q.dim is None:
         if spec.require_unit and wants_unit:
-            return _Reading(q.value, False, f"give the unit with your answer (the answer is in {spec.unit})", False)
+            return _Reading(q.value, False, _("give the unit with your answer (the answer is in {unit})").format(unit=spec.unit), False)
         return _Reading(q.value, True, None, False)
     if units.compatible(q.dim, part_dim):
         same_unit = abs(q.unit_factor - part_factor) <= 1e-12 * part_factor and \
@@ -95,9 +96,9 @@ def _read_in_part_unit(spec: NumericSpec, q: Quantity, part_factor: float, part_
     if wants_unit:
         wanted = f"{units.describe_dimension(part_dim)} ({spec.unit})"
     else:
-        wanted = "a pure number (no unit)"
+        wanted = _("a pure number (no unit)")
     typed = q.value / q.unit_factor if q.unit_text else q.value
-    return _Reading(typed, False, f"you gave {given}, expected {wanted}", False)
+    return _Reading(typed, False, _("you gave {given}, expected {wanted}").format(given=given, wanted=wanted), False)
 
 
 def _close(spec: NumericSpec, value: float, e: float) -> bool:
@@ -115,15 +116,18 @@ def _verdict(spec: NumericSpec, e: float, q: Quantity, reading: _Reading) -> Ver
     value_ok = _close(spec, reading.value, e)
     u = spec.unit_credit
     shown = show_value(reading.value, spec.unit)
-    reveal = f" The expected answer is {show_value(e, spec.unit)}." if spec.reveal else ""
+    reveal = " " + _("The expected answer is {answer}.").format(
+        answer=show_value(e, spec.unit)) if spec.reveal else ""
     if _accepted(spec, e, reading):
-        note = f" (read as {shown})" if reading.converted else ""
-        return Verdict(True, 1.0, f"Correct{note}.")
+        if reading.converted:
+            return Verdict(True, 1.0, _("Correct (read as {answer}).").format(answer=shown))
+        return Verdict(True, 1.0, _("Correct."))
     if not reading.unit_ok:
         score = (1.0 - u) if (u is not None and value_ok) else 0.0
-        text = f"Unit problem: {reading.unit_problem}."
+        text = _("Unit problem: {problem}.").format(problem=reading.unit_problem)
         if u is not None:
-            text += " The number is right." if value_ok else " The number is not right either."
+            text += " " + (_("The number is right.") if value_ok else
+                           _("The number is not right either."))
         return Verdict(False, score, text + reveal, misconception=UNIT)
     unit_score = u if u is not None else 0.0
     found = _misconception(spec, e, reading.value, q)
@@ -131,11 +135,12 @@ def _verdict(spec: NumericSpec, e: float, q: Quantity, reading: _Reading) -> Ver
         name, feedback, score = found
         total = unit_score + (1.0 - unit_score) * score if u is not None else score
         return Verdict(False, min(1.0, total), feedback + reveal, misconception=name)
-    text = f"Not correct: {shown} is not within the tolerance"
     if spec.sigfigs is not None:
-        text = f"Not correct: {shown} does not round to the expected value at {spec.sigfigs} significant figures"
+        text = _("Not correct: {answer} does not round to the expected value at {digits} "
+                 "significant figures").format(answer=shown, digits=spec.sigfigs)
     else:
-        text += f" ({show_tolerance(spec.rtol, spec.atol, spec.unit)})"
+        text = _("Not correct: {answer} is not within the tolerance ({tolerance})").format(
+            answer=shown, tolerance=show_tolerance(spec.rtol, spec.atol, spec.unit))
     text += "." + _digits_hint(spec, e, q, reading) + reveal
     return Verdict(False, unit_score, text)
 
@@ -178,8 +183,9 @@ def _digits_hint(spec: NumericSpec, e: float, q: Quantity, reading: _Reading) ->
         scale = unit_info(spec.unit)[0] / q.unit_factor
     typed_value = reading.value * scale
     if round_sig(e * scale, typed) == round_sig(typed_value, typed):
-        return (f" You gave {typed} significant figure{'s' if typed > 1 else ''}; "
-                f"give at least {needed}.")
+        return " " + ngettext("You gave {typed} significant figure; give at least {needed}.",
+                              "You gave {typed} significant figures; give at least {needed}.",
+                              typed).format(typed=typed, needed=needed)
     return ""
 
 
@@ -190,18 +196,20 @@ def read_numeric(spec: NumericSpec, text: str) -> Readability:
     """How ``text`` reads as an answer to ``spec`` (:func:`.readability.readability`)."""
     quantity = read_quantity(text)
     if not math.isfinite(quantity.value):
-        return Readability(False, "the answer is not a finite number")
+        return Readability(False, _("the answer is not a finite number"))
     factor, dim = unit_info(spec.unit)
     reading = _read_in_part_unit(spec, quantity, factor, dim)
     if not reading.unit_ok:
-        return Readability(False, f"unit problem: {reading.unit_problem}")
+        return Readability(False, _("unit problem: {problem}").format(problem=reading.unit_problem))
     shown = show_value(reading.value, spec.unit)
     if quantity.dim is None:
-        where = f" (a bare number is read in {spec.unit})" if spec.unit else ""
-        return Readability(True, f"reads as {shown}{where}")
+        if spec.unit:
+            return Readability(True, _("reads as {answer} (a bare number is read in {unit})")
+                               .format(answer=shown, unit=spec.unit))
+        return Readability(True, _("reads as {answer}").format(answer=shown))
     if not reading.converted:
-        return Readability(True, f"reads as {shown}")
-    return Readability(True, f"reads as {text.strip()} = {shown}")
+        return Readability(True, _("reads as {answer}").format(answer=shown))
+    return Readability(True, _("reads as {answer}").format(answer=f"{text.strip()} = {shown}"))
 
 
 def build_numeric(record: dict, common: Common):

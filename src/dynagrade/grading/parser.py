@@ -20,6 +20,7 @@ product.
 
 from __future__ import annotations
 
+from ..i18n import _, ngettext
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -107,7 +108,7 @@ def parse_vector(text: str) -> tuple[list[Expr], Expr | None]:
     if bracketed:
         parser.advance()
     if parser.peek().kind in (END, RPAR):
-        raise AnswerError("the vector has no components", parser.peek().pos, text)
+        raise AnswerError(_("the vector has no components"), parser.peek().pos, text)
     while True:
         components.append(parser.expression(0))
         token = parser.peek()
@@ -119,9 +120,9 @@ def parse_vector(text: str) -> tuple[list[Expr], Expr | None]:
     if bracketed:
         close = parser.peek()
         if close.kind != RPAR:
-            raise AnswerError(f"expected '{_CLOSERS[opener.value]}' to close the vector", close.pos, text)
+            raise AnswerError(_("expected '{closer}' to close the vector").format(closer=_CLOSERS[opener.value]), close.pos, text)
         if close.value != _CLOSERS[opener.value]:
-            raise AnswerError(f"'{opener.value}' is closed by '{close.value}'", close.pos, text)
+            raise AnswerError(_("'{opener}' is closed by '{closer}'").format(opener=opener.value, closer=close.value), close.pos, text)
         parser.advance()
         if parser.peek().kind != END:
             unit = parser.expression(0)
@@ -163,7 +164,7 @@ def _parse(text: str, vocabulary: Vocabulary, *, decimal_comma: bool) -> Expr:
         tokens = tokens[2:]
     parser = _Parser(tokens, text, vocabulary)
     if parser.peek().kind == END:
-        raise AnswerError("the answer is empty")
+        raise AnswerError(_("the answer is empty"))
     tree = parser.expression(0)
     parser.expect_end()
     if len(text) * _NODES_PER_CHARACTER > MAX_DEPTH:
@@ -176,9 +177,9 @@ def check_limits(tree: Expr) -> None:
     ``* /`` count once) or with a chain of more than :data:`MAX_TERMS` terms."""
     nesting, terms = nesting_and_terms(tree)
     if nesting > MAX_DEPTH:
-        raise AnswerError(f"the expression is too complex (nested more than {MAX_DEPTH} levels)")
+        raise AnswerError(_("the expression is too complex (nested more than {levels} levels)").format(levels=MAX_DEPTH))
     if terms > MAX_TERMS:
-        raise AnswerError(f"the expression is too long (a sum or product of more than {MAX_TERMS} terms)")
+        raise AnswerError(_("the expression is too long (a sum or product of more than {terms} terms)").format(terms=MAX_TERMS))
 
 
 class _Parser:
@@ -209,25 +210,27 @@ class _Parser:
         if token.kind == END:
             return
         if token.kind == RPAR:
-            raise self.error(f"unexpected '{token.value}' (no matching opening bracket)", token)
+            raise self.error(_("unexpected '{token}' (no matching opening bracket)").format(token=token.value), token)
         if token.kind in (COMMA, SEMI):
             raise self.error(self._comma_message(), token)
         if token.kind == NUM:
-            raise self.error(f"missing operator before '{token.value}'?", token)
+            raise self.error(_("missing operator before '{token}'?").format(token=token.value), token)
         if token.kind == EQUALS:
-            raise self.error("give only the value or the expression, not an equation", token)
-        raise self.error(f"unexpected '{token.value}'", token)
+            raise self.error(_("give only the value or the expression, not an equation"), token)
+        raise self.error(_("unexpected '{token}'").format(token=token.value), token)
 
     def _comma_message(self) -> str:
         if self.vocabulary.quantity:
-            return "unexpected comma: separate thousands without commas, and write decimals as 12.5 or 12,5"
-        return "unexpected comma: commas only separate the arguments of a function like atan2(y, x); write decimals with '.'"
+            return _("unexpected comma: separate thousands without commas, and write decimals as "
+                     "12.5 or 12,5")
+        return _("unexpected comma: commas only separate the arguments of a function like "
+                 "atan2(y, x); write decimals with '.'")
 
     # -- Pratt loop ---------------------------------------------------------------------
     def expression(self, rbp: int) -> Expr:
         self.level += 1
         if self.level > MAX_DEPTH:
-            raise self.error(f"the expression is nested too deeply (more than {MAX_DEPTH} levels)", self.peek())
+            raise self.error(_("the expression is nested too deeply (more than {levels} levels)").format(levels=MAX_DEPTH), self.peek())
         try:
             left = self.nud(self.advance())
             while True:
@@ -256,9 +259,9 @@ class _Parser:
             return self.name(token)
         if kind == LPAR:
             if token.value != "(" and not self.vocabulary.quantity:
-                raise self.error("use round brackets ( ) for grouping", token)
+                raise self.error(_("use round brackets ( ) for grouping"), token)
             if self.peek().kind == RPAR:
-                raise self.error("empty brackets", self.peek())
+                raise self.error(_("empty brackets"), self.peek())
             inner = self.expression(0)
             self.close(token)
             return inner
@@ -267,19 +270,19 @@ class _Parser:
             return Neg(operand) if token.value == "-" else operand
         if kind == ROOT:
             if self.peek().kind in (END, RPAR, OP, COMMA, SEMI):
-                raise self.error(f"'{self.text[token.pos]}' needs something to take the root of", token)
+                raise self.error(_("'{root}' needs something to take the root of").format(root=self.text[token.pos]), token)
             return Call(token.value, (self.expression(_BP_ROOT),))
         if kind == END:
-            raise self.error("the answer ends too early: something is missing here", token)
+            raise self.error(_("the answer ends too early: something is missing here"), token)
         if kind == RPAR:
-            raise self.error(f"unexpected '{token.value}'", token)
+            raise self.error(_("unexpected '{token}'").format(token=token.value), token)
         if kind in (COMMA, SEMI):
             raise self.error(self._comma_message(), token)
         if kind == SUP:
-            raise self.error("an exponent needs something before it", token)
+            raise self.error(_("an exponent needs something before it"), token)
         if kind == EQUALS:
-            raise self.error("give only the value or the expression, not an equation", token)
-        raise self.error(f"unexpected '{token.value}': something is missing before it", token)
+            raise self.error(_("give only the value or the expression, not an equation"), token)
+        raise self.error(_("unexpected '{token}': something is missing before it").format(token=token.value), token)
 
     def led(self, token: Token, left: Expr) -> Expr:
         if token.kind == OP:
@@ -288,7 +291,7 @@ class _Parser:
                 return BinOp("^", left, self.expression(_BP_POWER - 1))
             bp = _BP_SUM if token.value in "+-" else _BP_PRODUCT
             if self.peek().kind == OP and self.peek().value in "*/^":
-                raise self.error(f"two operators in a row: '{token.value}{self.peek().value}'", self.peek())
+                raise self.error(_("two operators in a row: '{operators}'").format(operators=token.value + self.peek().value), self.peek())
             return BinOp(token.value, left, self.expression(bp))
         if token.kind == SUP:
             self.advance()
@@ -298,7 +301,7 @@ class _Parser:
         # Product written without an operator.
         if token.kind == NUM and not (self.vocabulary.quantity and token.value == "1"
                                       and self.peek(1).kind == OP and self.peek(1).value == "/"):
-            raise self.error(f"missing operator before '{token.value}'?", token)
+            raise self.error(_("missing operator before '{token}'?").format(token=token.value), token)
         return BinOp("*", left, self.expression(_BP_PRODUCT), implicit=True)
 
     def close(self, opener: Token) -> None:
@@ -306,13 +309,13 @@ class _Parser:
         want = _CLOSERS[opener.value]
         if token.kind != RPAR:
             if token.kind == END:
-                raise AnswerError(f"missing '{want}' to close the '{opener.value}' opened here",
+                raise AnswerError(_("missing '{closer}' to close the '{opener}' opened here").format(closer=want, opener=opener.value),
                                   opener.pos, self.text)
             if token.kind in (COMMA, SEMI):
                 raise self.error(self._comma_message(), token)
-            raise self.error(f"expected '{want}'", token)
+            raise self.error(_("expected '{closer}'").format(closer=want), token)
         if token.value != want:
-            raise self.error(f"'{opener.value}' is closed by '{token.value}'", token)
+            raise self.error(_("'{opener}' is closed by '{closer}'").format(opener=opener.value, closer=token.value), token)
         self.advance()
 
     # -- names --------------------------------------------------------------------------
@@ -320,9 +323,9 @@ class _Parser:
         word = token.value
         follows_bracket = self.peek().kind == LPAR and self.peek().value == "("
         if self.peek().kind == LPAR and self.peek().value == "[" and not self.vocabulary.quantity:
-            raise self.error("subscripts like a[0] are not allowed", self.peek())
+            raise self.error(_("subscripts like a[0] are not allowed"), self.peek())
         if word.startswith("_"):
-            raise self.error(f"names starting with '_' are not allowed ('{word[:30]}')", token)
+            raise self.error(_("names starting with '_' are not allowed ('{name}')").format(name=word[:30]), token)
         function = canonical_function(word)
         if function and follows_bracket and word not in self.vocabulary.variables:
             return self.call(token, function)
@@ -340,9 +343,9 @@ class _Parser:
         if word in CONSTANTS:
             return Const(word)
         if function:
-            raise self.error(f"write {word}(...) with brackets around its argument", token)
+            raise self.error(_("write {function}(...) with brackets around its argument").format(function=word), token)
         if word in REFUSED_FUNCTIONS:
-            raise self.error(f"'{word}': {REFUSED_FUNCTIONS[word]}", token)
+            raise self.error(f"'{word}': {_(REFUSED_FUNCTIONS[word])}", token)
         pieces = _split_name(word, variables, follows_bracket)
         if pieces:
             return self.product_of_pieces(token, pieces)
@@ -351,11 +354,13 @@ class _Parser:
         pool = list(variables) + list(CONSTANTS) + list(FUNCTIONS)
         hint = suggest(word, pool) if len(word) <= 40 else None
         word = word if len(word) <= 30 else word[:30] + "…"
-        did_you_mean = f"; did you mean '{hint}'?" if hint else ""
+        did_you_mean = _("; did you mean '{hint}'?").format(hint=hint) if hint else ""
         if follows_bracket:
-            raise self.error(f"unknown function '{word}'{did_you_mean}", token)
-        known = ", ".join(sorted(variables)) if variables else "none"
-        raise self.error(f"unknown name '{word}'{did_you_mean} (the variables are: {known})", token)
+            raise self.error(_("unknown function '{name}'").format(name=word) + did_you_mean,
+                             token)
+        known = ", ".join(sorted(variables)) if variables else _("none")
+        raise self.error(_("unknown name '{name}'{did_you_mean} (the variables are: {names})")
+                         .format(name=word, did_you_mean=did_you_mean, names=known), token)
 
     def product_of_pieces(self, token: Token, pieces: list[str]) -> Expr:
         """Read the first piece now and put the others back into the token stream, so
@@ -371,25 +376,25 @@ class _Parser:
         if word in CONSTANTS:
             return Const(word)
         if word in REFUSED_FUNCTIONS and self.peek().kind == LPAR:
-            raise self.error(f"'{word}': {REFUSED_FUNCTIONS[word]}", token)
+            raise self.error(f"'{word}': {_(REFUSED_FUNCTIONS[word])}", token)
         if word.lower() in ("nan", "inf", "infinity"):
-            raise self.error(f"'{word}' is not a valid answer: give a finite number", token)
+            raise self.error(_("'{word}' is not a valid answer: give a finite number").format(word=word), token)
         return Unit(word, token.pos)
 
     def call(self, token: Token, function: str) -> Expr:
         opener = self.advance()
         arity = FUNCTIONS[function].arity
         if self.peek().kind == RPAR:
-            raise self.error(f"{token.value}() needs an argument", self.peek())
+            raise self.error(_("{function}() needs an argument").format(function=token.value), self.peek())
         args = [self.expression(0)]
         while self.peek().kind == COMMA:
             comma = self.advance()
             if len(args) >= arity:
-                raise self.error(f"{token.value} takes {arity} argument{'s' if arity > 1 else ''}", comma)
+                raise self.error(ngettext("{function} takes {n} argument", "{function} takes {n} arguments", arity).format(function=token.value, n=arity), comma)
             args.append(self.expression(0))
         self.close(opener)
         if len(args) != arity:
-            raise self.error(f"{token.value} takes {arity} arguments", token)
+            raise self.error(ngettext("{function} takes {n} argument", "{function} takes {n} arguments", arity).format(function=token.value, n=arity), token)
         return Call(function, tuple(args))
 
 

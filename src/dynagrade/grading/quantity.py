@@ -7,6 +7,7 @@ evaluated in SI with :mod:`evaluate`, and its dimension found with :mod:`dims`.
 
 from __future__ import annotations
 
+from ..i18n import _
 import math
 from dataclasses import dataclass
 from functools import lru_cache
@@ -54,14 +55,15 @@ def quantity_from_tree(tree: Expr, text: str, *, require_number: bool = True) ->
                 factors[node.id] = units.lookup(node.id)[0]
             except AnswerError as error:
                 if require_number and value_part is None:
-                    raise AnswerError(f"'{node.id}' is not a number", node.pos, text) from None
+                    raise AnswerError(_("'{given}' is not a number").format(given=node.id), node.pos, text) from None
                 raise AnswerError(error.message, node.pos, text) from None
     if require_number and value_part is None and unit_part is not None:
-        raise AnswerError(f"your answer has no number, only a unit ('{to_text(tree)}')")
+        raise AnswerError(_("your answer has no number, only a unit ('{unit}')").format(
+            unit=to_text(tree)))
     try:
         dim = dimension(tree, {})
     except DimensionIssue as issue:
-        raise AnswerError(issue.message.replace("your expression", "your answer")) from None
+        raise AnswerError(issue.message.replace(_("your expression"), _("your answer"))) from None
     from .evaluate import evaluate
 
     value = float(evaluate(tree, {}, factors))
@@ -71,7 +73,8 @@ def quantity_from_tree(tree: Expr, text: str, *, require_number: bool = True) ->
         unit_factor = float(evaluate(unit_part, {}, factors))
         if not (math.isfinite(unit_factor) and unit_factor > 0):
             shown = unit_text if len(unit_text) <= 30 else unit_text[:30] + "…"
-            raise AnswerError(f"the unit '{shown}' is too large or too small to compute with")
+            raise AnswerError(_("the unit '{unit}' is too large or too small to compute with").format(
+                unit=shown))
     return Quantity(value, dim, unit_text, unit_factor, number_text, tree)
 
 

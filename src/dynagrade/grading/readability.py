@@ -12,6 +12,7 @@ Never raises because of ``text``. Each kind reads its own answers (the ``read`` 
 
 from __future__ import annotations
 
+from ..i18n import _
 from dataclasses import dataclass
 
 from .errors import AnswerError
@@ -28,18 +29,18 @@ class Readability:
 def readability(spec, text: str) -> Readability:
     """How ``text`` reads as an answer to a part with ``spec`` (a grading spec)."""
     if not isinstance(text, str) or not text.strip():
-        return Readability(False, "no answer yet")
+        return Readability(False, _("no answer yet"))
     from .kinds import kind_of
 
     kind = kind_of(spec)
     if kind is None:
-        return Readability(False, "this kind of answer cannot be checked here")
+        return Readability(False, _("this kind of answer cannot be checked here"))
     try:
         return kind.function("read")(spec, text)
     except AnswerError as error:
         return Readability(False, str(error))
     except (RecursionError, MemoryError):
-        return Readability(False, "the answer cannot be read (too large or too deeply nested)")
+        return Readability(False, _("the answer cannot be read (too large or too deeply nested)"))
     except Exception:  # a reader's own failure on odd input: still an answer, not a crash
-        return Readability(False, "the answer cannot be read; write a number, a unit and "
-                                  "operators only")
+        return Readability(False, _("the answer cannot be read; write a number, a unit and "
+                                    "operators only"))

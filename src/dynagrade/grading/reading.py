@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from ..i18n import _
 import math
 from typing import Mapping
 
@@ -19,13 +20,14 @@ def read_number(text: str, unit: str | None = None) -> float:
 
     q = read_quantity(text)
     if not math.isfinite(q.value):
-        raise AnswerError("the answer is not a finite number")
+        raise AnswerError(_("the answer is not a finite number"))
     if q.dim is None:
         return q.value
     factor, dim = unit_info(unit)
     if not units.compatible(q.dim, dim):
-        raise AnswerError(f"you gave {units.describe_dimension(q.dim)}, expected "
-                          f"{units.describe_dimension(dim)} ({unit or 'no unit'})")
+        raise AnswerError(_("you gave {given}, expected {wanted}").format(
+            given=units.describe_dimension(q.dim),
+            wanted=f"{units.describe_dimension(dim)} ({unit or _('no unit')})"))
     return q.value / factor
 
 

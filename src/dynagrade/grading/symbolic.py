@@ -27,6 +27,7 @@ without the reference (``read_symbolic``) and builds the spec of a ``dynagrade c
 
 from __future__ import annotations
 
+from ..i18n import N_, _
 import math
 import zlib
 from dataclasses import dataclass
@@ -181,23 +182,29 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
         tree = parse_expression(answer, ref.names, spec.spellings)
     except AnswerError as error:
         return unreadable(str(error))
-    reveal = f" The expected answer is {to_text(ref.tree)}." if spec.reveal else ""
+    reveal = " " + _("The expected answer is {answer}.").format(answer=to_text(ref.tree)) \
+        if spec.reveal else ""
     hint = "".join(" " + h for h in reading_hints(tree))
     if ref.dims is not None and ref.dim is not None:
         try:
             dim = dimension(tree, ref.dims)
         except DimensionIssue as issue:
-            return Verdict(False, 0.0, f"Not correct: {issue.message}.{hint}{reveal}", misconception="dimensions")
+            return Verdict(False, 0.0, _("Not correct: {problem}.").format(problem=issue.message)
+                           + hint + reveal, misconception="dimensions")
         if not units.same(dim, ref.dim, ignore_angle=True):
-            return Verdict(False, 0.0, f"Not correct: your expression has units of {show(dim)}, "
-                                        f"expected {show(ref.dim)}.{hint}{reveal}", misconception="dimensions")
+            return Verdict(False, 0.0, _("Not correct: your expression has units of {given}, "
+                                         "expected {wanted}.").format(given=show(dim),
+                                                                      wanted=show(ref.dim))
+                           + hint + reveal, misconception="dimensions")
     values = _values(tree, ref.env, ref.values.shape)
     if np.any(np.isinf(values)) and not names_in(tree):
-        return Verdict(False, 0.0, "Not correct: your expression overflows (it is too large to compute)." + reveal)
+        return Verdict(False, 0.0, _("Not correct: your expression overflows (it is too large to "
+                                     "compute).") + reveal)
     if not np.all(np.isfinite(values)):
-        return Verdict(False, 0.0, "Not correct: your expression is undefined for some allowed values of "
-                                    "the variables (a division by zero, the root or logarithm of a negative "
-                                    "number, or a number too large to compute) where the expected one is defined." + reveal)
+        return Verdict(False, 0.0, _("Not correct: your expression is undefined for some allowed values of "
+                                     "the variables (a division by zero, the root or logarithm of a negative "
+                                     "number, or a number too large to compute) where the expected one is "
+                                     "defined.") + reveal)
     if _equivalent(tree, ref, values, deadline):
         return _form_verdict(spec, ref, tree)
     base = None if ref.based is None else _values(tree, ref.based, values.shape)
@@ -212,7 +219,8 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
         return Verdict(False, score, " ".join(x for x in (feedback, hints) if x) + reveal, misconception=name)
     read = to_text(tree)
     read = read if len(read) <= 120 else read[:120] + "…"
-    text = f"Not correct: your expression (read as {read}) is not equivalent to the expected one."
+    text = _("Not correct: your expression (read as {answer}) is not equivalent to the expected "
+             "one.").format(answer=read)
     return Verdict(False, 0.0, " ".join(x for x in (text, hints) if x) + reveal)
 
 
@@ -234,9 +242,12 @@ def _equivalent(tree: Expr, ref: _Reference, values: np.ndarray, deadline: Deadl
 def constant_ignored(spec: SymbolicSpec) -> str:
     """What a formula right up to an additive constant is told."""
     names = [n for n in spec.variables if n in spec.constant_in]
-    detail = "" if len(names) == len(spec.variables) else f" (one independent of {', '.join(names)})"
-    return (f"Your expression differs from the expected one by an additive constant{detail}, "
-            "which this part ignores: only changes of its value matter.")
+    if len(names) == len(spec.variables):
+        return _("Your expression differs from the expected one by an additive constant, which "
+                 "this part ignores: only changes of its value matter.")
+    return _("Your expression differs from the expected one by an additive constant (one "
+             "independent of {names}), which this part ignores: only changes of its value "
+             "matter.").format(names=", ".join(names))
 
 
 def _same_differences(values: np.ndarray, values_base: np.ndarray, expected: np.ndarray,
@@ -253,18 +264,19 @@ def _form_verdict(spec: SymbolicSpec, ref: _Reference, tree: Expr, note: str = "
     if "no_decimals" in spec.form:
         if any(isinstance(n, Num) and n.value != int(n.value) for n in walk(tree)) or \
                 any(isinstance(n, Num) and any(c in n.text for c in ".,") for n in walk(tree)):
-            problems.append("write exact numbers (fractions like 1/2) instead of decimals")
+            problems.append(_("write exact numbers (fractions like 1/2) instead of decimals"))
     if "simplified" in spec.form:
         if sum(1 for _ in walk(tree)) > sum(1 for _ in walk(ref.tree)) + 2:
-            problems.append("simplify your expression further")
+            problems.append(_("simplify your expression further"))
     if "no_functions" in spec.form:
         if any(isinstance(n, Call) for n in walk(tree)):
-            problems.append("write it without functions (no sin, sqrt, exp, …)")
+            problems.append(_("write it without functions (no sin, sqrt, exp, …)"))
     if problems:
         return Verdict(False, spec.form_credit,
-                       "Your expression is equivalent, but " + " and ".join(problems) + "." +
+                       _("Your expression is equivalent, but {problems}.").format(
+                           problems=_(" and ").join(problems)) +
                        (" " + note if note else ""), misconception="form")
-    return Verdict(True, 1.0, "Correct." + (" " + note if note else ""))
+    return Verdict(True, 1.0, _("Correct.") + (" " + note if note else ""))
 
 
 def _agrees(values: np.ndarray, target: np.ndarray, ref: _Reference) -> bool:
@@ -294,30 +306,38 @@ def _misconception(spec: SymbolicSpec, ref: _Reference, values: np.ndarray,
         c = median(ratio)
         if np.all(np.abs(ratio - c) <= 1e-6 * max(abs(c), 1e-300)) and c != 0:
             if abs(c + 1) < 1e-6:
-                return "sign", "Your expression has the wrong sign: check the direction you took as positive.", 0.0
+                return (N_("sign"), _("Your expression has the wrong sign: check the direction you "
+                                      "took as positive."), 0.0)
             if abs(c - 2) < 1e-6:
-                return "factor 2", "Your expression is twice the expected one: check for an extra factor of 2.", 0.0
+                return (N_("factor 2"), _("Your expression is twice the expected one: check for an "
+                                          "extra factor of 2."), 0.0)
             if abs(c - 0.5) < 1e-6:
-                return "factor 1/2", "Your expression is half the expected one: check for a missing factor of 2.", 0.0
+                return (N_("factor 1/2"), _("Your expression is half the expected one: check for a "
+                                            "missing factor of 2."), 0.0)
             k = math.log10(abs(c))
             if abs(k - round(k)) < 1e-6 and c > 0 and round(k) != 0:
-                return "power of ten", f"Your expression is off by a factor 10^{round(k)}.", 0.0
+                return (N_("power of ten"), _("Your expression is off by a factor 10^{exponent}.")
+                        .format(exponent=round(k)), 0.0)
     if ref.swapped is not None and _agrees(values, ref.swapped, ref) and not _agrees(e, ref.swapped, ref):
-        return "sin/cos", "Your expression has sin where cos belongs (or the other way round): check which angle you used.", 0.0
+        return (N_("sin/cos"), _("Your expression has sin where cos belongs (or the other way "
+                                   "round): check which angle you used."), 0.0)
     if np.all(nonzero):
         with np.errstate(all="ignore"):
             reciprocal = 1.0 / e
         if _agrees(values, reciprocal, ref) and not _agrees(e, reciprocal, ref):
-            return "reciprocal", "Your expression is the reciprocal of the expected one: is a fraction upside down?", 0.0
+            return (N_("reciprocal"), _("Your expression is the reciprocal of the expected one: is a "
+                                          "fraction upside down?"), 0.0)
     if np.count_nonzero(nonzero) >= 3:
         ratio = values[nonzero] / e[nonzero]
         c = median(ratio)
         if c != 0 and np.all(np.abs(ratio - c) <= 1e-6 * abs(c)):
-            return "constant factor", "Your expression differs from the expected one by a constant factor.", 0.0
+            return (N_("constant factor"), _("Your expression differs from the expected one by a "
+                                               "constant factor."), 0.0)
     offset = values - e
     d = median(offset)
     if d != 0 and np.all(np.abs(offset - d) <= ref.tol) and names_in(ref.tree):
-        return "constant term", "Your expression differs from the expected one by a constant term.", 0.0
+        return (N_("constant term"), _("Your expression differs from the expected one by a constant "
+                                        "term."), 0.0)
     return None
 
 
@@ -327,10 +347,10 @@ def read_symbolic(spec: SymbolicSpec, text: str) -> Readability:
     tree = parse_expression(text, allowed, spec.spellings)
     unknown = sorted(names_in(tree) - set(allowed))
     if unknown:
-        listed = ", ".join(allowed) or "none"
-        return Readability(False, f"'{unknown[0]}' is not a name of this part (allowed: "
-                                  f"{listed})")
-    return Readability(True, f"reads as {to_text(tree)}")
+        listed = ", ".join(allowed) or _("none")
+        return Readability(False, _("'{name}' is not a name of this part (allowed: {names})")
+                           .format(name=unknown[0], names=listed))
+    return Readability(True, _("reads as {answer}").format(answer=to_text(tree)))
 
 
 def build_symbolic(record: dict, common: Common):

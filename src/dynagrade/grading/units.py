@@ -15,6 +15,7 @@ for ``rad/s`` (read as rad/s) and ``rpm`` for ``1/s`` (converted to rad/s), whil
 
 from __future__ import annotations
 
+from ..i18n import N_, _
 import math
 from fractions import Fraction
 from functools import lru_cache
@@ -106,7 +107,7 @@ def _find(name: str) -> tuple[float, tuple]:
     if name in BUILTIN:
         return BUILTIN[name]
     if name in _REFUSED:
-        raise AnswerError(f"the unit '{name}' is not supported here")
+        raise AnswerError(_("the unit '{unit}' is not supported here").format(unit=name))
     if name in _ALIASES:
         return _product(_ALIASES[name])
     try:
@@ -129,24 +130,26 @@ def _product(parts) -> tuple[float, tuple]:
 
 def _pint_unit(name: str) -> tuple[float, tuple]:
     if not name.replace("_", "").isalnum() or len(name) > 40 or name.startswith("_"):
-        raise AnswerError(f"'{name[:30]}' is not a unit I know")
+        raise AnswerError(_("'{unit}' is not a unit I know").format(unit=name[:30]))
     ureg = registry()
     try:
         factor, root = ureg.get_root_units(name)
     except Exception:  # pint raises several error types for unknown names
         hint = suggest(name, _COMMON)
-        tail = f"; did you mean '{hint}'?" if hint else ""
-        raise AnswerError(f"'{name}' is not a unit I know{tail}") from None
+        if hint:
+            raise AnswerError(_("'{unit}' is not a unit I know; did you mean '{hint}'?").format(
+                unit=name, hint=hint)) from None
+        raise AnswerError(_("'{unit}' is not a unit I know").format(unit=name)) from None
     exps = [0.0] * 8
     factor = float(factor)
     for root_name, power in dict(root._units).items():
         if root_name not in _ROOTS:
-            raise AnswerError(f"the unit '{name}' is not supported here")
+            raise AnswerError(_("the unit '{unit}' is not supported here").format(unit=name))
         index, si = _ROOTS[root_name]
         exps[index] += float(power)
         factor *= si ** float(power)
     if not math.isfinite(factor) or factor == 0.0:
-        raise AnswerError(f"the unit '{name}' is not supported here")
+        raise AnswerError(_("the unit '{unit}' is not supported here").format(unit=name))
     return factor, tuple(exps)
 
 
@@ -222,17 +225,18 @@ def format_dimension(dim: tuple) -> str:
     return f"{top}/({bottom})" if len(down) > 1 else f"{top}/{bottom}"
 
 
+#: words for dimensions, marked for the catalogs and translated where described
 _NAMES = {
-    (0, 1, 0): "a length", (1, 0, 0): "a mass", (0, 0, 1): "a time",
-    (0, 1, -1): "a velocity", (0, 1, -2): "an acceleration", (1, 1, -2): "a force",
-    (1, 2, -2): "an energy (or torque)", (1, 2, -3): "a power", (1, -1, -2): "a pressure",
-    (1, 1, -1): "a momentum (or impulse)", (0, 0, -1): "a frequency (1/s)",
-    (0, 0, -2): "a quantity in 1/s²", (0, 2, 0): "an area", (0, 3, 0): "a volume",
-    (1, -3, 0): "a density", (1, 0, -2): "a stiffness (N/m)", (1, 0, -1): "a damping coefficient (N·s/m)",
-    (1, 2, 0): "a moment of inertia", (1, 2, -1): "an angular momentum", (0, 0, 0): "a pure number",
+    (0, 1, 0): N_("a length"), (1, 0, 0): N_("a mass"), (0, 0, 1): N_("a time"),
+    (0, 1, -1): N_("a velocity"), (0, 1, -2): N_("an acceleration"), (1, 1, -2): N_("a force"),
+    (1, 2, -2): N_("an energy (or torque)"), (1, 2, -3): N_("a power"), (1, -1, -2): N_("a pressure"),
+    (1, 1, -1): N_("a momentum (or impulse)"), (0, 0, -1): N_("a frequency (1/s)"),
+    (0, 0, -2): N_("a quantity in 1/s²"), (0, 2, 0): N_("an area"), (0, 3, 0): N_("a volume"),
+    (1, -3, 0): N_("a density"), (1, 0, -2): N_("a stiffness (N/m)"), (1, 0, -1): N_("a damping coefficient (N·s/m)"),
+    (1, 2, 0): N_("a moment of inertia"), (1, 2, -1): N_("an angular momentum"), (0, 0, 0): N_("a pure number"),
 }
-_ANGLE_NAMES = {(0, 0, 0): "an angle", (0, 0, -1): "an angular velocity",
-                (0, 0, -2): "an angular acceleration"}
+_ANGLE_NAMES = {(0, 0, 0): N_("an angle"), (0, 0, -1): N_("an angular velocity"),
+                (0, 0, -2): N_("an angular acceleration")}
 
 
 def describe_dimension(dim: tuple) -> str:
@@ -241,7 +245,7 @@ def describe_dimension(dim: tuple) -> str:
         key = tuple(int(round(x)) if abs(x - round(x)) < 1e-9 else None for x in dim[:3])
         if None not in key:
             if has_angle(dim) and abs(dim[_ANGLE] - 1) < 1e-9 and key in _ANGLE_NAMES:
-                return _ANGLE_NAMES[key]
+                return _(_ANGLE_NAMES[key])
             if not has_angle(dim) and key in _NAMES:
-                return _NAMES[key]
-    return f"a quantity in {format_dimension(dim)}"
+                return _(_NAMES[key])
+    return _("a quantity in {units}").format(units=format_dimension(dim))

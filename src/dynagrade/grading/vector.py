@@ -16,6 +16,7 @@ without the reference (``read_vector``) and builds the spec of a ``dynagrade com
 
 from __future__ import annotations
 
+from ..i18n import N_, _
 import math
 from dataclasses import dataclass
 
@@ -110,18 +111,20 @@ def grade_vector(spec: VectorSpec, expected, answer: str) -> Verdict:
     right = is_close(values, e, spec.rtol, spec.atol, scale)
     reveal = ""
     if spec.reveal:
-        reveal = " The expected answer is (" + ", ".join(show_number(x) for x in e) + ")" + \
-            (f" {spec.unit}." if spec.unit else ".")
+        shown = "(" + ", ".join(show_number(x) for x in e) + ")" + \
+            (f" {spec.unit}" if spec.unit else "")
+        reveal = " " + _("The expected answer is {answer}.").format(answer=shown)
     if right.all():
-        return Verdict(True, 1.0, "Correct.")
+        return Verdict(True, 1.0, _("Correct."))
     score = float(sum(component_credits(spec, e, values))) / spec.size
     found = _misconception(spec, e, values, scale)
     if found is not None:
         name, feedback = found
         return Verdict(False, score, feedback + reveal, misconception=name)
-    marks = ", ".join(f"{i + 1}: {'✓ right' if ok else '✗ wrong'}" for i, ok in enumerate(right))
-    return Verdict(False, score, f"Not correct: {int(right.sum())} of {spec.size} components are right ({marks})."
-                   + reveal)
+    marks = ", ".join(f"{i + 1}: {_('✓ right') if ok else _('✗ wrong')}"
+                      for i, ok in enumerate(right))
+    return Verdict(False, score, _("Not correct: {n} of {total} components are right ({marks}).")
+                   .format(n=int(right.sum()), total=spec.size, marks=marks) + reveal)
 
 
 def accepts_vector(spec: VectorSpec, expected, answer: str) -> bool:
@@ -143,11 +146,13 @@ def _answer_values(spec: VectorSpec, answer: str) -> np.ndarray | Verdict:
     except AnswerError as error:
         return unreadable(str(error))
     if problem:
-        return Verdict(False, 0.0, f"Unit problem: {problem}.", misconception=UNIT)
+        return Verdict(False, 0.0, _("Unit problem: {problem}.").format(problem=problem),
+                       misconception=UNIT)
     if len(values) != spec.size:
-        return Verdict(False, 0.0, f"Not correct: the answer needs {spec.size} components, you gave {len(values)}.")
+        return Verdict(False, 0.0, _("Not correct: the answer needs {size} components, you gave "
+                                     "{given}.").format(size=spec.size, given=len(values)))
     if not np.all(np.isfinite(values)):
-        return unreadable("a component of your answer is not a finite number")
+        return unreadable(_("a component of your answer is not a finite number"))
     return values
 
 
@@ -167,12 +172,15 @@ def _read(spec, components, unit_tree, text, part_factor, part_dim):
             value *= trailing_factor
         if dim is None:
             if spec.require_unit and wants_unit:
-                return [], f"give the unit with your answer (the answer is in {spec.unit})"
+                return [], _("give the unit with your answer (the answer is in {unit})").format(
+                    unit=spec.unit)
             values.append(value)
             continue
         if not units.compatible(dim, part_dim):
-            wanted = f"{units.describe_dimension(part_dim)} ({spec.unit})" if wants_unit else "pure numbers"
-            return [], f"component {k + 1} is {units.describe_dimension(dim)}, expected {wanted}"
+            wanted = f"{units.describe_dimension(part_dim)} ({spec.unit})" if wants_unit \
+                else _("pure numbers")
+            return [], _("component {k} is {given}, expected {wanted}").format(
+                k=k + 1, given=units.describe_dimension(dim), wanted=wanted)
         values.append(value / part_factor)
     return np.array(values, dtype=np.float64), None
 
@@ -202,13 +210,16 @@ def _misconception(spec: VectorSpec, e: np.ndarray, values: np.ndarray, scale: n
     if not spec.generic_misconceptions:
         return None
     if matches(-e):
-        return "sign", "Your vector points the opposite way: check the signs of the components."
+        return N_("sign"), _("Your vector points the opposite way: check the signs of the "
+                             "components.")
     if spec.size >= 2 and matches(e[::-1]):
-        return "swapped components", "Your components are in the wrong order."
+        return N_("swapped components"), _("Your components are in the wrong order.")
     if matches(2 * e):
-        return "factor 2", "Your vector is twice the expected one: check for an extra factor of 2."
+        return N_("factor 2"), _("Your vector is twice the expected one: check for an extra "
+                                 "factor of 2.")
     if matches(e / 2):
-        return "factor 1/2", "Your vector is half the expected one: check for a missing factor of 2."
+        return N_("factor 1/2"), _("Your vector is half the expected one: check for a missing "
+                                   "factor of 2.")
     return None
 
 
@@ -218,15 +229,15 @@ def read_vector(spec: VectorSpec, text: str) -> Readability:
     factor, dim = unit_info(spec.unit)
     values, problem = _read(spec, components, unit_tree, text, factor, dim)
     if problem:
-        return Readability(False, f"unit problem: {problem}")
+        return Readability(False, _("unit problem: {problem}").format(problem=problem))
     if len(values) != spec.size:
-        return Readability(False, f"the answer needs {spec.size} components, it has "
-                                  f"{len(values)}")
+        return Readability(False, _("the answer needs {size} components, it has {given}").format(
+            size=spec.size, given=len(values)))
     if not all(math.isfinite(v) for v in values):
-        return Readability(False, "a component is not a finite number")
+        return Readability(False, _("a component is not a finite number"))
     shown = ", ".join(show_value(float(v), None) for v in values)
     unit = f" {spec.unit}" if spec.unit else ""
-    return Readability(True, f"reads as ({shown}){unit}")
+    return Readability(True, _("reads as {answer}").format(answer=f"({shown}){unit}"))
 
 
 def build_vector(record: dict, common: Common):

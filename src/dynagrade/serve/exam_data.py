@@ -10,6 +10,7 @@ server's submissions with ``dynagrade grade`` gives the same points.
 
 from __future__ import annotations
 
+from ..i18n import _
 import secrets
 from dataclasses import dataclass
 from functools import lru_cache
@@ -122,7 +123,8 @@ class ExamData:
              seed: int | None = None) -> tuple[bool, str]:
         """How ``text`` reads as an answer to ``part`` (never reveals correctness)."""
         if len(text) > MAX_ANSWER_CHARS:
-            return False, f"the answer is longer than {MAX_ANSWER_CHARS} characters"
+            return False, _("the answer is longer than {limit} characters").format(
+                limit=MAX_ANSWER_CHARS)
         exercise = self.exercises[exercise_id]
         entry = self.entry(student_id, exercise_id, seed)
         spec = exercise.part(part).spec(exercise.si(entry.params))
@@ -198,8 +200,8 @@ def _failed(parts: tuple[PartEntry, ...], name: str, text: str,
             error: Exception) -> GradedPart:
     part = next(p for p in parts if p.name == name)
     return GradedPart(name, part.label, Status.ERROR, 0.0, float(part.points), text,
-                      f"this answer could not be graded ({type(error).__name__}); the "
-                      "staff will look at it", unit=part.unit)
+                      _("this answer could not be graded ({error}); the staff will look at "
+                        "it").format(error=type(error).__name__), unit=part.unit)
 
 
 @lru_cache(maxsize=4096)

@@ -16,6 +16,7 @@ each part's points here are the grader's points times the attempt's factor, roun
 
 from __future__ import annotations
 
+from ..i18n import N_, _
 import csv
 import io
 
@@ -85,6 +86,12 @@ def grades_csv(data: ExamData, stored: list[StoredAnswer]) -> str:
     return gradebook_csv(outcome(data, stored))
 
 
+#: the headers of grades.csv's own columns, as the staff page shows them
+_COLUMN_WORDS = (N_("student_id"), N_("total"), N_("max_total"), N_("percent"), N_("status"))
+#: a row's status (classgrade's RowStatus) as the staff page shows it
+_STATUS_WORDS = (N_("graded"), N_("incomplete"), N_("rejected"), N_("absent"))
+
+
 def staff_table(data: ExamData, stored: list[StoredAnswer]) -> tuple[list[str], list[dict]]:
     """The gradebook as the staff page shows it: the columns of ``grades.csv`` (but name
     and email) and one row of cell texts per roster student."""
@@ -97,7 +104,7 @@ def staff_table(data: ExamData, stored: list[StoredAnswer]) -> tuple[list[str], 
         points = [*(row.cells[e] for e in data.exercise_ids), row.total, row.max_total]
         shown = [None if value is None else rounding.text(value) for value in points]
         percent = None if row.percent is None else percent_text(row.percent)
-        rows.append(dict(zip(columns, [row.student_id, *shown, percent, str(row.status)])))
+        rows.append(dict(zip(columns, [row.student_id, *shown, percent, _(str(row.status))])))
     return columns, rows
 
 

@@ -2,7 +2,8 @@
 
 Each pool process loads the exam once and grades in its main thread, so the grader's own
 time limits (SIGALRM around the exact symbolic check) work as they do on the command
-line. The server waits at most :func:`budget` seconds for a job; a job that takes longer
+line, and in the exam's language (``language`` of exam.toml), so the feedback stored
+with each answer reads as the page around it. The server waits at most :func:`budget` seconds for a job; a job that takes longer
 gets "not graded in time" verdicts and the other students' jobs go on in the other
 processes. At most ``queue`` jobs wait per server process; beyond that a request gets
 503 with ``Retry-After`` instead of piling up.
@@ -19,6 +20,7 @@ from typing import TYPE_CHECKING
 
 from ..errors import DynagradeError
 from ..grading.timing import ANSWER_BUDGET
+from ..i18n import language
 
 if TYPE_CHECKING:
     from .exam_data import ExamData
@@ -47,11 +49,15 @@ def _load(manifest_path: str, folders: tuple[str, ...]) -> None:
 
 
 def _grade(student_id, exercise_id, answers, seed):
-    return _EXAM["data"].grade(student_id, exercise_id, answers, seed)
+    data = _EXAM["data"]
+    with language(data.manifest.exam.language):
+        return data.grade(student_id, exercise_id, answers, seed)
 
 
 def _read(student_id, exercise_id, part, text, seed):
-    return _EXAM["data"].preview(student_id, exercise_id, part, text, seed)
+    data = _EXAM["data"]
+    with language(data.manifest.exam.language):
+        return data.preview(student_id, exercise_id, part, text, seed)
 
 
 class GradingPool:

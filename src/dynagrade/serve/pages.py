@@ -12,7 +12,7 @@ from markupsafe import Markup
 
 from ..exam.solution_policy import solution_visible
 from . import db, gradebook, limits
-from ..i18n import _, ngettext
+from ..i18n import N_, _, ngettext
 from .exam_data import MAX_ANSWER_CHARS, ExamData
 from .practice import practice_seed
 from .state import Server
@@ -35,7 +35,7 @@ def student_html(server: Server, token: str, student_id: str, practice: str | No
     data = server.data
     verdicts = data.policy.shows_verdicts(now)
     stored = db.student_answers(server.engine, data.exam_id, student_id)
-    practice_of, _, practice_value = (practice or "").partition(":")
+    practice_of, _colon, practice_value = (practice or "").partition(":")
     exercises = []
     for exercise_id in data.exercise_ids:
         meta = data.exercises_meta[exercise_id]
@@ -60,13 +60,13 @@ def student_html(server: Server, token: str, student_id: str, practice: str | No
             "history": [{"attempt": a.attempt, "counted": a.counted,
                          "time": a.created_at.strftime("%Y-%m-%d %H:%M:%S"),
                          "part": a.part, "raw": a.raw, "message": a.message,
-                         "status": a.status, "correct": a.correct,
+                         "status": _(a.status), "correct": a.correct,
                          "score": round(a.score, 3), "max_score": round(a.max_score, 3),
                          "feedback": a.feedback} for a in reversed(mine)],
             "solution": Markup(solution) if solution else None})
     is_open = data.policy.is_open(now)
-    closed_text = ("The exam is not open yet." if data.policy.opens and now < data.policy.opens
-                   else "The exam is closed; answers are no longer accepted.")
+    closed_text = (_("The exam is not open yet.") if data.policy.opens and now < data.policy.opens
+                   else _("The exam is closed; answers are no longer accepted."))
     return _TEMPLATES.get_template("student.html").render(
         title=data.title, student=data.students[student_id], token=token, base=base,
         language=data.manifest.exam.language,
@@ -74,7 +74,7 @@ def student_html(server: Server, token: str, student_id: str, practice: str | No
         mode=data.policy.mode, policy_text=policy_text(data.policy, now), is_open=is_open,
         closed_text=closed_text, error=error, max_chars=MAX_ANSWER_CHARS,
         instructions=Markup(markdown_to_html(data.instructions)) if data.instructions else "",
-        submit_label="Save answers" if not verdicts else "Submit")
+        submit_label=_("Save answers") if not verdicts else _("Submit"))
 
 
 def staff_html(server: Server, token: str, now: dt.datetime, base: str) -> str:
@@ -90,17 +90,22 @@ def staff_html(server: Server, token: str, now: dt.datetime, base: str) -> str:
         policy_text=policy_text(data.policy, now))
 
 
+#: the policy's modes as the pages name them
+_MODE_WORDS = (N_("exam"), N_("homework"), N_("practice"))
+
+
 def policy_text(policy, now: dt.datetime) -> str:
     """The exam's policy in one line, as the pages show it."""
-    words = [policy.mode]
+    words = [_(policy.mode)]
     if policy.closes:
-        words.append(f"closes {policy.closes.isoformat()}")
+        words.append(_("closes {time}").format(time=policy.closes.isoformat()))
     if policy.attempts:
-        words.append(f"{policy.attempts} attempts per part")
+        words.append(_("{n} attempts per part").format(n=policy.attempts))
     if policy.penalty:
-        words.append(f"{round(100 * policy.penalty)} % less per extra attempt")
-    words.append("verdicts shown" if policy.shows_verdicts(now) else
-                 "answers are checked for readability only; verdicts after the close")
+        words.append(_("{percent} % less per extra attempt").format(
+            percent=round(100 * policy.penalty)))
+    words.append(_("verdicts shown") if policy.shows_verdicts(now) else
+                 _("answers are checked for readability only; verdicts after the close"))
     return " · ".join(words)
 
 

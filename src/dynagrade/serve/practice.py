@@ -8,6 +8,7 @@ reuse another student's draw.
 
 from __future__ import annotations
 
+from ..i18n import _
 from . import limits
 from .submit import Refused
 
@@ -23,10 +24,10 @@ def practice_seed(secret: str, student_id: str, exercise_id: str,
     when the value is not a draw of this student and exercise."""
     if not value:
         return None
-    seed, _, signature = value.partition(".")
+    seed, _dot, signature = value.partition(".")
     if not seed.isdigit() or not limits.signed_ok(
             secret, _signed_text(student_id, exercise_id, seed), signature):
-        raise Refused(422, "not a practice variant of this page")
+        raise Refused(422, _("not a practice variant of this page"))
     return int(seed)
 
 

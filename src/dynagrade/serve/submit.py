@@ -19,6 +19,7 @@ The rules, the same for the student page's form and ``POST /api/v1/answers``:
 
 from __future__ import annotations
 
+from ..i18n import _
 import datetime as dt
 import re
 import uuid
@@ -46,22 +47,23 @@ class Refused(DynagradeError):
 def check_request(data: ExamData, exercise_id, answers) -> dict[str, str]:
     """The non-empty answers of a well-formed request; :class:`Refused` (422) otherwise."""
     if not isinstance(exercise_id, str) or exercise_id not in data.exercises_meta:
-        raise Refused(422, f"no exercise {exercise_id!r} in this exam")
+        raise Refused(422, _("no exercise {exercise} in this exam").format(
+            exercise=repr(exercise_id)))
     if not isinstance(answers, dict) or not all(
             isinstance(k, str) and isinstance(v, str) for k, v in answers.items()):
-        raise Refused(422, "'answers' must map part names to answer texts")
+        raise Refused(422, _("'answers' must map part names to answer texts"))
     names = [p.name for p in data.parts(exercise_id)]
     unknown = [name for name in answers if name not in names]
     if unknown:
-        raise Refused(422, f"no part {unknown[0]!r} in {exercise_id}; the parts are "
-                           f"{', '.join(names)}")
+        raise Refused(422, _("no part {part} in {exercise}; the parts are {parts}").format(
+            part=repr(unknown[0]), exercise=exercise_id, parts=", ".join(names)))
     long = [name for name, text in answers.items() if len(text) > MAX_ANSWER_CHARS]
     if long:
-        raise Refused(422, f"the answer to {long[0]!r} is longer than {MAX_ANSWER_CHARS} "
-                           "characters")
+        raise Refused(422, _("the answer to {part} is longer than {limit} characters").format(
+            part=repr(long[0]), limit=MAX_ANSWER_CHARS))
     given = {name: text for name, text in answers.items() if text.strip()}
     if not given:
-        raise Refused(422, "no answer given")
+        raise Refused(422, _("no answer given"))
     return {name: given[name] for name in names if name in given}
 
 
@@ -73,9 +75,9 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
     given = check_request(data, exercise_id, answers)
     counted = practice_seed is None
     if not counted and policy.mode != "practice":
-        raise Refused(422, "new variants are offered in practice mode only")
+        raise Refused(422, _("new variants are offered in practice mode only"))
     if key is not None and not _KEY.match(key):
-        raise Refused(422, "the idempotency key must be 8-100 letters, digits or ._:-")
+        raise Refused(422, _("the idempotency key must be 8-100 letters, digits or ._:-"))
     if key is not None:
         stored = await run_in_threadpool(db.find_submission, state.engine, data.exam_id, key)
         if stored is not None:
@@ -84,7 +86,7 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
     if counted:
         _check_open(policy, now)
     if counted and policy.attempts:  # refuse before grading; checked again when storing
-        _, per_part = await run_in_threadpool(db.part_attempts, state.engine, data.exam_id,
+        _last, per_part = await run_in_threadpool(db.part_attempts, state.engine, data.exam_id,
                                               student_id, exercise_id)
         _check_attempts(policy, per_part, given)
     graded = await state.pool.grade(student_id, exercise_id, given, practice_seed)
@@ -92,7 +94,7 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
         graded = [_not_in_time(data, exercise_id, name, text) for name, text in given.items()]
     seed = practice_seed if practice_seed is not None else \
         data.entry(student_id, exercise_id).seed
-    for _ in range(20):
+    for _try in range(20):
         last, per_part = await run_in_threadpool(
             db.part_attempts, state.engine, data.exam_id, student_id, exercise_id, counted)
         if counted:
@@ -113,7 +115,7 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
                 continue
             return _replay(data, student_id, stored, now, key)
         return describe(data, exercise_id, attempt, rows, policy.shows_verdicts(now), key)
-    raise Refused(503, "too many submits at once; try again")
+    raise Refused(503, _("too many submits at once; try again"))
 
 
 def describe(data: ExamData, exercise_id: str, attempt: int, rows: list[SubmittedPart],
@@ -139,8 +141,8 @@ def describe(data: ExamData, exercise_id: str, attempt: int, rows: list[Submitte
 def _replay(data: ExamData, student_id: str, stored: list[db.StoredAnswer],
             now: dt.datetime, key: str) -> dict:
     if stored[0].student_id != student_id:
-        raise Refused(422, "this idempotency key was used by another submission; send a "
-                           "fresh key with each new submit")
+        raise Refused(422, _("this idempotency key was used by another submission; send a "
+                             "fresh key with each new submit"))
     rows = [SubmittedPart.stored(a) for a in stored]
     return describe(data, stored[0].exercise_id, stored[0].attempt, rows,
                     data.policy.shows_verdicts(now), key) | {"replayed": True}
@@ -148,10 +150,10 @@ def _replay(data: ExamData, student_id: str, stored: list[db.StoredAnswer],
 
 def _check_open(policy, now: dt.datetime) -> None:
     if policy.opens is not None and now < policy.opens:
-        raise Refused(403, f"the exam opens at {policy.opens.isoformat()}")
+        raise Refused(403, _("the exam opens at {time}").format(time=policy.opens.isoformat()))
     if policy.closes is not None and now >= policy.closes:
-        raise Refused(403, f"the exam closed at {policy.closes.isoformat()}; answers are no "
-                           "longer accepted")
+        raise Refused(403, _("the exam closed at {time}; answers are no longer accepted").format(
+            time=policy.closes.isoformat()))
 
 
 def _check_attempts(policy, per_part: dict[str, int], given: dict[str, str]) -> None:
@@ -159,8 +161,8 @@ def _check_attempts(policy, per_part: dict[str, int], given: dict[str, str]) -> 
         return
     spent = [name for name in given if per_part.get(name, 0) >= policy.attempts]
     if spent:
-        raise Refused(403, f"no attempts left for {', '.join(spent)} (each part allows "
-                           f"{policy.attempts})")
+        raise Refused(403, _("no attempts left for {parts} (each part allows {attempts})").format(
+            parts=", ".join(spent), attempts=policy.attempts))
 
 
 def _with_penalty(policy, part: SubmittedPart, attempt: int, counted: bool) -> SubmittedPart:
@@ -169,6 +171,6 @@ def _with_penalty(policy, part: SubmittedPart, attempt: int, counted: bool) -> S
 
 def _not_in_time(data: ExamData, exercise_id: str, name: str, text: str) -> SubmittedPart:
     part = next(p for p in data.parts(exercise_id) if p.name == name)
-    message = "could not be graded in time; the staff will grade it"
+    message = _("could not be graded in time; the staff will grade it")
     return SubmittedPart(text, False, message, GradedPart(
         name, part.label, Status.ERROR, 0.0, part.points, text, message))

@@ -8,6 +8,7 @@ record, so the server's marks are class grading's marks (docs/serve.md, "What co
 
 from __future__ import annotations
 
+from ..i18n import _
 from dataclasses import dataclass, replace
 
 from ..exam.manifest import PartEntry
@@ -34,7 +35,8 @@ class SubmittedPart:
         policy's penalty); the feedback says so."""
         if factor >= 1.0:
             return self
-        note = f" (attempt {attempt}: {round(100 * factor)} % of the points)"
+        note = " " + _("(attempt {attempt}: {percent} % of the points)").format(
+            attempt=attempt, percent=round(100 * factor))
         verdict = replace(self.verdict, auto_score=self.verdict.auto_score * factor,
                           feedback=self.verdict.feedback + note)
         return replace(self, verdict=verdict)
@@ -61,4 +63,4 @@ def not_answered(part: PartEntry) -> GradedPart:
     """A part of a handed-in exercise that has no counted answer, as class grading
     records a part left empty."""
     return GradedPart(part.name, part.label, Status.NOT_ANSWERED, 0.0, float(part.points),
-                      None, "not answered", expected=None, unit=part.unit)
+                      None, _("not answered"), expected=None, unit=part.unit)

@@ -16,13 +16,14 @@ from ..deps import REFUSALS, Data, Now, Pool, ServerDep, StaffBearer, StudentBea
 from ..downloads import CsvResponse
 from ..models import (AnswersBody, Gradebook, PreviewBody, PreviewResponse, SubmitResponse,
                       problem)
+from ...i18n import _
 from ..practice import practice_seed
 from ..submit import Refused, submit
 
 router = APIRouter(prefix="/api/v1", tags=["api"], responses=REFUSALS)
 
-_UNREADABLE_IN_TIME = {"readable": False, "message": "could not be read in time",
-                       "formula": None}
+def _unreadable_in_time() -> dict:
+    return {"readable": False, "message": _("could not be read in time"), "formula": None}
 
 
 @router.post("/answers", response_model_exclude_unset=True, responses={
@@ -48,10 +49,10 @@ async def preview(caller: StudentBearer, body: PreviewBody, server: ServerDep,
     data = server.data
     if body.exercise not in data.exercises_meta or \
             body.part not in {p.name for p in data.parts(body.exercise)}:
-        raise Refused(422, "no such exercise or part in this exam")
+        raise Refused(422, _("no such exercise or part in this exam"))
     seed = practice_seed(server.secret, caller.student_id, body.exercise, body.practice)
     read = await pool.read(caller.student_id, body.exercise, body.part, body.answer, seed)
-    return PreviewResponse.model_validate(read or _UNREADABLE_IN_TIME)
+    return PreviewResponse.model_validate(read or _unreadable_in_time())
 
 
 @router.get("/gradebook")
