@@ -12,6 +12,7 @@ from dataclasses import dataclass, replace
 
 from ..exam.manifest import PartEntry
 from ..exercise.results import GradedPart, Status
+from ..i18n import _
 from .db import StoredAnswer
 
 
@@ -29,12 +30,27 @@ class SubmittedPart:
     def name(self) -> str:
         return self.verdict.name
 
+    @property
+    def invalid(self) -> bool:
+        """Whether the grader could not read the answer: then it was not graded, and it
+        is neither stored nor counted, nor does it spend an attempt (docs/serve.md,
+        "Attempts")."""
+        return not self.readable and self.verdict.status is Status.NOT_ANSWERED
+
+    @classmethod
+    def unread(cls, part: PartEntry, text: str, message: str) -> SubmittedPart:
+        """A part whose answer cannot be read (``message`` says why): not graded."""
+        return cls(text, False, message, GradedPart(
+            part.name, part.label, Status.NOT_ANSWERED, 0.0, float(part.points), text,
+            message, unit=part.unit))
+
     def penalised(self, factor: float, attempt: int) -> SubmittedPart:
         """The part at its ``attempt``-th try, worth ``factor`` of its points (the
         policy's penalty); the feedback says so."""
         if factor >= 1.0:
             return self
-        note = f" (attempt {attempt}: {round(100 * factor)} % of the points)"
+        note = " " + _("(attempt {attempt}: {percent} % of the points)").format(
+            attempt=attempt, percent=round(100 * factor))
         verdict = replace(self.verdict, auto_score=self.verdict.auto_score * factor,
                           feedback=self.verdict.feedback + note)
         return replace(self, verdict=verdict)
