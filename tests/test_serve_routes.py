@@ -101,6 +101,8 @@ def _request(served, method: str, path: str, token: str | None, place: str):
     kwargs: dict = {"headers": headers, "follow_redirects": False}
     if path.startswith("/api/v1/answers"):
         kwargs["json"] = {"exercise": "projectile-range", "answers": {"x_max": "1 m"}}
+    elif path.startswith("/api/v1/drafts"):
+        kwargs["json"] = {"exercise": "projectile-range", "answers": {"x_max": "1 m"}}
     elif path.startswith("/api/v1/preview"):
         kwargs["json"] = {"exercise": "projectile-range", "part": "x_max", "answer": "1 m"}
     elif method == "POST":  # a page's form, with the CSRF field of the page it came from
@@ -170,6 +172,7 @@ def test_the_openapi_document_describes_every_response(served):
                     json_bodies.add((method, path, name))
     assert json_bodies == {("POST", "/api/v1/answers", "SubmitResponse"),
                            ("POST", "/api/v1/preview", "PreviewResponse"),
+                           ("PUT", "/api/v1/drafts", "DraftsResponse"),
                            ("GET", "/api/v1/gradebook", "Gradebook")}
     refusal = operations[("POST", "/api/v1/answers")]["responses"]
     for status in ("401", "403", "413", "422", "429", "503"):

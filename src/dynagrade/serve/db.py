@@ -295,6 +295,56 @@ def issue_staff_token(engine: sa.Engine, exam_id: str) -> str:
 # -- drafts -------------------------------------------------------------------------------
 
 
+@dataclass(frozen=True)
+class Draft:
+    """What a student typed into one part and has not submitted (never counted)."""
+
+    exercise_id: str
+    part: str
+    text: str
+    saved_at: dt.datetime
+
+
+def save_drafts(engine: sa.Engine, exam_id: str, student_id: str, exercise_id: str,
+                texts: dict[str, str]) -> None:
+    """Keep ``texts`` (part -> text) as the student's drafts of an exercise, replacing
+    the earlier ones of those parts, in one transaction."""
+    if not texts:
+        return
+    key = {"exam_id": exam_id, "student_id": student_id, "exercise_id": exercise_id}
+    with _writing(engine), engine.begin() as connection:
+        connection.execute(drafts.delete().where(
+            drafts.c.exam_id == exam_id, drafts.c.student_id == student_id,
+            drafts.c.exercise_id == exercise_id, drafts.c.part.in_(list(texts))))
+        connection.execute(drafts.insert(), [
+            {**key, "part": part, "text": text, "saved_at": now()}
+            for part, text in texts.items()])
+
+
+def student_drafts(engine: sa.Engine, exam_id: str, student_id: str) -> list[Draft]:
+    """Every draft of a student."""
+    with engine.connect() as connection:
+        rows = connection.execute(sa.select(
+            drafts.c.exercise_id, drafts.c.part, drafts.c.text, drafts.c.saved_at).where(
+            drafts.c.exam_id == exam_id, drafts.c.student_id == student_id)).all()
+    return [Draft(*row) for row in rows]
+
+
+def last_texts(engine: sa.Engine, exam_id: str, student_id: str,
+               exercise_id: str) -> dict[str, str]:
+    """The text of each part's latest counted answer (what the page shows when there is
+    no newer draft)."""
+    with engine.connect() as connection:
+        rows = connection.execute(
+            sa.select(answers.c.part, answers.c.raw).select_from(answers.join(submissions))
+            .where(submissions.c.exam_id == exam_id, submissions.c.student_id == student_id,
+                   submissions.c.exercise_id == exercise_id,
+                   submissions.c.counted == sa.true())
+            .order_by(submissions.c.id)).all()
+    return {part: raw for part, raw in rows}
+
+
+
 # -- submissions --------------------------------------------------------------------------
 
 

@@ -42,6 +42,10 @@ class PartInfo:
     unit: str  # as printed ("m/s²")
     points: float
     hint: str
+    #: the options of a choice part (empty: a free-text answer)
+    options: tuple[str, ...] = ()
+    #: whether several options may be chosen (checkboxes rather than radio buttons)
+    multiple: bool = False
 
 
 class ExamData:
@@ -79,7 +83,8 @@ class ExamData:
 
         exercise = self.exercises[exercise_id]
         return [PartInfo(p.name, p.label, p.kind, pretty_unit(p.unit) if p.unit else "",
-                         float(p.points), exercise.part(p.name).input_hint())
+                         float(p.points), exercise.part(p.name).input_hint(),
+                         exercise.part(p.name).input_options(), bool(p.multiple))
                 for p in self.manifest_parts[exercise_id]]
 
     def entry(self, student_id: str, exercise_id: str,
@@ -147,13 +152,33 @@ class ExamData:
 
     def grade(self, student_id: str, exercise_id: str, answers: dict[str, str],
               seed: int | None = None) -> list[SubmittedPart]:
-        """Each submitted part read and graded, with points in the exam's scale.
+        """Each submitted part read and, when readable, graded, with points in the exam's
+        scale.
 
+        An answer the grader cannot read is not graded: its part comes back unreadable
+        with the reason (:meth:`SubmittedPart.unread`), and the server stores none of it.
         A part whose grading fails (a fault of the grader, not of the student) gets the
         status "error", 0 points and a message; the other parts are graded as usual.
         """
+        read = {name: self.read(student_id, exercise_id, name, text, seed)
+                for name, text in answers.items()}
+        readable = {name: text for name, text in answers.items() if read[name][0]}
+        graded = self._grade_each(student_id, exercise_id, readable, seed) if readable else {}
+        out = []
+        for part in self.manifest_parts[exercise_id]:
+            name = part.name
+            if name not in answers:
+                continue
+            ok, message = read[name]
+            out.append(SubmittedPart(answers[name], True, message, graded[name]) if ok else
+                       SubmittedPart.unread(part, answers[name], message))
+        return out
+
+    def _grade_each(self, student_id: str, exercise_id: str, answers: dict[str, str],
+                    seed: int | None) -> dict[str, GradedPart]:
+        """The verdict on each answer; one that the grader fails on costs one part."""
         try:
-            graded = self._grade_parts(student_id, exercise_id, answers, seed)
+            return self._grade_parts(student_id, exercise_id, answers, seed)
         except Exception:  # grade part by part so that one failure costs one part
             graded = {}
             for name, text in answers.items():
@@ -163,14 +188,7 @@ class ExamData:
                 except Exception as error:
                     graded[name] = _failed(self.manifest_parts[exercise_id], name, text,
                                            error)
-        out = []
-        for part in self.manifest_parts[exercise_id]:
-            name = part.name
-            if name not in answers:
-                continue
-            readable, message = self.read(student_id, exercise_id, name, answers[name], seed)
-            out.append(SubmittedPart(answers[name], readable, message, graded[name]))
-        return out
+            return graded
 
     def _grade_parts(self, student_id: str, exercise_id: str, answers: dict[str, str],
                      seed: int | None) -> dict[str, GradedPart]:

@@ -29,6 +29,14 @@ class AnswersBody(BaseModel):
     answers: dict[str, str]
 
 
+class DraftsBody(BaseModel):
+    """``PUT /api/v1/drafts``: what the student typed into one exercise's boxes, part
+    name → text (an empty text: the box was cleared). Never graded, never counted."""
+
+    exercise: str = Field(max_length=200)
+    answers: dict[str, str]
+
+
 class PreviewBody(BaseModel):
     """``POST /api/v1/preview``: how one answer reads."""
 
@@ -56,10 +64,13 @@ def problem(description: str) -> dict[str, Any]:
 
 
 class PartVerdict(BaseModel):
-    """One submitted part: how it read and, where the policy shows verdicts, the verdict."""
+    """One submitted part: how it read and, where the policy shows verdicts, the verdict.
+
+    A part that cannot be read (``readable`` false) was not graded, not stored and spent
+    no attempt; ``message`` says why."""
 
     name: str
-    readable: bool
+    readable: bool = Field(description="false: not graded, not stored, no attempt spent")
     message: str = Field(description="how the answer reads, or why it cannot be read")
     correct: bool | None = Field(default=None, description="only where verdicts are shown")
     score: float | None = Field(default=None, description="points earned, penalty applied; "
@@ -79,6 +90,13 @@ class SubmitResponse(BaseModel):
     max_score: float | None = Field(default=None, description="only where verdicts are shown")
     replayed: bool | None = Field(default=None, description="true when the key was stored "
                                                             "already (nothing stored again)")
+
+
+class DraftsResponse(BaseModel):
+    """``PUT /api/v1/drafts``: the parts whose drafts were saved."""
+
+    exercise: str
+    saved: list[str]
 
 
 class PreviewResponse(BaseModel):

@@ -5,13 +5,16 @@ from __future__ import annotations
 import datetime as dt
 import uuid
 from collections import Counter
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import jinja2
 from markupsafe import Markup
 
 from ..exam.solution_policy import solution_visible
-from . import db, gradebook, limits
+from ..exercise.results import ExerciseResult
+from . import db, drafts, gradebook, limits, standing
+from ..grading.choice import shown_option
 from ..i18n import N_, _, ngettext
 from .exam_data import MAX_ANSWER_CHARS, ExamData
 from .practice import practice_seed
@@ -22,59 +25,173 @@ _TEMPLATES = jinja2.Environment(
     loader=jinja2.FileSystemLoader(Path(__file__).resolve().parent / "templates"),
     autoescape=True, trim_blocks=True, lstrip_blocks=True)
 #: a template's fixed strings are ``{{ _("...") }}``, in the language of the request
-_TEMPLATES.globals.update(_=_, ngettext=ngettext)
+_TEMPLATES.globals.update(_=_, ngettext=ngettext, shown_option=shown_option)
+
+
+@dataclass(frozen=True)
+class Typed:
+    """The submit a page answers: its exercise, the texts the student typed, the reason
+    beside each part that was refused or could not be read, and whether anything was
+    saved."""
+
+    exercise_id: str | None = None
+    texts: dict[str, str] = field(default_factory=dict)
+    reasons: dict[str, str] = field(default_factory=dict)
+    saved: bool = False
+
+    @classmethod
+    def done(cls, exercise_id: str | None) -> Typed | None:
+        """The page after a stored submit of ``exercise_id`` (None: no submit)."""
+        return cls(exercise_id, saved=True) if exercise_id else None
+
+    def with_reasons(self, reasons: dict[str, str], saved: bool = False) -> Typed:
+        return replace(self, reasons=dict(reasons), saved=saved)
 
 
 def student_html(server: Server, token: str, student_id: str, practice: str | None,
-                 now: dt.datetime, base: str, error: str | None = None) -> str:
-    """A student's page: their variant of every exercise, answer boxes, their attempts
+                 now: dt.datetime, base: str, error: str | None = None,
+                 typed: Typed | None = None) -> str:
+    """A student's page: their variant of every exercise, answer boxes, where they stand
     and what the policy shows; ``practice`` (``"<exercise>:<signed draw>"``) shows a
-    practice draw of one exercise instead of the student's own variant."""
+    practice draw of one exercise instead of the student's own variant; ``typed``: the
+    submit this page answers (its texts shown again, with the reasons beside the parts).
+    Before the exam opens, only the title, the policy and the opening time."""
     from ..render.markup import markdown_to_html
 
-    data = server.data
-    verdicts = data.policy.shows_verdicts(now)
-    stored = db.student_answers(server.engine, data.exam_id, student_id)
-    practice_of, _colon, practice_value = (practice or "").partition(":")
+    data, policy = server.data, server.data.policy
+    verdicts = policy.shows_verdicts(now)
+    zone = standing.exam_zone(policy)
+    before = policy.opens is not None and now < policy.opens
     exercises = []
-    for exercise_id in data.exercise_ids:
-        meta = data.exercises_meta[exercise_id]
-        seed = None
-        if practice_of == exercise_id:
-            try:
-                seed = practice_seed(server.secret, student_id, exercise_id, practice_value)
-            except Refused:
-                seed = None
-        mine = [a for a in stored if a.exercise_id == exercise_id and
-                (a.counted if seed is None else a.seed == seed and not a.counted)]
-        last = {a.part: a.raw for a in mine}
-        solution = (_solution(data, student_id, exercise_id, mine, now)
-                    if seed is None else None)
-        exercises.append({
-            "id": exercise_id, "title": meta.title, "points": meta.points,
-            "statement": Markup(data.statement_html(student_id, exercise_id, seed)),
-            "figure": Markup(data.figure_svg(student_id, exercise_id) or "")
-            if seed is None else "",
-            "parts": data.parts(exercise_id), "key": uuid.uuid4().hex, "last": last,
-            "practice": practice_value if seed is not None else None,
-            "history": [{"attempt": a.attempt, "counted": a.counted,
-                         "time": a.created_at.strftime("%Y-%m-%d %H:%M:%S"),
-                         "part": a.part, "raw": a.raw, "message": a.message,
-                         "status": _(a.status), "correct": a.correct,
-                         "score": round(a.score, 3), "max_score": round(a.max_score, 3),
-                         "feedback": a.feedback} for a in reversed(mine)],
-            "solution": Markup(solution) if solution else None})
-    is_open = data.policy.is_open(now)
-    closed_text = (_("The exam is not open yet.") if data.policy.opens and now < data.policy.opens
-                   else _("The exam is closed; answers are no longer accepted."))
+    counted: dict = {}
+    if not before:
+        stored = db.student_answers(server.engine, data.exam_id, student_id)
+        shown = drafts.shown_texts(stored, db.student_drafts(server.engine, data.exam_id,
+                                                             student_id))
+        counted = standing.results(data, stored, student_id)
+        exercises = [_exercise(server, student_id, exercise_id, practice, stored, shown,
+                               counted.get(exercise_id), typed, now, zone)
+                     for exercise_id in data.exercise_ids]
+    is_open = policy.is_open(now)
     return _TEMPLATES.get_template("student.html").render(
         title=data.title, student=data.students[student_id], token=token, base=base,
-        language=data.manifest.exam.language,
+        language=data.manifest.exam.language, before=before,
         csrf=limits.csrf_field(server.secret, token), exercises=exercises, verdicts=verdicts,
-        mode=data.policy.mode, policy_text=policy_text(data.policy, now), is_open=is_open,
-        closed_text=closed_text, error=error, max_chars=MAX_ANSWER_CHARS,
-        instructions=Markup(markdown_to_html(data.instructions)) if data.instructions else "",
+        mode=policy.mode, policy=_policy_lines(policy, now, zone), is_open=is_open,
+        opens=standing.moment(policy.opens, zone) if policy.opens else None,
+        closes=standing.moment(policy.closes, zone) if policy.closes else None,
+        closed=policy.closes is not None and now >= policy.closes,
+        error=error, status=_status(data, typed, error, exercises), max_chars=MAX_ANSWER_CHARS,
+        total=standing.total(data, counted) if verdicts and counted else None,
+        max_total=sum(float(m.points) for m in data.exercises_meta.values()),
+        instructions=Markup(markdown_to_html(data.instructions))
+        if data.instructions and not before else "",
+        script=Markup(_SCRIPT),
         submit_label=_("Save answers") if not verdicts else _("Submit"))
+
+
+#: the verdicts' words, as the history shows them
+_STATUS_WORDS = {"correct": N_("correct"), "follow-through": N_("follow-through"),
+                 "partial": N_("partial"), "wrong": N_("wrong"),
+                 "not answered": N_("not answered"), "error": N_("error")}
+
+_SCRIPT = (Path(__file__).resolve().parent / "templates" / "student.js").read_text("utf-8")
+
+
+def _exercise(server: Server, student_id: str, exercise_id: str, practice: str | None,
+              stored: list[db.StoredAnswer], shown: dict[tuple[str, str], str],
+              result: ExerciseResult | None, typed: Typed | None, now: dt.datetime,
+              zone: dt.tzinfo) -> dict:
+    """One exercise's section of the page: its statement, its parts (each with the text
+    its box shows, the attempts left, the reason it was refused) and its history."""
+    data, policy = server.data, server.data.policy
+    meta = data.exercises_meta[exercise_id]
+    practice_of, _sep, practice_value = (practice or "").partition(":")
+    seed = None
+    if practice_of == exercise_id:
+        try:
+            seed = practice_seed(server.secret, student_id, exercise_id, practice_value)
+        except Refused:
+            seed = None
+    mine = [a for a in stored if a.exercise_id == exercise_id and
+            (a.counted if seed is None else a.seed == seed and not a.counted)]
+    used = standing.attempts_used(stored, exercise_id)
+    here = typed if typed is not None and typed.exercise_id == exercise_id else Typed()
+    parts = []
+    for info in data.parts(exercise_id):
+        if seed is None:
+            text = shown.get((exercise_id, info.name), "")
+        else:
+            text = next((a.raw for a in reversed(mine) if a.part == info.name), "")
+        if info.name in here.reasons or (here.texts and not here.saved):
+            text = here.texts.get(info.name, text)  # what was typed, not yet saved
+        left = max(0, policy.attempts - used[info.name]) \
+            if policy.attempts and seed is None else None
+        parts.append({
+            "info": info, "text": text, "left": left, "exhausted": left == 0,
+            "chosen": {c.strip() for c in text.split(",")} if info.options else set(),
+            "reason": here.reasons.get(info.name),
+            "verdict": result.part(info.name) if result is not None and seed is None
+            else None,
+            "history": [{"attempt": a.attempt, "counted": a.counted,
+                         "time": standing.moment(a.created_at, zone), "raw": a.raw,
+                         "message": a.message, "status": _(_STATUS_WORDS.get(a.status, a.status)), "correct": a.correct,
+                         "score": round(a.score, 3), "max_score": round(a.max_score, 3),
+                         "feedback": a.feedback} for a in mine if a.part == info.name]})
+    solution = _solution(data, student_id, exercise_id, mine, now) if seed is None else None
+    return {
+        "id": exercise_id, "title": meta.title, "points": meta.points,
+        "statement": Markup(data.statement_html(student_id, exercise_id, seed)),
+        "figure": Markup(data.figure_svg(student_id, exercise_id) or "")
+        if seed is None else "",
+        "parts": parts, "key": uuid.uuid4().hex,
+        "practice": practice_value if seed is not None else None,
+        "result": result if seed is None else None,
+        "answered": any(p["history"] for p in parts),
+        "locked": not policy.is_open(now) and seed is None,
+        "solution": Markup(solution) if solution else None}
+
+
+def _status(data: ExamData, typed: Typed | None, error: str | None,
+            exercises: list[dict]) -> dict | None:
+    """The summary a submit ends on (the page moves the focus to it): what was saved,
+    what could not be read, or why nothing was."""
+    if typed is None or typed.exercise_id not in data.exercises_meta:
+        return {"alert": True, "text": error} if error else None
+    title = data.exercises_meta[typed.exercise_id].title
+    if error:
+        return {"alert": True, "text": error, "exercise": typed.exercise_id}
+    if typed.reasons:
+        return {"alert": True, "exercise": typed.exercise_id, "text": ngettext(
+            "Answers to “{title}” saved, but {n} answer could not be read: it was not "
+            "saved and cost no attempt. Correct it and submit again.",
+            "Answers to “{title}” saved, but {n} answers could not be read: they were not "
+            "saved and cost no attempt. Correct them and submit again.",
+            len(typed.reasons)).format(title=title, n=len(typed.reasons))}
+    return {"alert": False, "exercise": typed.exercise_id,
+            "text": _("Your answers to “{title}” were saved.").format(title=title)}
+
+
+def _policy_lines(policy, now: dt.datetime, zone: dt.tzinfo) -> list[str]:
+    """The exam's rules as the student page lists them, each a sentence."""
+    lines = [{"exam": _("Exam"), "homework": _("Homework"),
+              "practice": _("Practice")}.get(policy.mode, policy.mode)]
+    if policy.attempts:
+        lines.append(ngettext("{n} attempt per part", "{n} attempts per part",
+                              policy.attempts).format(n=policy.attempts))
+    else:
+        lines.append(_("Attempts per part: no limit"))
+    if policy.penalty:
+        lines.append(_("each further attempt of a part earns {percent} % fewer points")
+                     .format(percent=round(100 * policy.penalty)))
+    lines.append(_("What counts: the best attempt of each part") if policy.counts == "best"
+                 else _("What counts: the last saved answer of each part"))
+    lines.append(_("Verdicts and points are shown after each submit")
+                 if policy.shows_verdicts(now) else
+                 _("Answers are checked for readability only; verdicts and points appear "
+                   "after the close"))
+    lines.append(_("An answer that cannot be read is not saved and costs no attempt"))
+    return lines
 
 
 def staff_html(server: Server, token: str, now: dt.datetime, base: str) -> str:

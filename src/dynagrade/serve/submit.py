@@ -4,31 +4,38 @@ The rules, the same for the student page's form and ``POST /api/v1/answers``:
 
 1. The exercise and part names must be the exam's, each answer at most
    :data:`~dynagrade.serve.exam_data.MAX_ANSWER_CHARS` long, at least one answer given
-   (otherwise 422).
+   (otherwise 422). The student page sends every box of the exercise; of those only the
+   parts whose text differs from the part's last counted answer are submitted
+   (``only_changed``), so a part already answered spends no attempt by being sent again.
 2. Counted answers are accepted only while the exam is open (server clock) and while
-   every submitted part has attempts left (otherwise 403). Practice draws (practice mode,
-   "new variant") are graded the same way but never counted.
-3. A submit with an idempotency key that is already stored returns the stored result
+   every submitted part has attempts left (otherwise 403, naming the parts). Practice
+   draws (practice mode, "new variant") are graded the same way but never counted.
+3. An answer the grader cannot read (:meth:`ExamData.read
+   <dynagrade.serve.exam_data.ExamData.read>`: syntax, an unknown name, a unit of the
+   wrong dimension, the wrong kind) is not graded, not stored and spends no attempt; the
+   response names it, unreadable, with the reason. When no answer of a submit can be
+   read, nothing is stored (422, the reason per part).
+4. A submit with an idempotency key that is already stored returns the stored result
    instead of storing it again; a retry after a lost response is therefore safe.
-4. The answers are graded in the pool; the submission (attempt number = the exercise's
+5. The answers are graded in the pool; the submission (attempt number = the exercise's
    next one, penalties applied per part) is inserted in one transaction; only then is the
    response built. Two workers racing for the same attempt number: the loser retries.
-5. What the response shows follows the policy: always how each answer was read; right or
+6. What the response shows follows the policy: always how each answer was read; right or
    wrong, points and feedback only where the policy shows verdicts at that moment.
 """
 
 from __future__ import annotations
 
-from ..i18n import _
 import datetime as dt
 import re
 import uuid
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from starlette.concurrency import run_in_threadpool
 
 from ..errors import DynagradeError
 from ..exercise.results import ExerciseResult, GradedPart, Status
+from ..i18n import _
 from . import db
 from .exam_data import MAX_ANSWER_CHARS, ExamData
 from .verdicts import SubmittedPart
@@ -38,38 +45,53 @@ _KEY = re.compile(r"^[A-Za-z0-9._:-]{8,100}$")
 
 @dataclass
 class Refused(DynagradeError):
-    """A submit the rules refuse: the HTTP status and a message for the student."""
+    """A submit the rules refuse: the HTTP status and a message for the student, and the
+    reason beside each part it concerns (part name -> message; the page shows it there)."""
 
     status: int
     message: str
+    parts: dict[str, str] = field(default_factory=dict)
 
 
 def check_request(data: ExamData, exercise_id, answers) -> dict[str, str]:
     """The non-empty answers of a well-formed request; :class:`Refused` (422) otherwise."""
     if not isinstance(exercise_id, str) or exercise_id not in data.exercises_meta:
-        raise Refused(422, _("no exercise {exercise} in this exam").format(
-            exercise=repr(exercise_id)))
+        raise Refused(422, _("no exercise {exercise!r} in this exam").format(
+            exercise=exercise_id))
     if not isinstance(answers, dict) or not all(
             isinstance(k, str) and isinstance(v, str) for k, v in answers.items()):
         raise Refused(422, _("'answers' must map part names to answer texts"))
     names = [p.name for p in data.parts(exercise_id)]
     unknown = [name for name in answers if name not in names]
     if unknown:
-        raise Refused(422, _("no part {part} in {exercise}; the parts are {parts}").format(
-            part=repr(unknown[0]), exercise=exercise_id, parts=", ".join(names)))
+        raise Refused(422, _("no part {part!r} in {exercise}; the parts are {parts}").format(
+            part=unknown[0], exercise=exercise_id, parts=", ".join(names)))
     long = [name for name, text in answers.items() if len(text) > MAX_ANSWER_CHARS]
     if long:
-        raise Refused(422, _("the answer to {part} is longer than {limit} characters").format(
-            part=repr(long[0]), limit=MAX_ANSWER_CHARS))
+        raise Refused(422, _("the answer to {part!r} is longer than {n} characters").format(
+            part=long[0], n=MAX_ANSWER_CHARS), {long[0]: _("longer than {n} characters")
+                                                .format(n=MAX_ANSWER_CHARS)})
     given = {name: text for name, text in answers.items() if text.strip()}
     if not given:
         raise Refused(422, _("no answer given"))
     return {name: given[name] for name in names if name in given}
 
 
+def changed(given: dict[str, str], last: dict[str, str]) -> dict[str, str]:
+    """The answers whose text differs (but for spaces around it) from the part's last
+    counted answer ``last``; :class:`Refused` (422) when none does."""
+    fresh = {name: text for name, text in given.items()
+             if text.strip() != last.get(name, "").strip()}
+    if not fresh:
+        raise Refused(422, _("nothing changed since your last saved answers"))
+    return fresh
+
+
 async def submit(state, student_id: str, exercise_id, answers, key: str | None,
-                 practice_seed: int | None, now: dt.datetime) -> dict:
-    """Grade, store and describe one submit (see the module's rules)."""
+                 practice_seed: int | None, now: dt.datetime,
+                 only_changed: bool = False) -> dict:
+    """Grade, store and describe one submit (see the module's rules); ``only_changed``:
+    submit only the parts whose text changed since their last counted answer."""
     data: ExamData = state.data
     policy = data.policy
     given = check_request(data, exercise_id, answers)
@@ -84,7 +106,10 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
             return _replay(data, student_id, stored, now, key)
     key = key or uuid.uuid4().hex
     if counted:
-        _check_open(policy, now)
+        check_open(policy, now)
+    if counted and only_changed:
+        given = changed(given, await run_in_threadpool(
+            db.last_texts, state.engine, data.exam_id, student_id, exercise_id))
     if counted and policy.attempts:  # refuse before grading; checked again when storing
         _last, per_part = await run_in_threadpool(db.part_attempts, state.engine, data.exam_id,
                                               student_id, exercise_id)
@@ -92,9 +117,17 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
     graded = await state.pool.grade(student_id, exercise_id, given, practice_seed)
     if graded is None:
         graded = [_not_in_time(data, exercise_id, name, text) for name, text in given.items()]
+    unread = [part for part in graded if part.invalid]
+    graded = [part for part in graded if not part.invalid]
+    if not graded:
+        reasons = {part.name: part.message for part in unread}
+        raise Refused(422, _("nothing was saved: no answer could be read ({reasons}); an "
+                             "answer that cannot be read costs no attempt").format(
+            reasons="; ".join(f"{name}: {message}" for name, message in reasons.items())),
+            reasons)
     seed = practice_seed if practice_seed is not None else \
         data.entry(student_id, exercise_id).seed
-    for _try in range(20):
+    for _retry in range(20):
         last, per_part = await run_in_threadpool(
             db.part_attempts, state.engine, data.exam_id, student_id, exercise_id, counted)
         if counted:
@@ -114,13 +147,15 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
             if stored is None:  # the other submit's transaction was rolled back: retry
                 continue
             return _replay(data, student_id, stored, now, key)
-        return describe(data, exercise_id, attempt, rows, policy.shows_verdicts(now), key)
+        return describe(data, exercise_id, attempt, rows, policy.shows_verdicts(now), key,
+                        unread)
     raise Refused(503, _("too many submits at once; try again"))
 
 
 def describe(data: ExamData, exercise_id: str, attempt: int, rows: list[SubmittedPart],
-             verdicts: bool, key: str) -> dict:
-    """The response body of a submit: points rounded as the gradebook rounds them."""
+             verdicts: bool, key: str, unread: list[SubmittedPart] | None = None) -> dict:
+    """The response body of a submit: points rounded as the gradebook rounds them; the
+    ``unread`` parts (not stored) follow, unreadable, with the reason."""
     result = ExerciseResult(exercise_id, None, tuple(r.verdict for r in rows)
                             ).rounded(data.rounding)
     parts = []
@@ -130,6 +165,8 @@ def describe(data: ExamData, exercise_id: str, attempt: int, rows: list[Submitte
             shown.update(correct=verdict.correct, score=verdict.score,
                          feedback=verdict.feedback)
         parts.append(shown)
+    parts += [{"name": row.name, "readable": False, "message": row.message}
+              for row in unread or ()]
     body = {"exercise": exercise_id, "attempt": attempt, "idempotency_key": key,
             "parts": parts}
     if verdicts:
@@ -148,12 +185,13 @@ def _replay(data: ExamData, student_id: str, stored: list[db.StoredAnswer],
                     data.policy.shows_verdicts(now), key) | {"replayed": True}
 
 
-def _check_open(policy, now: dt.datetime) -> None:
+def check_open(policy, now: dt.datetime) -> None:
+    """:class:`Refused` (403) before ``opens`` and from ``closes`` on."""
     if policy.opens is not None and now < policy.opens:
         raise Refused(403, _("the exam opens at {time}").format(time=policy.opens.isoformat()))
     if policy.closes is not None and now >= policy.closes:
-        raise Refused(403, _("the exam closed at {time}; answers are no longer accepted").format(
-            time=policy.closes.isoformat()))
+        raise Refused(403, _("the exam closed at {time}; answers are no longer accepted")
+                      .format(time=policy.closes.isoformat()))
 
 
 def _check_attempts(policy, per_part: dict[str, int], given: dict[str, str]) -> None:
@@ -161,8 +199,9 @@ def _check_attempts(policy, per_part: dict[str, int], given: dict[str, str]) -> 
         return
     spent = [name for name in given if per_part.get(name, 0) >= policy.attempts]
     if spent:
-        raise Refused(403, _("no attempts left for {parts} (each part allows {attempts})").format(
-            parts=", ".join(spent), attempts=policy.attempts))
+        raise Refused(403, _("no attempts left for {parts} (each part allows {n})").format(
+            parts=", ".join(spent), n=policy.attempts),
+            {name: _("no attempts left") for name in spent})
 
 
 def _with_penalty(policy, part: SubmittedPart, attempt: int, counted: bool) -> SubmittedPart:

@@ -13,6 +13,7 @@ from dataclasses import dataclass, replace
 
 from ..exam.manifest import PartEntry
 from ..exercise.results import GradedPart, Status
+from ..i18n import _
 from .db import StoredAnswer
 
 
@@ -29,6 +30,20 @@ class SubmittedPart:
     @property
     def name(self) -> str:
         return self.verdict.name
+
+    @property
+    def invalid(self) -> bool:
+        """Whether the grader could not read the answer: then it was not graded, and it
+        is neither stored nor counted, nor does it spend an attempt (docs/serve.md,
+        "Attempts")."""
+        return not self.readable and self.verdict.status is Status.NOT_ANSWERED
+
+    @classmethod
+    def unread(cls, part: PartEntry, text: str, message: str) -> SubmittedPart:
+        """A part whose answer cannot be read (``message`` says why): not graded."""
+        return cls(text, False, message, GradedPart(
+            part.name, part.label, Status.NOT_ANSWERED, 0.0, float(part.points), text,
+            message, unit=part.unit))
 
     def penalised(self, factor: float, attempt: int) -> SubmittedPart:
         """The part at its ``attempt``-th try, worth ``factor`` of its points (the

@@ -11,16 +11,17 @@ from typing import Annotated
 
 from fastapi import APIRouter, Header
 
-from .. import db, downloads, gradebook
+from .. import db, downloads, drafts, gradebook
 from ..deps import REFUSALS, Data, Now, Pool, ServerDep, StaffBearer, StudentBearer
 from ..downloads import CsvResponse
-from ..models import (AnswersBody, Gradebook, PreviewBody, PreviewResponse, SubmitResponse,
-                      problem)
 from ...i18n import _
+from ..models import (AnswersBody, DraftsBody, DraftsResponse, Gradebook, PreviewBody,
+                      PreviewResponse, SubmitResponse, problem)
 from ..practice import practice_seed
-from ..submit import Refused, submit
+from ..submit import Refused, check_open, submit
 
 router = APIRouter(prefix="/api/v1", tags=["api"], responses=REFUSALS)
+
 
 def _unreadable_in_time() -> dict:
     return {"readable": False, "message": _("could not be read in time"), "formula": None}
@@ -42,11 +43,23 @@ async def submit_answers(caller: StudentBearer, body: AnswersBody, server: Serve
     return SubmitResponse.model_validate(result)
 
 
-@router.post("/preview")
+@router.put("/drafts", responses={
+    403: problem("before `opens` or from `closes` on"),
+    422: problem("an exercise or part not in the exam, or a text over 2000 characters")})
+async def save_drafts(caller: StudentBearer, body: DraftsBody, server: ServerDep,
+                      now: Now) -> DraftsResponse:
+    """Keep what the student typed as drafts (never graded, never counted)."""
+    saved = await drafts.save(server, caller.student_id, body.exercise, body.answers, now)
+    return DraftsResponse(exercise=body.exercise, saved=saved)
+
+
+@router.post("/preview", responses={403: problem("before `opens`")})
 async def preview(caller: StudentBearer, body: PreviewBody, server: ServerDep,
-                  pool: Pool) -> PreviewResponse:
-    """How an answer reads (never whether it is right)."""
+                  pool: Pool, now: Now) -> PreviewResponse:
+    """How an answer reads (never whether it is right); nothing before the exam opens."""
     data = server.data
+    if data.policy.opens is not None and now < data.policy.opens:
+        check_open(data.policy, now)
     if body.exercise not in data.exercises_meta or \
             body.part not in {p.name for p in data.parts(body.exercise)}:
         raise Refused(422, _("no such exercise or part in this exam"))

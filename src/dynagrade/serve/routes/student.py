@@ -1,8 +1,11 @@
 """The student's page ``/s/{token}`` and the forms it posts (each with its CSRF field).
 
 The page works without JavaScript: a form posts, the server stores the submit and
-redirects back to the page (303), which then lists the attempt. A refused submit shows
-the page again with the reason, under the status of the refusal.
+redirects back to the page (303, ``?done=<exercise>#status``), which then says what was
+saved and lists the attempt. A form sends every box of its exercise; only the parts whose
+text changed since their last counted answer are submitted. A refused submit, or one with
+answers that could not be read, shows the page again with the text typed and the reason
+beside each part it concerns (under the refusal's status; 200 when something was saved).
 """
 
 from __future__ import annotations
@@ -27,11 +30,13 @@ _BACK: dict[int | str, dict[str, Any]] = {
 
 @router.get("", response_class=HTMLResponse)
 def student_page(caller: StudentLink, server: ServerDep, now: Now, base: RootPath,
-                 practice: str | None = None) -> HTMLResponse:
+                 practice: str | None = None, done: str | None = None) -> HTMLResponse:
     """The student's sheet, answer boxes and attempts; ``practice`` shows a signed
-    practice draw (``<exercise>:<seed>.<signature>``) of one exercise."""
+    practice draw (``<exercise>:<seed>.<signature>``) of one exercise; ``done`` names the
+    exercise just submitted (the page says what was saved)."""
     return HTMLResponse(pages.student_html(server, caller.token, caller.student_id,
-                                           practice, now, base))
+                                           practice, now, base,
+                                           typed=pages.Typed.done(done)))
 
 
 @router.post("/submit", status_code=303, response_class=RedirectResponse, responses={
@@ -41,19 +46,45 @@ async def submit_answers(form: StudentForm, server: ServerDep, now: Now, base: R
     """Store the answers of one exercise (fields ``answer.<part>``, ``key``, optionally
     ``practice``), by the rules of :mod:`dynagrade.serve.submit`."""
     caller, fields, exercise_id = form.caller, form.fields, form.exercise_id
-    answers = {k[len("answer."):]: str(v) for k, v in fields.items() if k.startswith("answer.")}
+    answers = posted_answers(fields)
     posted = fields.get("practice")
     practice = posted if isinstance(posted, str) and posted else None
+    typed = pages.Typed(exercise_id, answers)
     try:
         seed = practice_seed(server.secret, caller.student_id, exercise_id, practice)
-        await submit(server, caller.student_id, exercise_id, answers,
-                     str(fields.get("key") or "") or None, seed, now)
+        result = await submit(server, caller.student_id, exercise_id, answers,
+                              str(fields.get("key") or "") or None, seed, now,
+                              only_changed=True)
     except Refused as error:
         page = await run_in_threadpool(pages.student_html, server, caller.token,
-                                       caller.student_id, None, now, base, error.message)
+                                       caller.student_id, practice_of(exercise_id, practice),
+                                       now, base, error.message,
+                                       typed.with_reasons(error.parts))
         return HTMLResponse(page, status_code=error.status)
-    query = f"?practice={exercise_id}:{practice}" if practice else ""
-    return RedirectResponse(f"{base}/s/{caller.token}{query}#{exercise_id}", status_code=303)
+    unread = {p["name"]: p["message"] for p in result["parts"] if not p["readable"]}
+    if unread:  # saved in part: the page again, the unreadable answers beside their reason
+        page = await run_in_threadpool(pages.student_html, server, caller.token,
+                                       caller.student_id, practice_of(exercise_id, practice),
+                                       now, base, None, typed.with_reasons(unread, saved=True))
+        return HTMLResponse(page)
+    query = f"?practice={exercise_id}:{practice}&done={exercise_id}" if practice \
+        else f"?done={exercise_id}"
+    return RedirectResponse(f"{base}/s/{caller.token}{query}#status", status_code=303)
+
+
+def posted_answers(fields) -> dict[str, str]:
+    """The answers of a posted form, part -> text; the ticked boxes of a choice part of
+    several options (fields of the same name) joined as the typed form, ``A, B``."""
+    answers: dict[str, str] = {}
+    for name in dict.fromkeys(k for k in fields.keys() if k.startswith("answer.")):
+        values = [str(v) for v in fields.getlist(name) if str(v).strip()]
+        answers[name[len("answer."):]] = ", ".join(values)
+    return answers
+
+
+def practice_of(exercise_id: str, practice: str | None) -> str | None:
+    """The page's ``practice`` query for a practice draw's form (None: no draw)."""
+    return f"{exercise_id}:{practice}" if practice else None
 
 
 @router.post("/practice", status_code=303, response_class=RedirectResponse, responses={

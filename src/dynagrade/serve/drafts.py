@@ -1,0 +1,71 @@
+"""Drafts: what a student typed and has not submitted, kept so that nothing typed is lost.
+
+The student page saves the text of each box as the student types (debounced, through
+``PUT /api/v1/drafts``) and shows it again on every later page: after a reload, after a
+submit of another exercise, on another device. A draft is never graded and never
+counts, at the close either (docs/serve.md, "Drafts and what counts"): only a submit
+counts. A draft newer than the part's last counted answer is what the part's box shows;
+an older one was submitted since (or typed before it) and is ignored.
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+
+from starlette.concurrency import run_in_threadpool
+
+from ..i18n import _
+from . import db
+from .exam_data import MAX_ANSWER_CHARS, ExamData
+from .submit import Refused, check_open
+
+
+def check_drafts(data: ExamData, exercise_id, texts) -> dict[str, str]:
+    """The drafts of a well-formed request (an empty text is a draft too: the student
+    cleared the box); :class:`Refused` (422) otherwise."""
+    if not isinstance(exercise_id, str) or exercise_id not in data.exercises_meta:
+        raise Refused(422, _("no exercise {exercise!r} in this exam").format(
+            exercise=exercise_id))
+    names = {p.name for p in data.parts(exercise_id)}
+    unknown = [name for name in texts if name not in names]
+    if unknown:
+        raise Refused(422, _("no part {part!r} in {exercise}; the parts are {parts}").format(
+            part=unknown[0], exercise=exercise_id, parts=", ".join(sorted(names))))
+    long = [name for name, text in texts.items() if len(text) > MAX_ANSWER_CHARS]
+    if long:
+        raise Refused(422, _("the answer to {part!r} is longer than {n} characters").format(
+            part=long[0], n=MAX_ANSWER_CHARS))
+    return dict(texts)
+
+
+async def save(state, student_id: str, exercise_id, texts, now: dt.datetime) -> list[str]:
+    """Store one exercise's drafts while the exam is open (403 otherwise); the parts
+    saved."""
+    data: ExamData = state.data
+    checked = check_drafts(data, exercise_id, texts)
+    check_open(data.policy, now)
+    await run_in_threadpool(db.save_drafts, state.engine, data.exam_id, student_id,
+                            exercise_id, checked)
+    return list(checked)
+
+
+def shown_texts(stored: list[db.StoredAnswer], drafts: list[db.Draft]
+                ) -> dict[tuple[str, str], str]:
+    """What each part's box shows, by (exercise, part): the latest counted answer, or a
+    draft saved after it."""
+    shown: dict[tuple[str, str], str] = {}
+    when: dict[tuple[str, str], dt.datetime] = {}
+    for answer in stored:  # oldest first
+        if answer.counted:
+            shown[(answer.exercise_id, answer.part)] = answer.raw
+            when[(answer.exercise_id, answer.part)] = answer.created_at
+    for draft in drafts:
+        key = (draft.exercise_id, draft.part)
+        if key not in when or _aware(draft.saved_at) > _aware(when[key]):
+            shown[key] = draft.text
+    return shown
+
+
+def _aware(moment: dt.datetime) -> dt.datetime:
+    """SQLite gives times back without their zone; they were stored in UTC."""
+    return moment if moment.tzinfo else moment.replace(tzinfo=dt.timezone.utc)
