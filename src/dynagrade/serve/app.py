@@ -21,6 +21,7 @@ from starlette.concurrency import run_in_threadpool
 from . import db, limits
 from .exam_data import ExamData
 from .grading_pool import Busy
+from .policy_changes import PolicySource
 from .routes import ROUTERS
 from .state import ENVIRONMENT, Server, Settings
 from .submit import Refused
@@ -43,6 +44,7 @@ def build_app(settings: Settings, clock: Callable[[], dt.datetime] | None = None
 
     data = ExamData(settings.manifest, open_bank(settings.folders))
     engine = db.connect(settings.db_url or db.sqlite_url_beside(settings.manifest))
+    data.policy_source = PolicySource(engine, data.exam_id, data.manifest_policy)
     server = Server(settings, data, engine, db.server_secret(engine), clock or db.now)
 
     @asynccontextmanager
