@@ -170,7 +170,8 @@ def test_the_openapi_document_describes_every_response(served):
                     json_bodies.add((method, path, name))
     assert json_bodies == {("POST", "/api/v1/answers", "SubmitResponse"),
                            ("POST", "/api/v1/preview", "PreviewResponse"),
-                           ("GET", "/api/v1/gradebook", "Gradebook")}
+                           ("GET", "/api/v1/gradebook", "Gradebook"),
+                           ("GET", "/i/{token}/tables", "StaffTables")}
     refusal = operations[("POST", "/api/v1/answers")]["responses"]
     for status in ("401", "403", "413", "422", "429", "503"):
         schema = refusal[status]["content"]["application/json"]["schema"]

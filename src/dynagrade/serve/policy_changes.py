@@ -44,6 +44,11 @@ class PolicySource:
         self._read_at: float | None = None
         self._lock = threading.Lock()
 
+    def forget(self) -> None:
+        """Read the database at the next call (after a change made in this worker)."""
+        with self._lock:
+            self._read_at = None
+
     def __call__(self) -> Policy:
         with self._lock:
             stamp = self.clock()
