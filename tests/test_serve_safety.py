@@ -19,11 +19,9 @@ import sys
 import time
 from pathlib import Path
 
-import httpx
 import pytest
 from click.testing import CliRunner
 
-from dynagrade.cli import main
 from serve_support import EXAM_TOML, ROSTER, free_port
 
 CLI = [sys.executable, "-m", "dynagrade.cli"]
@@ -38,6 +36,8 @@ def _exam(folder: Path, closes: str) -> list[str]:
 
 
 def _start(manifest: Path, port: int) -> subprocess.Popen:
+    import httpx
+
     server = subprocess.Popen([*CLI, "serve", str(manifest), "--port", str(port),
                                "--grading-workers", "1"], start_new_session=True,
                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
@@ -58,6 +58,10 @@ def _stop(server: subprocess.Popen) -> None:
 
 
 def test_moving_closes_while_served_loses_nothing(tmp_path):
+    import httpx
+
+    from dynagrade.cli import main
+
     runner = CliRunner()
     made = runner.invoke(main, _exam(tmp_path, "2099-01-01T00:00:00Z"))
     assert made.exit_code == 0, made.output
@@ -117,6 +121,8 @@ def test_moving_closes_while_served_loses_nothing(tmp_path):
 
 
 def test_exam_refuses_a_folder_holding_a_database(tmp_path):
+    from dynagrade.cli import main
+
     runner = CliRunner()
     assert runner.invoke(main, _exam(tmp_path, "2099-01-01T00:00:00Z")).exit_code == 0
     (tmp_path / "out" / "serve.sqlite3").write_bytes(b"answers of an earlier version")
@@ -142,6 +148,7 @@ def test_a_mark_left_by_a_killed_server_does_not_block(tmp_path):
 def test_a_database_at_the_old_place_is_used_where_it_is_with_a_warning(tmp_path, exam_dir):
     from serve_support import exam_copy
 
+    from dynagrade.cli import main
     from dynagrade.serve import db
     from dynagrade.serve.location import database_notices, default_database
 
