@@ -173,7 +173,8 @@ def test_the_openapi_document_describes_every_response(served):
     assert json_bodies == {("POST", "/api/v1/answers", "SubmitResponse"),
                            ("POST", "/api/v1/preview", "PreviewResponse"),
                            ("PUT", "/api/v1/drafts", "DraftsResponse"),
-                           ("GET", "/api/v1/gradebook", "Gradebook")}
+                           ("GET", "/api/v1/gradebook", "Gradebook"),
+                           ("GET", "/i/{token}/tables", "StaffTables")}
     refusal = operations[("POST", "/api/v1/answers")]["responses"]
     for status in ("401", "403", "413", "422", "429", "503"):
         schema = refusal[status]["content"]["application/json"]["schema"]

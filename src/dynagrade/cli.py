@@ -12,6 +12,7 @@ Usage::
     dynagrade moodle projectile-range --variants 50 -o pool.xml
     dynagrade links out/manifest.json -o links.csv --instructor
     dynagrade serve out/manifest.json
+    dynagrade policy out/manifest.json --closes 2025-04-22T23:59:00+02:00
 """
 
 from __future__ import annotations
@@ -624,10 +625,11 @@ def _parse_settings(exercise, settings) -> dict[str, float]:
     return overrides
 
 
-from .serve.commands import links as _links, serve as _serve  # noqa: E402  (light: click only)
+from .serve.commands import links as _links, policy as _policy, serve as _serve  # noqa: E402  (light: click only)
 
 main.add_command(_serve)
 main.add_command(_links)
+main.add_command(_policy)
 for _subcommand in main.commands.values():  # --exercises after any subcommand, too
     _subcommand.params.append(_subcommand_exercises_option())
 

@@ -90,10 +90,13 @@ class Policy:
 def read_policy(data: dict, where: str, line_of: Callable[[str], str]) -> Policy:
     """The policy in the top-level table ``data`` of an exam spec.
 
-    ``where`` names the file and ``line_of(key)`` the line of a key, for the errors.
+    ``where`` names the file and ``line_of(key)`` the line of a key, for the errors (a
+    change made elsewhere, e.g. on the server, has no lines: ``line_of`` gives ``""``).
     """
     def fail(key: str, message: str):
-        raise PolicyError(f"{where}, line {line_of(key)}, field {key!r}: {message}")
+        line = line_of(key)
+        at = f"{where}, line {line}" if line else where
+        raise PolicyError(f"{at}, field {key!r}: {message}")
 
     mode = data.get("mode", "exam")
     if mode not in MODES:

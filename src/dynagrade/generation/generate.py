@@ -23,7 +23,8 @@ PDFs, and the manifest. Results are put
 together in roster order, so the files do not depend on the pool. Everything is built in
 a staging folder beside the output folder and swapped in when complete
 (:mod:`dynagrade.runs.outputs`): the output folder holds exactly one whole exam, the one before it is
-kept as ``OUT.previous``.
+kept as ``OUT.previous``. A folder that is being served or has a database (in it or
+beside it) is never replaced (:func:`dynagrade.runs.outputs.refuse_if_in_use`).
 """
 
 from __future__ import annotations
@@ -43,7 +44,7 @@ from ..render.sheets import typst_preamble
 from ..runs.files import write_atomic
 from ..exam.manifest import (ExamEntry, ExerciseEntry, Generator, Manifest, PartEntry,
                        StudentEntry, dump)
-from ..runs.outputs import staging_folder, swap_in
+from ..runs.outputs import refuse_if_in_use, staging_folder, swap_in
 from ..exam.points import Rounding, exam_part_points
 from ..runs.caches import file_sha256
 from .run import GenerationRun
@@ -172,6 +173,7 @@ def open_run(exam_path, roster_path, target: Path, bank: Bank | None, pdf: bool,
     """The generation's run (spec with its secret, exercises, scaled parts, caches) and
     the roster; once the exam reads well, the run writes into a fresh staging folder for
     ``target``."""
+    refuse_if_in_use(target)  # before the work: never replace a folder students answer in
     spec, roster, exercises = load_exam(exam_path, roster_path, bank, notices)
     spec = replace(spec, secret=secret)
     parts = {item.id: exercise_parts(exercises[item.id], item.points, item.part_points,

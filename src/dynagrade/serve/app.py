@@ -14,16 +14,14 @@ from contextlib import asynccontextmanager
 from pathlib import Path
 from typing import Callable
 
-from fastapi import FastAPI, Request
-from fastapi.responses import JSONResponse
+from fastapi import FastAPI
 from starlette.concurrency import run_in_threadpool
 
-from . import db, limits
+from . import db, errors, limits
 from .exam_data import ExamData
-from .grading_pool import Busy
+from .policy_changes import PolicySource
 from .routes import ROUTERS
 from .state import ENVIRONMENT, Server, Settings
-from .submit import Refused
 
 __all__ = ["create_app", "build_app", "app_from_environment"]
 
@@ -43,6 +41,7 @@ def build_app(settings: Settings, clock: Callable[[], dt.datetime] | None = None
 
     data = ExamData(settings.manifest, open_bank(settings.folders))
     engine = db.connect(settings.db_url or db.sqlite_url_beside(settings.manifest))
+    data.policy_source = PolicySource(engine, data.exam_id, data.manifest_policy)
     server = Server(settings, data, engine, db.server_secret(engine), clock or db.now)
 
     @asynccontextmanager
@@ -62,24 +61,10 @@ def build_app(settings: Settings, clock: Callable[[], dt.datetime] | None = None
     app.add_middleware(limits.PrivateHeaders)
     app.add_middleware(limits.ExamLanguage, code=data.manifest.exam.language)
     app.state.server = server
-    app.add_exception_handler(Refused, _refused)
-    app.add_exception_handler(Busy, _busy)
+    errors.install(app)  # pages for browsers, JSON for the API, 503 when the store fails
     for router in ROUTERS:
         app.include_router(router)
     return app
-
-
-async def _refused(request: Request, error: Exception) -> JSONResponse:
-    """A refusal of the exam's rules: its status, ``{"detail": message}``."""
-    if not isinstance(error, Refused):  # registered for Refused only
-        raise error
-    return JSONResponse({"detail": error.message}, status_code=error.status)
-
-
-async def _busy(request: Request, error: Exception) -> JSONResponse:
-    """The grading queue is full: 503, try again shortly."""
-    return JSONResponse({"detail": "the server is busy grading; try again shortly"},
-                        status_code=503, headers={"Retry-After": "2"})
 
 
 def app_from_environment() -> FastAPI:

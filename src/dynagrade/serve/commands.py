@@ -11,7 +11,7 @@ from pathlib import Path
 import click
 
 _DB_HELP = ("Database URL: sqlite:///path or postgresql://user@host/db "
-            "(default: serve.sqlite3 beside the manifest).")
+            "(default: OUT.serve.sqlite3 beside the exam folder OUT).")
 
 
 def _open(manifest: str, db_url: str | None, folders):
@@ -19,7 +19,11 @@ def _open(manifest: str, db_url: str | None, folders):
     from ..exercise.loader import open_bank
     from . import db
     from .exam_data import ExamData
+    from .location import database_notices
 
+    if db_url is None:
+        for notice in database_notices(Path(manifest)):
+            click.echo(f"warning: {notice}", err=True)
     try:
         data = ExamData(manifest, open_bank(folders))
         engine = db.connect(db_url or db.sqlite_url_beside(Path(manifest)))
@@ -72,6 +76,7 @@ def serve(context, manifest, db_url, host, port, base_url, workers, grading_work
     """Serve the exam or homework that `dynagrade exam` generated."""
     import uvicorn
 
+    from .location import serving
     from .state import ENVIRONMENT, Settings
 
     data, engine = _open(manifest, db_url, context.folders)  # migrate once, fail early
@@ -79,5 +84,60 @@ def serve(context, manifest, db_url, host, port, base_url, workers, grading_work
     os.environ[ENVIRONMENT] = Settings(Path(manifest), db_url, tuple(context.folders),
                                        base_url, grading_workers).to_json()
     click.echo(f"serving {data.title!r} ({data.policy.mode}) on http://{host}:{port}")
-    uvicorn.run("dynagrade.serve.app:app_from_environment", factory=True, host=host,
-                port=port, workers=workers, proxy_headers=True, log_level="info")
+    with serving(Path(manifest).resolve().parent):  # `dynagrade exam` keeps off the folder
+        uvicorn.run("dynagrade.serve.app:app_from_environment", factory=True, host=host,
+                    port=port, workers=workers, proxy_headers=True, log_level="info")
+
+
+@click.command("policy")
+@click.argument("manifest", type=click.Path(exists=True, dir_okay=False))
+@click.option("--db", "db_url", help=_DB_HELP)
+@click.option("--opens", metavar="TIME", help="Opening time with its offset, e.g. "
+              "2025-04-14T08:00:00+02:00 ('' for none).")
+@click.option("--closes", metavar="TIME", help="Closing time with its offset ('' for none).")
+@click.option("--attempts", metavar="N", help="Answers per part (0: no limit).")
+@click.option("--penalty", metavar="X", help="Fraction of the points lost per extra attempt.")
+@click.option("--feedback", type=click.Choice(["immediate", "after-close"]))
+@click.option("--counts", type=click.Choice(["best", "last"]))
+@click.option("--solutions", type=click.Choice(["with-feedback", "after-close",
+                                                 "after-last-attempt", "never"]))
+@click.option("--by", "actor", help="Who makes the change, for the audit log "
+              "(default: your user name).")
+@click.pass_obj
+def policy(context, manifest, db_url, actor, **values):
+    """Show or change the policy of an exam being served, without generating it again.
+
+    With no option: the policy in force and every recorded change. With options: the
+    change is validated as exam.toml's policy is, recorded (who, when, before, after)
+    and in force on every server within seconds.
+    """
+    import getpass
+
+    from ..exam.policy import PolicyError
+    from .policy_changes import change_policy, describe_change, in_force
+
+    data, engine = _open(manifest, db_url, context.folders)
+    changes = {key: value for key, value in values.items() if value is not None}
+    try:
+        if changes:
+            who = actor or f"{getpass.getuser()} (command line)"
+            before, after = change_policy(engine, data.exam_id, data.manifest_policy, who,
+                                          changes)
+            lines = describe_change(before, after)
+            click.echo("\n".join(["changed:", *lines]) if lines else "nothing changed")
+        else:
+            _show_policy(data, engine, in_force(engine, data.exam_id, data.manifest_policy))
+    except PolicyError as error:
+        raise click.ClickException(str(error)) from None
+    finally:
+        engine.dispose()
+
+
+def _show_policy(data, engine, current) -> None:
+    from . import db
+
+    for key, value in current.to_json().items():
+        click.echo(f"{key} = {'' if value is None else value}")
+    for entry in reversed(db.changes(engine, data.exam_id, db.POLICY_CHANGE)):
+        click.echo(f"{entry.at.isoformat(timespec='seconds')} by {entry.actor}: "
+                   f"{entry.before} -> {entry.after}")

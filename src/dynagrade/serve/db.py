@@ -132,8 +132,11 @@ def now() -> dt.datetime:
 
 
 def sqlite_url_beside(manifest: Path) -> str:
-    """The default database: a SQLite file next to the manifest."""
-    return f"sqlite:///{manifest.resolve().parent / 'serve.sqlite3'}"
+    """The default database: a SQLite file beside the manifest's folder, never inside it
+    (:func:`dynagrade.serve.location.default_database`)."""
+    from .location import default_database
+
+    return f"sqlite:///{default_database(manifest)}"
 
 
 def connect(url: str) -> sa.Engine:
@@ -472,3 +475,69 @@ def _answers(connection, condition) -> list[StoredAnswer]:
 
 
 # -- the staff's changes: policy and the audit log -----------------------------------------
+
+
+@dataclass(frozen=True)
+class AuditEntry:
+    """One recorded change: who made it, when, and the JSON before and after."""
+
+    id: int
+    at: dt.datetime
+    actor: str
+    action: str
+    subject: str
+    before: dict | None
+    after: dict | None
+
+
+#: the audit log's action of a policy change (``after``: the whole policy in force)
+POLICY_CHANGE = "policy"
+
+
+def record_change(engine: sa.Engine, exam_id: str, actor: str, action: str, subject: str,
+                  before: dict | None, after: dict | None) -> int:
+    """Append a change to the audit log (committed on return); its id."""
+    import json
+
+    with _writing(engine), engine.begin() as connection:
+        return int(connection.execute(audit_log.insert().values(
+            exam_id=exam_id, at=now(), actor=actor, action=action, subject=subject,
+            before=None if before is None else json.dumps(before, sort_keys=True),
+            after=None if after is None else json.dumps(after, sort_keys=True))
+            .returning(audit_log.c.id)).scalar_one())
+
+
+def latest_change(engine: sa.Engine, exam_id: str, action: str) -> AuditEntry | None:
+    """The newest change of ``action`` to the exam, or ``None``."""
+    entries = changes(engine, exam_id, action, limit=1)
+    return entries[0] if entries else None
+
+
+def changes(engine: sa.Engine, exam_id: str, action: str | None = None,
+            limit: int | None = None) -> list[AuditEntry]:
+    """The exam's recorded changes (of ``action``, if given), newest first."""
+    import json
+
+    query = sa.select(audit_log).where(audit_log.c.exam_id == exam_id)
+    if action is not None:
+        query = query.where(audit_log.c.action == action)
+    query = query.order_by(audit_log.c.id.desc()).limit(limit)
+    with engine.connect() as connection:
+        rows = connection.execute(query).all()
+    return [AuditEntry(r.id, r.at, r.actor, r.action, r.subject,
+                       None if r.before is None else json.loads(r.before),
+                       None if r.after is None else json.loads(r.after)) for r in rows]
+
+
+def accepts_writes(engine: sa.Engine) -> None:
+    """Raise unless the database accepts a write: a heartbeat row (the time of the
+    check) committed in ``settings``, so that a full disk or a read-only file raises."""
+    stamp = now().isoformat()
+    with _writing(engine), engine.begin() as connection:
+        updated = connection.execute(settings.update().where(
+            settings.c.key == "heartbeat").values(value=stamp)).rowcount
+        if not updated:
+            with contextlib.suppress(IntegrityError):  # another worker inserted it first
+                with connection.begin_nested():
+                    connection.execute(settings.insert().values(key="heartbeat",
+                                                                value=stamp))

@@ -15,6 +15,7 @@ import secrets
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
+from typing import Callable
 
 from ..errors import UnknownExercise
 from ..classgrade.grade import grade_student, stored_variant
@@ -58,7 +59,11 @@ class ExamData:
         self.exam_id: str = exam.id
         self.title: str = exam.title
         self.instructions: str = exam.instructions
-        self.policy = Policy.from_json(exam.policy)
+        #: the policy ``dynagrade exam`` wrote; :attr:`policy` is the one in force
+        self.manifest_policy = Policy.from_json(exam.policy)
+        #: where the policy in force comes from (the server's :mod:`.policy_changes`);
+        #: ``None``: the manifest's
+        self.policy_source: Callable[[], Policy] | None = None
         #: how the exam rounds points, as class grading rounds them
         self.rounding = Rounding(exam.rounding)
         self.exercises_meta = {e.id: e for e in self.manifest.exercises}
@@ -75,6 +80,12 @@ class ExamData:
             except UnknownExercise as error:
                 raise ManifestError(f"{self.path}: {error} (needed to serve this "
                                     "exam; point --exercises at its folder)") from None
+
+    @property
+    def policy(self) -> Policy:
+        """The policy in force: the manifest's, overridden by the staff's latest change."""
+        return self.policy_source() if self.policy_source is not None \
+            else self.manifest_policy
 
     # -- what the pages show --------------------------------------------------------------
 

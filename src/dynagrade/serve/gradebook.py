@@ -87,7 +87,7 @@ def grades_csv(data: ExamData, stored: list[StoredAnswer]) -> str:
 
 
 #: the headers of grades.csv's own columns, as the staff page shows them
-_COLUMN_WORDS = (N_("student_id"), N_("total"), N_("max_total"), N_("percent"), N_("status"))
+COLUMN_WORDS = (N_("student_id"), N_("total"), N_("max_total"), N_("percent"), N_("status"))
 #: a row's status (classgrade's RowStatus) as the staff page shows it
 _STATUS_WORDS = (N_("graded"), N_("incomplete"), N_("rejected"), N_("absent"))
 

@@ -137,3 +137,20 @@ class Gradebook(BaseModel):
                          max_total=row.max_total, percent=row.percent,
                          status=row.status.value) for row in rows])
 
+
+
+class Table(BaseModel):
+    """A table as a page shows it: column headings and rows of cell texts."""
+
+    columns: list[str]
+    rows: list[list[str]]
+
+
+class StaffTables(BaseModel):
+    """``GET /i/{token}/tables``: what the staff page's script refreshes."""
+
+    submissions: int
+    answers: int
+    counts_text: str = Field(description="the counts as the page words them")
+    gradebook: Table
+    progress: Table

@@ -48,6 +48,11 @@ class Typed:
         return replace(self, reasons=dict(reasons), saved=saved)
 
 
+def render(template: str, **values) -> str:
+    """``templates/<template>`` rendered with ``values`` (error pages, :mod:`.errors`)."""
+    return _TEMPLATES.get_template(template).render(**values)
+
+
 def student_html(server: Server, token: str, student_id: str, practice: str | None,
                  now: dt.datetime, base: str, error: str | None = None,
                  typed: Typed | None = None) -> str:
@@ -194,17 +199,52 @@ def _policy_lines(policy, now: dt.datetime, zone: dt.tzinfo) -> list[str]:
     return lines
 
 
-def staff_html(server: Server, token: str, now: dt.datetime, base: str) -> str:
-    """The staff page: gradebook, progress and the downloads."""
+def staff_tables(server: Server) -> dict:
+    """What the staff page shows and its script refreshes: counts, the gradebook and the
+    progress, each table as ``{"columns": [...], "rows": [[cell text, ...], ...]}``."""
     data = server.data
     stored = db.all_answers(server.engine, data.exam_id)
     columns, rows = gradebook.staff_table(data, stored)
+    book = [["—" if row[c] is None else str(row[c]) for c in columns] for row in rows]
+    progress = [[p["student_id"], p["name"],
+                 *(str(p["attempts"].get(e, "")) for e in data.exercise_ids),
+                 p["last"].strftime("%Y-%m-%d %H:%M:%S") if p["last"] else ""]
+                for p in gradebook.progress(data, stored)]
+    counts = db.counts(server.engine, data.exam_id)
+    text = ", ".join([
+        ngettext("{n} submission", "{n} submissions", counts["submissions"]).format(
+            n=counts["submissions"]),
+        ngettext("{n} answer stored", "{n} answers stored", counts["answers"]).format(
+            n=counts["answers"])])
+    return {"submissions": counts["submissions"], "answers": counts["answers"],
+            "counts_text": text,
+            "gradebook": {"columns": [_(c) if c in gradebook.COLUMN_WORDS else c
+                                      for c in columns], "rows": book},
+            "progress": {"columns": [_("student"), _("name"), *data.exercise_ids,
+                                     _("last submit (UTC)")], "rows": progress}}
+
+
+#: how often the staff page's script asks for fresh tables (seconds)
+STAFF_POLL_SECONDS = 30
+
+
+def staff_html(server: Server, token: str, now: dt.datetime, base: str,
+               error: str | None = None, typed: dict[str, str] | None = None) -> str:
+    """The staff page: counts, gradebook and progress (refreshed by its script, which can
+    be paused), the downloads, the policy form and the recorded changes. ``error`` and
+    ``typed``: a refused policy change, shown with what was typed."""
+    from .policy_changes import CHANGEABLE
+
+    data = server.data
+    policy = data.policy
+    current = {k: ("" if v is None else str(v)) for k, v in policy.to_json().items()}
     return _TEMPLATES.get_template("staff.html").render(
-        title=data.title, token=token, base=base, rows=rows, columns=columns,
-        language=data.manifest.exam.language,
-        progress=gradebook.progress(data, stored), exercise_ids=data.exercise_ids,
-        counts=db.counts(server.engine, data.exam_id), refresh=60,
-        policy_text=policy_text(data.policy, now))
+        title=data.title, token=token, base=base, language=data.manifest.exam.language,
+        tables=staff_tables(server), poll=STAFF_POLL_SECONDS,
+        policy_text=policy_text(policy, now), mode=policy.mode, keys=CHANGEABLE,
+        values={**current, **(typed or {})}, error=error,
+        csrf=limits.csrf_field(server.secret, token),
+        changes=db.changes(server.engine, data.exam_id, db.POLICY_CHANGE, limit=20))
 
 
 #: the policy's modes as the pages name them

@@ -1,21 +1,69 @@
-"""The staff page ``/i/{token}``: gradebook, progress, and its downloads."""
+"""The staff page ``/i/{token}``: gradebook, progress, the policy form, and downloads.
+
+The page refreshes its tables from ``/i/{token}/tables`` (JSON) with a small script
+that the staff can pause; it never reloads itself. The policy form posts to
+``/i/{token}/policy`` (with the page's CSRF field); a change is validated and recorded
+as :mod:`dynagrade.serve.policy_changes` says.
+"""
 
 from __future__ import annotations
 
-from fastapi import APIRouter
-from fastapi.responses import HTMLResponse
+from typing import Any
 
-from .. import db, downloads, gradebook, pages
+from fastapi import APIRouter, HTTPException, Request
+from fastapi.responses import HTMLResponse, RedirectResponse
+from starlette.concurrency import run_in_threadpool
+
+from .. import db, downloads, gradebook, limits, pages
 from ..deps import REFUSALS, Now, RootPath, ServerDep, StaffLink
 from ..downloads import CsvResponse
+from ..models import StaffTables, problem
 
 router = APIRouter(prefix="/i/{token}", tags=["staff pages"], responses=REFUSALS)
 
 
 @router.get("", response_class=HTMLResponse)
 def staff_page(caller: StaffLink, server: ServerDep, now: Now, base: RootPath) -> HTMLResponse:
-    """Live progress, the gradebook and the downloads (reloads itself every minute)."""
+    """Progress, the gradebook, the policy and its changes, the downloads."""
     return HTMLResponse(pages.staff_html(server, caller.token, now, base))
+
+
+@router.get("/tables")
+def staff_tables(caller: StaffLink, server: ServerDep) -> StaffTables:
+    """The counts, gradebook and progress as the page shows them (for its script)."""
+    return StaffTables.model_validate(pages.staff_tables(server))
+
+
+_CHANGED: dict[int | str, dict[str, Any]] = {
+    303: {"description": "changed (or nothing to change): back to the page (`Location`)"},
+    422: {"description": "refused: the page again, with the reason and what was typed",
+          "content": {"text/html": {"schema": {"type": "string"}}}}}
+
+
+@router.post("/policy", status_code=303, response_class=RedirectResponse,
+             responses={**_CHANGED, 403: problem("a missing or wrong CSRF field")})
+async def change_policy(request: Request, caller: StaffLink, server: ServerDep, now: Now,
+                        base: RootPath):
+    """Change the policy (form fields: any of opens, closes, attempts, penalty, feedback,
+    counts, solutions); recorded in the audit log with who and when."""
+    from ...exam.policy import PolicyError
+    from ..policy_changes import CHANGEABLE, PolicySource, change_policy as apply
+
+    form = await request.form()
+    if not limits.csrf_ok(server.secret, caller.token, form.get("csrf")):
+        raise HTTPException(403, "the form is stale or not from this page; reload it")
+    typed = {key: str(form[key]) for key in CHANGEABLE if key in form}
+    actor = f"staff link {db.hash_token(caller.token)[:8]}"
+    try:
+        await run_in_threadpool(apply, server.engine, server.data.exam_id,
+                                server.data.manifest_policy, actor, typed)
+    except PolicyError as error:
+        page = await run_in_threadpool(pages.staff_html, server, caller.token, now, base,
+                                       str(error), typed)
+        return HTMLResponse(page, status_code=422)
+    if isinstance(server.data.policy_source, PolicySource):
+        server.data.policy_source.forget()  # this worker shows the change at once
+    return RedirectResponse(f"{base}/i/{caller.token}#policy", status_code=303)
 
 
 @router.get("/grades.csv", response_class=CsvResponse)
