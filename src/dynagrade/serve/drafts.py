@@ -14,27 +14,15 @@ import datetime as dt
 
 from starlette.concurrency import run_in_threadpool
 
-from ..i18n import _
 from . import db
-from .exam_data import MAX_ANSWER_CHARS, ExamData
-from .submit import Refused, check_open
+from .exam_data import ExamData
+from .submit import check_open, check_texts
 
 
 def check_drafts(data: ExamData, exercise_id, texts) -> dict[str, str]:
     """The drafts of a well-formed request (an empty text is a draft too: the student
-    cleared the box); :class:`Refused` (422) otherwise."""
-    if not isinstance(exercise_id, str) or exercise_id not in data.exercises_meta:
-        raise Refused(422, _("no exercise {exercise!r} in this exam").format(
-            exercise=exercise_id))
-    names = {p.name for p in data.parts(exercise_id)}
-    unknown = [name for name in texts if name not in names]
-    if unknown:
-        raise Refused(422, _("no part {part!r} in {exercise}; the parts are {parts}").format(
-            part=unknown[0], exercise=exercise_id, parts=", ".join(sorted(names))))
-    long = [name for name, text in texts.items() if len(text) > MAX_ANSWER_CHARS]
-    if long:
-        raise Refused(422, _("the answer to {part!r} is longer than {n} characters").format(
-            part=long[0], n=MAX_ANSWER_CHARS))
+    cleared the box); :class:`Refused` (422) otherwise, as for a submit."""
+    check_texts(data, exercise_id, texts)
     return dict(texts)
 
 

@@ -53,24 +53,32 @@ class Refused(DynagradeError):
     parts: dict[str, str] = field(default_factory=dict)
 
 
-def check_request(data: ExamData, exercise_id, answers) -> dict[str, str]:
-    """The non-empty answers of a well-formed request; :class:`Refused` (422) otherwise."""
+def check_texts(data: ExamData, exercise_id, texts) -> list[str]:
+    """Check that ``texts`` (a submit's answers, or drafts) name an exercise of the exam
+    and parts of it, each at most :data:`MAX_ANSWER_CHARS` long; :class:`Refused` (422)
+    otherwise. Returns the exercise's part names, in order."""
     if not isinstance(exercise_id, str) or exercise_id not in data.exercises_meta:
         raise Refused(422, _("no exercise {exercise!r} in this exam").format(
             exercise=exercise_id))
-    if not isinstance(answers, dict) or not all(
-            isinstance(k, str) and isinstance(v, str) for k, v in answers.items()):
+    if not isinstance(texts, dict) or not all(
+            isinstance(k, str) and isinstance(v, str) for k, v in texts.items()):
         raise Refused(422, _("'answers' must map part names to answer texts"))
     names = [p.name for p in data.parts(exercise_id)]
-    unknown = [name for name in answers if name not in names]
+    unknown = [name for name in texts if name not in names]
     if unknown:
         raise Refused(422, _("no part {part!r} in {exercise}; the parts are {parts}").format(
             part=unknown[0], exercise=exercise_id, parts=", ".join(names)))
-    long = [name for name, text in answers.items() if len(text) > MAX_ANSWER_CHARS]
+    long = [name for name, text in texts.items() if len(text) > MAX_ANSWER_CHARS]
     if long:
         raise Refused(422, _("the answer to {part!r} is longer than {n} characters").format(
             part=long[0], n=MAX_ANSWER_CHARS), {long[0]: _("longer than {n} characters")
                                                 .format(n=MAX_ANSWER_CHARS)})
+    return names
+
+
+def check_request(data: ExamData, exercise_id, answers) -> dict[str, str]:
+    """The non-empty answers of a well-formed request; :class:`Refused` (422) otherwise."""
+    names = check_texts(data, exercise_id, answers)
     given = {name: text for name, text in answers.items() if text.strip()}
     if not given:
         raise Refused(422, _("no answer given"))
