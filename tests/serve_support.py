@@ -14,6 +14,7 @@ import shutil
 import socket
 import subprocess
 import time
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -241,3 +242,44 @@ def reference_answers(served: Served, student: str, exercise: str) -> dict[str, 
     for name, value in served.variant(student, exercise).answers.items():
         out[name] = ", ".join(map(repr, value)) if isinstance(value, tuple) else str(value)
     return out
+
+
+@contextmanager
+def serving_process(manifest: Path, links: Path, db: str | None = None,
+                    instructor: bool = True):
+    """``dynagrade serve`` of ``manifest`` in a process of its own, on a free loopback port,
+    with its links written to ``links``: yields (base url, the links' rows, the staff url
+    or None). The server is stopped at the end."""
+    import csv
+    import io
+    import signal
+    import sys
+
+    import httpx
+
+    port = free_port()
+    base = f"http://127.0.0.1:{port}"
+    cli = [sys.executable, "-m", "dynagrade.cli"]
+    where = ["--db", db] if db else []
+    made = subprocess.run([*cli, "links", str(manifest), "-o", str(links), "--base-url", base,
+                           *(["--instructor"] if instructor else []), *where],
+                          check=True, capture_output=True, text=True)
+    staff = made.stdout.strip().splitlines()[-1].split("staff link: ")[1] if instructor \
+        else None
+    rows = list(csv.DictReader(io.StringIO(links.read_text(encoding="utf-8"))))
+    server = subprocess.Popen([*cli, "serve", str(manifest), "--port", str(port),
+                               "--grading-workers", "1", *where], start_new_session=True,
+                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        for _ in range(300):
+            try:
+                if httpx.get(f"{base}/healthz", timeout=1).status_code == 200:
+                    break
+            except httpx.HTTPError:
+                time.sleep(0.1)
+        else:
+            pytest.fail("the server did not start")
+        yield base, rows, staff
+    finally:
+        os.killpg(server.pid, signal.SIGTERM)
+        server.wait(timeout=30)

@@ -10,16 +10,11 @@ from __future__ import annotations
 
 import csv
 import io
-import os
-import signal
-import subprocess
-import sys
-import time
 from pathlib import Path
 
 import pytest
 
-from serve_support import exam_copy, exam_dir, free_port  # noqa: F401
+from serve_support import exam_copy, exam_dir, serving_process  # noqa: F401
 
 CHROMIUM = Path("/usr/bin/chromium")
 ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
@@ -32,34 +27,10 @@ pytestmark = pytest.mark.skipif(not CHROMIUM.exists(),
 
 @pytest.fixture
 def running(exam_dir, tmp_path):
-    """A served homework exam with its links: (base url, links rows, staff url)."""
-    import httpx
-
+    """A served homework exam with its links: (manifest, links rows, staff url)."""
     manifest = exam_copy(exam_dir, tmp_path / "hw", mode="homework", feedback="immediate")
-    port = free_port()
-    base = f"http://127.0.0.1:{port}"
-    cli = [sys.executable, "-m", "dynagrade.cli"]
-    made = subprocess.run([*cli, "links", str(manifest), "-o", str(tmp_path / "links.csv"),
-                           "--base-url", base, "--instructor"],
-                          check=True, capture_output=True, text=True)
-    staff = made.stdout.strip().splitlines()[-1].split("staff link: ")[1]
-    rows = list(csv.DictReader(io.StringIO((tmp_path / "links.csv").read_text())))
-    server = subprocess.Popen([*cli, "serve", str(manifest), "--port", str(port),
-                               "--grading-workers", "1"], start_new_session=True,
-                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    try:
-        for _ in range(300):
-            try:
-                if httpx.get(f"{base}/healthz", timeout=1).status_code == 200:
-                    break
-            except httpx.HTTPError:
-                time.sleep(0.1)
-        else:
-            pytest.fail("the server did not start")
+    with serving_process(manifest, tmp_path / "links.csv") as (_base, rows, staff):
         yield manifest, rows, staff
-    finally:
-        os.killpg(server.pid, signal.SIGTERM)
-        server.wait(timeout=30)
 
 
 def test_a_student_answers_in_the_browser_and_the_staff_downloads_grades(running, tmp_path):

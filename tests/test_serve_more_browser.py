@@ -5,21 +5,13 @@ submit gives a 503 page that keeps what the student typed, ready to send again."
 
 from __future__ import annotations
 
-import csv
-import io
-import os
 import re
-import signal
-import subprocess
-import sys
-import time
-from contextlib import contextmanager
-from pathlib import Path
 from types import SimpleNamespace
 
 import pytest
 
-from serve_support import exam_copy, exam_dir, free_port, fresh_database, postgres_url  # noqa: F401
+from serve_support import (exam_copy, exam_dir, fresh_database, postgres_url,  # noqa: F401
+                           serving_process)
 from test_i18n_serve import _english_left, _statements, german_exam  # noqa: F401
 from test_serve_browser import ARGS, CHROMIUM
 from test_serve_staff_browser import AXE, _violations
@@ -27,37 +19,6 @@ from test_serve_staff_browser import AXE, _violations
 pytestmark = pytest.mark.skipif(not (CHROMIUM.exists() and AXE.exists()),
                                 reason="needs Chromium and axe-core (npm install --prefix "
                                        ".cache/axe axe-core)")
-
-
-@contextmanager
-def _served(manifest: Path, links: Path, db: str | None = None):
-    """``dynagrade serve`` in a process of its own: (base url, link rows, staff url)."""
-    import httpx
-
-    port = free_port()
-    base = f"http://127.0.0.1:{port}"
-    cli = [sys.executable, "-m", "dynagrade.cli"]
-    where = ["--db", db] if db else []
-    made = subprocess.run([*cli, "links", str(manifest), "-o", str(links), "--base-url", base,
-                           "--instructor", *where], check=True, capture_output=True, text=True)
-    staff = made.stdout.strip().splitlines()[-1].split("staff link: ")[1]
-    rows = list(csv.DictReader(io.StringIO(links.read_text(encoding="utf-8"))))
-    server = subprocess.Popen([*cli, "serve", str(manifest), "--port", str(port),
-                               "--grading-workers", "1", *where], start_new_session=True,
-                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    try:
-        for _ in range(300):
-            try:
-                if httpx.get(f"{base}/healthz", timeout=1).status_code == 200:
-                    break
-            except httpx.HTTPError:
-                time.sleep(0.1)
-        else:
-            pytest.fail("the server did not start")
-        yield base, rows, staff
-    finally:
-        os.killpg(server.pid, signal.SIGTERM)
-        server.wait(timeout=30)
 
 
 def test_a_german_exam_is_german_and_accessible_in_the_browser(german_exam, tmp_path):
@@ -68,7 +29,7 @@ def test_a_german_exam_is_german_and_accessible_in_the_browser(german_exam, tmp_
     manifest = exam_copy(german_exam, tmp_path / "exam", mode="homework",
                          feedback="immediate", attempts=3)
     shown = SimpleNamespace(server=SimpleNamespace(data=ExamData(manifest)))
-    with _served(manifest, tmp_path / "links.csv") as (base, rows, staff), \
+    with serving_process(manifest, tmp_path / "links.csv") as (base, rows, staff), \
             sync_playwright() as playwright:
         browser = playwright.chromium.launch(executable_path=str(CHROMIUM), args=ARGS)
         try:
@@ -99,7 +60,7 @@ def test_a_database_that_stops_writing_keeps_the_typed_answer_in_the_browser(
 
     manifest = exam_copy(exam_dir, tmp_path / "exam", mode="homework", feedback="immediate")
     url = fresh_database(postgres_url, "browser_refusing_writes")
-    with _served(manifest, tmp_path / "links.csv", url) as (base, rows, staff), \
+    with serving_process(manifest, tmp_path / "links.csv", url) as (base, rows, staff), \
             sync_playwright() as playwright:
         admin = sa.create_engine(postgres_url.replace("postgresql://", "postgresql+psycopg://"),
                                  isolation_level="AUTOCOMMIT")

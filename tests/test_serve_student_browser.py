@@ -5,20 +5,13 @@ and axe-core finds nothing in every state, on a phone (320 px) and a desktop."""
 
 from __future__ import annotations
 
-import csv
 import datetime as dt
-import io
-import os
-import signal
-import subprocess
-import sys
-import time
 from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
 
-from serve_support import exam_copy, exam_dir, free_port  # noqa: F401
+from serve_support import exam_copy, exam_dir, serving_process  # noqa: F401
 from test_serve_browser import ARGS, CHROMIUM
 
 AXE = Path(__file__).resolve().parent.parent / ".cache" / "axe" / "node_modules" / \
@@ -42,31 +35,12 @@ pytestmark = pytest.mark.skipif(not CHROMIUM.exists(), reason="needs Chromium at
 @contextmanager
 def served(manifest: Path, tmp_path: Path):
     """A running `dynagrade serve` of ``manifest``: each student's page URL by id."""
-    import httpx
+    links = tmp_path / f"links-{next(_RUNS)}.csv"
+    with serving_process(manifest, links, instructor=False) as (_base, rows, _staff):
+        yield {r["student_id"]: r["url"] for r in rows}
 
-    port = free_port()
-    base = f"http://127.0.0.1:{port}"
-    cli = [sys.executable, "-m", "dynagrade.cli"]
-    links = tmp_path / f"links-{port}.csv"
-    subprocess.run([*cli, "links", str(manifest), "-o", str(links), "--base-url", base],
-                   check=True, capture_output=True, text=True)
-    rows = {r["student_id"]: r["url"] for r in csv.DictReader(io.StringIO(links.read_text()))}
-    server = subprocess.Popen([*cli, "serve", str(manifest), "--port", str(port),
-                               "--grading-workers", "1"], start_new_session=True,
-                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    try:
-        for _ in range(300):
-            try:
-                if httpx.get(f"{base}/healthz", timeout=1).status_code == 200:
-                    break
-            except httpx.HTTPError:
-                time.sleep(0.1)
-        else:
-            pytest.fail("the server did not start")
-        yield rows
-    finally:
-        os.killpg(server.pid, signal.SIGTERM)
-        server.wait(timeout=30)
+
+_RUNS = iter(range(10_000))
 
 
 @contextmanager
