@@ -28,8 +28,9 @@ id = "degrees-of-freedom"
 points = 4
 """
 
-pytestmark = pytest.mark.skipif(not CHROMIUM.exists(), reason="needs Chromium at "
-                                "/usr/bin/chromium (apt-get install chromium)")
+pytestmark = pytest.mark.skipif(not (CHROMIUM.exists() and AXE.exists()),
+                                reason="needs Chromium (apt-get install chromium) and axe-core "
+                                       "(npm install --prefix .cache/axe axe-core)")
 
 
 @contextmanager
