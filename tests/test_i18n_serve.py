@@ -281,3 +281,9 @@ def _now():
     import datetime as dt
 
     return dt.datetime(2025, 4, 14, 10, 0, tzinfo=dt.timezone.utc)
+
+
+def test_a_german_exams_error_page_gives_its_reason_in_german(served):
+    page = served.client.get("/s/not-a-token", headers={"Accept": "text/html"})
+    assert page.status_code == 401 and 'lang="de"' in page.text
+    assert "unbekannter Link" in page.text and "unknown link" not in page.text

@@ -29,6 +29,7 @@ from fastapi.security import HTTPAuthorizationCredentials, HTTPBearer
 from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import FormData
 
+from ..i18n import _
 from . import db, limits
 from .exam_data import ExamData
 from .grading_pool import GradingPool
@@ -88,7 +89,7 @@ async def bearer_token(credentials: Annotated[HTTPAuthorizationCredentials | Non
                                               Depends(_bearer_scheme)]) -> str:
     """The token of ``Authorization: Bearer <token>``; 401 without one."""
     if credentials is None:
-        raise HTTPException(401, "send the token as 'Authorization: Bearer <token>'",
+        raise HTTPException(401, _("send the token as 'Authorization: Bearer <token>'"),
                             headers={"WWW-Authenticate": "Bearer"})
     return credentials.credentials
 
@@ -120,23 +121,23 @@ async def identify(server: Server, token: str, role: str) -> db.Identity:
     A token seen in the last seconds is known without leaving the event loop; an unseen
     one is looked up in the database in a thread, off the loop."""
     if not server.limiter.allow(token):
-        raise HTTPException(429, "too many requests; slow down", headers={"Retry-After": "1"})
+        raise HTTPException(429, _("too many requests; slow down"), headers={"Retry-After": "1"})
     identity = server.identities.get(token)
     if identity is None:
         identity = await run_in_threadpool(db.identify, server.engine, server.data.exam_id,
                                            token)
         server.identities.put(token, identity)
     if identity is None:
-        raise HTTPException(401, "unknown link")
+        raise HTTPException(401, _("unknown link"))
     if identity.role != role:
-        raise HTTPException(403, "not a link for this page")
+        raise HTTPException(403, _("not a link for this page"))
     return identity
 
 
 async def _student(server: Server, token: str) -> StudentCaller:
     identity = await identify(server, token, STUDENT)
     if identity.student_id is None:  # a student's token always names its student
-        raise HTTPException(401, "unknown link")
+        raise HTTPException(401, _("unknown link"))
     return StudentCaller(token, STUDENT, identity.student_id)
 
 
@@ -197,7 +198,7 @@ async def student_form(request: Request, caller: StudentLink, server: ServerDep)
     """The form a student posted from their page, once its CSRF field is checked."""
     form = await request.form()
     if not limits.csrf_ok(server.secret, caller.token, form.get("csrf")):
-        raise HTTPException(403, "the form is stale or not from this page; reload it")
+        raise HTTPException(403, _("the form is stale or not from this page; reload it"))
     return PostedForm(caller, form, str(form.get("exercise", "")))
 
 

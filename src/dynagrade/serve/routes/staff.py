@@ -14,6 +14,7 @@ from fastapi import APIRouter, HTTPException, Request
 from fastapi.responses import HTMLResponse, RedirectResponse
 from starlette.concurrency import run_in_threadpool
 
+from ...i18n import _
 from .. import db, downloads, gradebook, limits, pages
 from ..deps import REFUSALS, Now, RootPath, ServerDep, StaffLink
 from ..downloads import CsvResponse
@@ -51,7 +52,7 @@ async def change_policy(request: Request, caller: StaffLink, server: ServerDep, 
 
     form = await request.form()
     if not limits.csrf_ok(server.secret, caller.token, form.get("csrf")):
-        raise HTTPException(403, "the form is stale or not from this page; reload it")
+        raise HTTPException(403, _("the form is stale or not from this page; reload it"))
     typed = {key: str(form[key]) for key in CHANGEABLE if key in form}
     actor = f"staff link {db.hash_token(caller.token)[:8]}"
     try:

@@ -16,6 +16,7 @@ from fastapi import APIRouter, HTTPException
 from fastapi.responses import HTMLResponse, RedirectResponse
 from starlette.concurrency import run_in_threadpool
 
+from ...i18n import _
 from .. import pages
 from ..deps import REFUSALS, Now, RootPath, ServerDep, StudentForm, StudentLink
 from ..models import problem
@@ -93,7 +94,7 @@ async def new_practice_draw(form: StudentForm, server: ServerDep, base: RootPath
     """Practice mode: a fresh draw of one exercise, shown on the page that follows."""
     data, exercise_id = server.data, form.exercise_id
     if data.policy.mode != "practice" or exercise_id not in data.exercises_meta:
-        raise HTTPException(422, "new variants are offered in practice mode only")
+        raise HTTPException(422, _("new variants are offered in practice mode only"))
     seed = await run_in_threadpool(data.new_practice_seed, exercise_id)
     value = practice_value(server.secret, form.caller.student_id, exercise_id, seed)
     return RedirectResponse(f"{base}/s/{form.caller.token}?practice={exercise_id}:{value}"
