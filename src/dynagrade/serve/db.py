@@ -10,12 +10,22 @@ Tables (created by the Alembic migrations in ``migrations/``; see docs/serve.md)
                  (status, points, feedback, the mistake the grader named)
 ``drafts``       what a student typed and has not submitted: one row per part, replaced
                  as they type (never counted)
-``audit_log``    every change the staff make (a policy change, ...): who, when, what,
-                 and the JSON before and after
+``audit_log``    every change the staff make (a policy change, an exception, points by
+                 hand, a regrade, a revoked link): who, when, what, and the JSON before
+                 and after
+``allowances``   a student's exceptions to the policy: their own opening and close, extra
+                 minutes on a timed exam, extra attempts (JSON: scope -> number)
+``starts``       when each student started a timed exam (their clock runs from then)
+``overrides``    points a member of the staff set by hand on one part, with a comment
+``regrades``     a regrade: previewed (the plan of changed verdicts, JSON), then applied
+                 or discarded
+``verdict_history`` the verdict an applied regrade replaced, one row per changed answer
 
-Submissions, answers and the audit log are only ever inserted, never updated or deleted. A submit is
-one transaction; the caller acknowledges it only after :func:`record_submission`
-returned, i.e. after the commit.
+Submissions and the audit log are only ever inserted, never updated or deleted. An
+answer's text never changes; its verdict changes only by an applied regrade, which
+first copies the old verdict to ``verdict_history``. A submit is one transaction; the
+caller acknowledges it only after :func:`record_submission` returned, i.e. after the
+commit.
 
 Works on SQLite (WAL, one file) and PostgreSQL with the same statements.
 """
@@ -53,6 +63,9 @@ tokens = sa.Table(
     sa.Column("student_id", sa.String(200), nullable=True),
     sa.Column("created_at", sa.DateTime(timezone=True), nullable=False),
     sa.Column("revoked", sa.Boolean, nullable=False, server_default=sa.false()),
+    #: a staff link's name ("Anna (TA)"), as lists and the audit log show it
+    sa.Column("label", sa.String(200), nullable=True),
+    sa.Column("revoked_at", sa.DateTime(timezone=True), nullable=True),
     sa.Index("ix_tokens_exam_student", "exam_id", "student_id"),
 )
 
@@ -111,6 +124,63 @@ audit_log = sa.Table(
     sa.Column("before", sa.Text, nullable=True),  # JSON
     sa.Column("after", sa.Text, nullable=True),  # JSON
     sa.Index("ix_audit_log_exam_action", "exam_id", "action"),
+)
+
+allowances = sa.Table(
+    "allowances", metadata,
+    sa.Column("exam_id", sa.String(200), primary_key=True),
+    sa.Column("student_id", sa.String(200), primary_key=True),
+    sa.Column("opens", sa.DateTime(timezone=True), nullable=True),
+    sa.Column("closes", sa.DateTime(timezone=True), nullable=True),
+    sa.Column("extra_minutes", sa.Integer, nullable=False, server_default="0"),
+    sa.Column("extra_attempts", sa.Text, nullable=False, server_default="{}"),  # JSON
+    sa.Column("updated_at", sa.DateTime(timezone=True), nullable=False),
+    sa.Column("updated_by", sa.String(200), nullable=False),
+)
+
+starts = sa.Table(
+    "starts", metadata,
+    sa.Column("exam_id", sa.String(200), primary_key=True),
+    sa.Column("student_id", sa.String(200), primary_key=True),
+    sa.Column("started_at", sa.DateTime(timezone=True), nullable=False),
+)
+
+overrides = sa.Table(
+    "overrides", metadata,
+    sa.Column("exam_id", sa.String(200), primary_key=True),
+    sa.Column("student_id", sa.String(200), primary_key=True),
+    sa.Column("exercise_id", sa.String(200), primary_key=True),
+    sa.Column("part", sa.String(200), primary_key=True),
+    sa.Column("points", sa.Float, nullable=False),
+    sa.Column("comment", sa.Text, nullable=False, server_default=""),
+    sa.Column("author", sa.String(200), nullable=False),
+    sa.Column("at", sa.DateTime(timezone=True), nullable=False),
+)
+
+regrades = sa.Table(
+    "regrades", metadata,
+    sa.Column("id", sa.Integer, primary_key=True, autoincrement=True),
+    sa.Column("exam_id", sa.String(200), nullable=False, index=True),
+    sa.Column("created_at", sa.DateTime(timezone=True), nullable=False),
+    sa.Column("actor", sa.String(200), nullable=False),
+    sa.Column("state", sa.String(16), nullable=False),  # "previewed" | "applied" | "discarded"
+    #: what the verdicts were recomputed against (the manifest's and exercises' digests)
+    sa.Column("source", sa.Text, nullable=False),
+    sa.Column("plan", sa.Text, nullable=False),  # JSON: the changed verdicts, old and new
+    sa.Column("applied_at", sa.DateTime(timezone=True), nullable=True),
+)
+
+verdict_history = sa.Table(
+    "verdict_history", metadata,
+    sa.Column("id", sa.Integer, primary_key=True, autoincrement=True),
+    sa.Column("answer_id", sa.Integer, sa.ForeignKey("answers.id"), nullable=False,
+              index=True),
+    sa.Column("regrade_id", sa.Integer, sa.ForeignKey("regrades.id"), nullable=False),
+    sa.Column("status", sa.String(32), nullable=False),
+    sa.Column("correct", sa.Boolean, nullable=False),
+    sa.Column("score", sa.Float, nullable=False),
+    sa.Column("feedback", sa.Text, nullable=False),
+    sa.Column("misconception", sa.Text, nullable=True),
 )
 
 
@@ -243,16 +313,18 @@ class Identity:
 
     role: str
     student_id: str | None
+    #: a staff link's name (None: unnamed, or a student's link)
+    label: str | None = None
 
 
 def identify(engine: sa.Engine, exam_id: str, token: str) -> Identity | None:
     """The holder of ``token`` in exam ``exam_id``, or ``None`` for an unknown token."""
     with engine.connect() as connection:
         row = connection.execute(
-            sa.select(tokens.c.role, tokens.c.student_id).where(
+            sa.select(tokens.c.role, tokens.c.student_id, tokens.c.label).where(
                 tokens.c.token_hash == hash_token(token), tokens.c.exam_id == exam_id,
                 tokens.c.revoked == sa.false())).first()
-    return Identity(row.role, row.student_id) if row else None
+    return Identity(row.role, row.student_id, row.label) if row else None
 
 
 def issue_tokens(engine: sa.Engine, exam_id: str, student_ids: list[str],
@@ -541,3 +613,19 @@ def accepts_writes(engine: sa.Engine) -> None:
                 with connection.begin_nested():
                     connection.execute(settings.insert().values(key="heartbeat",
                                                                 value=stamp))
+
+
+# -- exceptions to the policy per student, and the starts of a timed exam ------------------
+# (the statements of dynagrade.serve.allowances)
+
+
+# -- points by hand -----------------------------------------------------------------------
+# (the statements of dynagrade.serve.overrides)
+
+
+# -- regrades -----------------------------------------------------------------------------
+# (the statements of dynagrade.serve.regrade)
+
+
+# -- staff links: named, listed, revoked ---------------------------------------------------
+# (the statements of dynagrade.serve.links)

@@ -14,14 +14,14 @@ Callers. A token is either in a page's path (``/s/{token}``, ``/i/{token}``:
 ``BearerToken``). ``StudentLink``, ``StaffLink``, ``StudentBearer`` and ``StaffBearer``
 are the :class:`Caller` holding a token of that role, taken from that place, after the
 guards, in this order: the token's rate limit (429 with ``Retry-After``), an unknown or
-missing token (401), a token of the other role (403). ``StudentForm`` is a form posted
-from a student's page, after those and the form's CSRF field (403).
+missing token (401), a token of the other role (403). ``StudentForm`` (``StaffForm``) is a form posted
+from a student's (a staff) page, after those and the form's CSRF field (403).
 """
 
 from __future__ import annotations
 
 import datetime as dt
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Annotated, Any, Awaitable, Callable
 
 from fastapi import Depends, HTTPException, Path, Request
@@ -102,10 +102,17 @@ BearerToken = Annotated[str, Depends(bearer_token)]
 
 @dataclass(frozen=True)
 class Caller:
-    """Who is asking: the token they hold and its role."""
+    """Who is asking: the token they hold, its role and (a staff link) its name."""
 
     token: str
     role: str
+    label: str | None = field(default=None, kw_only=True)
+
+    @property
+    def actor(self) -> str:
+        """Who the audit log says made a change: the staff link's name, or else the
+        first characters of its token's hash (never the token itself)."""
+        return self.label or f"staff link {db.hash_token(self.token)[:8]}"
 
 
 @dataclass(frozen=True)
@@ -142,8 +149,8 @@ async def _student(server: Server, token: str) -> StudentCaller:
 
 
 async def _staff(server: Server, token: str) -> Caller:
-    await identify(server, token, STAFF)
-    return Caller(token, STAFF)
+    identity = await identify(server, token, STAFF)
+    return Caller(token, STAFF, label=identity.label)
 
 
 async def student_by_link(server: ServerDep, token: LinkToken) -> StudentCaller:
@@ -203,3 +210,22 @@ async def student_form(request: Request, caller: StudentLink, server: ServerDep)
 
 
 StudentForm = Annotated[PostedForm, Depends(student_form)]
+
+
+@dataclass(frozen=True)
+class StaffPostedForm:
+    """A form posted from a staff page: its caller and its fields."""
+
+    caller: Caller
+    fields: FormData
+
+
+async def staff_form(request: Request, caller: StaffLink, server: ServerDep) -> StaffPostedForm:
+    """The form a staff member posted from a staff page, once its CSRF field is checked."""
+    form = await request.form()
+    if not limits.csrf_ok(server.secret, caller.token, form.get("csrf")):
+        raise HTTPException(403, _("the form is stale or not from this page; reload it"))
+    return StaffPostedForm(caller, form)
+
+
+StaffForm = Annotated[StaffPostedForm, Depends(staff_form)]

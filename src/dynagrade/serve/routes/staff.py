@@ -10,13 +10,12 @@ from __future__ import annotations
 
 from typing import Any
 
-from fastapi import APIRouter, HTTPException, Request
+from fastapi import APIRouter
 from fastapi.responses import HTMLResponse, RedirectResponse
 from starlette.concurrency import run_in_threadpool
 
-from ...i18n import _
-from .. import db, downloads, gradebook, limits, pages
-from ..deps import REFUSALS, Now, RootPath, ServerDep, StaffLink
+from .. import db, downloads, gradebook, pages
+from ..deps import REFUSALS, Now, RootPath, ServerDep, StaffForm, StaffLink
 from ..downloads import CsvResponse
 from ..models import StaffTables, problem
 
@@ -43,21 +42,17 @@ _CHANGED: dict[int | str, dict[str, Any]] = {
 
 @router.post("/policy", status_code=303, response_class=RedirectResponse,
              responses={**_CHANGED, 403: problem("a missing or wrong CSRF field")})
-async def change_policy(request: Request, caller: StaffLink, server: ServerDep, now: Now,
-                        base: RootPath):
+async def change_policy(form: StaffForm, server: ServerDep, now: Now, base: RootPath):
     """Change the policy (form fields: any of opens, closes, attempts, penalty, feedback,
     counts, solutions); recorded in the audit log with who and when."""
     from ...exam.policy import PolicyError
     from ..policy_changes import CHANGEABLE, PolicySource, change_policy as apply
 
-    form = await request.form()
-    if not limits.csrf_ok(server.secret, caller.token, form.get("csrf")):
-        raise HTTPException(403, _("the form is stale or not from this page; reload it"))
-    typed = {key: str(form[key]) for key in CHANGEABLE if key in form}
-    actor = f"staff link {db.hash_token(caller.token)[:8]}"
+    caller = form.caller
+    typed = {key: str(form.fields[key]) for key in CHANGEABLE if key in form.fields}
     try:
         await run_in_threadpool(apply, server.engine, server.data.exam_id,
-                                server.data.manifest_policy, actor, typed)
+                                server.data.manifest_policy, caller.actor, typed)
     except PolicyError as error:
         page = await run_in_threadpool(pages.staff_html, server, caller.token, now, base,
                                        str(error), typed)
