@@ -160,6 +160,23 @@ def test_a_responses_csv_in_a_students_folder_may_hold_only_their_rows(exam, tmp
             if p.message.startswith("impersonating")] == [("s3", "row 2")]
 
 
+def test_a_responses_csv_of_every_attempt_grades_only_the_rows_that_count(exam, tmp_path):
+    manifest = load(exam / "manifest.json")
+    key = next(s for s in manifest.students if s.student_id == "s1") \
+        .variant("projectile-range").answers["x_max"]
+    subs = tmp_path / "subs"
+    put(subs, "server.csv", "student_id,exercise_id,part,answer,attempt,submitted_at,counts\n"
+        f"s1,projectile-range,x_max,{2 * key},1,2025-04-14T10:02:13+02:00,no\n"
+        f"s1,projectile-range,x_max,{key!r},2,2025-04-14T10:05:00+02:00,yes\n"
+        f"s2,projectile-range,x_max,{key!r},1,2025-04-14T10:06:00+02:00,maybe\n")
+    outcome = grade_class(exam / "manifest.json", [subs])
+    result = outcome.feedback["s1"].results["projectile-range"]
+    assert result.part("x_max").answer == repr(key) and result.part("x_max").correct
+    assert outcome.feedback["s2"].results["projectile-range"] is None  # its row is refused
+    assert [p.source.rsplit(", ", 1)[1] for p in outcome.problems
+            if "counts" in p.message] == ["row 4"]
+
+
 def test_the_file_modified_last_counts_not_the_last_in_path_order(exam, tmp_path):
     subs = tmp_path / "subs"
     newer = put(subs, "s1/a-projectile-range.py", filled(exam, "s1", "projectile-range"),

@@ -2,7 +2,10 @@
 
 A submission is a filled-in fill-in file (read with :mod:`ast`, never run) or a CSV file
 of responses with the header ``student_id,exercise_id,part,answer``, found in the folders
-and files given (folders are searched recursively for ``*.py`` and ``*.csv``).
+and files given (folders are searched recursively for ``*.py`` and ``*.csv``). A
+responses file may carry every attempt, as the server's ``submissions.csv`` does: then
+its header goes on with ``attempt,submitted_at,counts`` and only the rows whose
+``counts`` is ``yes`` are graded (the others are the history of earlier attempts).
 
 Whose it is comes from **where it was found**, never from what it says (see
 :mod:`.layouts`): a fill-in file belongs to the student whose folder holds it, and one
@@ -43,6 +46,8 @@ from .layouts import owner
 from ..exam.manifest import Manifest
 
 RESPONSE_HEADER = ("student_id", "exercise_id", "part", "answer")
+#: the columns a responses file of every attempt adds (the server's ``submissions.csv``)
+ATTEMPT_COLUMNS = ("attempt", "submitted_at", "counts")
 
 
 @dataclass(frozen=True)
@@ -308,7 +313,8 @@ def _read_responses(found: Found, exam: _Exam, problems: list[Problem]) -> list[
     except csv.Error:
         problems.append(Problem("error", source, "corrupt, skipped: not a CSV file", whose))
         return []
-    if not rows or tuple(c.strip() for c in rows[0]) != RESPONSE_HEADER:
+    header = tuple(c.strip() for c in rows[0]) if rows else ()
+    if header not in (RESPONSE_HEADER, RESPONSE_HEADER + ATTEMPT_COLUMNS):
         problems.append(Problem("error", f"{source}, row 1", "corrupt, skipped: not a "
                                 "responses file (its first row is not the header "
                                 f"{','.join(RESPONSE_HEADER)})", whose))
@@ -318,18 +324,27 @@ def _read_responses(found: Found, exam: _Exam, problems: list[Problem]) -> list[
 
 def _response_rows(source: str, rows: list[list[str]], whose: str | None, exam: _Exam,
                    problems: list[Problem]) -> list[Submission]:
-    """The submissions in a responses CSV's rows; in a student's folder, only theirs."""
+    """The submissions in a responses CSV's rows (of a file of every attempt, the rows
+    that count); in a student's folder, only theirs."""
     grouped: dict[tuple[str, str], Submission] = {}
     seen_rows: dict[tuple[str, str, str], int] = {}
+    width = len(rows[0])
     for number, row in enumerate(rows[1:], 2):
         where = f"{source}, row {number}"
         if not any(cell.strip() for cell in row):
             continue
-        if len(row) != 4:
-            problems.append(Problem("error", where, f"skipped: {len(row)} columns, not 4",
+        if len(row) != width:
+            problems.append(Problem("error", where, f"skipped: {len(row)} columns, not "
+                                    f"{width}", whose or ""))
+            continue
+        counts = row[width - 1].strip().lower() if width > len(RESPONSE_HEADER) else "yes"
+        if counts == "no":
+            continue  # an attempt that does not count: history, not graded
+        if counts != "yes":
+            problems.append(Problem("error", where, "skipped: 'counts' must be yes or no",
                                     whose or ""))
             continue
-        student_id, exercise_id, part, answer = (cell.strip() for cell in row)
+        student_id, exercise_id, part, answer = (cell.strip() for cell in row[:4])
         if whose and student_id != whose:
             problems.append(Problem("error", where, f"impersonating, skipped: found in the "
                                     f"folder of {whose} but names student {student_id!r}; "

@@ -67,6 +67,15 @@ class Policy:
             return True
         return self.closes is not None and now >= self.closes
 
+    @property
+    def zone(self) -> dt.tzinfo:
+        """The zone the exam's times were written in (that of ``closes`` or ``opens``),
+        else UTC: the course's zone, in which pages and downloads show times."""
+        for moment in (self.closes, self.opens):
+            if moment is not None and moment.tzinfo is not None:
+                return moment.tzinfo
+        return dt.timezone.utc
+
     def attempt_factor(self, attempt: int) -> float:
         """The fraction of the points an answer earns at its ``attempt``-th try (1-based)."""
         return max(0.0, 1.0 - self.penalty * (attempt - 1))

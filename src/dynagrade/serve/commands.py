@@ -45,19 +45,56 @@ def _open(manifest: str, db_url: str | None, folders):
               help="The address students open (the reverse proxy's, in production).")
 @click.option("--rotate", is_flag=True, help="Revoke every student link and make new ones.")
 @click.option("--instructor", is_flag=True, help="Also make and print a staff link.")
+@click.option("--name", "label", metavar="NAME", help="The new staff link's name, which "
+              "the audit log shows as who made a change (e.g. 'Anna (TA)').")
+@click.option("--list-staff", is_flag=True, help="List the staff links (id, name, made, "
+              "revoked) and write nothing.")
+@click.option("--revoke-staff", "revoke", metavar="ID", multiple=True, help="Revoke the "
+              "staff link with this id (from --list-staff; 'all' for every one) and write "
+              "nothing else. Refused by every server within 30 s.")
+@click.option("--by", "actor", help="Who acts, for the audit log (default: your user name).")
 @click.pass_obj
-def links(context, manifest, db_url, output, base_url, rotate, instructor):
-    """Write one secret link per roster student (tokens are stored hashed)."""
-    from . import db
-    from .links import staff_url, write_links
+def links(context, manifest, db_url, output, base_url, rotate, instructor, label,
+          list_staff, revoke, actor):
+    """Write one secret link per roster student (tokens are stored hashed); make, list
+    or revoke staff links."""
+    import getpass
+
+    from .links import LinkError, add_staff_link, revoke_staff_links, staff_url, write_links
 
     data, engine = _open(manifest, db_url, context.folders)
-    notices = write_links(data, engine, Path(output), base_url, rotate=rotate)
-    for notice in notices:
-        click.echo(f"warning: {notice}", err=True)
-    click.echo(f"wrote {output}: {len(data.students)} student links")
-    if instructor:
-        click.echo(f"staff link: {staff_url(base_url, db.issue_staff_token(engine, data.exam_id))}")
+    who = actor or f"{getpass.getuser()} (command line)"
+    try:
+        if revoke:
+            ids = None if "all" in revoke else list(revoke)
+            done = revoke_staff_links(engine, data.exam_id, ids, who)
+            click.echo(f"revoked {len(done)} staff link(s)"
+                       + "".join(f"\n  {link.id} {link.label or ''}".rstrip() for link in done))
+        if list_staff:
+            _list_staff_links(engine, data.exam_id)
+        if revoke or list_staff:
+            return
+        notices = write_links(data, engine, Path(output), base_url, rotate=rotate)
+        for notice in notices:
+            click.echo(f"warning: {notice}", err=True)
+        click.echo(f"wrote {output}: {len(data.students)} student links")
+        if instructor:
+            token = add_staff_link(engine, data.exam_id, label, who)
+            click.echo(f"staff link: {staff_url(base_url, token)}")
+    except LinkError as error:
+        raise click.ClickException(str(error)) from None
+    finally:
+        engine.dispose()
+
+
+def _list_staff_links(engine, exam_id: str) -> None:
+    from . import db
+
+    for link in db.staff_links(engine, exam_id):
+        made = db.utc(link.created_at).isoformat(timespec="seconds")
+        state = f"revoked {db.utc(link.revoked_at).isoformat(timespec='seconds')}" \
+            if link.revoked_at else "active"
+        click.echo(f"{link.id}  {link.label or '(no name)'}  made {made}  {state}")
 
 
 @click.command()

@@ -198,6 +198,12 @@ def now() -> dt.datetime:
     return dt.datetime.now(dt.timezone.utc)
 
 
+def utc(moment: dt.datetime) -> dt.datetime:
+    """A time read back from the database, with its zone: SQLite gives times back
+    without one, and they were stored in UTC."""
+    return moment if moment.tzinfo else moment.replace(tzinfo=dt.timezone.utc)
+
+
 # -- connecting ---------------------------------------------------------------------------
 
 
@@ -342,8 +348,8 @@ def issue_tokens(engine: sa.Engine, exam_id: str, student_ids: list[str],
                 tokens.c.revoked == sa.false())).scalars())
         if rotate:
             connection.execute(tokens.update().where(
-                tokens.c.exam_id == exam_id, tokens.c.role == "student")
-                .values(revoked=True))
+                tokens.c.exam_id == exam_id, tokens.c.role == "student",
+                tokens.c.revoked == sa.false()).values(revoked=True, revoked_at=now()))
             have = set()
         for student_id in student_ids:
             if student_id in have:
@@ -357,13 +363,14 @@ def issue_tokens(engine: sa.Engine, exam_id: str, student_ids: list[str],
     return issued
 
 
-def issue_staff_token(engine: sa.Engine, exam_id: str) -> str:
-    """A new staff token (earlier staff links keep working until rotated)."""
+def issue_staff_token(engine: sa.Engine, exam_id: str, label: str | None = None) -> str:
+    """A new staff token named ``label`` (earlier staff links keep working until revoked:
+    :func:`revoke_staff_links`)."""
     token = new_token()
-    with engine.begin() as connection:
+    with _writing(engine), engine.begin() as connection:
         connection.execute(tokens.insert().values(
             token_hash=hash_token(token), exam_id=exam_id, role="staff", student_id=None,
-            created_at=now()))
+            created_at=now(), label=label))
     return token
 
 
@@ -629,3 +636,55 @@ def accepts_writes(engine: sa.Engine) -> None:
 
 # -- staff links: named, listed, revoked ---------------------------------------------------
 # (the statements of dynagrade.serve.links)
+
+#: how many leading characters of a token's hash name a staff link in lists and commands
+LINK_ID_CHARS = 8
+
+
+@dataclass(frozen=True)
+class StaffLinkRecord:
+    """A staff link as lists show it: never the token, which only its holder has."""
+
+    #: the first :data:`LINK_ID_CHARS` characters of the token's hash
+    id: str
+    label: str | None
+    created_at: dt.datetime
+    revoked_at: dt.datetime | None
+
+    @property
+    def revoked(self) -> bool:
+        return self.revoked_at is not None
+
+
+def link_id(token: str) -> str:
+    """The name of a link in lists: the start of its token's hash."""
+    return hash_token(token)[:LINK_ID_CHARS]
+
+
+def staff_links(engine: sa.Engine, exam_id: str) -> list[StaffLinkRecord]:
+    """Every staff link of the exam, oldest first, revoked ones included."""
+    t = tokens.c
+    with engine.connect() as connection:
+        rows = connection.execute(
+            sa.select(t.token_hash, t.label, t.created_at, t.revoked, t.revoked_at)
+            .where(t.exam_id == exam_id, t.role == "staff")
+            .order_by(t.created_at, t.token_hash)).all()
+    return [StaffLinkRecord(row.token_hash[:LINK_ID_CHARS], row.label, row.created_at,
+                            (row.revoked_at or row.created_at) if row.revoked else None)
+            for row in rows]
+
+
+def revoke_staff_links(engine: sa.Engine, exam_id: str, ids: list[str] | None
+                       ) -> list[StaffLinkRecord]:
+    """Revoke the staff links whose :func:`link_id` is in ``ids`` (``None``: every staff
+    link); the links this revoked (a link revoked before is left as it was)."""
+    t = tokens.c
+    condition = sa.and_(t.exam_id == exam_id, t.role == "staff", t.revoked == sa.false())
+    with _writing(engine), engine.begin() as connection:
+        hashes = [h for h in connection.execute(sa.select(t.token_hash).where(condition))
+                  .scalars() if ids is None or h[:LINK_ID_CHARS] in ids]
+        if hashes:
+            connection.execute(tokens.update().where(t.token_hash.in_(hashes))
+                               .values(revoked=True, revoked_at=now()))
+    revoked = set(h[:LINK_ID_CHARS] for h in hashes)
+    return [link for link in staff_links(engine, exam_id) if link.id in revoked]

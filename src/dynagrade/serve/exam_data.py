@@ -215,7 +215,7 @@ class ExamData:
 
     def new_practice_seed(self, exercise_id: str) -> int:
         """A fresh seed whose draw meets the exercise's constraints."""
-        for _ in range(20):
+        for _draw in range(20):
             seed = secrets.randbits(48)
             try:
                 _practice_entry(self, exercise_id, seed)

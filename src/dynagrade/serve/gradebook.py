@@ -9,8 +9,8 @@ the statistics are built from them by class grading's own code
 an exercise the sum of its rounded parts. Nothing is graded again.
 
 The submissions download is the responses CSV that ``dynagrade grade --manifest`` reads,
-holding each counted answer, so an offline regrade gives the same ``grades.csv`` byte for
-byte when ``penalty`` is 0 (the offline grader knows nothing of attempts; with a penalty,
+holding every attempt with the one that counts flagged, so an offline regrade gives the
+same ``grades.csv`` byte for byte when ``penalty`` is 0 (the offline grader knows nothing of attempts; with a penalty,
 each part's points here are the grader's points times the attempt's factor, rounded).
 """
 
@@ -24,10 +24,11 @@ from ..classgrade.grade import class_outcome
 from ..classgrade.outcome import ClassOutcome
 from ..classgrade.gradebook import exercise_columns, gradebook_csv
 from ..classgrade.stats import declared_names
-from ..classgrade.submissions import RESPONSE_HEADER
+from ..classgrade.submissions import ATTEMPT_COLUMNS, RESPONSE_HEADER
 from ..exercise.numbers import percent_text
 from ..exam.manifest import PartEntry
 from ..exercise.results import ExerciseResult, GradedPart
+from . import db
 from .db import StoredAnswer
 from .exam_data import ExamData
 from .verdicts import SubmittedPart, not_answered
@@ -109,17 +110,28 @@ def staff_table(data: ExamData, stored: list[StoredAnswer]) -> tuple[list[str], 
 
 
 def responses_csv(data: ExamData, stored: list[StoredAnswer]) -> str:
-    """Every counted answer, in roster and exam order, as ``dynagrade grade`` reads them."""
-    chosen = counted_answers(data, stored)
+    """Every attempt (practice draws are not the exam's), in roster, exam, part and
+    attempt order, with its time in the course's zone and whether it is the one that
+    counts, as ``dynagrade grade`` reads them (it grades the rows that count)."""
+    chosen = {id(answer) for answer in counted_answers(data, stored).values()}
+    attempts: dict[tuple[str, str, str], list[StoredAnswer]] = {}
+    for answer in stored:  # oldest first
+        if answer.counted:
+            attempts.setdefault((answer.student_id, answer.exercise_id, answer.part),
+                                []).append(answer)
+    zone = data.policy.zone
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(RESPONSE_HEADER)
+    writer.writerow(RESPONSE_HEADER + ATTEMPT_COLUMNS)
     for student_id in data.students:
         for exercise_id in data.exercise_ids:
             for part in data.parts(exercise_id):
-                answer = chosen.get((student_id, exercise_id, part.name))
-                if answer is not None:
-                    writer.writerow([student_id, exercise_id, part.name, answer.raw])
+                for number, answer in enumerate(
+                        attempts.get((student_id, exercise_id, part.name), []), 1):
+                    at = db.utc(answer.created_at).astimezone(zone)
+                    writer.writerow([student_id, exercise_id, part.name, answer.raw, number,
+                                     at.isoformat(timespec="seconds"),
+                                     "yes" if id(answer) in chosen else "no"])
     return buffer.getvalue()
 
 

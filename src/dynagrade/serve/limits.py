@@ -66,12 +66,16 @@ def signed_ok(secret: str, text: str, signature: str) -> bool:
     return hmac.compare_digest(sign(secret, text), signature or "")
 
 
+#: how long a server process trusts what it learnt of a token (seconds)
+REMEMBER_SECONDS = 30.0
+
+
 class RecentlySeen:
     """Who recently seen tokens belong to, for ``seconds`` (a submit then needs one
     database query less). A revoked link keeps working in a worker for at most that
     long; unknown tokens are not remembered, so a new link works at once."""
 
-    def __init__(self, seconds: float = 30.0, size: int = 50_000):
+    def __init__(self, seconds: float = REMEMBER_SECONDS, size: int = 50_000):
         self.seconds, self.size = seconds, size
         self._seen: dict[str, tuple[float, object]] = {}
         self._lock = threading.Lock()
@@ -82,6 +86,11 @@ class RecentlySeen:
         if found is None or time.monotonic() - found[0] > self.seconds:
             return None
         return found[1]
+
+    def forget_all(self) -> None:
+        """Forget every token (after a link was revoked here: it is refused at once)."""
+        with self._lock:
+            self._seen.clear()
 
     def put(self, token: str, identity) -> None:
         if identity is None:

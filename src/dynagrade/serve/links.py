@@ -6,6 +6,14 @@ are still valid, makes tokens for students who have none, and with ``rotate`` re
 every student token and makes new ones. A student whose token is valid but whose row is
 missing from the old file cannot get their link again without ``--rotate``: they are
 listed in the returned notices.
+
+Staff links have a name ("Anna (TA)"), which the audit log shows as who made a change,
+and an id (the start of the token's hash) by which lists show them and commands and the
+staff page revoke them (:func:`add_staff_link`, :func:`revoke_staff_links`; both recorded
+in the audit log). A revoked link is refused by every server process within
+:data:`REVOKED_WITHIN` seconds: each process remembers a token it has seen for at most
+that long (:class:`~dynagrade.serve.limits.RecentlySeen`), and the process that revokes
+forgets at once.
 """
 
 from __future__ import annotations
@@ -14,10 +22,18 @@ import csv
 import io
 from pathlib import Path
 
-from . import db
+from ..errors import DynagradeError
+from ..i18n import _
+from . import db, limits
 from .exam_data import ExamData
 
 LINK_HEADER = ("student_id", "name", "email", "url")
+#: the audit log's action for a staff link made or revoked (subject: the link's id)
+STAFF_LINK_CHANGE = "staff-link"
+#: the longest a revoked link keeps opening pages in another server process (seconds)
+REVOKED_WITHIN = limits.REMEMBER_SECONDS
+#: the longest name a staff link may have
+MAX_LABEL = 100
 
 
 def student_url(base_url: str, token: str) -> str:
@@ -79,3 +95,40 @@ def _still_valid(engine, exam_id: str, student_id: str, url: str | None) -> str 
     if identity is None or identity.student_id != student_id:
         return None
     return url
+
+
+class LinkError(DynagradeError, ValueError):
+    """A staff link that cannot be made or revoked as asked; the message says why."""
+
+
+def add_staff_link(engine, exam_id: str, label: str | None, actor: str) -> str:
+    """A new staff link's token, named ``label``; recorded in the audit log."""
+    name = (label or "").strip() or None
+    if name is not None and (len(name) > MAX_LABEL or not name.isprintable()):
+        raise LinkError(_("a staff link's name is at most {n} printable characters")
+                        .format(n=MAX_LABEL))
+    token = db.issue_staff_token(engine, exam_id, name)
+    db.record_change(engine, exam_id, actor, STAFF_LINK_CHANGE, db.link_id(token), None,
+                     {"name": name, "revoked": False})
+    return token
+
+
+def revoke_staff_links(engine, exam_id: str, ids: list[str] | None, actor: str,
+                       keep: str | None = None) -> list[db.StaffLinkRecord]:
+    """Revoke the staff links named by ``ids`` (``None``: all but ``keep``, a token
+    whose link stays); each recorded in the audit log. Revoking a link revoked before
+    changes nothing. :class:`LinkError` for an id no staff link has."""
+    known = {link.id: link for link in db.staff_links(engine, exam_id)}
+    if ids is not None:
+        unknown = [i for i in ids if i not in known]
+        if unknown:
+            raise LinkError(_("no staff link {ids}; the links are {known}").format(
+                ids=", ".join(unknown), known=", ".join(known) or _("none")))
+    else:
+        ids = [i for i in known if keep is None or i != db.link_id(keep)]
+    revoked = db.revoke_staff_links(engine, exam_id, ids)
+    for link in revoked:
+        db.record_change(engine, exam_id, actor, STAFF_LINK_CHANGE, link.id,
+                         {"name": link.label, "revoked": False},
+                         {"name": link.label, "revoked": True})
+    return revoked

@@ -154,3 +154,73 @@ class StaffTables(BaseModel):
     counts_text: str = Field(description="the counts as the page words them")
     gradebook: Table
     progress: Table
+
+
+# -- staff links --------------------------------------------------------------------------
+
+
+class StaffLinkInfo(BaseModel):
+    """A staff link as lists show it (never its token)."""
+
+    id: str = Field(description="the start of the token's hash; names the link")
+    name: str | None
+    created_at: str = Field(description="ISO 8601")
+    revoked_at: str | None = Field(description="ISO 8601; null: the link works")
+
+    @classmethod
+    def of(cls, link: Any) -> "StaffLinkInfo":
+        """The model of a :class:`dynagrade.serve.db.StaffLinkRecord`."""
+        from .db import utc
+
+        return cls(id=link.id, name=link.label,
+                   created_at=utc(link.created_at).isoformat(timespec="seconds"),
+                   revoked_at=utc(link.revoked_at).isoformat(timespec="seconds")
+                   if link.revoked_at else None)
+
+
+class StaffLinks(BaseModel):
+    """``GET /api/v1/staff-links``: every staff link, oldest first."""
+
+    links: list[StaffLinkInfo]
+
+
+class NewStaffLinkBody(BaseModel):
+    """``POST /api/v1/staff-links``: the new link's name (shown in the audit log)."""
+
+    name: str | None = Field(default=None, max_length=200)
+
+
+class NewStaffLink(BaseModel):
+    """A staff link just made: its token and address are shown only this once."""
+
+    id: str
+    name: str | None
+    token: str
+    url: str
+
+
+class AuditEntryModel(BaseModel):
+    """One change the staff made: when, who, what, and the value before and after."""
+
+    id: int
+    at: str = Field(description="ISO 8601, UTC")
+    actor: str
+    action: str = Field(description="policy, exception, override, regrade, staff-link")
+    subject: str = Field(description="what the change concerns (a student, a part, ...)")
+    before: Any = Field(description="the JSON value before (null: made by this change)")
+    after: Any = Field(description="the JSON value after (null: removed by this change)")
+
+    @classmethod
+    def of(cls, entry: Any) -> "AuditEntryModel":
+        """The model of a :class:`dynagrade.serve.db.AuditEntry`."""
+        from .db import utc
+
+        return cls(id=entry.id, at=utc(entry.at).isoformat(timespec="seconds"),
+                   actor=entry.actor, action=entry.action, subject=entry.subject,
+                   before=entry.before, after=entry.after)
+
+
+class AuditLog(BaseModel):
+    """``GET /api/v1/audit``: the recorded changes, newest first."""
+
+    entries: list[AuditEntryModel]

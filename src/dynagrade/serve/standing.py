@@ -13,7 +13,7 @@ from collections import Counter
 from dataclasses import dataclass
 
 from ..exercise.results import ExerciseResult
-from . import gradebook
+from . import db, gradebook
 from .db import StoredAnswer
 from .exam_data import ExamData
 
@@ -49,17 +49,15 @@ class Moment:
 
 
 def exam_zone(policy) -> dt.tzinfo:
-    """The zone the exam's times were written in (that of ``closes`` or ``opens``),
-    else UTC."""
-    for moment in (policy.closes, policy.opens):
-        if moment is not None and moment.tzinfo is not None:
-            return moment.tzinfo
-    return dt.timezone.utc
+    """The course's zone (:attr:`Policy.zone <dynagrade.exam.policy.Policy.zone>`)."""
+    return policy.zone
 
 
-def moment(value: dt.datetime, zone: dt.tzinfo) -> Moment:
-    """``value`` (SQLite's naive times are UTC) to the minute, in ``zone``."""
-    aware = value if value.tzinfo else value.replace(tzinfo=dt.timezone.utc)
+def moment(value: dt.datetime, zone: dt.tzinfo, seconds: bool = False) -> Moment:
+    """``value`` (SQLite's naive times are UTC) in ``zone``, to the minute (to the
+    second with ``seconds``: the staff's pages, where "I submitted at 10:02" is checked)."""
+    aware = db.utc(value)
     local = aware.astimezone(zone)
+    shown = "%Y-%m-%d %H:%M:%S" if seconds else "%Y-%m-%d %H:%M"
     return Moment(aware.isoformat(timespec="seconds"),
-                  f"{local:%Y-%m-%d %H:%M} {local.tzname() or 'UTC'}")
+                  f"{local.strftime(shown)} {local.tzname() or 'UTC'}")

@@ -8,7 +8,6 @@ record, so the server's marks are class grading's marks (docs/serve.md, "What co
 
 from __future__ import annotations
 
-from ..i18n import _
 from dataclasses import dataclass, replace
 
 from ..exam.manifest import PartEntry

@@ -4,6 +4,8 @@
 - :mod:`.student`: the student's page ``/s/{token}`` and its forms.
 - :mod:`.staff`: the staff page ``/i/{token}`` and its downloads.
 - :mod:`.api`: the JSON API under ``/api/v1``, tokens in ``Authorization: Bearer``.
+- :mod:`.staff_links`: staff links listed, made and revoked (page and API).
+- :mod:`.audit`: the audit log (page, CSV and API).
 
 Each route names who may call it in its signature (:mod:`dynagrade.serve.deps`);
 tests/test_serve_routes.py holds every route of every router to that.
@@ -11,6 +13,8 @@ tests/test_serve_routes.py holds every route of every router to that.
 
 from __future__ import annotations
 
-from . import api, health, staff, student
+from . import api, audit, health, staff, staff_links, student
 
-ROUTERS = (health.router, student.router, staff.router, api.router)
+ROUTERS = (health.router, student.router, staff.router, api.router,
+           staff_links.pages_router, staff_links.api_router, audit.pages_router,
+           audit.api_router)

@@ -7,7 +7,7 @@ Students submit answers and preview how an answer reads; staff download the grad
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Literal
 
 from fastapi import APIRouter, Header
 
@@ -81,7 +81,15 @@ def grades_csv(caller: StaffBearer, server: ServerDep) -> CsvResponse:
     return downloads.grades(server)
 
 
+@router.get("/grades-{layout}.csv", response_class=CsvResponse)
+def platform_grades_csv(caller: StaffBearer, server: ServerDep,
+                        layout: Literal["moodle", "canvas"]) -> CsvResponse:
+    """The gradebook in Moodle's or Canvas's import layout."""
+    return downloads.platform_grades(server, layout)
+
+
 @router.get("/submissions.csv", response_class=CsvResponse)
 def submissions_csv(caller: StaffBearer, server: ServerDep) -> CsvResponse:
-    """The counted answers as the responses CSV ``dynagrade grade --manifest`` reads."""
+    """Every attempt, the one that counts flagged, as the responses CSV ``dynagrade grade
+    --manifest`` reads."""
     return downloads.submissions(server)

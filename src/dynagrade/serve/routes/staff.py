@@ -1,4 +1,6 @@
-"""The staff page ``/i/{token}``: gradebook, progress, the policy form, and downloads.
+"""The staff page ``/i/{token}``: gradebook, progress, the policy form, and downloads
+(the gradebook as class grading writes it and in Moodle's and Canvas's layouts, every
+attempt, the class report).
 
 The page refreshes its tables from ``/i/{token}/tables`` (JSON) with a small script
 that the staff can pause; it never reloads itself. The policy form posts to
@@ -8,7 +10,7 @@ as :mod:`dynagrade.serve.policy_changes` says.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Literal
 
 from fastapi import APIRouter
 from fastapi.responses import HTMLResponse, RedirectResponse
@@ -68,9 +70,17 @@ def grades_csv(caller: StaffLink, server: ServerDep) -> CsvResponse:
     return downloads.grades(server)
 
 
+@router.get("/grades-{layout}.csv", response_class=CsvResponse)
+def platform_grades_csv(caller: StaffLink, server: ServerDep,
+                        layout: Literal["moodle", "canvas"]) -> CsvResponse:
+    """The gradebook in Moodle's or Canvas's import layout."""
+    return downloads.platform_grades(server, layout)
+
+
 @router.get("/submissions.csv", response_class=CsvResponse)
 def submissions_csv(caller: StaffLink, server: ServerDep) -> CsvResponse:
-    """The counted answer of every part, as ``dynagrade grade --manifest`` reads them."""
+    """Every attempt, the one that counts flagged, as ``dynagrade grade --manifest``
+    reads them."""
     return downloads.submissions(server)
 
 
