@@ -14,22 +14,10 @@ import pytest
 from click.testing import CliRunner
 
 from dynagrade.cli import main
-from serve_support import (exam_copy, exam_dir, fresh_database, postgres_url,  # noqa: F401
+from serve_support import (database, exam_copy, exam_dir, postgres_url,  # noqa: F401
                            reference_answers, serve)
 
-_COUNTER = iter(range(10_000))
 ZURICH = dt.timezone(dt.timedelta(hours=2))
-
-
-@pytest.fixture(params=["sqlite", "postgresql"])
-def database(request, tmp_path):
-    """A fresh database URL of each backend (None: SQLite beside the manifest)."""
-    if request.param == "sqlite":
-        return None
-    url = request.getfixturevalue("postgres_url")
-    return fresh_database(url, f"l{next(_COUNTER)}_{tmp_path.name[-8:].lower()}"
-                          .replace("-", "_"))
-
 
 def _bearer(token: str) -> dict:
     return {"Authorization": f"Bearer {token}"}
