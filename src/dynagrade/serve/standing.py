@@ -57,9 +57,10 @@ def exam_zone(policy) -> dt.tzinfo:
     return dt.timezone.utc
 
 
-def moment(value: dt.datetime, zone: dt.tzinfo) -> Moment:
-    """``value`` (SQLite's naive times are UTC) to the minute, in ``zone``."""
+def moment(value: dt.datetime, zone: dt.tzinfo, seconds: bool = False) -> Moment:
+    """``value`` (SQLite's naive times are UTC) to the minute (or the second), in
+    ``zone``."""
     aware = value if value.tzinfo else value.replace(tzinfo=dt.timezone.utc)
     local = aware.astimezone(zone)
-    return Moment(aware.isoformat(timespec="seconds"),
-                  f"{local:%Y-%m-%d %H:%M} {local.tzname() or 'UTC'}")
+    shown = f"{local:%Y-%m-%d %H:%M:%S}" if seconds else f"{local:%Y-%m-%d %H:%M}"
+    return Moment(aware.isoformat(timespec="seconds"), f"{shown} {local.tzname() or 'UTC'}")

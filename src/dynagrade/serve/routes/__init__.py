@@ -4,6 +4,8 @@
 - :mod:`.student`: the student's page ``/s/{token}`` and its forms.
 - :mod:`.staff`: the staff page ``/i/{token}`` and its downloads.
 - :mod:`.api`: the JSON API under ``/api/v1``, tokens in ``Authorization: Bearer``.
+- :mod:`.exceptions`: exceptions to the policy per student, the staff page
+  ``/i/{token}/exceptions`` and ``/api/v1/exceptions``.
 
 Each route names who may call it in its signature (:mod:`dynagrade.serve.deps`);
 tests/test_serve_routes.py holds every route of every router to that.
@@ -11,6 +13,7 @@ tests/test_serve_routes.py holds every route of every router to that.
 
 from __future__ import annotations
 
-from . import api, health, staff, student
+from . import api, exceptions, health, staff, student
 
-ROUTERS = (health.router, student.router, staff.router, api.router)
+ROUTERS = (health.router, student.router, staff.router, api.router, exceptions.page_router,
+           exceptions.api_router)
