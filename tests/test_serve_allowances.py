@@ -285,7 +285,7 @@ def test_the_staff_page_grants_lists_refuses_and_removes(exam_dir, tmp_path, dat
         listed = served.client.get(page).text
         # in the course's zone (that of its close: UTC here), to the second when granted
         assert "closes 2025-04-14 12:00 UTC" in listed
-        assert "1 extra attempts on projectile-range" in listed
+        assert "1 extra attempt on projectile-range" in listed
         assert listed.count("Remove the exceptions of") == 2 and "Cy Three" in listed
         one = served.client.get(f"{page}?students=s1").text  # their exception, to change
         assert 'name="attempts.projectile-range" inputmode="numeric" value="1"' in one

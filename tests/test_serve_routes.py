@@ -105,10 +105,15 @@ def _request(served, method: str, path: str, token: str | None, place: str):
         kwargs["json"] = {"exercise": "projectile-range", "answers": {"x_max": "1 m"}}
     elif path.startswith("/api/v1/preview"):
         kwargs["json"] = {"exercise": "projectile-range", "part": "x_max", "answer": "1 m"}
+    elif path.startswith("/api/v1/exceptions"):
+        path = path.replace("{student_id}", "s3")
+        if method == "PUT":
+            kwargs["json"] = {"students": ["s3"], "extra_minutes": 5}
     elif method == "POST":  # a page's form, with the CSRF field of the page it came from
         from dynagrade.serve import limits
 
         kwargs["data"] = {"exercise": "projectile-range", "answer.x_max": "1 m",
+                          "students": "s3", "student": "s3", "extra_minutes": "5",
                           "csrf": limits.csrf_field(served.server.secret, token or "")}
     return served.client.request(method, path, **kwargs)
 
@@ -174,7 +179,11 @@ def test_the_openapi_document_describes_every_response(served):
                            ("POST", "/api/v1/preview", "PreviewResponse"),
                            ("PUT", "/api/v1/drafts", "DraftsResponse"),
                            ("GET", "/api/v1/gradebook", "Gradebook"),
-                           ("GET", "/i/{token}/tables", "StaffTables")}
+                           ("GET", "/i/{token}/tables", "StaffTables"),
+                           ("POST", "/api/v1/start", "StartResponse"),
+                           ("GET", "/api/v1/exceptions", "Exceptions"),
+                           ("PUT", "/api/v1/exceptions", "Exceptions"),
+                           ("DELETE", "/api/v1/exceptions/{student_id}", "Removed")}
     refusal = operations[("POST", "/api/v1/answers")]["responses"]
     for status in ("401", "403", "413", "422", "429", "503"):
         schema = refusal[status]["content"]["application/json"]["schema"]

@@ -27,7 +27,7 @@ from __future__ import annotations
 import datetime as dt
 import math
 from dataclasses import dataclass
-from typing import Any, Callable, Mapping
+from typing import Any, Callable, Mapping, TypeGuard
 
 from ..errors import DynagradeError
 from .solution_policy import SOLUTIONS, default_solutions
@@ -144,7 +144,7 @@ def read_policy(data: dict, where: str, line_of: Callable[[str], str]) -> Policy
                   time_limit)
 
 
-def whole_number(value, low: int, high: int) -> bool:
+def whole_number(value, low: int, high: int) -> TypeGuard[int]:
     """Whether ``value`` is a whole number (not a bool) from ``low`` to ``high``."""
     return not isinstance(value, bool) and isinstance(value, int) and low <= value <= high
 

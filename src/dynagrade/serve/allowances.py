@@ -35,13 +35,13 @@ import datetime as dt
 import json
 import re
 from dataclasses import dataclass, field
-from typing import Mapping
+from typing import Mapping, NoReturn
 
 import sqlalchemy as sa
 
 from ..errors import DynagradeError
 from ..exam.policy import MAX_ATTEMPTS, MAX_MINUTES, Policy, read_moment, whole_number
-from ..i18n import _
+from ..i18n import _, ngettext
 from . import db
 
 #: the scope of extra attempts that covers every part of the exam
@@ -138,7 +138,7 @@ class Rules:
         """When their time runs out (None: untimed, or not started)."""
         if not self.timed or self.started_at is None:
             return None
-        return as_aware(self.started_at) + dt.timedelta(minutes=self.minutes)
+        return self.started_at + dt.timedelta(minutes=self.minutes)
 
     @property
     def deadline(self) -> dt.datetime | None:
@@ -239,7 +239,7 @@ def read_allowance(fields: Mapping[str, object], policy: Policy,
     ISO text, empty for none; ``extra_minutes``: a whole number; ``extra_attempts``:
     scope -> whole number, 0 for none), checked; ``parts``: each exercise's part names.
     Raises :class:`AllowanceError`."""
-    def fail(key: str, message: str):
+    def fail(key: str, message: str) -> NoReturn:
         raise AllowanceError(_("{field}: {message}").format(field=key, message=message))
 
     def moment(key: str) -> dt.datetime | None:
@@ -314,10 +314,12 @@ def describe(allowance: Allowance, zone: dt.tzinfo) -> list[str]:
     if allowance.closes:
         words.append(_("closes {time}").format(time=shown_time(allowance.closes, zone)))
     if allowance.extra_minutes:
-        words.append(_("{n} extra minutes").format(n=allowance.extra_minutes))
+        words.append(ngettext("{n} extra minute", "{n} extra minutes", allowance.extra_minutes
+                              ).format(n=allowance.extra_minutes))
     for scope, number in sorted(allowance.extra_attempts.items()):
         where = _("every part") if scope == EVERY_PART else scope
-        words.append(_("{n} extra attempts on {scope}").format(n=number, scope=where))
+        words.append(ngettext("{n} extra attempt on {scope}", "{n} extra attempts on {scope}",
+                              number).format(n=number, scope=where))
     return words
 
 
