@@ -7,13 +7,12 @@ name what is wrong."""
 from __future__ import annotations
 
 import datetime as dt
-import itertools
 
 import pytest
 
 from dynagrade.exam.policy import Policy
 from dynagrade.serve.allowances import Allowance, Rules
-from serve_support import (Clock, exam_copy, exam_dir, fresh_database, postgres_url,  # noqa: F401
+from serve_support import (Clock, database, exam_copy, exam_dir, postgres_url,  # noqa: F401
                            reference_answers, serve)
 
 UTC = dt.timezone.utc
@@ -21,7 +20,6 @@ ZURICH = dt.timezone(dt.timedelta(hours=2))
 OPENS = dt.datetime(2025, 4, 14, 8, 0, tzinfo=UTC)
 CLOSES = dt.datetime(2025, 4, 14, 10, 0, tzinfo=UTC)
 LATER = dt.datetime(2025, 4, 14, 12, 0, tzinfo=UTC)
-_COUNTER = itertools.count()
 
 
 def at(hour: int, minute: int = 0) -> dt.datetime:
@@ -111,16 +109,6 @@ def test_the_time_limit_is_read_kept_and_changeable(tmp_path):
 
 
 # -- the API and the pages, on both databases ----------------------------------------------
-
-
-@pytest.fixture(params=["sqlite", "postgresql"])
-def database(request, tmp_path):
-    """A fresh database URL of each backend (None: SQLite beside the manifest)."""
-    if request.param == "sqlite":
-        return None
-    url = request.getfixturevalue("postgres_url")
-    return fresh_database(url, f"allow{next(_COUNTER)}_{tmp_path.name[-8:].lower()}"
-                          .replace("-", "_"))
 
 
 def _bearer(token: str) -> dict:

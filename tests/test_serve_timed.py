@@ -6,28 +6,17 @@ minutes, or the close when it comes first) are refused with the time it ran out.
 from __future__ import annotations
 
 import datetime as dt
-import itertools
 
 import pytest
 
-from serve_support import (Clock, exam_copy, exam_dir, fresh_database, postgres_url,  # noqa: F401
+from serve_support import (Clock, database, exam_copy, exam_dir, postgres_url,  # noqa: F401
                            reference_answers, serve)
 
 UTC = dt.timezone.utc
-_COUNTER = itertools.count()
 
 
 def at(hour: int, minute: int = 0) -> dt.datetime:
     return dt.datetime(2025, 4, 14, hour, minute, tzinfo=UTC)
-
-
-@pytest.fixture(params=["sqlite", "postgresql"])
-def database(request, tmp_path):
-    if request.param == "sqlite":
-        return None
-    url = request.getfixturevalue("postgres_url")
-    return fresh_database(url, f"timed{next(_COUNTER)}_{tmp_path.name[-8:].lower()}"
-                          .replace("-", "_"))
 
 
 def _bearer(token: str) -> dict:
