@@ -111,6 +111,7 @@ def _request(served, method: str, path: str, token: str | None, place: str):
 
         kwargs["data"] = {"exercise": "projectile-range", "answer.x_max": "1 m",
                           "link": values["link_id"],
+                          "students": "s3", "student": "s3", "extra_minutes": "5",
                           "csrf": limits.csrf_field(served.server.secret, token or "")}
     return served.client.request(method, path, **kwargs)
 
@@ -121,6 +122,7 @@ _JSON_BODIES = {
     "/api/v1/drafts": {"exercise": "projectile-range", "answers": {"x_max": "1 m"}},
     "/api/v1/preview": {"exercise": "projectile-range", "part": "x_max", "answer": "1 m"},
     "/api/v1/staff-links": {"name": "a TA"},
+    "/api/v1/exceptions": {"students": ["s3"], "extra_minutes": 5},
 }
 
 
@@ -131,7 +133,7 @@ def _path_values(served) -> dict[str, str]:
 
     data = served.server.data
     other = db.issue_staff_token(served.server.engine, data.exam_id, "another")
-    return {"layout": "moodle", "link_id": db.link_id(other)}
+    return {"layout": "moodle", "link_id": db.link_id(other), "student_id": "s3"}
 
 
 def _submissions(served) -> int:
@@ -199,7 +201,11 @@ def test_the_openapi_document_describes_every_response(served):
                            ("GET", "/api/v1/staff-links", "StaffLinks"),
                            ("POST", "/api/v1/staff-links", "NewStaffLink"),
                            ("DELETE", "/api/v1/staff-links/{link_id}", "StaffLinkInfo"),
-                           ("GET", "/api/v1/audit", "AuditLog")}
+                           ("GET", "/api/v1/audit", "AuditLog"),
+                           ("POST", "/api/v1/start", "StartResponse"),
+                           ("GET", "/api/v1/exceptions", "Exceptions"),
+                           ("PUT", "/api/v1/exceptions", "Exceptions"),
+                           ("DELETE", "/api/v1/exceptions/{student_id}", "Removed")}
     refusal = operations[("POST", "/api/v1/answers")]["responses"]
     for status in ("401", "403", "413", "422", "429", "503"):
         schema = refusal[status]["content"]["application/json"]["schema"]

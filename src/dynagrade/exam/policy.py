@@ -10,12 +10,16 @@ Top-level keys of ``exam.toml`` (all optional)::
     feedback = "immediate"                  # "immediate" | "after-close"
     counts = "best"                         # which attempt the gradebook takes: "best" | "last"
     solutions = "after-close"               # when worked solutions are shown (solution_policy.py)
+    time_limit = 90                         # minutes from the student's "Start"; 0 = untimed
 
 Defaults follow the mode: an exam shows feedback after the close, counts the last saved
 answer and shows no worked solution; homework and practice show verdicts at once, count
 the best attempt and show worked solutions with the feedback.
 An exam cannot show verdicts before its close (``feedback = "immediate"`` is refused).
-The server enforces ``opens`` and ``closes`` with its own clock.
+The server enforces ``opens`` and ``closes`` with its own clock. With a ``time_limit``
+each student's clock starts when they press "Start" on their page, and they may answer
+until ``time_limit`` minutes later or the close, whichever comes first
+(:mod:`dynagrade.serve.allowances`, which also holds the exceptions granted per student).
 """
 
 from __future__ import annotations
@@ -23,7 +27,7 @@ from __future__ import annotations
 import datetime as dt
 import math
 from dataclasses import dataclass
-from typing import Any, Callable, Mapping
+from typing import Any, Callable, Mapping, TypeGuard
 
 from ..errors import DynagradeError
 from .solution_policy import SOLUTIONS, default_solutions
@@ -32,7 +36,10 @@ MODES = ("exam", "homework", "practice")
 FEEDBACK = ("immediate", "after-close")
 COUNTS = ("best", "last")
 POLICY_KEYS = {"mode", "opens", "closes", "attempts", "penalty", "feedback", "counts",
-               "solutions"}
+               "solutions", "time_limit"}
+#: the longest time limit and the most attempts a policy (or an exception) may give
+MAX_MINUTES = 10080  # a week
+MAX_ATTEMPTS = 1000
 
 
 class PolicyError(DynagradeError, ValueError):
@@ -51,6 +58,8 @@ class Policy:
     feedback: str = "after-close"
     counts: str = "last"
     solutions: str = ""  # "": the mode's default (solution_policy.py)
+    #: minutes a student has from their "Start" (0: untimed, no Start)
+    time_limit: int = 0
 
     def __post_init__(self):
         if not self.solutions:
@@ -84,7 +93,7 @@ class Policy:
         return {"mode": self.mode, "opens": _iso(self.opens), "closes": _iso(self.closes),
                 "attempts": self.attempts, "penalty": self.penalty,
                 "feedback": self.feedback, "counts": self.counts,
-                "solutions": self.solutions}
+                "solutions": self.solutions, "time_limit": self.time_limit}
 
     @classmethod
     def from_json(cls, data: Mapping[str, Any] | None) -> "Policy":
@@ -93,7 +102,8 @@ class Policy:
             return cls()
         return cls(data["mode"], _parse_iso(data.get("opens")), _parse_iso(data.get("closes")),
                    int(data["attempts"]), float(data["penalty"]), data["feedback"],
-                   data["counts"], data.get("solutions") or "")
+                   data["counts"], data.get("solutions") or "",
+                   int(data.get("time_limit") or 0))
 
 
 def read_policy(data: dict, where: str, line_of: Callable[[str], str]) -> Policy:
@@ -119,13 +129,14 @@ def read_policy(data: dict, where: str, line_of: Callable[[str], str]) -> Policy
     counts = data.get("counts", "last" if mode == "exam" else "best")
     if counts not in COUNTS:
         fail("counts", f"{counts!r}; choose one of {', '.join(COUNTS)}")
-    opens, closes = (_moment(data.get(k), lambda m, k=k: fail(k, m)) for k in ("opens", "closes"))
+    opens, closes = (read_moment(data.get(k), lambda m, k=k: fail(k, m))
+                     for k in ("opens", "closes"))
     if opens and closes and closes <= opens:
         fail("closes", f"{_iso(closes)} is not after opens = {_iso(opens)}")
     attempts = data.get("attempts", 0)
-    if isinstance(attempts, bool) or not isinstance(attempts, int) or not 0 <= attempts <= 1000:
+    if not whole_number(attempts, 0, MAX_ATTEMPTS):
         fail("attempts", f"{attempts!r}; give a whole number of attempts per part "
-                         "(0 for no limit, at most 1000)")
+                         f"(0 for no limit, at most {MAX_ATTEMPTS})")
     penalty = data.get("penalty", 0.0)
     if isinstance(penalty, bool) or not isinstance(penalty, (int, float)) \
             or not math.isfinite(penalty) or not 0 <= penalty <= 1:
@@ -134,10 +145,22 @@ def read_policy(data: dict, where: str, line_of: Callable[[str], str]) -> Policy
     solutions = data.get("solutions", default_solutions(mode))
     if solutions not in SOLUTIONS:
         fail("solutions", f"{solutions!r}; choose one of {', '.join(SOLUTIONS)}")
-    return Policy(mode, opens, closes, attempts, float(penalty), feedback, counts, solutions)
+    time_limit = data.get("time_limit", 0)
+    if not whole_number(time_limit, 0, MAX_MINUTES):
+        fail("time_limit", f"{time_limit!r}; give the minutes a student has from their "
+                           f"start as a whole number (0 for untimed, at most {MAX_MINUTES})")
+    return Policy(mode, opens, closes, attempts, float(penalty), feedback, counts, solutions,
+                  time_limit)
 
 
-def _moment(value, fail) -> dt.datetime | None:
+def whole_number(value, low: int, high: int) -> TypeGuard[int]:
+    """Whether ``value`` is a whole number (not a bool) from ``low`` to ``high``."""
+    return not isinstance(value, bool) and isinstance(value, int) and low <= value <= high
+
+
+def read_moment(value, fail) -> dt.datetime | None:
+    """``value`` (a TOML date-time or ISO text) as an aware date-time; ``fail(message)``
+    when it is not one or has no offset (the server would not know when it is)."""
     if value is None:
         return None
     if isinstance(value, str):

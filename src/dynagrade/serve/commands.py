@@ -138,6 +138,8 @@ def serve(context, manifest, db_url, host, port, base_url, workers, grading_work
 @click.option("--counts", type=click.Choice(["best", "last"]))
 @click.option("--solutions", type=click.Choice(["with-feedback", "after-close",
                                                  "after-last-attempt", "never"]))
+@click.option("--time-limit", metavar="MINUTES", help="Minutes each student has from "
+              "pressing Start (0: untimed).")
 @click.option("--by", "actor", help="Who makes the change, for the audit log "
               "(default: your user name).")
 @click.pass_obj

@@ -576,14 +576,21 @@ POLICY_CHANGE = "policy"
 def record_change(engine: sa.Engine, exam_id: str, actor: str, action: str, subject: str,
                   before: dict | None, after: dict | None) -> int:
     """Append a change to the audit log (committed on return); its id."""
+    with _writing(engine), engine.begin() as connection:
+        return _append_change(connection, exam_id, actor, action, subject, before, after)
+
+
+def _append_change(connection, exam_id: str, actor: str, action: str, subject: str,
+                   before: dict | None, after: dict | None) -> int:
+    """The audit log's insert, within the caller's transaction (a change and its record
+    commit together); the entry's id."""
     import json
 
-    with _writing(engine), engine.begin() as connection:
-        return int(connection.execute(audit_log.insert().values(
-            exam_id=exam_id, at=now(), actor=actor, action=action, subject=subject,
-            before=None if before is None else json.dumps(before, sort_keys=True),
-            after=None if after is None else json.dumps(after, sort_keys=True))
-            .returning(audit_log.c.id)).scalar_one())
+    return int(connection.execute(audit_log.insert().values(
+        exam_id=exam_id, at=now(), actor=actor, action=action, subject=subject,
+        before=None if before is None else json.dumps(before, sort_keys=True),
+        after=None if after is None else json.dumps(after, sort_keys=True))
+        .returning(audit_log.c.id)).scalar_one())
 
 
 def latest_change(engine: sa.Engine, exam_id: str, action: str) -> AuditEntry | None:
@@ -624,6 +631,104 @@ def accepts_writes(engine: sa.Engine) -> None:
 
 # -- exceptions to the policy per student, and the starts of a timed exam ------------------
 # (the statements of dynagrade.serve.allowances)
+
+#: the audit log's action of an exception granted, changed or removed (subject: the student)
+EXCEPTION_CHANGE = "exception"
+
+
+@dataclass(frozen=True)
+class AllowanceRow:
+    """A student's exceptions as stored (``extra_attempts``: the JSON text)."""
+
+    student_id: str
+    opens: dt.datetime | None
+    closes: dt.datetime | None
+    extra_minutes: int
+    extra_attempts: str
+    updated_at: dt.datetime
+    updated_by: str
+
+
+@dataclass(frozen=True)
+class AllowanceWrite:
+    """One student's exceptions to store (``values``: the row's columns but the keys;
+    None: remove them), with the audit log's before and after."""
+
+    student_id: str
+    values: dict | None
+    before: dict | None
+    after: dict | None
+
+
+def allowance_rows(engine: sa.Engine, exam_id: str,
+                   student_ids: list[str] | None = None) -> list[AllowanceRow]:
+    """The exceptions of the exam (of ``student_ids``, if given), by student id."""
+    query = sa.select(allowances.c.student_id, allowances.c.opens, allowances.c.closes,
+                      allowances.c.extra_minutes, allowances.c.extra_attempts,
+                      allowances.c.updated_at, allowances.c.updated_by).where(
+        allowances.c.exam_id == exam_id).order_by(allowances.c.student_id)
+    if student_ids is not None:
+        query = query.where(allowances.c.student_id.in_(student_ids))
+    with engine.connect() as connection:
+        return [AllowanceRow(*row) for row in connection.execute(query).all()]
+
+
+def student_terms(engine: sa.Engine, exam_id: str, student_id: str
+                  ) -> tuple[AllowanceRow | None, dt.datetime | None]:
+    """What decides for one student beside the policy: their exceptions (or None) and
+    when they started a timed exam (or None), read together."""
+    with engine.connect() as connection:
+        row = connection.execute(sa.select(
+            allowances.c.student_id, allowances.c.opens, allowances.c.closes,
+            allowances.c.extra_minutes, allowances.c.extra_attempts,
+            allowances.c.updated_at, allowances.c.updated_by).where(
+            allowances.c.exam_id == exam_id, allowances.c.student_id == student_id)).first()
+        started = connection.execute(sa.select(starts.c.started_at).where(
+            starts.c.exam_id == exam_id, starts.c.student_id == student_id)).scalar()
+    return (AllowanceRow(*row) if row else None), started
+
+
+def write_allowances(engine: sa.Engine, exam_id: str, actor: str,
+                     writes: list[AllowanceWrite]) -> None:
+    """Store (or remove) the exceptions of several students and record each change in
+    the audit log, all in one transaction."""
+    if not writes:
+        return
+    with _writing(engine), engine.begin() as connection:
+        for write in writes:
+            connection.execute(allowances.delete().where(
+                allowances.c.exam_id == exam_id, allowances.c.student_id == write.student_id))
+            if write.values is not None:
+                connection.execute(allowances.insert().values(
+                    exam_id=exam_id, student_id=write.student_id, updated_at=now(),
+                    updated_by=actor, **write.values))
+            _append_change(connection, exam_id, actor, EXCEPTION_CHANGE, write.student_id,
+                           write.before, write.after)
+
+
+def record_start(engine: sa.Engine, exam_id: str, student_id: str,
+                 at: dt.datetime) -> dt.datetime:
+    """Store that a student started a timed exam at ``at``, unless they started before:
+    the first start counts. The start that counts."""
+    condition = (starts.c.exam_id == exam_id, starts.c.student_id == student_id)
+    with _writing(engine), engine.begin() as connection:
+        first = connection.execute(sa.select(starts.c.started_at).where(*condition)).scalar()
+        if first is not None:
+            return first
+        with contextlib.suppress(IntegrityError):  # another worker stored it first
+            with connection.begin_nested():
+                connection.execute(starts.insert().values(
+                    exam_id=exam_id, student_id=student_id, started_at=at))
+        return connection.execute(sa.select(starts.c.started_at).where(*condition)
+                                  ).scalar_one()
+
+
+def started_times(engine: sa.Engine, exam_id: str) -> dict[str, dt.datetime]:
+    """When each student who started a timed exam started it."""
+    with engine.connect() as connection:
+        rows = connection.execute(sa.select(starts.c.student_id, starts.c.started_at).where(
+            starts.c.exam_id == exam_id)).all()
+    return {student_id: at for student_id, at in rows}
 
 
 # -- points by hand -----------------------------------------------------------------------

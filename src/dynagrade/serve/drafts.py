@@ -14,7 +14,7 @@ import datetime as dt
 
 from starlette.concurrency import run_in_threadpool
 
-from . import db
+from . import allowances, db
 from .exam_data import ExamData
 from .submit import check_open, check_texts
 
@@ -27,11 +27,13 @@ def check_drafts(data: ExamData, exercise_id, texts) -> dict[str, str]:
 
 
 async def save(state, student_id: str, exercise_id, texts, now: dt.datetime) -> list[str]:
-    """Store one exercise's drafts while the exam is open (403 otherwise); the parts
-    saved."""
+    """Store one exercise's drafts while the exam is open for the student (403 otherwise:
+    before their opening, from their close on, before the Start of a timed exam and once
+    their time ran out); the parts saved."""
     data: ExamData = state.data
     checked = check_drafts(data, exercise_id, texts)
-    check_open(data.policy, now)
+    check_open(await run_in_threadpool(allowances.rules_for, state.engine, data.exam_id,
+                                       data.policy, student_id), now)
     await run_in_threadpool(db.save_drafts, state.engine, data.exam_id, student_id,
                             exercise_id, checked)
     return list(checked)

@@ -224,3 +224,61 @@ class AuditLog(BaseModel):
     """``GET /api/v1/audit``: the recorded changes, newest first."""
 
     entries: list[AuditEntryModel]
+
+
+# -- exceptions to the policy per student, and timed exams --------------------------------
+
+
+class ExceptionBody(BaseModel):
+    """``PUT /api/v1/exceptions``: set the exceptions of one or several students (each
+    gets exactly these; what they had before is replaced)."""
+
+    students: list[str] = Field(max_length=5000, description="roster student ids")
+    opens: str | None = Field(default=None, max_length=64,
+                              description="their own opening, with its offset")
+    closes: str | None = Field(default=None, max_length=64,
+                               description="their own close, with its offset (a later one "
+                                           "extends; opens and closes after the class's "
+                                           "close: a reopen window)")
+    extra_minutes: int = Field(default=0, description="added to a timed exam's time_limit")
+    extra_attempts: dict[str, int] = Field(
+        default_factory=dict, description="scope -> attempts added to the policy's: `*` "
+        "every part, `<exercise>`, or `<exercise>/<part>`; the most specific scope wins")
+
+
+class StudentException(BaseModel):
+    """One student's exceptions, as granted."""
+
+    student_id: str
+    name: str
+    opens: str | None
+    closes: str | None
+    extra_minutes: int
+    extra_attempts: dict[str, int]
+    granted_by: str | None
+    granted_at: str | None = Field(description="ISO 8601, UTC")
+
+
+class Exceptions(BaseModel):
+    """``GET``/``PUT /api/v1/exceptions``: the exceptions in force (of the students named,
+    for a PUT), by student id."""
+
+    exceptions: list[StudentException]
+
+
+class Removed(BaseModel):
+    """``DELETE /api/v1/exceptions/{student_id}``: what was removed (null: nothing was
+    granted; nothing changed)."""
+
+    student_id: str
+    removed: StudentException | None
+
+
+class StartResponse(BaseModel):
+    """``POST /api/v1/start``: when the student's time started and when it ends."""
+
+    timed: bool = Field(description="false: the exam has no time limit (nothing started)")
+    started_at: str | None = Field(description="ISO 8601; the first start counts")
+    minutes: int = Field(description="their time, extra minutes included (0: untimed)")
+    deadline: str | None = Field(description="the earlier of their close and the end of "
+                                             "their time (null: never)")

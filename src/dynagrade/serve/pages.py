@@ -13,7 +13,8 @@ from markupsafe import Markup
 
 from ..exam.solution_policy import solution_visible
 from ..exercise.results import ExerciseResult
-from . import db, drafts, gradebook, limits, standing
+from . import allowances, db, drafts, gradebook, limits, standing
+from .allowances import Rules
 from ..grading.choice import shown_option
 from ..i18n import N_, _, ngettext
 from .exam_data import MAX_ANSWER_CHARS, ExamData
@@ -60,39 +61,56 @@ def student_html(server: Server, token: str, student_id: str, practice: str | No
     and what the policy shows; ``practice`` (``"<exercise>:<signed draw>"``) shows a
     practice draw of one exercise instead of the student's own variant; ``typed``: the
     submit this page answers (its texts shown again, with the reasons beside the parts).
-    Before the exam opens, only the title, the policy and the opening time."""
+    Before the exam opens (for this student: :mod:`.allowances`), only the title, the
+    policy and the opening time; on a timed exam, until the student presses Start, the
+    policy and the Start button."""
     from ..render.markup import markdown_to_html
 
     data, policy = server.data, server.data.policy
-    verdicts = policy.shows_verdicts(now)
+    rules = allowances.rules_for(server.engine, data.exam_id, policy, student_id)
+    verdicts = rules.shows_verdicts(now)
     zone = standing.exam_zone(policy)
-    before = policy.opens is not None and now < policy.opens
+    before = rules.before_opens(now)
+    waiting = rules.waiting_to_start(now)
     exercises = []
     counted: dict = {}
-    if not before:
+    if not before and not waiting:
         stored = db.student_answers(server.engine, data.exam_id, student_id)
         shown = drafts.shown_texts(stored, db.student_drafts(server.engine, data.exam_id,
                                                              student_id))
         counted = standing.results(data, stored, student_id)
-        exercises = [_exercise(server, student_id, exercise_id, practice, stored, shown,
-                               counted.get(exercise_id), typed, now, zone)
+        exercises = [_exercise(server, rules, student_id, exercise_id, practice, stored,
+                               shown, counted.get(exercise_id), typed, now, zone)
                      for exercise_id in data.exercise_ids]
-    is_open = policy.is_open(now)
+    is_open = rules.is_open(now)
+    deadline = rules.deadline
     return _TEMPLATES.get_template("student.html").render(
         title=data.title, student=data.students[student_id], token=token, base=base,
         language=data.manifest.exam.language, before=before,
         csrf=limits.csrf_field(server.secret, token), exercises=exercises, verdicts=verdicts,
-        mode=policy.mode, policy=_policy_lines(policy, now, zone), is_open=is_open,
-        opens=standing.moment(policy.opens, zone) if policy.opens else None,
-        closes=standing.moment(policy.closes, zone) if policy.closes else None,
-        closed=policy.closes is not None and now >= policy.closes,
+        mode=policy.mode, policy=_policy_lines(rules, now), is_open=is_open,
+        opens=standing.moment(rules.opens, zone) if rules.opens else None,
+        closes=standing.moment(rules.closes, zone) if rules.closes else None,
+        closed=rules.closed(now), extended=_close_word(rules), waiting=waiting,
+        timed=rules.timed, time_over=rules.time_over(now),
+        deadline=standing.moment(deadline, zone) if deadline else None,
+        time_ends=standing.moment(rules.time_ends, zone) if rules.time_ends else None,
         error=error, status=_status(data, typed, error, exercises), max_chars=MAX_ANSWER_CHARS,
         total=standing.total(data, counted) if verdicts and counted else None,
         max_total=sum(float(m.points) for m in data.exercises_meta.values()),
         instructions=Markup(markdown_to_html(data.instructions))
-        if data.instructions and not before else "",
+        if data.instructions and not before and not waiting else "",
         script=Markup(_SCRIPT),
         submit_label=_("Save answers") if not verdicts else _("Submit"))
+
+
+def _close_word(rules: Rules) -> str | None:
+    """How the page marks a close an exception gave the student (None: the class's)."""
+    mine, class_close = rules.closes, rules.policy.closes
+    if mine == class_close:
+        return None
+    later = mine is None or (class_close is not None and mine > class_close)
+    return _("extended") if later else _("set for you")
 
 
 #: the verdicts' words, as the history shows them
@@ -103,13 +121,14 @@ _STATUS_WORDS = {"correct": N_("correct"), "follow-through": N_("follow-through"
 _SCRIPT = (Path(__file__).resolve().parent / "templates" / "student.js").read_text("utf-8")
 
 
-def _exercise(server: Server, student_id: str, exercise_id: str, practice: str | None,
-              stored: list[db.StoredAnswer], shown: dict[tuple[str, str], str],
-              result: ExerciseResult | None, typed: Typed | None, now: dt.datetime,
-              zone: dt.tzinfo) -> dict:
+def _exercise(server: Server, rules: Rules, student_id: str, exercise_id: str,
+              practice: str | None, stored: list[db.StoredAnswer],
+              shown: dict[tuple[str, str], str], result: ExerciseResult | None,
+              typed: Typed | None, now: dt.datetime, zone: dt.tzinfo) -> dict:
     """One exercise's section of the page: its statement, its parts (each with the text
-    its box shows, the attempts left, the reason it was refused) and its history."""
-    data, policy = server.data, server.data.policy
+    its box shows, the attempts left by the student's rules, the reason it was refused)
+    and its history."""
+    data = server.data
     meta = data.exercises_meta[exercise_id]
     practice_of, _sep, practice_value = (practice or "").partition(":")
     seed = None
@@ -130,8 +149,8 @@ def _exercise(server: Server, student_id: str, exercise_id: str, practice: str |
             text = next((a.raw for a in reversed(mine) if a.part == info.name), "")
         if info.name in here.reasons or (here.texts and not here.saved):
             text = here.texts.get(info.name, text)  # what was typed, not yet saved
-        left = max(0, policy.attempts - used[info.name]) \
-            if policy.attempts and seed is None else None
+        allowed = rules.attempts(exercise_id, info.name)
+        left = max(0, allowed - used[info.name]) if allowed and seed is None else None
         parts.append({
             "info": info, "text": text, "left": left, "exhausted": left == 0,
             "chosen": {c.strip() for c in text.split(",")} if info.options else set(),
@@ -143,7 +162,8 @@ def _exercise(server: Server, student_id: str, exercise_id: str, practice: str |
                          "message": a.message, "status": _(_STATUS_WORDS.get(a.status, a.status)), "correct": a.correct,
                          "score": round(a.score, 3), "max_score": round(a.max_score, 3),
                          "feedback": a.feedback} for a in mine if a.part == info.name]})
-    solution = _solution(data, student_id, exercise_id, mine, now) if seed is None else None
+    solution = _solution(data, rules, student_id, exercise_id, mine, now) \
+        if seed is None else None
     return {
         "id": exercise_id, "title": meta.title, "points": meta.points,
         "statement": Markup(data.statement_html(student_id, exercise_id, seed)),
@@ -153,7 +173,7 @@ def _exercise(server: Server, student_id: str, exercise_id: str, practice: str |
         "practice": practice_value if seed is not None else None,
         "result": result if seed is None else None,
         "answered": any(p["history"] for p in parts),
-        "locked": not policy.is_open(now) and seed is None,
+        "locked": not rules.is_open(now) and seed is None,
         "solution": Markup(solution) if solution else None}
 
 
@@ -177,13 +197,26 @@ def _status(data: ExamData, typed: Typed | None, error: str | None,
             "text": _("Your answers to “{title}” were saved.").format(title=title)}
 
 
-def _policy_lines(policy, now: dt.datetime, zone: dt.tzinfo) -> list[str]:
-    """The exam's rules as the student page lists them, each a sentence."""
+def _policy_lines(rules: Rules, now: dt.datetime) -> list[str]:
+    """The exam's rules as the student page lists them (with the student's own
+    exceptions), each a sentence."""
+    policy, allowance = rules.policy, rules.allowance
     lines = [{"exam": _("Exam"), "homework": _("Homework"),
               "practice": _("Practice")}.get(policy.mode, policy.mode)]
+    if rules.timed:
+        lines.append(ngettext("Time limit: {n} minute from when you press “Start”",
+                              "Time limit: {n} minutes from when you press “Start”",
+                              rules.minutes).format(n=rules.minutes))
+        if allowance and allowance.extra_minutes:
+            lines.append(ngettext("({n} extra minute granted to you included)",
+                                  "({n} extra minutes granted to you included)",
+                                  allowance.extra_minutes).format(n=allowance.extra_minutes))
     if policy.attempts:
         lines.append(ngettext("{n} attempt per part", "{n} attempts per part",
                               policy.attempts).format(n=policy.attempts))
+        if allowance and allowance.extra_attempts:
+            lines.append(_("You were granted extra attempts: each part shows the attempts "
+                           "it has left"))
     else:
         lines.append(_("Attempts per part: no limit"))
     if policy.penalty:
@@ -192,7 +225,7 @@ def _policy_lines(policy, now: dt.datetime, zone: dt.tzinfo) -> list[str]:
     lines.append(_("What counts: the best attempt of each part") if policy.counts == "best"
                  else _("What counts: the last saved answer of each part"))
     lines.append(_("Verdicts and points are shown after each submit")
-                 if policy.shows_verdicts(now) else
+                 if rules.shows_verdicts(now) else
                  _("Answers are checked for readability only; verdicts and points appear "
                    "after the close"))
     lines.append(_("An answer that cannot be read is not saved and costs no attempt"))
@@ -258,6 +291,8 @@ def policy_text(policy, now: dt.datetime) -> str:
         words.append(_("closes {time}").format(time=policy.closes.isoformat()))
     if policy.attempts:
         words.append(_("{n} attempts per part").format(n=policy.attempts))
+    if policy.time_limit:
+        words.append(_("{n} minutes from each student's start").format(n=policy.time_limit))
     if policy.penalty:
         words.append(_("{percent} % less per extra attempt").format(
             percent=round(100 * policy.penalty)))
@@ -266,17 +301,16 @@ def policy_text(policy, now: dt.datetime) -> str:
     return " · ".join(words)
 
 
-def _solution(data: ExamData, student_id: str, exercise_id: str, mine: list,
+def _solution(data: ExamData, rules: Rules, student_id: str, exercise_id: str, mine: list,
               now: dt.datetime) -> str | None:
     """The worked solution of the student's variant as HTML, once the policy lets them
-    see it: after the close, or after the last attempt of every part (``mine``: the
-    student's counted answers to the exercise)."""
-    policy = data.policy
-    closed = policy.closes is not None and now >= policy.closes
+    see it: after their close, or after the last attempt of every part (their extra ones
+    included; ``mine``: the student's counted answers to the exercise)."""
     used = Counter(a.part for a in mine)
-    out_of_attempts = bool(policy.attempts) and all(
-        used[part.name] >= policy.attempts for part in data.manifest_parts[exercise_id])
-    if not solution_visible(policy.solutions, closed, policy.shows_verdicts(now),
-                            out_of_attempts):
+    out_of_attempts = bool(rules.policy.attempts) and all(
+        used[part.name] >= rules.attempts(exercise_id, part.name)
+        for part in data.manifest_parts[exercise_id])
+    if not solution_visible(rules.policy.solutions, rules.closed(now),
+                            rules.shows_verdicts(now), out_of_attempts):
         return None
     return data.solution_html(student_id, exercise_id)

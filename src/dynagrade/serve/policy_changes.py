@@ -26,12 +26,14 @@ from ..i18n import N_, _
 from . import db
 
 #: the keys a change may set (the mode is the exam's nature, not a setting)
-CHANGEABLE = ("opens", "closes", "attempts", "penalty", "feedback", "counts", "solutions")
+CHANGEABLE = ("opens", "closes", "attempts", "penalty", "feedback", "counts", "solutions",
+              "time_limit")
 #: the settings and their values as the staff page names them (the form posts the values
 #: exam.toml writes)
 WORDS = (N_("opens"), N_("closes"), N_("attempts"), N_("penalty"), N_("feedback"),
          N_("counts"), N_("solutions"), N_("immediate"), N_("after-close"), N_("best"),
-         N_("last"), N_("with-feedback"), N_("after-last-attempt"), N_("never"))
+         N_("last"), N_("with-feedback"), N_("after-last-attempt"), N_("never"),
+         N_("time_limit"))
 
 #: how long a worker trusts the policy it read (seconds)
 FRESH_SECONDS = 2.0
@@ -101,7 +103,7 @@ def _typed(key: str, value: object) -> object:
     text = value.strip()
     if key in ("opens", "closes"):
         return text or None
-    if key == "attempts" and text.isdigit():
+    if key in ("attempts", "time_limit") and text.isdigit():
         return int(text)
     if key == "penalty":
         try:

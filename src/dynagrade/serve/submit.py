@@ -7,9 +7,11 @@ The rules, the same for the student page's form and ``POST /api/v1/answers``:
    (otherwise 422). The student page sends every box of the exercise; of those only the
    parts whose text differs from the part's last counted answer are submitted
    (``only_changed``), so a part already answered spends no attempt by being sent again.
-2. Counted answers are accepted only while the exam is open (server clock) and while
-   every submitted part has attempts left (otherwise 403, naming the parts). Practice
-   draws (practice mode, "new variant") are graded the same way but never counted.
+2. Counted answers are accepted only while the exam is open for the student (server
+   clock; their own opening, close and timed deadline, :mod:`.allowances`) and while
+   every submitted part has attempts left (the policy's and the student's extra ones;
+   otherwise 403, naming the parts). Practice draws (practice mode, "new variant") are
+   graded the same way but never counted.
 3. An answer the grader cannot read (:meth:`ExamData.read
    <dynagrade.serve.exam_data.ExamData.read>`: syntax, an unknown name, a unit of the
    wrong dimension, the wrong kind) is not graded, not stored and spends no attempt; the
@@ -36,7 +38,8 @@ from starlette.concurrency import run_in_threadpool
 from ..errors import DynagradeError
 from ..exercise.results import ExerciseResult, GradedPart, Status
 from ..i18n import _
-from . import db
+from . import allowances, db
+from .allowances import Rules
 from .exam_data import MAX_ANSWER_CHARS, ExamData
 from .verdicts import SubmittedPart
 
@@ -103,6 +106,8 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
     data: ExamData = state.data
     policy = data.policy
     given = check_request(data, exercise_id, answers)
+    rules = await run_in_threadpool(allowances.rules_for, state.engine, data.exam_id, policy,
+                                    student_id)
     counted = practice_seed is None
     if not counted and policy.mode != "practice":
         raise Refused(422, _("new variants are offered in practice mode only"))
@@ -111,17 +116,17 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
     if key is not None:
         stored = await run_in_threadpool(db.find_submission, state.engine, data.exam_id, key)
         if stored is not None:
-            return _replay(data, student_id, stored, now, key)
+            return _replay(data, rules, student_id, stored, now, key)
     key = key or uuid.uuid4().hex
     if counted:
-        check_open(policy, now)
+        check_open(rules, now)
     if counted and only_changed:
         given = changed(given, await run_in_threadpool(
             db.last_texts, state.engine, data.exam_id, student_id, exercise_id))
     if counted and policy.attempts:  # refuse before grading; checked again when storing
         _last, per_part = await run_in_threadpool(db.part_attempts, state.engine, data.exam_id,
                                               student_id, exercise_id)
-        _check_attempts(policy, per_part, given)
+        _check_attempts(rules, exercise_id, per_part, given)
     graded = await state.pool.grade(student_id, exercise_id, given, practice_seed)
     if graded is None:
         graded = [_not_in_time(data, exercise_id, name, text) for name, text in given.items()]
@@ -139,7 +144,7 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
         last, per_part = await run_in_threadpool(
             db.part_attempts, state.engine, data.exam_id, student_id, exercise_id, counted)
         if counted:
-            _check_attempts(policy, per_part, given)
+            _check_attempts(rules, exercise_id, per_part, given)
         rows = [_with_penalty(policy, part, per_part.get(part.name, 0) + 1, counted)
                 for part in graded]
         attempt = last + 1
@@ -154,8 +159,8 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
                                              data.exam_id, key)
             if stored is None:  # the other submit's transaction was rolled back: retry
                 continue
-            return _replay(data, student_id, stored, now, key)
-        return describe(data, exercise_id, attempt, rows, policy.shows_verdicts(now), key,
+            return _replay(data, rules, student_id, stored, now, key)
+        return describe(data, exercise_id, attempt, rows, rules.shows_verdicts(now), key,
                         unread)
     raise Refused(503, _("too many submits at once; try again"))
 
@@ -183,33 +188,35 @@ def describe(data: ExamData, exercise_id: str, attempt: int, rows: list[Submitte
     return body
 
 
-def _replay(data: ExamData, student_id: str, stored: list[db.StoredAnswer],
+def _replay(data: ExamData, rules: Rules, student_id: str, stored: list[db.StoredAnswer],
             now: dt.datetime, key: str) -> dict:
     if stored[0].student_id != student_id:
         raise Refused(422, _("this idempotency key was used by another submission; send a "
                              "fresh key with each new submit"))
     rows = [SubmittedPart.stored(a) for a in stored]
     return describe(data, stored[0].exercise_id, stored[0].attempt, rows,
-                    data.policy.shows_verdicts(now), key) | {"replayed": True}
+                    rules.shows_verdicts(now), key) | {"replayed": True}
 
 
-def check_open(policy, now: dt.datetime) -> None:
-    """:class:`Refused` (403) before ``opens`` and from ``closes`` on."""
-    if policy.opens is not None and now < policy.opens:
-        raise Refused(403, _("the exam opens at {time}").format(time=policy.opens.isoformat()))
-    if policy.closes is not None and now >= policy.closes:
-        raise Refused(403, _("the exam closed at {time}; answers are no longer accepted")
-                      .format(time=policy.closes.isoformat()))
+def check_open(rules: Rules, now: dt.datetime) -> None:
+    """:class:`Refused` (403) unless the student's answers are accepted at ``now``: before
+    their opening, from their close on, before the Start of a timed exam and once their
+    time ran out (the message says which, and when)."""
+    reason = rules.refusal(now)
+    if reason is not None:
+        raise Refused(403, reason)
 
 
-def _check_attempts(policy, per_part: dict[str, int], given: dict[str, str]) -> None:
-    if not policy.attempts:
-        return
-    spent = [name for name in given if per_part.get(name, 0) >= policy.attempts]
+def _check_attempts(rules: Rules, exercise_id: str, per_part: dict[str, int],
+                    given: dict[str, str]) -> None:
+    allowed = {name: rules.attempts(exercise_id, name) for name in given}
+    spent = [name for name in given if allowed[name] and per_part.get(name, 0) >= allowed[name]]
     if spent:
-        raise Refused(403, _("no attempts left for {parts} (each part allows {n})").format(
-            parts=", ".join(spent), n=policy.attempts),
-            {name: _("no attempts left") for name in spent})
+        limits = {allowed[name] for name in spent}  # extra attempts may differ by part
+        message = _("no attempts left for {parts} (each part allows {n})").format(
+            parts=", ".join(spent), n=limits.pop()) if len(limits) == 1 else \
+            _("no attempts left for {parts}").format(parts=", ".join(spent))
+        raise Refused(403, message, {name: _("no attempts left") for name in spent})
 
 
 def _with_penalty(policy, part: SubmittedPart, attempt: int, counted: bool) -> SubmittedPart:

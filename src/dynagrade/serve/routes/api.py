@@ -10,13 +10,14 @@ from __future__ import annotations
 from typing import Annotated, Literal
 
 from fastapi import APIRouter, Header
+from starlette.concurrency import run_in_threadpool
 
-from .. import db, downloads, drafts, gradebook
+from .. import allowances, db, downloads, drafts, gradebook, timed
 from ..deps import REFUSALS, Data, Now, Pool, ServerDep, StaffBearer, StudentBearer
 from ..downloads import CsvResponse
 from ...i18n import _
 from ..models import (AnswersBody, DraftsBody, DraftsResponse, Gradebook, PreviewBody,
-                      PreviewResponse, SubmitResponse, problem)
+                      PreviewResponse, StartResponse, SubmitResponse, problem)
 from ..practice import practice_seed
 from ..submit import Refused, check_open, submit
 
@@ -44,7 +45,8 @@ async def submit_answers(caller: StudentBearer, body: AnswersBody, server: Serve
 
 
 @router.put("/drafts", responses={
-    403: problem("before `opens` or from `closes` on"),
+    403: problem("before the student's opening, from their close on, before the Start of a "
+                 "timed exam, or once their time ran out"),
     422: problem("an exercise or part not in the exam, or a text over 2000 characters")})
 async def save_drafts(caller: StudentBearer, body: DraftsBody, server: ServerDep,
                       now: Now) -> DraftsResponse:
@@ -53,19 +55,37 @@ async def save_drafts(caller: StudentBearer, body: DraftsBody, server: ServerDep
     return DraftsResponse(exercise=body.exercise, saved=saved)
 
 
-@router.post("/preview", responses={403: problem("before `opens`")})
+@router.post("/preview", responses={403: problem("before the student's opening, or before "
+                                                  "the Start of a timed exam")})
 async def preview(caller: StudentBearer, body: PreviewBody, server: ServerDep,
                   pool: Pool, now: Now) -> PreviewResponse:
-    """How an answer reads (never whether it is right); nothing before the exam opens."""
+    """How an answer reads (never whether it is right); nothing before the exam opens
+    for the student (or, timed, before their Start)."""
     data = server.data
-    if data.policy.opens is not None and now < data.policy.opens:
-        check_open(data.policy, now)
+    rules = await run_in_threadpool(allowances.rules_for, server.engine, data.exam_id,
+                                    data.policy, caller.student_id)
+    if rules.before_opens(now) or rules.waiting_to_start(now):
+        check_open(rules, now)
     if body.exercise not in data.exercises_meta or \
             body.part not in {p.name for p in data.parts(body.exercise)}:
         raise Refused(422, _("no such exercise or part in this exam"))
     seed = practice_seed(server.secret, caller.student_id, body.exercise, body.practice)
     read = await pool.read(caller.student_id, body.exercise, body.part, body.answer, seed)
     return PreviewResponse.model_validate(read or _unreadable_in_time())
+
+
+@router.post("/start", responses={403: problem("before the student's opening or from their "
+                                               "close on")})
+async def start(caller: StudentBearer, server: ServerDep, now: Now) -> StartResponse:
+    """Start the student's time on a timed exam (the first start counts; again: the same
+    answer). On an untimed exam nothing is started."""
+    rules = await run_in_threadpool(timed.start, server, caller.student_id, now)
+    return StartResponse(timed=rules.timed, started_at=_iso(rules.started_at),
+                         minutes=rules.minutes, deadline=_iso(rules.deadline))
+
+
+def _iso(moment) -> str | None:
+    return moment.isoformat() if moment is not None else None
 
 
 @router.get("/gradebook")

@@ -17,7 +17,7 @@ from fastapi.responses import HTMLResponse, RedirectResponse
 from starlette.concurrency import run_in_threadpool
 
 from ...i18n import _
-from .. import pages
+from .. import pages, timed
 from ..deps import REFUSALS, Now, RootPath, ServerDep, StudentForm, StudentLink
 from ..models import problem
 from ..practice import practice_seed, practice_value
@@ -86,6 +86,23 @@ def posted_answers(fields) -> dict[str, str]:
 def practice_of(exercise_id: str, practice: str | None) -> str | None:
     """The page's ``practice`` query for a practice draw's form (None: no draw)."""
     return f"{exercise_id}:{practice}" if practice else None
+
+
+@router.post("/start", status_code=303, response_class=RedirectResponse, responses={
+    **_BACK, 403: {"description": "before the student's opening or from their close on: "
+                                  "the page again, with the reason",
+                   "content": {"text/html": {"schema": {"type": "string"}}}}})
+async def start_timed(form: StudentForm, server: ServerDep, now: Now, base: RootPath):
+    """Start the student's time on a timed exam (the first start counts); the page then
+    shows the exercises and the time left."""
+    caller = form.caller
+    try:
+        await run_in_threadpool(timed.start, server, caller.student_id, now)
+    except Refused as error:
+        page = await run_in_threadpool(pages.student_html, server, caller.token,
+                                       caller.student_id, None, now, base, error.message)
+        return HTMLResponse(page, status_code=error.status)
+    return RedirectResponse(f"{base}/s/{caller.token}#main", status_code=303)
 
 
 @router.post("/practice", status_code=303, response_class=RedirectResponse, responses={

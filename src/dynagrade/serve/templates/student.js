@@ -1,8 +1,8 @@
 /* The student page, enhanced: a live preview of how each answer reads, drafts saved as
    the student types (and a warning before leaving while one is not saved yet), times in
-   the reader's own zone, a countdown to the close, the submit button disabled while
-   saving and the focus on the summary a submit ends on. Without this script the page
-   works as plain forms. */
+   the reader's own zone, a countdown to the close or to the end of a timed exam's time,
+   the submit button disabled while saving and the focus on the summary a submit ends
+   on. Without this script the page works as plain forms. */
 (function () {
   "use strict";
   var main = document.getElementById("main");
@@ -136,7 +136,7 @@
     });
   }
 
-  /* -- the countdown to the close ---------------------------------------------------- */
+  /* -- the countdown to the close (or the end of a timed exam's time) ----------------- */
   var clock = document.getElementById("countdown");
   if (clock) {
     var closes = new Date(clock.dataset.closes).getTime(), warning = document.getElementById("warning");
@@ -152,9 +152,12 @@
         clearInterval(timer);
         return;
       }
-      var h = Math.floor(left / 3600), m = Math.floor(left % 3600 / 60), s = left % 60;
-      var text = (h ? h + " h " : "") + (h || m ? m + " min " : "") + s + " s";
-      clock.textContent = clock.dataset.left.replace("{time}", text);
+      /* whole minutes: the text changes about once a minute, so a screen reader that
+         reads the page finds it steady (it is no live region; the warnings are) */
+      var h = Math.floor(left / 3600), m = Math.floor(left % 3600 / 60);
+      var text = h || m ? (h ? h + " h " : "") + m + " min" : clock.dataset.soon;
+      text = clock.dataset.left.replace("{time}", text);
+      if (clock.textContent !== text) clock.textContent = text;
       steps.forEach(function (step) {
         if (left <= step * 60 && step < warned) {
           warned = step;
