@@ -13,7 +13,7 @@ from markupsafe import Markup
 
 from ..exam.solution_policy import solution_visible
 from ..exercise.results import ExerciseResult
-from . import db, drafts, gradebook, limits, standing
+from . import db, drafts, gradebook, limits, regrade, standing
 from ..grading.choice import shown_option
 from ..i18n import N_, _, ngettext
 from .exam_data import MAX_ANSWER_CHARS, ExamData
@@ -92,6 +92,7 @@ def student_html(server: Server, token: str, student_id: str, practice: str | No
         instructions=Markup(markdown_to_html(data.instructions))
         if data.instructions and not before else "",
         script=Markup(_SCRIPT),
+        regraded=[] if before else regrade.notices(server, student_id, now),
         submit_label=_("Save answers") if not verdicts else _("Submit"))
 
 

@@ -4,6 +4,7 @@
 - :mod:`.student`: the student's page ``/s/{token}`` and its forms.
 - :mod:`.staff`: the staff page ``/i/{token}`` and its downloads.
 - :mod:`.api`: the JSON API under ``/api/v1``, tokens in ``Authorization: Bearer``.
+- :mod:`.regrade`: the staff's regrade page ``/i/{token}/regrade`` and ``/api/v1/regrades``.
 
 Each route names who may call it in its signature (:mod:`dynagrade.serve.deps`);
 tests/test_serve_routes.py holds every route of every router to that.
@@ -11,6 +12,6 @@ tests/test_serve_routes.py holds every route of every router to that.
 
 from __future__ import annotations
 
-from . import api, health, staff, student
+from . import api, health, regrade, staff, student
 
-ROUTERS = (health.router, student.router, staff.router, api.router)
+ROUTERS = (health.router, student.router, staff.router, api.router, *regrade.ROUTERS)
