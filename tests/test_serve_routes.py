@@ -94,6 +94,8 @@ def test_every_route_is_a_router_route_that_names_its_caller(served):
 def _request(served, method: str, path: str, token: str | None, place: str):
     """``method path`` with ``token`` where the route takes it, and a body it accepts."""
     headers = {}
+    if "{regrade_id}" in path:  # a fresh previewed plan (empty) of the files as they are
+        path = path.replace("{regrade_id}", str(_fresh_plan(served)))
     if place == "path":
         path = path.replace("{token}", token or "")
     elif token is not None:
@@ -111,6 +113,16 @@ def _request(served, method: str, path: str, token: str | None, place: str):
         kwargs["data"] = {"exercise": "projectile-range", "answer.x_max": "1 m",
                           "csrf": limits.csrf_field(served.server.secret, token or "")}
     return served.client.request(method, path, **kwargs)
+
+
+def _fresh_plan(served) -> int:
+    """A previewed regrade that changes no verdict, of the files the server loaded."""
+    from dynagrade.serve import db, regrade
+
+    data = served.server.data
+    return db.store_regrade(served.server.engine, data.exam_id, "test",
+                            regrade.source_of(data), {"answers": 0, "changes": [],
+                                                      "students": {}, "last_answer_id": 0})
 
 
 def _submissions(served) -> int:
@@ -174,7 +186,11 @@ def test_the_openapi_document_describes_every_response(served):
                            ("POST", "/api/v1/preview", "PreviewResponse"),
                            ("PUT", "/api/v1/drafts", "DraftsResponse"),
                            ("GET", "/api/v1/gradebook", "Gradebook"),
-                           ("GET", "/i/{token}/tables", "StaffTables")}
+                           ("GET", "/i/{token}/tables", "StaffTables"),
+                           ("POST", "/api/v1/regrades", "RegradePlan"),
+                           ("GET", "/api/v1/regrades/{regrade_id}", "RegradePlan"),
+                           ("POST", "/api/v1/regrades/{regrade_id}/apply", "RegradePlan"),
+                           ("POST", "/api/v1/regrades/{regrade_id}/discard", "RegradePlan")}
     refusal = operations[("POST", "/api/v1/answers")]["responses"]
     for status in ("401", "403", "413", "422", "429", "503"):
         schema = refusal[status]["content"]["application/json"]["schema"]

@@ -29,6 +29,7 @@ import dataclasses
 import datetime as dt
 import hashlib
 import multiprocessing
+import os
 import time
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
@@ -79,8 +80,10 @@ def _digests(source: dict) -> dict:
 
 def _recompute(manifest: str, folders: tuple[str, ...], jobs: list[Job]
                ) -> tuple[dict, list[list[SubmittedPart]]]:
-    """In the spawned process: the exam loaded from disk, each job graded as a submit
-    grades it (before the penalty); with the digests of the files used."""
+    """In a spawned process: the exam loaded from disk, each job graded as a submit
+    grades it (before the penalty); with the digests of the files used. A verdict depends
+    on the variant's numbers and the texts alone (not on the student or the seed), so
+    students who share both are graded once."""
     from ..exercise.loader import open_bank
     from ..i18n import language
 
@@ -89,17 +92,47 @@ def _recompute(manifest: str, folders: tuple[str, ...], jobs: list[Job]
     source = source_of(data)
     if source["manifest"]["sha256"] != digest:  # replaced while loading: load it again
         return _recompute(manifest, folders, jobs)
+    graded: dict[tuple, list[SubmittedPart]] = {}
+    out = []
     with language(data.manifest.exam.language):
-        graded = [data.grade(student_id, exercise_id, texts)
-                  for student_id, exercise_id, texts in jobs]
-    return source, graded
+        for student_id, exercise_id, texts in jobs:
+            entry = data.entry(student_id, exercise_id)
+            same = (exercise_id, repr(sorted(entry.params.items())),
+                    repr(sorted(entry.answers.items())), tuple(sorted(texts.items())))
+            if same not in graded:
+                graded[same] = data.grade(student_id, exercise_id, texts, check=False)
+            out.append(graded[same])
+    return source, out
 
 
-def _in_fresh_process(server: Server, jobs: list[Job]):
+#: processes a preview grades in (each loads the exam; more than the cores gain nothing)
+PREVIEW_PROCESSES = max(1, min(4, os.cpu_count() or 1))
+
+
+def _in_fresh_processes(server: Server, jobs: list[Job]
+                        ) -> tuple[dict, list[list[SubmittedPart]]]:
+    """:func:`_recompute` of ``jobs`` in :data:`PREVIEW_PROCESSES` spawned processes (the
+    jobs of one exercise kept together, so that students sharing a variant's numbers are
+    mostly graded once); the verdicts in the jobs' order. :class:`Refused` (409) when the files changed meanwhile."""
     settings = server.settings
-    with ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn")) as pool:
-        return pool.submit(_recompute, str(settings.manifest), tuple(settings.folders),
-                           jobs).result()
+    order = sorted(range(len(jobs)), key=lambda i: jobs[i][:2][::-1])
+    count = min(PREVIEW_PROCESSES, max(1, len(jobs) // 200))
+    chunks = [order[k * len(order) // count:(k + 1) * len(order) // count]
+              for k in range(count)]
+    context = multiprocessing.get_context("spawn")
+    with ProcessPoolExecutor(count, mp_context=context) as pool:
+        futures = [pool.submit(_recompute, str(settings.manifest), tuple(settings.folders),
+                               [jobs[i] for i in chunk]) for chunk in chunks]
+        results = [future.result() for future in futures]
+    sources = [source for source, _graded in results]
+    if any(source != sources[0] for source in sources):
+        raise Refused(409, _("the manifest or an exercise file changed during the preview; "
+                             "preview again"))
+    verdicts: list[list[SubmittedPart]] = [[] for _job in jobs]
+    for chunk, (_source, graded) in zip(chunks, results):
+        for index, parts in zip(chunk, graded):
+            verdicts[index] = parts
+    return sources[0], verdicts
 
 
 # -- the policy at each submit -----------------------------------------------------------
@@ -156,7 +189,9 @@ def preview(server: Server, actor: str) -> db.Regrade:
     jobs = [(rows[0][1].student_id, rows[0][1].exercise_id,
              {answer.part: answer.raw for _id, answer in rows}) for rows in groups]
     try:
-        source, graded = _in_fresh_process(server, jobs)
+        source, graded = _in_fresh_processes(server, jobs)
+    except Refused:
+        raise
     except Exception as error:  # the files on disk cannot be loaded or graded
         raise Refused(422, _("the exam cannot be regraded as its files are now: "
                              "{error}").format(error=error)) from None
