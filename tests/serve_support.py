@@ -173,6 +173,20 @@ def fresh_database(postgres_url: str, name: str) -> str:
     return postgres_url.rsplit("/", 1)[0] + "/" + name
 
 
+_DATABASES = iter(range(100_000))
+
+
+@pytest.fixture(params=["sqlite", "postgresql"])
+def database(request, tmp_path):
+    """A fresh database URL of each backend (None: SQLite beside the manifest), for the
+    tests that run the same on both."""
+    if request.param == "sqlite":
+        return None
+    url = request.getfixturevalue("postgres_url")
+    return fresh_database(url, f"t{next(_DATABASES)}_{tmp_path.name[-8:].lower()}"
+                          .replace("-", "_"))
+
+
 # -- a running app ------------------------------------------------------------------------
 
 

@@ -6,27 +6,13 @@ refuses a stale plan, and the server grades the next submit by the new key."""
 
 from __future__ import annotations
 
-import itertools
 import time
 
 import pytest
 import sqlalchemy as sa
 
 from regrade_support import EXERCISE_ID, demo_exam, lengths, write_exercise
-from serve_support import Clock, fresh_database, postgres_url, serve  # noqa: F401
-
-_COUNTER = itertools.count()
-
-
-@pytest.fixture(params=["sqlite", "postgresql"])
-def database(request, tmp_path):
-    """A fresh database URL of each backend (None: SQLite beside the manifest)."""
-    if request.param == "sqlite":
-        return None
-    url = request.getfixturevalue("postgres_url")
-    return fresh_database(url, f"rg{next(_COUNTER)}_{tmp_path.name[-8:].lower()}"
-                          .replace("-", "_"))
-
+from serve_support import Clock, database, postgres_url, serve  # noqa: F401
 
 def _fix(manifest, folder, **changes) -> None:
     """The author's fix: y = 2 x + 1 m and z's tolerance 5 %, and the manifest re-keyed."""

@@ -743,6 +743,19 @@ def _same_verdict(row, verdict: dict) -> bool:
             and row.misconception == verdict["misconception"])
 
 
+def _already(connection, exam_id: str, regrade_id: int, target: str) -> bool:
+    """Whether the regrade is in the ``target`` state already (its row locked until the
+    transaction ends); :class:`RegradeConflict` unless it is that or still previewed."""
+    state = connection.execute(sa.select(regrades.c.state).where(
+        regrades.c.exam_id == exam_id, regrades.c.id == regrade_id)
+        .with_for_update()).scalar()
+    if state == target:
+        return True
+    if state != "previewed":
+        raise RegradeConflict(str(state))
+    return False
+
+
 def apply_regrade(engine: sa.Engine, exam_id: str, regrade_id: int, actor: str,
                   changes: list[dict], before: dict, after: dict) -> bool:
     """Apply the previewed regrade in one transaction: each answer of ``changes``
@@ -751,13 +764,8 @@ def apply_regrade(engine: sa.Engine, exam_id: str, regrade_id: int, actor: str,
     marked applied and the audit log gets ``before`` and ``after``. False when it was
     applied already (nothing done); :class:`RegradeConflict` when it cannot be applied."""
     with _writing(engine), engine.begin() as connection:
-        state = connection.execute(sa.select(regrades.c.state).where(
-            regrades.c.exam_id == exam_id, regrades.c.id == regrade_id)
-            .with_for_update()).scalar()
-        if state == "applied":
+        if _already(connection, exam_id, regrade_id, "applied"):
             return False
-        if state != "previewed":
-            raise RegradeConflict(str(state))
         ids = [change["answer_id"] for change in changes]
         current = {}
         for chunk in range(0, len(ids), 500):
@@ -787,13 +795,8 @@ def discard_regrade(engine: sa.Engine, exam_id: str, regrade_id: int, actor: str
     """Discard a previewed regrade (recorded in the audit log); False when it was
     discarded already; :class:`RegradeConflict` when it was applied."""
     with _writing(engine), engine.begin() as connection:
-        state = connection.execute(sa.select(regrades.c.state).where(
-            regrades.c.exam_id == exam_id, regrades.c.id == regrade_id)
-            .with_for_update()).scalar()
-        if state == "discarded":
+        if _already(connection, exam_id, regrade_id, "discarded"):
             return False
-        if state != "previewed":
-            raise RegradeConflict(str(state))
         connection.execute(regrades.update().where(regrades.c.id == regrade_id)
                            .values(state="discarded"))
         _insert_change(connection, exam_id, actor, REGRADE, str(regrade_id),
