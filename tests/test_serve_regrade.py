@@ -205,3 +205,32 @@ def test_every_server_process_grades_by_the_new_key_within_seconds(tmp_path):
         second.tokens = first.tokens  # the links the first instance issued
         answer = second.submit("s1", EXERCISE_ID, {"y": _m(2 * x["s1"] + 1)})
         assert answer.json()["parts"][0]["correct"] is True
+
+
+def test_the_pages_forms_preview_apply_and_show_a_refusal_with_its_reason(tmp_path):
+    from dynagrade.serve import limits
+
+    manifest, folder = demo_exam(tmp_path)
+    x = lengths(manifest)
+    with serve(manifest, None, Clock(), folders=[folder]) as served:
+        served.submit("s1", EXERCISE_ID, {"y": _m(2 * x["s1"])})
+        _fix(manifest, folder)
+        page = f"/i/{served.staff}/regrade"
+        form = {"csrf": limits.csrf_field(served.server.secret, served.staff)}
+        assert served.client.post(f"{page}/preview", data={}).status_code == 403  # no CSRF
+        made = served.client.post(f"{page}/preview", data=form, follow_redirects=False)
+        assert made.status_code == 303 and made.headers["location"].endswith("/regrade#plan")
+        shown = served.client.get(page).text
+        assert "Apply plan 1" in shown and "Ada One" in shown and "2 → 0" in shown
+        discarded = served.client.post(f"{page}/1/discard", data=form, follow_redirects=False)
+        assert discarded.status_code == 303
+        refused = served.client.post(f"{page}/1/apply", data=form,
+                                     headers={"Accept": "text/html"})
+        assert refused.status_code == 409
+        assert "this regrade was discarded; preview again" in refused.text
+        assert "No plan is open" in refused.text
+        served.client.post(f"{page}/preview", data=form)
+        applied = served.client.post(f"{page}/2/apply", data=form, follow_redirects=False)
+        assert applied.headers["location"].endswith("/regrade?applied=2#result")
+        result = served.client.get(f"{page}?applied=2").text
+        assert "Regrade 2 applied: 1 verdict changed. The total of 1 student changed." in result
