@@ -3,8 +3,8 @@
 A regrade has three steps (docs/serve.md, "Regrade after fixing a key or a tolerance"):
 
 1. **Preview** (:func:`preview`): every counted answer is graded again against the
-   manifest and the exercise files *as they are on disk now*, in a process spawned for
-   it that loads :class:`~dynagrade.serve.exam_data.ExamData` afresh (the worker's own
+   manifest and the exercise files *as they are on disk now*, in processes spawned for
+   it that load :class:`~dynagrade.serve.exam_data.ExamData` afresh (the worker's own
    copy holds the files as they were when it started). Each answer is graded as its
    submit graded it: the parts of one submission together, then the penalty of the
    policy in force at the submit's time for the part's attempt number. The answers whose

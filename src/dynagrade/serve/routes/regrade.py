@@ -1,9 +1,9 @@
 """Regrading online: the staff page ``/i/{token}/regrade`` with its forms, and the API
 ``/api/v1/regrades`` (:mod:`dynagrade.serve.regrade` does the work).
 
-A preview grades every counted answer again in a process of its own (seconds for a
-large class), so it runs off the event loop; applying reloads this server process's
-exam at once (the others follow within seconds, :mod:`dynagrade.serve.reload`).
+A preview grades every counted answer again in processes of its own (seconds to half a
+minute for a large class), so it runs off the event loop; applying reloads this server
+process's exam at once (the others follow within seconds, :mod:`dynagrade.serve.reload`).
 """
 
 from __future__ import annotations
