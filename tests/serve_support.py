@@ -228,8 +228,9 @@ class Clock:
         return self.now
 
 
-def serve(manifest: Path, db_url: str | None = None, clock=None):
-    """A context manager yielding :class:`Served` for ``manifest``."""
+def serve(manifest: Path, db_url: str | None = None, clock=None, folders=()):
+    """A context manager yielding :class:`Served` for ``manifest`` (exercises also
+    looked for in ``folders``)."""
     from contextlib import contextmanager
 
     @contextmanager
@@ -239,7 +240,8 @@ def serve(manifest: Path, db_url: str | None = None, clock=None):
         from dynagrade.serve import db
         from dynagrade.serve.app import create_app
 
-        app = create_app(manifest, db_url, grading_workers=1, clock=clock)
+        app = create_app(manifest, db_url, folders=tuple(map(str, folders)),
+                         grading_workers=1, clock=clock)
         data, engine = app.state.server.data, app.state.server.engine
         tokens = {s: t for s, t in db.issue_tokens(engine, data.exam_id,
                                                    list(data.students)).items()}

@@ -265,6 +265,19 @@ def test_the_german_staff_page_has_no_english_fixed_string(served):
     assert _english_left(served, page.text, []) == []
 
 
+def test_the_german_regrade_page_has_no_english_fixed_string(served):
+    page = served.client.get(f"/i/{served.staff}/regrade")
+    assert "Kein Plan ist offen" in page.text
+    assert _english_left(served, page.text, []) == []
+    made = served.client.post("/api/v1/regrades",
+                              headers={"Authorization": f"Bearer {served.staff}"})
+    assert made.status_code == 200, made.text
+    page = served.client.get(f"/i/{served.staff}/regrade")
+    assert f"Plan {made.json()['id']} anwenden" in page.text
+    # who previewed it is data: the staff link's name (here its default, the hash's start)
+    assert _english_left(served, page.text, [made.json()["actor"]]) == []
+
+
 def test_the_scan_finds_english(served):
     """The scan is not blind: the same page in English is full of interface words."""
     english = dataclasses.replace(served.server.data.manifest.exam, language="en")

@@ -128,12 +128,24 @@ _JSON_BODIES = {
 
 def _path_values(served) -> dict[str, str]:
     """A value for each parameter of a route's path (but the token) that the route
-    answers: a platform layout, another staff link (made afresh: it may be revoked)."""
+    answers: a platform layout, another staff link (made afresh: it may be revoked), a
+    student, a previewed regrade (made afresh: it may be applied)."""
     from dynagrade.serve import db
 
     data = served.server.data
     other = db.issue_staff_token(served.server.engine, data.exam_id, "another")
-    return {"layout": "moodle", "link_id": db.link_id(other), "student_id": "s3"}
+    return {"layout": "moodle", "link_id": db.link_id(other), "student_id": "s3",
+            "regrade_id": str(_fresh_plan(served))}
+
+
+def _fresh_plan(served) -> int:
+    """A previewed regrade that changes no verdict, of the files the server loaded."""
+    from dynagrade.serve import db, regrade
+
+    data = served.server.data
+    return db.store_regrade(served.server.engine, data.exam_id, "test",
+                            regrade.source_of(data), {"answers": 0, "changes": [],
+                                                      "students": {}, "last_answer_id": 0})
 
 
 def _submissions(served) -> int:
@@ -205,7 +217,11 @@ def test_the_openapi_document_describes_every_response(served):
                            ("POST", "/api/v1/start", "StartResponse"),
                            ("GET", "/api/v1/exceptions", "Exceptions"),
                            ("PUT", "/api/v1/exceptions", "Exceptions"),
-                           ("DELETE", "/api/v1/exceptions/{student_id}", "Removed")}
+                           ("DELETE", "/api/v1/exceptions/{student_id}", "Removed"),
+                           ("POST", "/api/v1/regrades", "RegradePlan"),
+                           ("GET", "/api/v1/regrades/{regrade_id}", "RegradePlan"),
+                           ("POST", "/api/v1/regrades/{regrade_id}/apply", "RegradePlan"),
+                           ("POST", "/api/v1/regrades/{regrade_id}/discard", "RegradePlan")}
     refusal = operations[("POST", "/api/v1/answers")]["responses"]
     for status in ("401", "403", "413", "422", "429", "503"):
         schema = refusal[status]["content"]["application/json"]["schema"]

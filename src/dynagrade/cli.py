@@ -13,6 +13,7 @@ Usage::
     dynagrade links out/manifest.json -o links.csv --instructor
     dynagrade serve out/manifest.json
     dynagrade policy out/manifest.json --closes 2025-04-22T23:59:00+02:00
+    dynagrade rekey out/manifest.json projectile-range
 """
 
 from __future__ import annotations
@@ -382,6 +383,27 @@ def exam(context, exam_file, roster, output, jobs, no_pdf, secret_file, solution
     click.echo(f"wrote {output}: {report.students} students, {report.variants} variants "
                f"({report.redraws} draws replaced because they could not discriminate; see "
                f"manifest.json{warned}) in {report.timings['total']:.1f} s", err=True)
+
+
+@main.command()
+@click.argument("manifest", type=click.Path(exists=True, dir_okay=False))
+@click.argument("exercise_ids", nargs=-1, required=True)
+@click.pass_obj
+def rekey(context, manifest, exercise_ids):
+    """Recompute the reference answers of EXERCISE_IDS in MANIFEST from the exercise
+    files as they are now (each variant's seed, the exam's `set` values); refused, with
+    nothing written, when any variant's parameters would change. Safe while the exam is
+    served: the manifest is replaced atomically."""
+    from .generation.rekey import rekey as rekey_manifest
+
+    for line in rekey_manifest(manifest, list(exercise_ids), context.bank):
+        click.echo(line.line())
+    folder = Path(manifest).parent
+    rewritten = " key.csv was rewritten;" if (folder / "key.csv").exists() else ""
+    click.echo(f"rewrote {manifest};{rewritten} key.pdf, moodle.xml and the students' "
+               "sheets and solutions in the folder are NOT rendered again (they keep the "
+               "old answers). A server goes on grading new submits with the old key until "
+               "a regrade is applied on its staff page (/i/<token>/regrade).", err=True)
 
 
 @main.command()

@@ -8,6 +8,7 @@ nothing else does. docs/serve.md lists the routes; ``/api/openapi.json`` describ
 
 from __future__ import annotations
 
+import asyncio
 import datetime as dt
 import os
 from contextlib import asynccontextmanager
@@ -20,6 +21,7 @@ from starlette.concurrency import run_in_threadpool
 from . import db, errors, limits
 from .exam_data import ExamData
 from .policy_changes import PolicySource
+from .reload import ExamReloader
 from .routes import ROUTERS
 from .state import ENVIRONMENT, Server, Settings
 
@@ -48,10 +50,15 @@ def build_app(settings: Settings, clock: Callable[[], dt.datetime] | None = None
     async def lifespan(app: FastAPI):
         pool = server.start_pool()
         await run_in_threadpool(pool.warm_up)
+        reloader = await run_in_threadpool(ExamReloader, server)
+        server.catch_up = reloader.catch_up
+        watching = asyncio.create_task(reloader.watch())
         try:
             yield
         finally:
-            pool.close()
+            watching.cancel()
+            if server.pool is not None:
+                server.pool.close()
             engine.dispose()
 
     app = FastAPI(title=f"dynagrade serve: {data.title}", lifespan=lifespan,

@@ -542,14 +542,19 @@ def idempotency_keys(engine: sa.Engine, exam_id: str) -> list[str]:
             submissions.c.exam_id == exam_id)).scalars())
 
 
-def _answers(connection, condition) -> list[StoredAnswer]:
+def _answer_columns() -> tuple:
+    """The columns of a :class:`StoredAnswer`, in its fields' order."""
     s, a = submissions.c, answers.c
+    return (s.id, s.student_id, s.exercise_id, s.attempt, s.counted, s.seed, s.created_at,
+            a.part, a.raw, a.readable, a.message, a.status, a.correct, a.score, a.max_score,
+            a.feedback, a.misconception)
+
+
+def _answers(connection, condition) -> list[StoredAnswer]:
     rows = connection.execute(
-        sa.select(s.id, s.student_id, s.exercise_id, s.attempt, s.counted, s.seed,
-                  s.created_at, a.part, a.raw, a.readable, a.message, a.status, a.correct,
-                  a.score, a.max_score, a.feedback, a.misconception)
+        sa.select(*_answer_columns())
         .select_from(answers.join(submissions)).where(condition)
-        .order_by(s.id, a.id)).all()
+        .order_by(submissions.c.id, answers.c.id)).all()
     return [StoredAnswer(*row) for row in rows]
 
 
@@ -737,6 +742,208 @@ def started_times(engine: sa.Engine, exam_id: str) -> dict[str, dt.datetime]:
 
 # -- regrades -----------------------------------------------------------------------------
 # (the statements of dynagrade.serve.regrade)
+
+#: the audit log's action of an applied or discarded regrade (subject: the plan's id)
+REGRADE = "regrade"
+
+
+@dataclass(frozen=True)
+class Regrade:
+    """A regrade: who previewed it and when, its state, what the verdicts were
+    recomputed against (``source``) and the plan (the verdicts that change, old and new)."""
+
+    id: int
+    created_at: dt.datetime
+    actor: str
+    state: str  # "previewed" | "applied" | "discarded"
+    source: dict
+    plan: dict
+    applied_at: dt.datetime | None
+
+
+class RegradeConflict(DynagradeError):
+    """A regrade cannot be applied or discarded: ``why`` is its state ("applied",
+    "discarded") or "answers changed" (an answer no longer holds the plan's old verdict)."""
+
+    def __init__(self, why: str):
+        super().__init__(why)
+        self.why = why
+
+
+def counted_answers_by_id(engine: sa.Engine, exam_id: str) -> list[tuple[int, StoredAnswer]]:
+    """Every counted answer of the exam with its row id, oldest first (what a regrade
+    recomputes)."""
+    with engine.connect() as connection:
+        rows = connection.execute(
+            sa.select(answers.c.id, *_answer_columns())
+            .select_from(answers.join(submissions))
+            .where(submissions.c.exam_id == exam_id, submissions.c.counted == sa.true())
+            .order_by(submissions.c.id, answers.c.id)).all()
+    return [(int(row[0]), StoredAnswer(*row[1:])) for row in rows]
+
+
+def store_regrade(engine: sa.Engine, exam_id: str, actor: str, source: dict,
+                  plan: dict) -> int:
+    """Keep a previewed regrade; its id."""
+    import json
+
+    with _writing(engine), engine.begin() as connection:
+        return int(connection.execute(regrades.insert().values(
+            exam_id=exam_id, created_at=now(), actor=actor, state="previewed",
+            source=json.dumps(source, sort_keys=True), plan=json.dumps(plan),
+            applied_at=None).returning(regrades.c.id)).scalar_one())
+
+
+def _regrade(row) -> Regrade:
+    import json
+
+    return Regrade(int(row.id), row.created_at, row.actor, row.state, json.loads(row.source),
+                   json.loads(row.plan), row.applied_at)
+
+
+def find_regrade(engine: sa.Engine, exam_id: str, regrade_id: int) -> Regrade | None:
+    """The exam's regrade ``regrade_id``, or ``None``."""
+    with engine.connect() as connection:
+        row = connection.execute(sa.select(regrades).where(
+            regrades.c.exam_id == exam_id, regrades.c.id == regrade_id)).first()
+    return None if row is None else _regrade(row)
+
+
+def list_regrades(engine: sa.Engine, exam_id: str, limit: int = 50) -> list[Regrade]:
+    """The exam's regrades, newest first."""
+    with engine.connect() as connection:
+        rows = connection.execute(sa.select(regrades).where(regrades.c.exam_id == exam_id)
+                                  .order_by(regrades.c.id.desc()).limit(limit)).all()
+    return [_regrade(row) for row in rows]
+
+
+def applied_regrades(engine: sa.Engine, exam_id: str) -> int:
+    """How many regrades of the exam were applied (it only grows: a worker that sees it
+    grow loads the exam again)."""
+    with engine.connect() as connection:
+        return int(connection.execute(sa.select(sa.func.count()).select_from(regrades).where(
+            regrades.c.exam_id == exam_id, regrades.c.state == "applied")).scalar_one())
+
+
+def counted_answers_after(engine: sa.Engine, exam_id: str, answer_id: int,
+                          until: dt.datetime | None = None) -> int:
+    """How many counted answers were stored after the answer ``answer_id`` (and, given
+    ``until``, before that time)."""
+    condition = [submissions.c.exam_id == exam_id, submissions.c.counted == sa.true(),
+                 answers.c.id > answer_id]
+    if until is not None:
+        condition.append(submissions.c.created_at <= until)
+    with engine.connect() as connection:
+        return int(connection.execute(
+            sa.select(sa.func.count()).select_from(answers.join(submissions))
+            .where(*condition)).scalar_one())
+
+
+#: the verdict columns a regrade replaces (and ``verdict_history`` keeps)
+VERDICT = ("status", "correct", "score", "feedback", "misconception")
+
+
+def _same_verdict(row, verdict: dict) -> bool:
+    return (row.status == verdict["status"] and bool(row.correct) == verdict["correct"]
+            and abs(float(row.score) - float(verdict["score"])) <= 1e-9
+            and row.misconception == verdict["misconception"])
+
+
+def _already(connection, exam_id: str, regrade_id: int, target: str) -> bool:
+    """Whether the regrade is in the ``target`` state already (its row locked until the
+    transaction ends); :class:`RegradeConflict` unless it is that or still previewed."""
+    state = connection.execute(sa.select(regrades.c.state).where(
+        regrades.c.exam_id == exam_id, regrades.c.id == regrade_id)
+        .with_for_update()).scalar()
+    if state == target:
+        return True
+    if state != "previewed":
+        raise RegradeConflict(str(state))
+    return False
+
+
+def apply_regrade(engine: sa.Engine, exam_id: str, regrade_id: int, actor: str,
+                  changes: list[dict], before: dict, after: dict) -> bool:
+    """Apply the previewed regrade in one transaction: each answer of ``changes``
+    (``{"answer_id", "old": verdict, "new": verdict}``) must still hold its old verdict;
+    the old verdict goes to ``verdict_history``, the new one replaces it, the regrade is
+    marked applied and the audit log gets ``before`` and ``after``. False when it was
+    applied already (nothing done); :class:`RegradeConflict` when it cannot be applied."""
+    with _writing(engine), engine.begin() as connection:
+        if _already(connection, exam_id, regrade_id, "applied"):
+            return False
+        ids = [change["answer_id"] for change in changes]
+        current = {}
+        for chunk in range(0, len(ids), 500):
+            rows = connection.execute(sa.select(answers.c.id, *(answers.c[c] for c in VERDICT))
+                                      .where(answers.c.id.in_(ids[chunk:chunk + 500]))
+                                      .with_for_update()).all()
+            current.update({row.id: row for row in rows})
+        moved = [i for i, change in zip(ids, changes)
+                 if i not in current or not _same_verdict(current[i], change["old"])]
+        if moved:
+            raise RegradeConflict("answers changed")
+        if changes:
+            connection.execute(verdict_history.insert(), [
+                {"answer_id": change["answer_id"], "regrade_id": regrade_id,
+                 **{c: change["old"][c] for c in VERDICT}} for change in changes])
+            for change in changes:
+                connection.execute(answers.update().where(
+                    answers.c.id == change["answer_id"]).values(
+                    **{c: change["new"][c] for c in VERDICT}))
+        connection.execute(regrades.update().where(regrades.c.id == regrade_id)
+                           .values(state="applied", applied_at=now()))
+        _append_change(connection, exam_id, actor, REGRADE, str(regrade_id), before, after)
+    return True
+
+
+def discard_regrade(engine: sa.Engine, exam_id: str, regrade_id: int, actor: str) -> bool:
+    """Discard a previewed regrade (recorded in the audit log); False when it was
+    discarded already; :class:`RegradeConflict` when it was applied."""
+    with _writing(engine), engine.begin() as connection:
+        if _already(connection, exam_id, regrade_id, "discarded"):
+            return False
+        connection.execute(regrades.update().where(regrades.c.id == regrade_id)
+                           .values(state="discarded"))
+        _append_change(connection, exam_id, actor, REGRADE, str(regrade_id),
+                       {"state": "previewed"}, {"state": "discarded"})
+    return True
+
+
+@dataclass(frozen=True)
+class ReplacedVerdict:
+    """A verdict an applied regrade replaced: when, which answer, and the points before
+    and after (``after``: the next regrade's old points, or the answer's points now)."""
+
+    applied_at: dt.datetime
+    exercise_id: str
+    part: str
+    attempt: int
+    before: float
+    after: float
+
+
+def replaced_verdicts(engine: sa.Engine, exam_id: str, student_id: str
+                      ) -> list[ReplacedVerdict]:
+    """Every verdict of the student's answers that an applied regrade replaced, oldest
+    first."""
+    h = verdict_history.c
+    with engine.connect() as connection:
+        rows = connection.execute(
+            sa.select(h.answer_id, h.score, regrades.c.applied_at, submissions.c.exercise_id,
+                      answers.c.part, submissions.c.attempt, answers.c.score.label("now"))
+            .select_from(verdict_history.join(regrades).join(answers)
+                         .join(submissions, answers.c.submission_id == submissions.c.id))
+            .where(submissions.c.exam_id == exam_id, submissions.c.student_id == student_id,
+                   regrades.c.state == "applied")
+            .order_by(h.id)).all()
+    out = []
+    for index, row in enumerate(rows):
+        later = next((r.score for r in rows[index + 1:] if r.answer_id == row.answer_id),
+                     row.now)
+        out.append(ReplacedVerdict(row.applied_at, row.exercise_id, row.part, int(row.attempt),
+                                   float(row.score), float(later)))
+    return out
 
 
 # -- staff links: named, listed, revoked ---------------------------------------------------

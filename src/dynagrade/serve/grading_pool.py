@@ -70,6 +70,8 @@ class GradingPool:
         self._waiting = 0
         self._queue = queue
         self._executor = self._start()
+        #: the pool that took over after a reload (:meth:`retire`)
+        self._successor: GradingPool | None = None
 
     def _start(self) -> ProcessPoolExecutor:
         return ProcessPoolExecutor(self._workers, mp_context=multiprocessing.get_context("spawn"),
@@ -93,6 +95,8 @@ class GradingPool:
         return await self._run(budget(1), _read, student_id, exercise_id, part, text, seed)
 
     async def _run(self, seconds, function, *args):
+        if self._successor is not None:  # a request that held this pool across a reload
+            return await self._successor._run(seconds, function, *args)
         if self._waiting >= self._queue:
             raise Busy()
         self._waiting += 1
@@ -110,6 +114,12 @@ class GradingPool:
                     self._executor = self._start()
         finally:
             self._waiting -= 1
+
+    def retire(self, successor: GradingPool) -> None:
+        """Hand new jobs to ``successor`` and stop once the jobs already running here are
+        done (a reload of the exam drops no request in flight)."""
+        self._successor = successor
+        self._executor.shutdown(wait=True)
 
     def close(self) -> None:
         self._executor.shutdown(wait=False, cancel_futures=True)

@@ -10,6 +10,7 @@ verdicts appear only where the exam's policy shows them.
 
 from __future__ import annotations
 
+import datetime as dt
 from typing import TYPE_CHECKING, Any, Literal
 
 from pydantic import BaseModel, Field
@@ -18,6 +19,7 @@ from .exam_data import MAX_ANSWER_CHARS
 
 if TYPE_CHECKING:
     from ..classgrade.gradebook import GradebookRow as Row
+
 
 # -- requests -----------------------------------------------------------------------------
 
@@ -282,3 +284,80 @@ class StartResponse(BaseModel):
     minutes: int = Field(description="their time, extra minutes included (0: untimed)")
     deadline: str | None = Field(description="the earlier of their close and the end of "
                                              "their time (null: never)")
+
+
+# -- regrades -----------------------------------------------------------------------------
+
+
+class Verdict(BaseModel):
+    """A stored verdict on one answer (points in the exam's scale, penalty applied)."""
+
+    status: str
+    correct: bool
+    score: float
+    feedback: str
+    misconception: str | None
+
+
+class RegradeChange(BaseModel):
+    """One answer whose verdict the regrade changes: whose, which part, the text, and the
+    verdict before and after."""
+
+    answer_id: int
+    student_id: str
+    name: str
+    exercise_id: str
+    part: str
+    label: str
+    attempt: int = Field(description="the student's submit of the exercise it came with")
+    raw: str = Field(description="the answer as the student typed it")
+    old: Verdict
+    new: Verdict
+    counts: bool = Field(description="whether it is the part's counted answer before or "
+                                     "after the regrade")
+
+
+class StudentChange(BaseModel):
+    """An affected student's points, old and new: per exercise (null: not handed in) and
+    in total, as the gradebook computes them."""
+
+    exercises: dict[str, list[float | None]]
+    total: list[float | None]
+
+
+class RegradePlan(BaseModel):
+    """``/api/v1/regrades``: a regrade, its state and its plan."""
+
+    id: int
+    state: Literal["previewed", "applied", "discarded"]
+    created_at: str = Field(description="when it was previewed (ISO 8601, UTC)")
+    actor: str = Field(description="who previewed it")
+    applied_at: str | None
+    answers: int = Field(description="the counted answers graded again")
+    changes: list[RegradeChange]
+    students: dict[str, StudentChange] = Field(
+        description="the affected students' points per exercise and total, [old, new]")
+    source: dict[str, Any] = Field(description="the manifest and exercise files the "
+                                               "verdicts were recomputed against: paths "
+                                               "and SHA-256")
+    done: bool | None = Field(default=None, description="apply or discard: whether this "
+                                                        "call changed the state (false: "
+                                                        "it was done already)")
+    answers_since: int | None = Field(default=None, description="counted answers stored "
+                                      "after the preview, graded with the key of then "
+                                      "(preview again to regrade them)")
+
+    @classmethod
+    def of(cls, regrade: Any, **extra: Any) -> "RegradePlan":
+        """The model of a stored :class:`dynagrade.serve.db.Regrade`."""
+        def iso(moment):
+            if moment is None:
+                return None
+            aware = moment if moment.tzinfo else moment.replace(tzinfo=dt.timezone.utc)
+            return aware.isoformat(timespec="seconds")
+
+        plan = regrade.plan
+        return cls(id=regrade.id, state=regrade.state, created_at=iso(regrade.created_at),
+                   actor=regrade.actor, applied_at=iso(regrade.applied_at),
+                   answers=plan["answers"], changes=plan["changes"],
+                   students=plan["students"], source=regrade.source, **extra)

@@ -13,7 +13,7 @@ from markupsafe import Markup
 
 from ..exam.solution_policy import solution_visible
 from ..exercise.results import ExerciseResult
-from . import allowances, db, drafts, gradebook, limits, standing
+from . import allowances, db, drafts, gradebook, limits, regrade, standing
 from .allowances import Rules
 from ..grading.choice import shown_option
 from ..i18n import N_, _, ngettext
@@ -101,6 +101,7 @@ def student_html(server: Server, token: str, student_id: str, practice: str | No
         instructions=Markup(markdown_to_html(data.instructions))
         if data.instructions and not before and not waiting else "",
         script=Markup(_SCRIPT),
+        regraded=[] if before else regrade.notices(server, student_id, now),
         submit_label=_("Save answers") if not verdicts else _("Submit"))
 
 

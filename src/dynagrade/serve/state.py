@@ -13,7 +13,7 @@ import datetime as dt
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Callable
+from typing import TYPE_CHECKING, Awaitable, Callable
 
 from . import limits
 from .exam_data import ExamData
@@ -69,6 +69,9 @@ class Server:
     limiter: limits.RateLimiter = field(default_factory=limits.RateLimiter)
     identities: limits.RecentlySeen = field(default_factory=limits.RecentlySeen)
     pool: GradingPool | None = None
+    #: loads the exam again when a regrade was applied since the last look, and says
+    #: whether it did (:meth:`.reload.ExamReloader.catch_up`); set while the app runs
+    catch_up: Callable[[], Awaitable[bool]] | None = None
 
     def start_pool(self) -> GradingPool:
         """Start the grading processes (at the app's start)."""

@@ -8,6 +8,7 @@
 - :mod:`.audit`: the audit log (page, CSV and API).
 - :mod:`.exceptions`: exceptions to the policy per student, the staff page
   ``/i/{token}/exceptions`` and ``/api/v1/exceptions``.
+- :mod:`.regrade`: the staff's regrade page ``/i/{token}/regrade`` and ``/api/v1/regrades``.
 
 Each route names who may call it in its signature (:mod:`dynagrade.serve.deps`);
 tests/test_serve_routes.py holds every route of every router to that.
@@ -15,8 +16,8 @@ tests/test_serve_routes.py holds every route of every router to that.
 
 from __future__ import annotations
 
-from . import api, audit, exceptions, health, staff, staff_links, student
+from . import api, audit, exceptions, health, regrade, staff, staff_links, student
 
 ROUTERS = (health.router, student.router, staff.router, api.router, exceptions.page_router,
            exceptions.api_router, staff_links.pages_router, staff_links.api_router,
-           audit.pages_router, audit.api_router)
+           audit.pages_router, audit.api_router, *regrade.ROUTERS)
