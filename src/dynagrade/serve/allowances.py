@@ -86,9 +86,9 @@ class Allowance:
 
     @classmethod
     def from_row(cls, row: db.AllowanceRow) -> Allowance:
-        return cls(as_aware(row.opens), as_aware(row.closes), int(row.extra_minutes),
+        return cls(db.utc(row.opens), db.utc(row.closes), int(row.extra_minutes),
                    {str(k): int(v) for k, v in json.loads(row.extra_attempts or "{}").items()},
-                   as_aware(row.updated_at), row.updated_by)
+                   db.utc(row.updated_at), row.updated_by)
 
     def columns(self) -> dict:
         """The values of the database's row."""
@@ -200,7 +200,7 @@ class Rules:
 def rules_for(engine: sa.Engine, exam_id: str, policy: Policy, student_id: str) -> Rules:
     """The rules in force for ``student_id`` under ``policy`` (the one in force)."""
     row, started = db.student_terms(engine, exam_id, student_id)
-    return Rules(policy, Allowance.from_row(row) if row else None, as_aware(started))
+    return Rules(policy, Allowance.from_row(row) if row else None, db.utc(started))
 
 
 def granted(engine: sa.Engine, exam_id: str,
@@ -357,10 +357,3 @@ def _iso(moment: dt.datetime | None) -> str | None:
 def _utc(moment: dt.datetime | None) -> dt.datetime | None:
     """In UTC, as the database keeps times (SQLite drops the offset)."""
     return None if moment is None else moment.astimezone(dt.timezone.utc)
-
-
-def as_aware(moment: dt.datetime | None) -> dt.datetime | None:
-    """SQLite gives times back without their zone; they were stored in UTC."""
-    if moment is None:
-        return None
-    return moment if moment.tzinfo else moment.replace(tzinfo=dt.timezone.utc)

@@ -39,6 +39,7 @@ import hashlib
 import secrets
 import threading
 from dataclasses import dataclass
+from typing import overload
 from importlib import resources
 from pathlib import Path
 
@@ -198,10 +199,29 @@ def now() -> dt.datetime:
     return dt.datetime.now(dt.timezone.utc)
 
 
-def utc(moment: dt.datetime) -> dt.datetime:
-    """A time read back from the database, with its zone: SQLite gives times back
-    without one, and they were stored in UTC."""
+@overload
+def utc(moment: dt.datetime) -> dt.datetime: ...
+@overload
+def utc(moment: None) -> None: ...
+
+
+def utc(moment: dt.datetime | None) -> dt.datetime | None:
+    """A time read back from the database, with its zone (None stays None): SQLite
+    gives times back without one, and they were stored in UTC."""
+    if moment is None:
+        return None
     return moment if moment.tzinfo else moment.replace(tzinfo=dt.timezone.utc)
+
+
+@overload
+def iso(moment: dt.datetime) -> str: ...
+@overload
+def iso(moment: None) -> None: ...
+
+
+def iso(moment: dt.datetime | None) -> str | None:
+    """A time read back from the database as ISO 8601 text, to the second."""
+    return None if moment is None else utc(moment).isoformat(timespec="seconds")
 
 
 # -- connecting ---------------------------------------------------------------------------

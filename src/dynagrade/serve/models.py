@@ -10,7 +10,6 @@ verdicts appear only where the exam's policy shows them.
 
 from __future__ import annotations
 
-import datetime as dt
 from typing import TYPE_CHECKING, Any, Literal
 
 from pydantic import BaseModel, Field
@@ -172,12 +171,10 @@ class StaffLinkInfo(BaseModel):
     @classmethod
     def of(cls, link: Any) -> "StaffLinkInfo":
         """The model of a :class:`dynagrade.serve.db.StaffLinkRecord`."""
-        from .db import utc
+        from .db import iso
 
-        return cls(id=link.id, name=link.label,
-                   created_at=utc(link.created_at).isoformat(timespec="seconds"),
-                   revoked_at=utc(link.revoked_at).isoformat(timespec="seconds")
-                   if link.revoked_at else None)
+        return cls(id=link.id, name=link.label, created_at=iso(link.created_at),
+                   revoked_at=iso(link.revoked_at))
 
 
 class StaffLinks(BaseModel):
@@ -215,9 +212,9 @@ class AuditEntryModel(BaseModel):
     @classmethod
     def of(cls, entry: Any) -> "AuditEntryModel":
         """The model of a :class:`dynagrade.serve.db.AuditEntry`."""
-        from .db import utc
+        from .db import iso
 
-        return cls(id=entry.id, at=utc(entry.at).isoformat(timespec="seconds"),
+        return cls(id=entry.id, at=iso(entry.at),
                    actor=entry.actor, action=entry.action, subject=entry.subject,
                    before=entry.before, after=entry.after)
 
@@ -350,11 +347,7 @@ class RegradePlan(BaseModel):
     @classmethod
     def of(cls, regrade: Any, **extra: Any) -> "RegradePlan":
         """The model of a stored :class:`dynagrade.serve.db.Regrade`."""
-        def iso(moment):
-            if moment is None:
-                return None
-            aware = moment if moment.tzinfo else moment.replace(tzinfo=dt.timezone.utc)
-            return aware.isoformat(timespec="seconds")
+        from .db import iso
 
         plan = regrade.plan
         return cls(id=regrade.id, state=regrade.state, created_at=iso(regrade.created_at),

@@ -138,10 +138,6 @@ def _in_fresh_processes(server: Server, jobs: list[Job]
 # -- the policy at each submit -----------------------------------------------------------
 
 
-def _aware(moment: dt.datetime) -> dt.datetime:
-    return moment if moment.tzinfo else moment.replace(tzinfo=dt.timezone.utc)
-
-
 def _policy_history(server: Server) -> list[tuple[dt.datetime, Policy]]:
     """The policy in force from each moment on, oldest first (the manifest's from the
     start; each recorded change from its time)."""
@@ -149,12 +145,12 @@ def _policy_history(server: Server) -> list[tuple[dt.datetime, Policy]]:
     history = [(dt.datetime.min.replace(tzinfo=dt.timezone.utc), data.manifest_policy)]
     for entry in reversed(db.changes(server.engine, data.exam_id, db.POLICY_CHANGE)):
         if entry.after is not None:
-            history.append((_aware(entry.at), Policy.from_json(entry.after)))
+            history.append((db.utc(entry.at), Policy.from_json(entry.after)))
     return history
 
 
 def _policy_at(history: list[tuple[dt.datetime, Policy]], moment: dt.datetime) -> Policy:
-    return [policy for since, policy in history if since <= _aware(moment)][-1]
+    return [policy for since, policy in history if since <= db.utc(moment)][-1]
 
 
 # -- preview -------------------------------------------------------------------------------
@@ -342,7 +338,7 @@ def notices(server: Server, student_id: str, now: dt.datetime) -> list[str]:
     for changed in db.replaced_verdicts(server.engine, data.exam_id, student_id):
         meta = data.exercises_meta.get(changed.exercise_id)
         parts = {p.name: p.label for p in data.manifest_parts.get(changed.exercise_id, ())}
-        when = _aware(changed.applied_at).astimezone(zone)
+        when = db.utc(changed.applied_at).astimezone(zone)
         lines.append(_("Regraded on {date}: {exercise} {part} (attempt {attempt}): {old} → "
                        "{new} points").format(
             date=f"{when:%Y-%m-%d}", exercise=meta.title if meta else changed.exercise_id,

@@ -17,11 +17,8 @@ STATE_WORDS = {"previewed": N_("previewed"), "applied": N_("applied"),
 
 
 def _when(value: dt.datetime | None, zone: dt.tzinfo) -> str:
-    """A time in the course's zone, to the second, naming the zone."""
-    if value is None:
-        return ""
-    local = (value if value.tzinfo else value.replace(tzinfo=dt.timezone.utc)).astimezone(zone)
-    return f"{local:%Y-%m-%d %H:%M:%S} {local.tzname() or 'UTC'}"
+    """A time in the course's zone, to the second, naming the zone ("" for none)."""
+    return "" if value is None else standing.moment(value, zone, seconds=True).text
 
 
 def _plan_rows(server: Server, plan: dict) -> list[dict]:

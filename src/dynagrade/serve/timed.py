@@ -32,4 +32,4 @@ def start(server, student_id: str, now: dt.datetime) -> Rules:
         raise Refused(403, rules.refusal(now) or "")
     first = db.record_start(server.engine, data.exam_id, student_id,
                             now.astimezone(dt.timezone.utc))
-    return dataclasses.replace(rules, started_at=allowances.as_aware(first))
+    return dataclasses.replace(rules, started_at=db.utc(first))
