@@ -1,10 +1,12 @@
-"""The gradebook and the counted answers as CSV downloads (staff page and API alike)."""
+"""The gradebook, the counted answers and the points set by hand as CSV downloads (staff
+page and API alike)."""
 
 from __future__ import annotations
 
 from starlette.responses import PlainTextResponse
 
 from . import db, gradebook
+from .overrides import overrides_csv
 from .state import Server
 
 
@@ -15,16 +17,29 @@ class CsvResponse(PlainTextResponse):
 
 
 def grades(server: Server) -> CsvResponse:
-    """``grades.csv``: the gradebook as class grading writes it."""
-    return _download(server, gradebook.grades_csv, "grades.csv")
+    """``grades.csv``: the gradebook as class grading writes it, points set by hand
+    included."""
+    data, engine = server.data, server.engine
+    return _download(gradebook.grades_csv(data, db.all_answers(engine, data.exam_id),
+                                          db.stored_overrides(engine, data.exam_id)),
+                     "grades.csv")
 
 
 def submissions(server: Server) -> CsvResponse:
     """``submissions.csv``: the counted answers as ``dynagrade grade --manifest`` reads."""
-    return _download(server, gradebook.responses_csv, "submissions.csv")
+    data = server.data
+    return _download(gradebook.responses_csv(data, db.all_answers(server.engine,
+                                                                  data.exam_id)),
+                     "submissions.csv")
 
 
-def _download(server: Server, render, filename: str) -> CsvResponse:
-    text = render(server.data, db.all_answers(server.engine, server.data.exam_id))
+def overrides(server: Server) -> CsvResponse:
+    """``overrides.csv``: the points set by hand as ``dynagrade grade --overrides`` reads."""
+    data = server.data
+    return _download(overrides_csv(data, db.stored_overrides(server.engine, data.exam_id)),
+                     "overrides.csv")
+
+
+def _download(text: str, filename: str) -> CsvResponse:
     return CsvResponse(text, headers={"Content-Disposition": f'attachment; filename="{filename}"',
                                       "Cache-Control": "no-store"})

@@ -16,6 +16,7 @@ from starlette.concurrency import run_in_threadpool
 
 from . import db
 from .exam_data import ExamData
+from .standing import aware
 from .submit import check_open, check_texts
 
 
@@ -49,11 +50,6 @@ def shown_texts(stored: list[db.StoredAnswer], drafts: list[db.Draft]
             when[(answer.exercise_id, answer.part)] = answer.created_at
     for draft in drafts:
         key = (draft.exercise_id, draft.part)
-        if key not in when or _aware(draft.saved_at) > _aware(when[key]):
+        if key not in when or aware(draft.saved_at) > aware(when[key]):
             shown[key] = draft.text
     return shown
-
-
-def _aware(moment: dt.datetime) -> dt.datetime:
-    """SQLite gives times back without their zone; they were stored in UTC."""
-    return moment if moment.tzinfo else moment.replace(tzinfo=dt.timezone.utc)

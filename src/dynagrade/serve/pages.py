@@ -73,7 +73,8 @@ def student_html(server: Server, token: str, student_id: str, practice: str | No
         stored = db.student_answers(server.engine, data.exam_id, student_id)
         shown = drafts.shown_texts(stored, db.student_drafts(server.engine, data.exam_id,
                                                              student_id))
-        counted = standing.results(data, stored, student_id)
+        counted = standing.results(data, stored, student_id, db.stored_overrides(
+            server.engine, data.exam_id, student_id))
         exercises = [_exercise(server, student_id, exercise_id, practice, stored, shown,
                                counted.get(exercise_id), typed, now, zone)
                      for exercise_id in data.exercise_ids]
@@ -132,12 +133,12 @@ def _exercise(server: Server, student_id: str, exercise_id: str, practice: str |
             text = here.texts.get(info.name, text)  # what was typed, not yet saved
         left = max(0, policy.attempts - used[info.name]) \
             if policy.attempts and seed is None else None
+        verdict = result.part(info.name) if result is not None and seed is None else None
         parts.append({
             "info": info, "text": text, "left": left, "exhausted": left == 0,
             "chosen": {c.strip() for c in text.split(",")} if info.options else set(),
-            "reason": here.reasons.get(info.name),
-            "verdict": result.part(info.name) if result is not None and seed is None
-            else None,
+            "reason": here.reasons.get(info.name), "verdict": verdict,
+            "staff_note": verdict.override_note(data.rounding) if verdict else "",
             "history": [{"attempt": a.attempt, "counted": a.counted,
                          "time": standing.moment(a.created_at, zone), "raw": a.raw,
                          "message": a.message, "status": _(_STATUS_WORDS.get(a.status, a.status)), "correct": a.correct,
@@ -204,11 +205,13 @@ def staff_tables(server: Server) -> dict:
     progress, each table as ``{"columns": [...], "rows": [[cell text, ...], ...]}``."""
     data = server.data
     stored = db.all_answers(server.engine, data.exam_id)
-    columns, rows = gradebook.staff_table(data, stored)
+    columns, rows = gradebook.staff_table(data, stored,
+                                          db.stored_overrides(server.engine, data.exam_id))
     book = [["—" if row[c] is None else str(row[c]) for c in columns] for row in rows]
+    zone = standing.exam_zone(data.policy)
     progress = [[p["student_id"], p["name"],
                  *(str(p["attempts"].get(e, "")) for e in data.exercise_ids),
-                 p["last"].strftime("%Y-%m-%d %H:%M:%S") if p["last"] else ""]
+                 standing.moment(p["last"], zone, seconds=True).text if p["last"] else ""]
                 for p in gradebook.progress(data, stored)]
     counts = db.counts(server.engine, data.exam_id)
     text = ", ".join([
@@ -221,7 +224,13 @@ def staff_tables(server: Server) -> dict:
             "gradebook": {"columns": [_(c) if c in gradebook.COLUMN_WORDS else c
                                       for c in columns], "rows": book},
             "progress": {"columns": [_("student"), _("name"), *data.exercise_ids,
-                                     _("last submit (UTC)")], "rows": progress}}
+                                     _("last submit ({zone})").format(
+                                         zone=_zone_name(zone))], "rows": progress}}
+
+
+def _zone_name(zone: dt.tzinfo) -> str:
+    """A zone as the staff read it: its name (Europe/Zurich), else its abbreviation."""
+    return str(getattr(zone, "key", None) or zone.tzname(None) or "UTC")
 
 
 #: how often the staff page's script asks for fresh tables (seconds)

@@ -11,22 +11,31 @@ from __future__ import annotations
 import datetime as dt
 from collections import Counter
 from dataclasses import dataclass
+from typing import Sequence
 
+from ..classgrade.overrides import apply_overrides
 from ..exercise.results import ExerciseResult
+from ..i18n import _
 from . import gradebook
-from .db import StoredAnswer
+from .db import StoredAnswer, StoredOverride
+from .overrides import as_class_overrides
 from .exam_data import ExamData
 
 
-def results(data: ExamData, stored: list[StoredAnswer], student_id: str
-            ) -> dict[str, ExerciseResult | None]:
-    """The student's counted result of each exercise, rounded (None: nothing counted
-    yet); ``stored``: the student's answers."""
+def results(data: ExamData, stored: list[StoredAnswer], student_id: str,
+            overrides: Sequence[StoredOverride] = ()) -> dict[str, ExerciseResult | None]:
+    """The student's counted result of each exercise, rounded, with the points the staff
+    set by hand (None: nothing counted yet); ``stored``: the student's answers,
+    ``overrides``: theirs (:func:`dynagrade.serve.db.stored_overrides`)."""
     chosen = gradebook.counted_answers(data, stored)
     row = list(data.students).index(student_id)
     counted = gradebook.counted_results(data, chosen)[row]
-    return {exercise_id: None if result is None else result.rounded(data.rounding)
-            for exercise_id, result in counted.items()}
+    rounded = {exercise_id: None if result is None else result.rounded(data.rounding)
+               for exercise_id, result in counted.items()}
+    mine = [o for o in overrides if o.student_id == student_id]
+    final, _notes = apply_overrides(as_class_overrides(mine), _("the staff"),
+                                    {student_id: rounded}, data.rounding)
+    return final[student_id]
 
 
 def total(data: ExamData, counted: dict[str, ExerciseResult | None]) -> float:
@@ -57,9 +66,16 @@ def exam_zone(policy) -> dt.tzinfo:
     return dt.timezone.utc
 
 
-def moment(value: dt.datetime, zone: dt.tzinfo) -> Moment:
-    """``value`` (SQLite's naive times are UTC) to the minute, in ``zone``."""
-    aware = value if value.tzinfo else value.replace(tzinfo=dt.timezone.utc)
-    local = aware.astimezone(zone)
-    return Moment(aware.isoformat(timespec="seconds"),
-                  f"{local:%Y-%m-%d %H:%M} {local.tzname() or 'UTC'}")
+def moment(value: dt.datetime, zone: dt.tzinfo, seconds: bool = False) -> Moment:
+    """``value`` to the minute (or ``seconds``), in ``zone``."""
+    utc = aware(value)
+    local = utc.astimezone(zone)
+    shown = "%Y-%m-%d %H:%M:%S" if seconds else "%Y-%m-%d %H:%M"
+    return Moment(utc.isoformat(timespec="seconds"),
+                  f"{local.strftime(shown)} {local.tzname() or 'UTC'}")
+
+
+def aware(value: dt.datetime) -> dt.datetime:
+    """A stored time with its zone: SQLite gives times back without it; they were
+    stored in UTC."""
+    return value if value.tzinfo else value.replace(tzinfo=dt.timezone.utc)

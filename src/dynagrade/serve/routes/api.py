@@ -7,16 +7,19 @@ Students submit answers and preview how an answer reads; staff download the grad
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any
 
 from fastapi import APIRouter, Header
 
-from .. import db, downloads, drafts, gradebook
+from .. import db, downloads, drafts, gradebook, overrides
 from ..deps import REFUSALS, Data, Now, Pool, ServerDep, StaffBearer, StudentBearer
 from ..downloads import CsvResponse
 from ...i18n import _
-from ..models import (AnswersBody, DraftsBody, DraftsResponse, Gradebook, PreviewBody,
-                      PreviewResponse, SubmitResponse, problem)
+from ..models import (AnswersBody, DraftsBody, DraftsResponse, Gradebook, OverrideBody,
+                      OverrideChange, Overrides, PreviewBody, PreviewResponse,
+                      StoredOverrideModel, StudentRecord, SubmitResponse, problem)
+from ..standing import aware
+from ..student_record import student_record as record_of
 from ..practice import practice_seed
 from ..submit import Refused, check_open, submit
 
@@ -72,7 +75,8 @@ async def preview(caller: StudentBearer, body: PreviewBody, server: ServerDep,
 def gradebook_json(caller: StaffBearer, server: ServerDep, data: Data) -> Gradebook:
     """The gradebook as JSON: every roster student's row, in roster order."""
     stored = db.all_answers(server.engine, data.exam_id)
-    return Gradebook.from_rows(data.exercise_ids, gradebook.outcome(data, stored).rows)
+    return Gradebook.from_rows(data.exercise_ids, gradebook.outcome(
+        data, stored, db.stored_overrides(server.engine, data.exam_id)).rows)
 
 
 @router.get("/grades.csv", response_class=CsvResponse)
@@ -85,3 +89,55 @@ def grades_csv(caller: StaffBearer, server: ServerDep) -> CsvResponse:
 def submissions_csv(caller: StaffBearer, server: ServerDep) -> CsvResponse:
     """The counted answers as the responses CSV ``dynagrade grade --manifest`` reads."""
     return downloads.submissions(server)
+
+
+# -- points by hand and a student's record ------------------------------------------------
+
+_OVERRIDE_REFUSALS: dict[int | str, dict[str, Any]] = {422: problem(
+    "a student, exercise or part not in the exam, points outside 0 to the part's points "
+    "or not a multiple of the exam's rounding, or an exercise the student handed nothing "
+    "in for")}
+
+
+@router.put("/overrides", responses=_OVERRIDE_REFUSALS)
+def put_override(caller: StaffBearer, body: OverrideBody, server: ServerDep,
+                 data: Data) -> OverrideChange:
+    """Set the points of one part of one student by hand, with a comment (the grader's
+    points are kept beside them); recorded in the audit log unless nothing changed."""
+    return OverrideChange(changed=overrides.set_points(
+        server.engine, data, caller.actor, body.student, body.exercise, body.part,
+        body.points, body.comment))
+
+
+@router.delete("/overrides/{student_id}/{exercise}/{part}", responses=_OVERRIDE_REFUSALS)
+def delete_override(caller: StaffBearer, student_id: str, exercise: str, part: str,
+                    server: ServerDep, data: Data) -> OverrideChange:
+    """Remove the points set by hand on a part: the grader's points count again."""
+    return OverrideChange(changed=overrides.remove_points(
+        server.engine, data, caller.actor, student_id, exercise, part))
+
+
+@router.get("/overrides")
+def list_overrides(caller: StaffBearer, server: ServerDep, data: Data) -> Overrides:
+    """Every part whose points were set by hand."""
+    return Overrides(overrides=[
+        StoredOverrideModel(student=o.student_id, exercise=o.exercise_id, part=o.part,
+                            points=o.points, comment=o.comment, author=o.author,
+                            at=aware(o.at).isoformat(timespec="seconds"))
+        for o in db.stored_overrides(server.engine, data.exam_id)])
+
+
+@router.get("/overrides.csv", response_class=CsvResponse)
+def overrides_csv(caller: StaffBearer, server: ServerDep) -> CsvResponse:
+    """The points set by hand, as ``dynagrade grade --overrides`` reads them."""
+    return downloads.overrides(server)
+
+
+@router.get("/students/{student_id}", responses={404: problem("a student not on the roster")})
+def student_record(caller: StaffBearer, student_id: str, server: ServerDep) -> StudentRecord:
+    """One student's attempts (which counts), drafts and points set by hand."""
+    from .staff_students import on_roster
+
+    on_roster(server, student_id)
+    return StudentRecord.model_validate(
+        record_of(server.engine, server.data, student_id))
