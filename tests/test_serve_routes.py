@@ -18,6 +18,9 @@ from serve_support import exam_copy, exam_dir, reference_answers, serve  # noqa:
 #: the routes anyone may call
 PUBLIC = {("GET", "/healthz")}
 OTHER_ROLE = {"student": "staff", "staff": "student"}
+#: what a route's path parameters are filled with (a student of the roster, who has
+#: answered by the time a staff route asks: the student routes come first)
+PATH_VALUES = {"{student_id}": "s3", "{exercise}": "projectile-range", "{part}": "x_max"}
 
 
 @pytest.fixture(scope="module")
@@ -98,8 +101,13 @@ def _request(served, method: str, path: str, token: str | None, place: str):
         path = path.replace("{token}", token or "")
     elif token is not None:
         headers["Authorization"] = f"Bearer {token}"
+    for name, value in PATH_VALUES.items():
+        path = path.replace(name, value)
     kwargs: dict = {"headers": headers, "follow_redirects": False}
-    if path.startswith("/api/v1/answers"):
+    if path.startswith("/api/v1/overrides") and method == "PUT":
+        kwargs["json"] = {"student": "s3", "exercise": "projectile-range", "part": "x_max",
+                          "points": 0}
+    elif path.startswith("/api/v1/answers"):
         kwargs["json"] = {"exercise": "projectile-range", "answers": {"x_max": "1 m"}}
     elif path.startswith("/api/v1/drafts"):
         kwargs["json"] = {"exercise": "projectile-range", "answers": {"x_max": "1 m"}}
@@ -109,6 +117,7 @@ def _request(served, method: str, path: str, token: str | None, place: str):
         from dynagrade.serve import limits
 
         kwargs["data"] = {"exercise": "projectile-range", "answer.x_max": "1 m",
+                          "part": "x_max", "points": "0",
                           "csrf": limits.csrf_field(served.server.secret, token or "")}
     return served.client.request(method, path, **kwargs)
 
@@ -174,7 +183,12 @@ def test_the_openapi_document_describes_every_response(served):
                            ("POST", "/api/v1/preview", "PreviewResponse"),
                            ("PUT", "/api/v1/drafts", "DraftsResponse"),
                            ("GET", "/api/v1/gradebook", "Gradebook"),
-                           ("GET", "/i/{token}/tables", "StaffTables")}
+                           ("GET", "/i/{token}/tables", "StaffTables"),
+                           ("PUT", "/api/v1/overrides", "OverrideChange"),
+                           ("DELETE", "/api/v1/overrides/{student_id}/{exercise}/{part}",
+                            "OverrideChange"),
+                           ("GET", "/api/v1/overrides", "Overrides"),
+                           ("GET", "/api/v1/students/{student_id}", "StudentRecord")}
     refusal = operations[("POST", "/api/v1/answers")]["responses"]
     for status in ("401", "403", "413", "422", "429", "503"):
         schema = refusal[status]["content"]["application/json"]["schema"]

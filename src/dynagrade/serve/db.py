@@ -199,6 +199,12 @@ def now() -> dt.datetime:
     return dt.datetime.now(dt.timezone.utc)
 
 
+def aware(value: dt.datetime) -> dt.datetime:
+    """A stored time with its zone: SQLite gives times back without it; they were
+    stored in UTC (:func:`now`)."""
+    return value if value.tzinfo else value.replace(tzinfo=dt.timezone.utc)
+
+
 # -- connecting ---------------------------------------------------------------------------
 
 
@@ -700,7 +706,7 @@ def _put_override(engine: sa.Engine, exam_id: str, actor: str, student_id: str,
         if after is not None:
             connection.execute(overrides.insert().values(
                 exam_id=exam_id, student_id=student_id, exercise_id=exercise_id, part=part,
-                points=float(points), comment=comment, author=actor, at=now()))
+                points=after["points"], comment=comment, author=actor, at=now()))
         _insert_change(connection, exam_id, actor, OVERRIDE_CHANGE,
                        f"{student_id}/{exercise_id}/{part}", before, after)
     return before, after

@@ -16,7 +16,6 @@ from starlette.concurrency import run_in_threadpool
 
 from . import db
 from .exam_data import ExamData
-from .standing import aware
 from .submit import check_open, check_texts
 
 
@@ -50,6 +49,6 @@ def shown_texts(stored: list[db.StoredAnswer], drafts: list[db.Draft]
             when[(answer.exercise_id, answer.part)] = answer.created_at
     for draft in drafts:
         key = (draft.exercise_id, draft.part)
-        if key not in when or aware(draft.saved_at) > aware(when[key]):
+        if key not in when or db.aware(draft.saved_at) > db.aware(when[key]):
             shown[key] = draft.text
     return shown

@@ -79,15 +79,8 @@ def remove_points(engine: sa.Engine, data: ExamData, actor: str, student_id: str
 def as_class_overrides(stored: Sequence[db.StoredOverride]) -> tuple[Override, ...]:
     """The stored overrides as class grading applies them (with their author and time)."""
     return tuple(Override(number, o.student_id, o.exercise_id, o.part, o.points, o.comment,
-                          author=o.author, at=_iso(o))
+                          author=o.author, at=db.aware(o.at).isoformat(timespec="seconds"))
                  for number, o in enumerate(stored, 1))
-
-
-def _iso(override: db.StoredOverride) -> str:
-    """When the override was set, as ISO 8601 text (SQLite's naive times are UTC)."""
-    from .standing import aware
-
-    return aware(override.at).isoformat(timespec="seconds")
 
 
 def overrides_csv(data: ExamData, stored: Sequence[db.StoredOverride]) -> str:

@@ -17,7 +17,7 @@ from ..classgrade.overrides import apply_overrides
 from ..exercise.results import ExerciseResult
 from ..i18n import _
 from . import gradebook
-from .db import StoredAnswer, StoredOverride
+from .db import StoredAnswer, StoredOverride, aware
 from .overrides import as_class_overrides
 from .exam_data import ExamData
 
@@ -74,8 +74,3 @@ def moment(value: dt.datetime, zone: dt.tzinfo, seconds: bool = False) -> Moment
     return Moment(utc.isoformat(timespec="seconds"),
                   f"{local.strftime(shown)} {local.tzname() or 'UTC'}")
 
-
-def aware(value: dt.datetime) -> dt.datetime:
-    """A stored time with its zone: SQLite gives times back without it; they were
-    stored in UTC."""
-    return value if value.tzinfo else value.replace(tzinfo=dt.timezone.utc)

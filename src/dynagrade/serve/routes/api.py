@@ -18,7 +18,6 @@ from ...i18n import _
 from ..models import (AnswersBody, DraftsBody, DraftsResponse, Gradebook, OverrideBody,
                       OverrideChange, Overrides, PreviewBody, PreviewResponse,
                       StoredOverrideModel, StudentRecord, SubmitResponse, problem)
-from ..standing import aware
 from ..student_record import student_record as record_of
 from ..practice import practice_seed
 from ..submit import Refused, check_open, submit
@@ -123,7 +122,7 @@ def list_overrides(caller: StaffBearer, server: ServerDep, data: Data) -> Overri
     return Overrides(overrides=[
         StoredOverrideModel(student=o.student_id, exercise=o.exercise_id, part=o.part,
                             points=o.points, comment=o.comment, author=o.author,
-                            at=aware(o.at).isoformat(timespec="seconds"))
+                            at=db.aware(o.at).isoformat(timespec="seconds"))
         for o in db.stored_overrides(server.engine, data.exam_id)])
 
 
