@@ -13,24 +13,12 @@ import re
 
 import pytest
 
-from serve_support import (Clock, exam_copy, exam_dir, fresh_database, postgres_url,  # noqa: F401
+from serve_support import (Clock, database, exam_copy, exam_dir, postgres_url,  # noqa: F401
                            reference_answers, serve)
 
 UTC = dt.timezone.utc
 OPENS = dt.datetime(2025, 4, 14, 8, 0, tzinfo=UTC)
 CLOSES = dt.datetime(2025, 4, 14, 12, 0, tzinfo=UTC)
-_COUNTER = iter(range(10_000))
-
-
-@pytest.fixture(params=["sqlite", "postgresql"])
-def database(request, tmp_path):
-    """A fresh database URL of each backend (None: SQLite beside the manifest)."""
-    if request.param == "sqlite":
-        return None
-    url = request.getfixturevalue("postgres_url")
-    return fresh_database(url, f"t{next(_COUNTER)}_{tmp_path.name[-8:].lower()}"
-                          .replace("-", "_"))
-
 
 def _points(served, exercise) -> dict[str, float]:
     return {p.name: p.points for p in served.server.data.parts(exercise)}

@@ -14,20 +14,8 @@ import io
 
 import pytest
 
-from serve_support import (exam_copy, exam_dir, fresh_database, postgres_url,  # noqa: F401
+from serve_support import (database, exam_copy, exam_dir, postgres_url,  # noqa: F401
                            reference_answers, serve)
-
-_COUNTER = iter(range(10_000))
-
-
-@pytest.fixture(params=["sqlite", "postgresql"])
-def database(request, tmp_path):
-    """A fresh database URL of each backend (None: SQLite beside the manifest)."""
-    if request.param == "sqlite":
-        return None
-    url = request.getfixturevalue("postgres_url")
-    return fresh_database(url, f"o{next(_COUNTER)}_{tmp_path.name[-8:].lower()}"
-                          .replace("-", "_"))
 
 
 def rounded_copy(exam_dir, target, step: float = 0.1, **policy):
@@ -142,15 +130,12 @@ def test_refusals_name_what_is_wrong_and_change_nothing(exam_dir, tmp_path, body
         assert _grades(served) == before and _audit(served) == []
 
 
-@pytest.mark.parametrize("backend", ["sqlite", "postgresql"])
-def test_the_refusals_hold_on_both_databases(exam_dir, tmp_path, request, backend):
+def test_the_refusals_hold_on_both_databases(exam_dir, tmp_path, database):
     """One refusal of each kind of check (the rules, the stored answers) per backend,
     and the removal of a part that was never overridden."""
-    url = None if backend == "sqlite" else fresh_database(
-        request.getfixturevalue("postgres_url"), f"r{next(_COUNTER)}")
     manifest = rounded_copy(exam_dir, tmp_path / "exam", mode="homework",
                             feedback="immediate")
-    with serve(manifest, url) as served:
+    with serve(manifest, database) as served:
         above = _put(served, student="s1", exercise="projectile-range", part="x_max",
                      points=3)
         assert above.status_code == 422 and "outside 0 to 2.4" in above.json()["detail"]
