@@ -13,6 +13,7 @@ import re
 import pytest
 
 from serve_support import exam_copy, exam_dir, reference_answers, serve  # noqa: F401
+from test_i18n_serve import german_exam  # noqa: F401
 
 ZONE = dt.timezone(dt.timedelta(hours=2))
 
@@ -62,7 +63,7 @@ def test_every_attempt_is_listed_and_the_counted_one_marked(exam_dir, tmp_path, 
     html = page.text
     assert html.count(f"<code>{wrong}</code>") == 2 and html.count(f"<code>{right}</code>") == 1
     assert _counted_rows(html) == [str(expected)]
-    why = {"best": "the best score counts", "last": "the last saved answer counts"}[counts]
+    why = {"best": "The best score counts", "last": "The last saved answer counts"}[counts]
     assert why in html
     assert "Ada One" in html and "ada@example.org" in html
     assert "/i/{}/exceptions?students=s1".format(served.staff) in html
@@ -168,3 +169,64 @@ def test_a_student_not_on_the_roster_is_404_in_the_exams_language(exam_dir, tmp_
     assert "s9" in api.json()["detail"]
     assert known.status_code == 200 and '<html lang="de">' in known.text
     assert student.status_code == 403  # a student's link is not a staff link
+
+
+def test_the_german_student_staff_page_has_no_english_fixed_string(german_exam,
+                                                                   tmp_path):
+    """Every state of the page in a German exam: attempts, a draft, points set by hand, a
+    refused form (its reason from the overrides' checks)."""
+    from test_i18n_serve import _english_left
+
+    from dynagrade.serve import db
+
+    manifest = exam_copy(german_exam, tmp_path / "exam", mode="homework",
+                         feedback="immediate")
+    with serve(manifest) as served:
+        right = reference_answers(served, "s1", "projectile-range")
+        served.submit("s1", "projectile-range", {"x_max": right["x_max"]})
+        served.submit("s1", "projectile-range", {"x_max": "1"})
+        served.client.put("/api/v1/drafts", json={
+            "exercise": "projectile-range", "answers": {"h_max": "2"}},
+            headers={"Authorization": f"Bearer {served.tokens['s1']}"})
+        url = f"/i/{served.staff}/students/s1"
+        assert served.client.post(f"{url}/overrides", data=_form(
+            served, exercise="projectile-range", part="x_max", points="1",
+            comment="Methode richtig"), follow_redirects=False).status_code == 303
+        page = served.client.get(url)
+        refused = served.client.post(f"{url}/overrides", data=_form(
+            served, exercise="projectile-range", part="h_max", points="99"))
+        assert page.status_code == 200 and refused.status_code == 422
+        assert "Punkte von Hand: 1 von" in page.text and "Versuche bei" in page.text
+        assert "Entwurf" in page.text and "liegen nicht zwischen 0 und" in refused.text
+        # who set the points is stored data (the staff link's name), not the interface's
+        author = db.stored_overrides(served.server.engine, "german-test")[0].author
+        assert _english_left(served, page.text.replace(author, ""), []) == []
+        assert _english_left(served, refused.text.replace(author, ""), []) == []
+
+
+def test_a_practice_draws_answers_are_listed_and_never_count(exam_dir, tmp_path):
+    """Practice mode: s1 answers their own variant wrong, then a practice draw (any
+    readable answer); under counts=best neither a right nor a wrong practice answer may
+    count, so the own wrong answer (attempt 1) is the counted one."""
+    from dynagrade.serve import limits
+    from dynagrade.serve.practice import practice_value
+
+    manifest = exam_copy(exam_dir, tmp_path / "exam", mode="practice", feedback="immediate",
+                         counts="best")
+    with serve(manifest) as served:
+        right = reference_answers(served, "s1", "projectile-range")["x_max"]
+        assert served.submit("s1", "projectile-range",
+                             {"x_max": repr(2 * float(right))}).status_code == 200
+        draw = practice_value(served.server.secret, "s1", "projectile-range", 12345)
+        posted = served.client.post(f"/s/{served.tokens['s1']}/submit", data={
+            "csrf": limits.csrf_field(served.server.secret, served.tokens["s1"]),
+            "exercise": "projectile-range", "practice": draw, "key": "practice-1",
+            "answer.x_max": "30 m"}, follow_redirects=False)
+        assert posted.status_code == 303, posted.text
+        part = _part(_record(served).json(), "projectile-range", "x_max")
+        page = served.client.get(f"/i/{served.staff}/students/s1").text
+    assert [(a["attempt"], a["practice"], a["counts"]) for a in part["attempts"]] == [
+        (1, False, True), (1, True, False)]
+    assert part["counted_attempt"] == 1 and part["score"] == 0.0
+    assert "1 (practice)" in page and "never (practice)" in page
+    assert _counted_rows(page) == ["1"]

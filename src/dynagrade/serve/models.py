@@ -171,7 +171,7 @@ class OverrideBody(BaseModel):
                          description="shown to the student with the points")
 
 
-class StoredOverrideModel(BaseModel):
+class OverrideEntry(BaseModel):
     """Points set by hand on one part, and by whom and when."""
 
     student: str
@@ -193,7 +193,7 @@ class OverrideChange(BaseModel):
 class Overrides(BaseModel):
     """``GET /api/v1/overrides``: every part whose points were set by hand."""
 
-    overrides: list[StoredOverrideModel]
+    overrides: list[OverrideEntry]
 
 
 class AttemptRecord(BaseModel):

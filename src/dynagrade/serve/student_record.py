@@ -21,8 +21,8 @@ from . import db, gradebook, standing
 from .exam_data import ExamData
 
 #: why an attempt counts, by the policy's ``counts``
-WHY_COUNTED = {"best": N_("the best score counts (the earlier attempt on a tie)"),
-               "last": N_("the last saved answer counts")}
+WHY_COUNTED = {"best": N_("The best score counts (the earlier attempt on a tie)"),
+               "last": N_("The last saved answer counts")}
 
 
 def student_record(engine, data: ExamData, student_id: str) -> dict:

@@ -17,8 +17,9 @@ from ..downloads import CsvResponse
 from ...i18n import _
 from ..models import (AnswersBody, DraftsBody, DraftsResponse, Gradebook, OverrideBody,
                       OverrideChange, Overrides, PreviewBody, PreviewResponse,
-                      StoredOverrideModel, StudentRecord, SubmitResponse, problem)
+                      OverrideEntry, StudentRecord, SubmitResponse, problem)
 from ..student_record import student_record as record_of
+from .staff_students import on_roster
 from ..practice import practice_seed
 from ..submit import Refused, check_open, submit
 
@@ -120,7 +121,7 @@ def delete_override(caller: StaffBearer, student_id: str, exercise: str, part: s
 def list_overrides(caller: StaffBearer, server: ServerDep, data: Data) -> Overrides:
     """Every part whose points were set by hand."""
     return Overrides(overrides=[
-        StoredOverrideModel(student=o.student_id, exercise=o.exercise_id, part=o.part,
+        OverrideEntry(student=o.student_id, exercise=o.exercise_id, part=o.part,
                             points=o.points, comment=o.comment, author=o.author,
                             at=db.aware(o.at).isoformat(timespec="seconds"))
         for o in db.stored_overrides(server.engine, data.exam_id)])
@@ -135,8 +136,6 @@ def overrides_csv(caller: StaffBearer, server: ServerDep) -> CsvResponse:
 @router.get("/students/{student_id}", responses={404: problem("a student not on the roster")})
 def student_record(caller: StaffBearer, student_id: str, server: ServerDep) -> StudentRecord:
     """One student's attempts (which counts), drafts and points set by hand."""
-    from .staff_students import on_roster
-
     on_roster(server, student_id)
     return StudentRecord.model_validate(
         record_of(server.engine, server.data, student_id))
