@@ -654,11 +654,6 @@ class StoredOverride:
     author: str
     at: dt.datetime
 
-    @property
-    def recorded(self) -> dict:
-        """What the audit log keeps of it."""
-        return {"points": self.points, "comment": self.comment}
-
 
 def stored_overrides(engine: sa.Engine, exam_id: str,
                      student_id: str | None = None) -> list[StoredOverride]:
@@ -695,9 +690,10 @@ def _put_override(engine: sa.Engine, exam_id: str, actor: str, student_id: str,
     key = (o.exam_id == exam_id, o.student_id == student_id, o.exercise_id == exercise_id,
            o.part == part)
     with _writing(engine), engine.begin() as connection:
-        if connection.dialect.name == "postgresql":  # one change of a part at a time
-            connection.execute(sa.select(o.points).where(*key).with_for_update())
-        row = connection.execute(sa.select(o.points, o.comment).where(*key)).first()
+        # the row locked on PostgreSQL (one change of a part at a time); SQLite has one
+        # writer anyway, and SQLAlchemy leaves FOR UPDATE out there
+        row = connection.execute(sa.select(o.points, o.comment).where(*key)
+                                 .with_for_update()).first()
         before = None if row is None else {"points": row.points, "comment": row.comment}
         after = None if points is None else {"points": float(points), "comment": comment}
         if before == after:
