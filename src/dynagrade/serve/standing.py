@@ -2,8 +2,9 @@
 each part has used, and the moments the page shows.
 
 The points are the gradebook's (:mod:`dynagrade.serve.gradebook`): the answer each part
-counts by the exam's ``counts`` policy, rounded to the exam's step, an exercise the sum
-of its rounded parts; so the page shows what the staff's gradebook will hold.
+counts by the exam's ``counts`` policy, rounded to the exam's step, the points the staff
+set by hand in place of the grader's (:mod:`.overrides`), an exercise the sum of its
+parts; so the page shows what the staff's gradebook will hold.
 """
 
 from __future__ import annotations
