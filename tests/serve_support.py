@@ -161,6 +161,19 @@ def _postgres(root: Path):
     server.wait(timeout=30)
 
 
+_DATABASES = iter(range(100_000))
+
+
+@pytest.fixture(params=["sqlite", "postgresql"])
+def database(request, tmp_path):
+    """A fresh database URL of each backend (None: SQLite beside the manifest)."""
+    if request.param == "sqlite":
+        return None
+    url = request.getfixturevalue("postgres_url")
+    return fresh_database(url, f"t{next(_DATABASES)}_{tmp_path.name[-8:].lower()}"
+                          .replace("-", "_"))
+
+
 def fresh_database(postgres_url: str, name: str) -> str:
     """A new empty database on the session's server."""
     import sqlalchemy as sa

@@ -1,9 +1,9 @@
 """The server's gradebook, report and downloads are built from the stored verdicts with
 class grading's own rounding, so the server and ``dynagrade grade`` give the same marks.
 
-The property: for any class, policy (penalty 0) and rounding, the server's
-``grades.csv`` equals ``dynagrade grade`` run on the server's own ``submissions.csv``,
-byte for byte. With a penalty, a part's points are the grader's points times the
+The property: for any class, policy (penalty 0), rounding and points set by hand, the
+server's ``grades.csv`` equals ``dynagrade grade`` run on the server's own
+``submissions.csv`` and ``overrides.csv``, byte for byte. With a penalty, a part's points are the grader's points times the
 attempt's factor, rounded to the exam's step (docs/serve.md, "What counts").
 """
 
@@ -98,18 +98,25 @@ KINDS = st.sampled_from(["right", "double", "sign", "near", "off", "unit", "garb
 SUBMITS = st.lists(st.lists(KINDS, min_size=1, max_size=6), min_size=1, max_size=3)
 CLASS = st.lists(st.tuples(st.none() | SUBMITS, st.none() | SUBMITS, st.none() | SUBMITS),
                  min_size=5, max_size=5)
+#: points set by hand: (student, exercise, part) by position, and the share of the part's
+#: points given (rounded to the exam's step)
+FIXES = st.lists(st.tuples(st.integers(0, 4), st.integers(0, 2), st.integers(0, 5),
+                           st.floats(0, 1)), max_size=4)
 
 
 @settings(max_examples=12, deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture,
                                  HealthCheck.too_slow, HealthCheck.data_too_large])
 @example(step=0.1, counts="last", mode="homework", attempts=0,  # the issue's case:
-         work=[(None, None, [["double", "double"]])] + [(None, None, None)] * 4)
+         work=[(None, None, [["double", "double"]])] + [(None, None, None)] * 4, fixes=[])
+@example(step=0.5, counts="best", mode="exam", attempts=0,  # a part right, set lower
+         work=[([["right", "double"]], None, None)] + [(None, None, None)] * 4,
+         fixes=[(0, 0, 0, 0.4), (0, 0, 1, 1.0), (1, 0, 0, 0.5)])
 @given(step=st.sampled_from(STEPS), counts=st.sampled_from(["best", "last"]),
        mode=st.sampled_from(["homework", "exam"]), attempts=st.sampled_from([0, 2, 5]),
-       work=CLASS)
+       work=CLASS, fixes=FIXES)
 def test_the_servers_gradebook_is_dynagrade_grade_of_its_own_submissions(
-        exams, tmp_path_factory, step, counts, mode, attempts, work):
+        exams, tmp_path_factory, step, counts, mode, attempts, work, fixes):
     """The pinned example: with ``round = 0.1`` the two vectors of spinning-disk-on-turning-
     axle (5 points split 1:2:1 in tenths: 1.3 and 2.5) each get two of three components
     right: rounded first, 0.87 → 0.9 and 1.67 → 1.7 make 2.6; the sum rounded, as the
@@ -130,13 +137,37 @@ def test_the_servers_gradebook_is_dynagrade_grade_of_its_own_submissions(
                         reply = served.submit(student, exercise, answers)
                         # 422: no answer could be read, nothing stored (no attempt spent)
                         assert reply.status_code in (200, 403, 422), reply.text
+        for student, exercise, part, share in fixes:
+            _set_by_hand(served, sorted(data.students)[student],
+                         data.exercise_ids[exercise], part, share)
         grades = served.staff_get("/api/v1/grades.csv")
         responses = served.staff_get("/api/v1/submissions.csv")
-    assert grades.status_code == responses.status_code == 200
+        overrides = served.staff_get("/api/v1/overrides.csv")
+    assert grades.status_code == responses.status_code == overrides.status_code == 200
     (folder / "submissions.csv").write_text(responses.text, encoding="utf-8")
-    offline = grade_class(manifest, [folder / "submissions.csv"], folder / "grading", jobs=1)
+    (folder / "overrides.csv").write_text(overrides.text, encoding="utf-8")
+    offline = grade_class(manifest, [folder / "submissions.csv"], folder / "grading", jobs=1,
+                          overrides=folder / "overrides.csv")
     assert grades.text == (folder / "grading" / "grades.csv").read_text(encoding="utf-8")
     assert len(offline.rows) == 5
+
+
+def _set_by_hand(served, student: str, exercise: str, position: int, share: float) -> None:
+    """Set ``share`` of a part's points by hand (the part at ``position``, wrapped);
+    refused, with the offline file's reason, when the student handed nothing in."""
+    data = served.server.data
+    parts = data.parts(exercise)
+    part = parts[position % len(parts)]
+    points = data.rounding.round(share * part.points)
+    reply = served.client.put("/api/v1/overrides", json={
+        "student": student, "exercise": exercise, "part": part.name, "points": points,
+        "comment": f"set to {points:g}"}, headers={"Authorization": f"Bearer {served.staff}"})
+    handed_in = any(row.startswith(f"{student},{exercise},") for row in
+                    served.staff_get("/api/v1/submissions.csv").text.splitlines())
+    if handed_in:
+        assert reply.status_code == 200, reply.text
+    else:
+        assert reply.status_code == 422 and "handed in nothing gradable" in reply.text
 
 
 def test_parts_are_rounded_before_they_are_added_as_dynagrade_grade_rounds_them(
@@ -155,7 +186,7 @@ def test_parts_are_rounded_before_they_are_added_as_dynagrade_grade_rounds_them(
         stored = [StoredAnswer(1, "s1", "projectile-range", 1, True, 1, None, p.name, "x",
                                True, "", "partial", False, 0.2, 1.0, "")
                   for p in low]
-        rows = list(csv.reader(io.StringIO(gradebook.grades_csv(data, stored))))
+        rows = list(csv.reader(io.StringIO(gradebook.grades_csv(data, stored, []))))
     header, s1 = rows[0], rows[1]
     cell = dict(zip(header, s1))
     assert (cell["projectile-range"], cell["total"], cell["percent"]) == ("0", "0", "0.00")

@@ -18,8 +18,8 @@ from serve_support import exam_copy, exam_dir, reference_answers, serve  # noqa:
 #: the routes anyone may call
 PUBLIC = {("GET", "/healthz")}
 OTHER_ROLE = {"student": "staff", "staff": "student"}
-
-
+#: what a route's path parameters are filled with (a student of the roster, who has
+#: answered by the time a staff route asks: the student routes come first)
 @pytest.fixture(scope="module")
 def served(exam_dir, tmp_path_factory):
     """A practice exam (every route, including "new variant", is open) with tokens."""
@@ -112,6 +112,7 @@ def _request(served, method: str, path: str, token: str | None, place: str):
         kwargs["data"] = {"exercise": "projectile-range", "answer.x_max": "1 m",
                           "link": values["link_id"],
                           "students": "s3", "student": "s3", "extra_minutes": "5",
+                          "part": "x_max", "points": "0",
                           "csrf": limits.csrf_field(served.server.secret, token or "")}
     return served.client.request(method, path, **kwargs)
 
@@ -123,6 +124,8 @@ _JSON_BODIES = {
     "/api/v1/preview": {"exercise": "projectile-range", "part": "x_max", "answer": "1 m"},
     "/api/v1/staff-links": {"name": "a TA"},
     "/api/v1/exceptions": {"students": ["s3"], "extra_minutes": 5},
+    "/api/v1/overrides": {"student": "s3", "exercise": "projectile-range", "part": "x_max",
+                          "points": 0},
 }
 
 
@@ -135,6 +138,7 @@ def _path_values(served) -> dict[str, str]:
     data = served.server.data
     other = db.issue_staff_token(served.server.engine, data.exam_id, "another")
     return {"layout": "moodle", "link_id": db.link_id(other), "student_id": "s3",
+            "exercise": "projectile-range", "part": "x_max",
             "regrade_id": str(_fresh_plan(served))}
 
 
@@ -221,7 +225,12 @@ def test_the_openapi_document_describes_every_response(served):
                            ("POST", "/api/v1/regrades", "RegradePlan"),
                            ("GET", "/api/v1/regrades/{regrade_id}", "RegradePlan"),
                            ("POST", "/api/v1/regrades/{regrade_id}/apply", "RegradePlan"),
-                           ("POST", "/api/v1/regrades/{regrade_id}/discard", "RegradePlan")}
+                           ("POST", "/api/v1/regrades/{regrade_id}/discard", "RegradePlan"),
+                           ("PUT", "/api/v1/overrides", "OverrideChange"),
+                           ("DELETE", "/api/v1/overrides/{student_id}/{exercise}/{part}",
+                            "OverrideChange"),
+                           ("GET", "/api/v1/overrides", "Overrides"),
+                           ("GET", "/api/v1/students/{student_id}", "StudentRecord")}
     refusal = operations[("POST", "/api/v1/answers")]["responses"]
     for status in ("401", "403", "413", "422", "429", "503"):
         schema = refusal[status]["content"]["application/json"]["schema"]

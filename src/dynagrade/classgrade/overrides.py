@@ -19,6 +19,11 @@ with too few columns or a part given twice. All bad rows are listed in one
 :class:`OverrideError` and the run stops before it writes anything, so the previous
 grading stays as it was. A part of an exercise the student handed nothing in for cannot
 be overridden (there is no graded part to replace); that too is refused with the row.
+
+The checks of one override (:class:`OverrideRules`, :func:`not_handed_in`) are the same
+for the server's points by hand (:mod:`dynagrade.serve.overrides`), whose stored
+overrides class grading applies here too (:func:`apply_overrides`, with their author and
+time), so both refuse the same and give the same marks.
 """
 
 from __future__ import annotations
@@ -34,6 +39,7 @@ from ..exercise.results import ExerciseResult, StaffOverride
 from ..exam.manifest import Manifest
 from ..exam.points import Rounding
 from ..exam.roster import csv_rows
+from ..i18n import _
 
 OVERRIDE_COLUMNS = ("student_id", "exercise", "part", "points", "comment")
 MAX_OVERRIDES_BYTES = 5_000_000
@@ -53,6 +59,10 @@ class Override:
     part: str
     points: float
     comment: str
+    #: who set them (the server's staff link; "": the file they came from)
+    author: str = ""
+    #: when, as ISO 8601 text ("": not recorded)
+    at: str = ""
 
 
 def read_overrides(path: str | Path, manifest: Manifest,
@@ -91,13 +101,67 @@ def parse_overrides(raw: bytes, where: str, manifest: Manifest,
     return tuple(overrides)
 
 
-class _RowChecker:
-    """Checks one row after another against the exam (and against the rows before)."""
+class OverrideRules:
+    """What an override must satisfy against the exam, whoever sets it (a row of the
+    overrides file, the server's staff): the student is on the roster, the exercise is in
+    the exam and has the part, and the points are a number from 0 to the part's points
+    and a multiple of the exam's rounding."""
 
     def __init__(self, manifest: Manifest, rounding: Rounding):
         self.students = {s.student_id for s in manifest.students}
         self.exercises = {e.id: {p.name: p.points for p in e.parts} for e in manifest.exercises}
         self.rounding = rounding
+
+    def points(self, student_id: str, exercise: str, part: str,
+               given: str | float) -> float:
+        """The points ``given`` (text as people type it, or a number), rounded to the
+        exam's step; a :class:`ValueError` naming what is wrong otherwise."""
+        most = self.part_points(student_id, exercise, part)
+        points = _number(given) if isinstance(given, str) else \
+            (float(given) if math.isfinite(given) else None)
+        if points is None:
+            raise ValueError(_("points {given!r} is not a number").format(given=given))
+        given = given if isinstance(given, str) else f"{given:g}"
+        if not 0 <= points <= most + 1e-9:
+            raise ValueError(_("points {given} is outside 0 to {most}, the points of part "
+                               "{part!r}").format(given=given, part=part,
+                                                  most=self.rounding.text(most)))
+        if not self.rounding.is_multiple(points):
+            raise ValueError(_("points {given} is not one of the exam's multiples of "
+                               "{step}").format(given=given,
+                                                step=self.rounding.text(self.rounding.step)))
+        return self.rounding.round(points)
+
+    def part_points(self, student_id: str, exercise: str, part: str) -> float:
+        """What ``part`` of ``exercise`` is worth, once the student, the exercise and
+        the part are checked (a :class:`ValueError` naming the one not in the exam)."""
+        if student_id not in self.students:
+            raise ValueError(_("student {student!r} is not on the exam's roster").format(
+                student=student_id))
+        if exercise not in self.exercises:
+            raise ValueError(_("exercise {exercise!r} is not in the exam (its exercises: "
+                               "{exercises})").format(exercise=exercise,
+                                                      exercises=", ".join(self.exercises)))
+        parts = self.exercises[exercise]
+        if part not in parts:
+            raise ValueError(_("exercise {exercise!r} has no part {part!r} (its parts: "
+                               "{parts})").format(exercise=exercise, part=part,
+                                                  parts=", ".join(parts)))
+        return float(parts[part])
+
+
+def not_handed_in(student_id: str, exercise: str) -> str:
+    """Why an override of an exercise the student handed nothing in for is refused."""
+    return _("{student} handed in nothing gradable for {exercise!r}; an override replaces "
+             "the points of a graded part").format(student=student_id, exercise=exercise)
+
+
+class _RowChecker:
+    """Checks one row after another against the exam (:class:`OverrideRules`) and
+    against the rows before (a part given twice)."""
+
+    def __init__(self, manifest: Manifest, rounding: Rounding):
+        self.rules = OverrideRules(manifest, rounding)
         self.seen: dict[tuple[str, str, str], int] = {}
 
     def check(self, number: int, row: list[str], width: int) -> Override:
@@ -105,31 +169,13 @@ class _RowChecker:
             raise ValueError(f"{len(row)} columns, the header has {width}")
         student_id, exercise, part, given = (cell.strip() for cell in row[:4])
         comment = row[4].strip() if len(row) > 4 else ""
-        if student_id not in self.students:
-            raise ValueError(f"student {student_id!r} is not on the exam's roster")
-        if exercise not in self.exercises:
-            raise ValueError(f"exercise {exercise!r} is not in the exam (its exercises: "
-                             f"{', '.join(self.exercises)})")
-        parts = self.exercises[exercise]
-        if part not in parts:
-            raise ValueError(f"exercise {exercise!r} has no part {part!r} (its parts: "
-                             f"{', '.join(parts)})")
-        points = _number(given)
-        if points is None:
-            raise ValueError(f"points {given!r} is not a number")
-        if not 0 <= points <= parts[part] + 1e-9:
-            raise ValueError(f"points {given} is outside 0 to "
-                             f"{self.rounding.text(parts[part])}, the points of part {part!r}")
-        if not self.rounding.is_multiple(points):
-            raise ValueError(f"points {given} is not one of the exam's "
-                             f"{self.rounding.describe()}")
+        points = self.rules.points(student_id, exercise, part, given)
         key = (student_id, exercise, part)
         if key in self.seen:
             raise ValueError(f"{student_id}'s part {part!r} of {exercise!r} is already "
                              f"overridden on row {self.seen[key]}")
         self.seen[key] = number
-        return Override(number, student_id, exercise, part, self.rounding.round(points),
-                        comment)
+        return Override(number, student_id, exercise, part, points, comment)
 
 
 def _number(text: str) -> float | None:
@@ -157,12 +203,12 @@ def apply_overrides(overrides: tuple[Override, ...], where: str,
     for override in overrides:
         result = results[override.student_id][override.exercise]
         if result is None:
-            problems.append(f"{where}, row {override.row}: {override.student_id} handed in "
-                            f"nothing gradable for {override.exercise!r}; an override "
-                            "replaces the points of a graded part")
+            problems.append(f"{where}, row {override.row}: "
+                            + not_handed_in(override.student_id, override.exercise))
             continue
         part = result.part(override.part).with_override(
-            StaffOverride(override.points, override.comment, author=where))
+            StaffOverride(override.points, override.comment,
+                          author=override.author or where, at=override.at))
         results[override.student_id][override.exercise] = result.with_part(part)
         comments.setdefault(override.student_id, []).append(
             f"{override.exercise} {override.part}: {part.override_note(rounding)}")

@@ -42,7 +42,7 @@ import sqlalchemy as sa
 from ..errors import DynagradeError
 from ..exam.policy import MAX_ATTEMPTS, MAX_MINUTES, Policy, read_moment, whole_number
 from ..i18n import _, ngettext
-from . import db
+from . import db, moments
 
 #: the scope of extra attempts that covers every part of the exam
 EVERY_PART = "*"
@@ -182,7 +182,7 @@ class Rules:
         ends = self.time_ends
         if ends is not None and now >= ends:
             return _("your time ran out at {time}; answers are no longer accepted").format(
-                time=shown_time(ends, zone or _zone(self.policy)))
+                time=shown_time(ends, zone or self.policy.zone))
         return None
 
     def shows_verdicts(self, now: dt.datetime) -> bool:
@@ -325,15 +325,7 @@ def describe(allowance: Allowance, zone: dt.tzinfo) -> list[str]:
 
 def shown_time(moment: dt.datetime, zone: dt.tzinfo) -> str:
     """A time in the course's zone, to the minute, naming the zone."""
-    from .standing import moment as in_zone
-
-    return in_zone(moment, zone).text
-
-
-def _zone(policy: Policy) -> dt.tzinfo:
-    from .standing import exam_zone
-
-    return exam_zone(policy)
+    return moments.moment(moment, zone).text
 
 
 def _number(value: object) -> object:

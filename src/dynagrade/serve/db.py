@@ -17,6 +17,7 @@ Tables (created by the Alembic migrations in ``migrations/``; see docs/serve.md)
                  minutes on a timed exam, extra attempts (JSON: scope -> number)
 ``starts``       when each student started a timed exam (their clock runs from then)
 ``overrides``    points a member of the staff set by hand on one part, with a comment
+                 (the automatic verdict stays in ``answers``; removing the row restores it)
 ``regrades``     a regrade: previewed (the plan of changed verdicts, JSON), then applied
                  or discarded
 ``verdict_history`` the verdict an applied regrade replaced, one row per changed answer
@@ -758,6 +759,77 @@ def started_times(engine: sa.Engine, exam_id: str) -> dict[str, dt.datetime]:
 
 # -- points by hand -----------------------------------------------------------------------
 # (the statements of dynagrade.serve.overrides)
+
+#: the audit log's action of points set, changed or removed by hand (subject
+#: ``student/exercise/part``; before and after: ``{"points", "comment"}`` or null)
+OVERRIDE_CHANGE = "override"
+
+
+@dataclass(frozen=True)
+class StoredOverride:
+    """Points a member of the staff set by hand on one part of one student."""
+
+    student_id: str
+    exercise_id: str
+    part: str
+    points: float
+    comment: str
+    #: who set them (the staff link's name)
+    author: str
+    at: dt.datetime
+
+
+def stored_overrides(engine: sa.Engine, exam_id: str,
+                     student_id: str | None = None) -> list[StoredOverride]:
+    """The exam's points set by hand (of one student, if given)."""
+    o = overrides.c
+    query = sa.select(o.student_id, o.exercise_id, o.part, o.points, o.comment, o.author,
+                      o.at).where(o.exam_id == exam_id)
+    if student_id is not None:
+        query = query.where(o.student_id == student_id)
+    with engine.connect() as connection:
+        rows = connection.execute(query.order_by(o.student_id, o.exercise_id, o.part)).all()
+    return [StoredOverride(*row) for row in rows]
+
+
+def put_override(engine: sa.Engine, exam_id: str, actor: str, student_id: str,
+                 exercise_id: str, part: str, points: float | None,
+                 comment: str = "") -> tuple[dict | None, dict | None] | None:
+    """Set (``points`` a number) or remove (``None``) the points of a part by hand, and
+    record the change in the audit log, in one transaction: (before, after) as recorded,
+    or ``None`` when nothing changed (the same points and comment again, or removing
+    what is not there), which records nothing."""
+    try:
+        return _put_override(engine, exam_id, actor, student_id, exercise_id, part, points,
+                             comment)
+    except IntegrityError:  # another change of the part was committed meanwhile
+        return _put_override(engine, exam_id, actor, student_id, exercise_id, part, points,
+                             comment)
+
+
+def _put_override(engine: sa.Engine, exam_id: str, actor: str, student_id: str,
+                  exercise_id: str, part: str, points: float | None,
+                  comment: str) -> tuple[dict | None, dict | None] | None:
+    o = overrides.c
+    key = (o.exam_id == exam_id, o.student_id == student_id, o.exercise_id == exercise_id,
+           o.part == part)
+    with _writing(engine), engine.begin() as connection:
+        # the row locked on PostgreSQL (one change of a part at a time); SQLite has one
+        # writer anyway, and SQLAlchemy leaves FOR UPDATE out there
+        row = connection.execute(sa.select(o.points, o.comment).where(*key)
+                                 .with_for_update()).first()
+        before = None if row is None else {"points": row.points, "comment": row.comment}
+        after = None if points is None else {"points": float(points), "comment": comment}
+        if before == after:
+            return None
+        connection.execute(overrides.delete().where(*key))
+        if after is not None:
+            connection.execute(overrides.insert().values(
+                exam_id=exam_id, student_id=student_id, exercise_id=exercise_id, part=part,
+                points=after["points"], comment=comment, author=actor, at=now()))
+        _append_change(connection, exam_id, actor, OVERRIDE_CHANGE,
+                       f"{student_id}/{exercise_id}/{part}", before, after)
+    return before, after
 
 
 # -- regrades -----------------------------------------------------------------------------

@@ -19,6 +19,7 @@ from __future__ import annotations
 from ..i18n import N_, _
 import csv
 import io
+from typing import Sequence
 
 from ..classgrade.grade import class_outcome
 from ..classgrade.outcome import ClassOutcome
@@ -29,8 +30,9 @@ from ..exercise.numbers import percent_text
 from ..exam.manifest import PartEntry
 from ..exercise.results import ExerciseResult, GradedPart
 from . import db
-from .db import StoredAnswer
+from .db import StoredAnswer, StoredOverride
 from .exam_data import ExamData
+from .overrides import as_class_overrides
 from .verdicts import SubmittedPart, not_answered
 
 
@@ -76,36 +78,44 @@ def _counted_part(answer: StoredAnswer | None, part: PartEntry) -> GradedPart:
     return SubmittedPart.stored(answer, part.label).verdict
 
 
-def outcome(data: ExamData, stored: list[StoredAnswer]) -> ClassOutcome:
-    """The class's gradebook, feedback and statistics from the stored verdicts."""
+def outcome(data: ExamData, stored: list[StoredAnswer],
+            overrides: Sequence[StoredOverride]) -> ClassOutcome:
+    """The class's gradebook, feedback and statistics from the stored verdicts, with the
+    points the staff set by hand (:mod:`.overrides`; every export passes the stored
+    ones, :func:`dynagrade.serve.db.stored_overrides`)."""
     graded = counted_results(data, counted_answers(data, stored))
-    return class_outcome(data.manifest, graded, [], {}, declared_names(data.exercises))
+    return class_outcome(data.manifest, graded, [], {}, declared_names(data.exercises),
+                         as_class_overrides(overrides), _("the staff"))
 
 
-def grades_csv(data: ExamData, stored: list[StoredAnswer]) -> str:
+def grades_csv(data: ExamData, stored: list[StoredAnswer],
+               overrides: Sequence[StoredOverride]) -> str:
     """The gradebook as class grading writes it."""
-    return gradebook_csv(outcome(data, stored))
+    return gradebook_csv(outcome(data, stored, overrides))
 
 
 #: the headers of grades.csv's own columns, as the staff page shows them
-COLUMN_WORDS = (N_("student_id"), N_("total"), N_("max_total"), N_("percent"), N_("status"))
+COLUMN_WORDS = (N_("student_id"), N_("name"), N_("email"), N_("total"), N_("max_total"),
+                N_("percent"), N_("status"))
 #: a row's status (classgrade's RowStatus) as the staff page shows it
 _STATUS_WORDS = (N_("graded"), N_("incomplete"), N_("rejected"), N_("absent"))
 
 
-def staff_table(data: ExamData, stored: list[StoredAnswer]) -> tuple[list[str], list[dict]]:
-    """The gradebook as the staff page shows it: the columns of ``grades.csv`` (but name
-    and email) and one row of cell texts per roster student."""
-    graded = outcome(data, stored)
+def staff_table(data: ExamData, stored: list[StoredAnswer],
+                overrides: Sequence[StoredOverride]) -> tuple[list[str], list[dict]]:
+    """The gradebook as the staff page shows it: the columns of ``grades.csv`` and one
+    row of cell texts per roster student."""
+    graded = outcome(data, stored, overrides)
     rounding = graded.rounding
-    columns = ["student_id", *exercise_columns(data.exercise_ids), "total", "max_total",
-               "percent", "status"]
+    columns = ["student_id", "name", "email", *exercise_columns(data.exercise_ids), "total",
+               "max_total", "percent", "status"]
     rows = []
     for row in graded.rows:
         points = [*(row.cells[e] for e in data.exercise_ids), row.total, row.max_total]
         shown = [None if value is None else rounding.text(value) for value in points]
         percent = None if row.percent is None else percent_text(row.percent)
-        rows.append(dict(zip(columns, [row.student_id, *shown, percent, _(str(row.status))])))
+        rows.append(dict(zip(columns, [row.student_id, row.name, row.email, *shown, percent,
+                                       _(str(row.status))])))
     return columns, rows
 
 
@@ -149,9 +159,10 @@ def progress(data: ExamData, stored: list[StoredAnswer]) -> list[dict]:
     return list(seen.values())
 
 
-def class_report_html(data: ExamData, stored: list[StoredAnswer]) -> str:
+def class_report_html(data: ExamData, stored: list[StoredAnswer],
+                      overrides: Sequence[StoredOverride]) -> str:
     """Class grading's report (histogram, item statistics, wrong answers by what explains
-    them) of the counted verdicts."""
+    them) of the counted verdicts and the points set by hand."""
     from ..classgrade.report import report_html
 
-    return report_html(data.manifest.exam, outcome(data, stored))
+    return report_html(data.manifest.exam, outcome(data, stored, overrides))

@@ -139,7 +139,6 @@ class Gradebook(BaseModel):
                          status=row.status.value) for row in rows])
 
 
-
 class Table(BaseModel):
     """A table as a page shows it: column headings and rows of cell texts."""
 
@@ -354,3 +353,114 @@ class RegradePlan(BaseModel):
                    actor=regrade.actor, applied_at=iso(regrade.applied_at),
                    answers=plan["answers"], changes=plan["changes"],
                    students=plan["students"], source=regrade.source, **extra)
+
+
+# -- points by hand and a student's record ------------------------------------------------
+
+
+class OverrideBody(BaseModel):
+    """``PUT /api/v1/overrides``: the points of one part of one student, set by hand."""
+
+    student: str = Field(max_length=200)
+    exercise: str = Field(max_length=200)
+    part: str = Field(max_length=200)
+    points: float = Field(description="0 to the part's points, a multiple of the exam's "
+                                      "rounding")
+    comment: str = Field(default="", max_length=2000,
+                         description="shown to the student with the points")
+
+
+class OverrideEntry(BaseModel):
+    """Points set by hand on one part, and by whom and when."""
+
+    student: str
+    exercise: str
+    part: str
+    points: float
+    comment: str
+    author: str = Field(description="the staff link's name")
+    at: str = Field(description="ISO 8601")
+
+
+class OverrideChange(BaseModel):
+    """``PUT`` and ``DELETE /api/v1/overrides…``: whether anything changed (false: the
+    same again, nothing recorded)."""
+
+    changed: bool
+
+
+class Overrides(BaseModel):
+    """``GET /api/v1/overrides``: every part whose points were set by hand."""
+
+    overrides: list[OverrideEntry]
+
+
+class AttemptRecord(BaseModel):
+    """One stored answer of a part."""
+
+    attempt: int
+    practice: bool = Field(description="a practice draw's answer: never counts")
+    answer: str = Field(description="as typed")
+    read_as: str = Field(description="how the grader read it")
+    readable: bool
+    status: str
+    score: float = Field(description="the grader's points, penalty applied, unrounded")
+    max_score: float
+    feedback: str
+    at: str = Field(description="ISO 8601")
+    counts: bool = Field(description="the attempt the gradebook counts for the part")
+
+
+class DraftRecord(BaseModel):
+    """What the student typed into a part and did not submit (never counted)."""
+
+    text: str
+    saved_at: str
+
+
+class OverrideRecord(BaseModel):
+    """Points set by hand on a part."""
+
+    points: float
+    comment: str
+    author: str
+    at: str
+
+
+class PartRecord(BaseModel):
+    """One part of a student's record."""
+
+    part: str
+    label: str
+    points: float
+    attempts: list[AttemptRecord]
+    counted_attempt: int | None = Field(description="null: no attempt counts")
+    status: str | None = Field(description="the counted verdict")
+    auto_score: float | None = Field(description="the grader's points, rounded")
+    score: float | None = Field(description="the points that count (set by hand, or else "
+                                            "the grader's)")
+    override: OverrideRecord | None
+    draft: DraftRecord | None
+
+
+class ExerciseRecord(BaseModel):
+    """One exercise of a student's record."""
+
+    exercise: str
+    title: str
+    handed_in: bool
+    score: float | None
+    max_score: float
+    parts: list[PartRecord]
+
+
+class StudentRecord(BaseModel):
+    """``GET /api/v1/students/{student_id}``: every attempt, the counted one, drafts and
+    points set by hand."""
+
+    student_id: str
+    name: str
+    email: str
+    counts: Literal["best", "last"]
+    total: float | None
+    exercises: list[ExerciseRecord]

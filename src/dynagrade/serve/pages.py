@@ -13,7 +13,7 @@ from markupsafe import Markup
 
 from ..exam.solution_policy import solution_visible
 from ..exercise.results import ExerciseResult
-from . import allowances, db, drafts, gradebook, limits, regrade, standing
+from . import allowances, db, drafts, gradebook, limits, moments, regrade, standing
 from .allowances import Rules
 from ..grading.choice import shown_option
 from ..i18n import N_, _, ngettext
@@ -69,7 +69,7 @@ def student_html(server: Server, token: str, student_id: str, practice: str | No
     data, policy = server.data, server.data.policy
     rules = allowances.rules_for(server.engine, data.exam_id, policy, student_id)
     verdicts = rules.shows_verdicts(now)
-    zone = standing.exam_zone(policy)
+    zone = moments.exam_zone(policy)
     before = rules.before_opens(now)
     waiting = rules.waiting_to_start(now)
     exercises = []
@@ -78,7 +78,8 @@ def student_html(server: Server, token: str, student_id: str, practice: str | No
         stored = db.student_answers(server.engine, data.exam_id, student_id)
         shown = drafts.shown_texts(stored, db.student_drafts(server.engine, data.exam_id,
                                                              student_id))
-        counted = standing.results(data, stored, student_id)
+        counted = standing.results(data, stored, student_id, db.stored_overrides(
+            server.engine, data.exam_id, student_id))
         exercises = [_exercise(server, rules, student_id, exercise_id, practice, stored,
                                shown, counted.get(exercise_id), typed, now, zone)
                      for exercise_id in data.exercise_ids]
@@ -89,12 +90,12 @@ def student_html(server: Server, token: str, student_id: str, practice: str | No
         language=data.manifest.exam.language, before=before,
         csrf=limits.csrf_field(server.secret, token), exercises=exercises, verdicts=verdicts,
         mode=policy.mode, policy=_policy_lines(rules, now), is_open=is_open,
-        opens=standing.moment(rules.opens, zone) if rules.opens else None,
-        closes=standing.moment(rules.closes, zone) if rules.closes else None,
+        opens=moments.moment(rules.opens, zone) if rules.opens else None,
+        closes=moments.moment(rules.closes, zone) if rules.closes else None,
         closed=rules.closed(now), extended=_close_word(rules), waiting=waiting,
         timed=rules.timed, time_over=rules.time_over(now),
-        deadline=standing.moment(deadline, zone) if deadline else None,
-        time_ends=standing.moment(rules.time_ends, zone) if rules.time_ends else None,
+        deadline=moments.moment(deadline, zone) if deadline else None,
+        time_ends=moments.moment(rules.time_ends, zone) if rules.time_ends else None,
         error=error, status=_status(data, typed, error, exercises), max_chars=MAX_ANSWER_CHARS,
         total=standing.total(data, counted) if verdicts and counted else None,
         max_total=sum(float(m.points) for m in data.exercises_meta.values()),
@@ -152,14 +153,14 @@ def _exercise(server: Server, rules: Rules, student_id: str, exercise_id: str,
             text = here.texts.get(info.name, text)  # what was typed, not yet saved
         allowed = rules.attempts(exercise_id, info.name)
         left = max(0, allowed - used[info.name]) if allowed and seed is None else None
+        verdict = result.part(info.name) if result is not None and seed is None else None
         parts.append({
             "info": info, "text": text, "left": left, "exhausted": left == 0,
             "chosen": {c.strip() for c in text.split(",")} if info.options else set(),
-            "reason": here.reasons.get(info.name),
-            "verdict": result.part(info.name) if result is not None and seed is None
-            else None,
+            "reason": here.reasons.get(info.name), "verdict": verdict,
+            "staff_note": verdict.override_note(data.rounding) if verdict else "",
             "history": [{"attempt": a.attempt, "counted": a.counted,
-                         "time": standing.moment(a.created_at, zone), "raw": a.raw,
+                         "time": moments.moment(a.created_at, zone), "raw": a.raw,
                          "message": a.message, "status": _(_STATUS_WORDS.get(a.status, a.status)), "correct": a.correct,
                          "score": round(a.score, 3), "max_score": round(a.max_score, 3),
                          "feedback": a.feedback} for a in mine if a.part == info.name]})
@@ -238,11 +239,13 @@ def staff_tables(server: Server) -> dict:
     progress, each table as ``{"columns": [...], "rows": [[cell text, ...], ...]}``."""
     data = server.data
     stored = db.all_answers(server.engine, data.exam_id)
-    columns, rows = gradebook.staff_table(data, stored)
+    columns, rows = gradebook.staff_table(data, stored,
+                                          db.stored_overrides(server.engine, data.exam_id))
     book = [["—" if row[c] is None else str(row[c]) for c in columns] for row in rows]
+    zone = moments.exam_zone(data.policy)
     progress = [[p["student_id"], p["name"],
                  *(str(p["attempts"].get(e, "")) for e in data.exercise_ids),
-                 p["last"].strftime("%Y-%m-%d %H:%M:%S") if p["last"] else ""]
+                 moments.moment(p["last"], zone, seconds=True).text if p["last"] else ""]
                 for p in gradebook.progress(data, stored)]
     counts = db.counts(server.engine, data.exam_id)
     text = ", ".join([
@@ -255,7 +258,13 @@ def staff_tables(server: Server) -> dict:
             "gradebook": {"columns": [_(c) if c in gradebook.COLUMN_WORDS else c
                                       for c in columns], "rows": book},
             "progress": {"columns": [_("student"), _("name"), *data.exercise_ids,
-                                     _("last submit (UTC)")], "rows": progress}}
+                                     _("last submit ({zone})").format(
+                                         zone=_zone_name(zone))], "rows": progress}}
+
+
+def _zone_name(zone: dt.tzinfo) -> str:
+    """A zone as the staff read it: its name (Europe/Zurich), else its abbreviation."""
+    return str(getattr(zone, "key", None) or zone.tzname(None) or "UTC")
 
 
 #: how often the staff page's script asks for fresh tables (seconds)

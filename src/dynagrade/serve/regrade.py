@@ -36,7 +36,7 @@ from pathlib import Path
 
 from ..exam.policy import Policy
 from ..i18n import _
-from . import db, gradebook, standing
+from . import db, gradebook, moments
 from .db import StoredAnswer
 from .exam_data import ExamData
 from .state import Server
@@ -203,7 +203,7 @@ def preview(server: Server, actor: str) -> db.Regrade:
             factor = policy.attempt_factor(tries[key])
             new_stored[answer_id] = _regraded(answer, by_name[answer.part].penalised(
                 factor, tries[key]))
-    plan = _plan(data, stored, new_stored)
+    plan = _plan(data, stored, new_stored, db.stored_overrides(server.engine, data.exam_id))
     plan["seconds"] = round(time.perf_counter() - started, 2)
     regrade_id = db.store_regrade(server.engine, data.exam_id, actor, source, plan)
     found = db.find_regrade(server.engine, data.exam_id, regrade_id)
@@ -212,8 +212,9 @@ def preview(server: Server, actor: str) -> db.Regrade:
 
 
 def _plan(data: ExamData, stored: list[tuple[int, StoredAnswer]],
-          new_stored: dict[int, StoredAnswer]) -> dict:
-    """The changed verdicts, old and new, and what they change in the gradebook."""
+          new_stored: dict[int, StoredAnswer], overrides: list[db.StoredOverride]) -> dict:
+    """The changed verdicts, old and new, and what they change in the gradebook (where
+    the staff set a part's points by hand, those stay)."""
     old_list = [answer for _id, answer in stored]
     new_list = [new_stored[answer_id] for answer_id, _a in stored]
     old_counted = _counted_ids(data, stored, old_list)
@@ -233,7 +234,8 @@ def _plan(data: ExamData, stored: list[tuple[int, StoredAnswer]],
             "attempt": answer.attempt, "raw": answer.raw, "old": old, "new": new,
             "counts": answer_id in old_counted or answer_id in new_counted})
     affected: set[str] = {str(c["student_id"]) for c in changes}
-    before, after = (_grades(data, answers, affected) for answers in (old_list, new_list))
+    before, after = (_grades(data, answers, affected, overrides)
+                     for answers in (old_list, new_list))
     students = {s: {"exercises": {e: [before[s]["exercises"][e], after[s]["exercises"][e]]
                                   for e in data.exercise_ids},
                     "total": [before[s]["total"], after[s]["total"]]}
@@ -249,11 +251,12 @@ def _counted_ids(data: ExamData, stored: list[tuple[int, StoredAnswer]],
     return {ids[id(answer)] for answer in gradebook.counted_answers(data, answers).values()}
 
 
-def _grades(data: ExamData, answers: list[StoredAnswer], students: set[str]) -> dict:
+def _grades(data: ExamData, answers: list[StoredAnswer], students: set[str],
+            overrides: list[db.StoredOverride]) -> dict:
     """Each of ``students``' points per exercise and total, as the gradebook has them."""
     if not students:
         return {}
-    rows = gradebook.outcome(data, answers).rows
+    rows = gradebook.outcome(data, answers, overrides).rows
     return {row.student_id: {"exercises": dict(row.cells), "total": row.total}
             for row in rows if row.student_id in students}
 
@@ -333,7 +336,7 @@ def notices(server: Server, student_id: str, now: dt.datetime) -> list[str]:
     policy = data.policy
     if not policy.shows_verdicts(now):
         return []
-    zone = standing.exam_zone(policy)
+    zone = moments.exam_zone(policy)
     lines = []
     for changed in db.replaced_verdicts(server.engine, data.exam_id, student_id):
         meta = data.exercises_meta.get(changed.exercise_id)

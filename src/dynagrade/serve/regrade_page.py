@@ -8,7 +8,7 @@ from __future__ import annotations
 import datetime as dt
 
 from ..i18n import N_, _, ngettext
-from . import db, limits, pages, regrade, standing
+from . import db, limits, moments, pages, regrade
 from .state import Server
 
 #: a regrade's states as the page names them
@@ -18,7 +18,7 @@ STATE_WORDS = {"previewed": N_("previewed"), "applied": N_("applied"),
 
 def _when(value: dt.datetime | None, zone: dt.tzinfo) -> str:
     """A time in the course's zone, to the second, naming the zone ("" for none)."""
-    return "" if value is None else standing.moment(value, zone, seconds=True).text
+    return "" if value is None else moments.moment(value, zone, seconds=True).text
 
 
 def _plan_rows(server: Server, plan: dict) -> list[dict]:
@@ -80,7 +80,7 @@ def regrade_html(server: Server, token: str, now: dt.datetime, base: str,
     """The regrade page; ``error``: why the last form was refused; ``applied``: the plan
     just applied."""
     data = server.data
-    zone = standing.exam_zone(data.policy)
+    zone = moments.exam_zone(data.policy)
     history = db.list_regrades(server.engine, data.exam_id)
     plan = next((r for r in history if r.state == "previewed"), None)
     return pages.render(

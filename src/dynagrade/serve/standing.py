@@ -1,32 +1,40 @@
-"""Where a student stands: the points that count per exercise and in total, the attempts
-each part has used, and the moments the page shows.
+"""Where a student stands: the points that count per exercise and in total, and the
+attempts each part has used.
 
 The points are the gradebook's (:mod:`dynagrade.serve.gradebook`): the answer each part
-counts by the exam's ``counts`` policy, rounded to the exam's step, an exercise the sum
-of its rounded parts; so the page shows what the staff's gradebook will hold.
+counts by the exam's ``counts`` policy, rounded to the exam's step, the points the staff
+set by hand in place of the grader's (:mod:`.overrides`), an exercise the sum of its
+parts; so the page shows what the staff's gradebook will hold.
 """
 
 from __future__ import annotations
 
-import datetime as dt
 from collections import Counter
-from dataclasses import dataclass
+from typing import Sequence
 
+from ..classgrade.overrides import apply_overrides
 from ..exercise.results import ExerciseResult
-from . import db, gradebook
-from .db import StoredAnswer
+from ..i18n import _
+from . import gradebook
+from .db import StoredAnswer, StoredOverride
+from .overrides import as_class_overrides
 from .exam_data import ExamData
 
 
-def results(data: ExamData, stored: list[StoredAnswer], student_id: str
-            ) -> dict[str, ExerciseResult | None]:
-    """The student's counted result of each exercise, rounded (None: nothing counted
-    yet); ``stored``: the student's answers."""
+def results(data: ExamData, stored: list[StoredAnswer], student_id: str,
+            overrides: Sequence[StoredOverride]) -> dict[str, ExerciseResult | None]:
+    """The student's counted result of each exercise, rounded, with the points the staff
+    set by hand (None: nothing counted yet); ``stored``: the student's answers,
+    ``overrides``: theirs (:func:`dynagrade.serve.db.stored_overrides`)."""
     chosen = gradebook.counted_answers(data, stored)
     row = list(data.students).index(student_id)
     counted = gradebook.counted_results(data, chosen)[row]
-    return {exercise_id: None if result is None else result.rounded(data.rounding)
-            for exercise_id, result in counted.items()}
+    rounded = {exercise_id: None if result is None else result.rounded(data.rounding)
+               for exercise_id, result in counted.items()}
+    mine = [o for o in overrides if o.student_id == student_id]
+    final, _notes = apply_overrides(as_class_overrides(mine), _("the staff"),
+                                    {student_id: rounded}, data.rounding)
+    return final[student_id]
 
 
 def total(data: ExamData, counted: dict[str, ExerciseResult | None]) -> float:
@@ -37,27 +45,3 @@ def total(data: ExamData, counted: dict[str, ExerciseResult | None]) -> float:
 def attempts_used(stored: list[StoredAnswer], exercise_id: str) -> Counter:
     """How many counted answers each part of an exercise has (its attempts spent)."""
     return Counter(a.part for a in stored if a.counted and a.exercise_id == exercise_id)
-
-
-@dataclass(frozen=True)
-class Moment:
-    """A time as the page shows it: ISO 8601 for the browser to show in the reader's own
-    zone, and a text in the exam's zone (naming it) for a page without JavaScript."""
-
-    iso: str
-    text: str
-
-
-def exam_zone(policy) -> dt.tzinfo:
-    """The course's zone (:attr:`Policy.zone <dynagrade.exam.policy.Policy.zone>`)."""
-    return policy.zone
-
-
-def moment(value: dt.datetime, zone: dt.tzinfo, seconds: bool = False) -> Moment:
-    """``value`` (SQLite's naive times are UTC) in ``zone``, to the minute (to the
-    second with ``seconds``: the staff's pages, where "I submitted at 10:02" is checked)."""
-    aware = db.utc(value)
-    local = aware.astimezone(zone)
-    shown = "%Y-%m-%d %H:%M:%S" if seconds else "%Y-%m-%d %H:%M"
-    return Moment(aware.isoformat(timespec="seconds"),
-                  f"{local.strftime(shown)} {local.tzname() or 'UTC'}")

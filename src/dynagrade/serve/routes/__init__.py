@@ -3,6 +3,8 @@
 - :mod:`.health`: ``GET /healthz``, for monitoring; no token.
 - :mod:`.student`: the student's page ``/s/{token}`` and its forms.
 - :mod:`.staff`: the staff page ``/i/{token}`` and its downloads.
+- :mod:`.staff_students`: the staff's page of one student ``/i/{token}/students/{id}``
+  and its forms (points set by hand).
 - :mod:`.api`: the JSON API under ``/api/v1``, tokens in ``Authorization: Bearer``.
 - :mod:`.staff_links`: staff links listed, made and revoked (page and API).
 - :mod:`.audit`: the audit log (page, CSV and API).
@@ -16,8 +18,9 @@ tests/test_serve_routes.py holds every route of every router to that.
 
 from __future__ import annotations
 
-from . import api, audit, exceptions, health, regrade, staff, staff_links, student
+from . import (api, audit, exceptions, health, regrade, staff, staff_links, staff_students,
+               student)
 
-ROUTERS = (health.router, student.router, staff.router, api.router, exceptions.page_router,
-           exceptions.api_router, staff_links.pages_router, staff_links.api_router,
-           audit.pages_router, audit.api_router, *regrade.ROUTERS)
+ROUTERS = (health.router, student.router, staff.router, staff_students.router, api.router,
+           exceptions.page_router, exceptions.api_router, staff_links.pages_router,
+           staff_links.api_router, audit.pages_router, audit.api_router, *regrade.ROUTERS)

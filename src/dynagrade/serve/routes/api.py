@@ -7,17 +7,20 @@ Students submit answers and preview how an answer reads; staff download the grad
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated, Any, Literal
 
 from fastapi import APIRouter, Header
 from starlette.concurrency import run_in_threadpool
 
-from .. import allowances, db, downloads, drafts, gradebook, timed
+from .. import allowances, db, downloads, drafts, gradebook, overrides, timed
 from ..deps import REFUSALS, Data, Now, Pool, ServerDep, StaffBearer, StudentBearer
 from ..downloads import CsvResponse
 from ...i18n import _
-from ..models import (AnswersBody, DraftsBody, DraftsResponse, Gradebook, PreviewBody,
-                      PreviewResponse, StartResponse, SubmitResponse, problem)
+from ..models import (AnswersBody, DraftsBody, DraftsResponse, Gradebook, OverrideBody,
+                      OverrideChange, OverrideEntry, Overrides, PreviewBody,
+                      PreviewResponse, StartResponse, StudentRecord, SubmitResponse, problem)
+from ..student_record import student_record as record_of
+from .staff_students import on_roster
 from ..practice import practice_seed
 from ..submit import Refused, check_open, submit
 
@@ -92,7 +95,8 @@ def _iso(moment) -> str | None:
 def gradebook_json(caller: StaffBearer, server: ServerDep, data: Data) -> Gradebook:
     """The gradebook as JSON: every roster student's row, in roster order."""
     stored = db.all_answers(server.engine, data.exam_id)
-    return Gradebook.from_rows(data.exercise_ids, gradebook.outcome(data, stored).rows)
+    return Gradebook.from_rows(data.exercise_ids, gradebook.outcome(
+        data, stored, db.stored_overrides(server.engine, data.exam_id)).rows)
 
 
 @router.get("/grades.csv", response_class=CsvResponse)
@@ -113,3 +117,53 @@ def submissions_csv(caller: StaffBearer, server: ServerDep) -> CsvResponse:
     """Every attempt, the one that counts flagged, as the responses CSV ``dynagrade grade
     --manifest`` reads."""
     return downloads.submissions(server)
+
+
+# -- points by hand and a student's record ------------------------------------------------
+
+_OVERRIDE_REFUSALS: dict[int | str, dict[str, Any]] = {422: problem(
+    "a student, exercise or part not in the exam, points outside 0 to the part's points "
+    "or not a multiple of the exam's rounding, or an exercise the student handed nothing "
+    "in for")}
+
+
+@router.put("/overrides", responses=_OVERRIDE_REFUSALS)
+def put_override(caller: StaffBearer, body: OverrideBody, server: ServerDep,
+                 data: Data) -> OverrideChange:
+    """Set the points of one part of one student by hand, with a comment (the grader's
+    points are kept beside them); recorded in the audit log unless nothing changed."""
+    return OverrideChange(changed=overrides.set_points(
+        server.engine, data, caller.actor, body.student, body.exercise, body.part,
+        body.points, body.comment))
+
+
+@router.delete("/overrides/{student_id}/{exercise}/{part}", responses=_OVERRIDE_REFUSALS)
+def delete_override(caller: StaffBearer, student_id: str, exercise: str, part: str,
+                    server: ServerDep, data: Data) -> OverrideChange:
+    """Remove the points set by hand on a part: the grader's points count again."""
+    return OverrideChange(changed=overrides.remove_points(
+        server.engine, data, caller.actor, student_id, exercise, part))
+
+
+@router.get("/overrides")
+def list_overrides(caller: StaffBearer, server: ServerDep, data: Data) -> Overrides:
+    """Every part whose points were set by hand."""
+    return Overrides(overrides=[
+        OverrideEntry(student=o.student_id, exercise=o.exercise_id, part=o.part,
+                            points=o.points, comment=o.comment, author=o.author,
+                            at=db.iso(o.at))
+        for o in db.stored_overrides(server.engine, data.exam_id)])
+
+
+@router.get("/overrides.csv", response_class=CsvResponse)
+def overrides_csv(caller: StaffBearer, server: ServerDep) -> CsvResponse:
+    """The points set by hand, as ``dynagrade grade --overrides`` reads them."""
+    return downloads.overrides(server)
+
+
+@router.get("/students/{student_id}", responses={404: problem("a student not on the roster")})
+def student_record(caller: StaffBearer, student_id: str, server: ServerDep) -> StudentRecord:
+    """One student's attempts (which counts), drafts and points set by hand."""
+    on_roster(server, student_id)
+    return StudentRecord.model_validate(
+        record_of(server.engine, server.data, student_id))

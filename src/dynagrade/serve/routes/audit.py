@@ -6,7 +6,7 @@ from __future__ import annotations
 from fastapi import APIRouter
 from fastapi.responses import HTMLResponse
 
-from .. import audit, db, pages, standing
+from .. import audit, db, moments, pages
 from ..deps import REFUSALS, RootPath, ServerDep, StaffBearer, StaffLink
 from ..downloads import CsvResponse, csv_download
 from ..models import AuditEntryModel, AuditLog
@@ -21,11 +21,11 @@ def audit_page(caller: StaffLink, server: ServerDep, base: RootPath,
                action: str | None = None) -> HTMLResponse:
     """Who changed what and when, newest first; ``action`` shows one kind of change."""
     data = server.data
-    zone = standing.exam_zone(data.policy)
+    zone = moments.exam_zone(data.policy)
     known = sorted({e.action for e in db.changes(server.engine, data.exam_id)})
     chosen = action if action in known else None
     entries = db.changes(server.engine, data.exam_id, chosen, limit=audit.PAGE_ENTRIES)
-    rows = [{"at": standing.moment(e.at, zone, seconds=True), "actor": e.actor,
+    rows = [{"at": moments.moment(e.at, zone, seconds=True), "actor": e.actor,
              "action": e.action, "subject": e.subject, "change": audit.change_text(e)}
             for e in entries]
     return HTMLResponse(pages.render(
@@ -56,5 +56,5 @@ def audit_json(caller: StaffBearer, server: ServerDep,
 
 def _audit_csv(server: Server) -> CsvResponse:
     entries = db.changes(server.engine, server.data.exam_id)
-    text = audit.audit_csv(entries, standing.exam_zone(server.data.policy))
+    text = audit.audit_csv(entries, moments.exam_zone(server.data.policy))
     return csv_download(text, "audit.csv")

@@ -17,7 +17,7 @@ from fastapi import APIRouter, HTTPException
 from fastapi.responses import HTMLResponse, RedirectResponse
 from starlette.concurrency import run_in_threadpool
 
-from .. import allowances, limits, pages, standing
+from .. import allowances, limits, moments, pages
 from ..allowances import EVERY_PART, Allowance, AllowanceError
 from ..deps import REFUSALS, RootPath, ServerDep, StaffBearer, StaffForm, StaffLink
 from ..models import ExceptionBody, Exceptions, Removed, StudentException, problem
@@ -91,10 +91,10 @@ async def remove_exception(form: StaffForm, server: ServerDep, base: RootPath):
 def _page(server: Server, token: str, base: str, error: str | None = None,
           typed: dict[str, str] | None = None) -> str:
     data = server.data
-    zone = standing.exam_zone(data.policy)
+    zone = moments.exam_zone(data.policy)
     rows = [{"student_id": student_id, "name": _name(server, student_id),
              "what": allowances.describe(allowance, zone), "by": allowance.updated_by or "",
-             "at": standing.moment(allowance.updated_at, zone, seconds=True)
+             "at": moments.moment(allowance.updated_at, zone, seconds=True)
              if allowance.updated_at else None}
             for student_id, allowance in allowances.granted(server.engine,
                                                             data.exam_id).items()]

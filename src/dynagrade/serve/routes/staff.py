@@ -87,5 +87,13 @@ def submissions_csv(caller: StaffLink, server: ServerDep) -> CsvResponse:
 @router.get("/report.html", response_class=HTMLResponse)
 def class_report(caller: StaffLink, server: ServerDep) -> HTMLResponse:
     """Class grading's report of the counted answers."""
-    stored = db.all_answers(server.engine, server.data.exam_id)
-    return HTMLResponse(gradebook.class_report_html(server.data, stored))
+    exam_id = server.data.exam_id
+    return HTMLResponse(gradebook.class_report_html(
+        server.data, db.all_answers(server.engine, exam_id),
+        db.stored_overrides(server.engine, exam_id)))
+
+
+@router.get("/overrides.csv", response_class=CsvResponse)
+def overrides_csv(caller: StaffLink, server: ServerDep) -> CsvResponse:
+    """The points set by hand, as ``dynagrade grade --overrides`` reads them."""
+    return downloads.overrides(server)

@@ -15,7 +15,7 @@ from fastapi.responses import HTMLResponse
 from starlette.concurrency import run_in_threadpool
 
 from ...i18n import _
-from .. import db, limits, links, pages, standing
+from .. import db, limits, links, moments, pages
 from ..deps import REFUSALS, Caller, Now, RootPath, ServerDep, StaffBearer, StaffForm, \
     StaffLink
 from ..models import NewStaffLink, NewStaffLinkBody, StaffLinkInfo, StaffLinks, problem
@@ -127,10 +127,10 @@ def _public_base(request: Request, server: Server) -> str:
 def _page(server: Server, caller: Caller, now: dt.datetime, base: str, *,
           made: str | None = None, done: str | None = None, error: str | None = None,
           typed: str = "") -> str:
-    zone = standing.exam_zone(server.data.policy)
+    zone = moments.exam_zone(server.data.policy)
     rows = [{"id": link.id, "name": link.label or "", "mine": link.id == db.link_id(caller.token),
-             "made": standing.moment(link.created_at, zone, seconds=True),
-             "revoked": standing.moment(link.revoked_at, zone, seconds=True)
+             "made": moments.moment(link.created_at, zone, seconds=True),
+             "revoked": moments.moment(link.revoked_at, zone, seconds=True)
              if link.revoked_at else None}
             for link in db.staff_links(server.engine, server.data.exam_id)]
     return pages.render(
