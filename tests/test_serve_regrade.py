@@ -178,6 +178,13 @@ def test_the_students_whose_verdicts_changed_are_told_where_verdicts_are_shown(t
         page = served.client.get(f"/s/{served.tokens['s1']}").text
         assert f"Regraded on {day}: Regrade demo y (attempt 1): 2 → 0 points" in page
         assert "Regraded" not in served.client.get(f"/s/{served.tokens['s2']}").text
+        # the staff see it on the student's record, whatever the policy shows students
+        record = _staff(served, "GET", "/api/v1/students/s1").json()
+        assert [(r["exercise"], r["part"], r["attempt"], r["before"], r["after"])
+                for r in record["regrades"]] == [(EXERCISE_ID, "y", 1, 2.0, 0.0)]
+        assert _staff(served, "GET", "/api/v1/students/s2").json()["regrades"] == []
+        staff_page = served.client.get(f"/i/{served.staff}/students/s1").text
+        assert f"{EXERCISE_ID} y (attempt 1): 2 → 0 points" in staff_page
         data = served.server.data
         change_policy(served.server.engine, data.exam_id, data.manifest_policy, "test",
                       {"feedback": "after-close", "closes": "2099-01-01T00:00:00+00:00"})

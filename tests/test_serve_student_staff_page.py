@@ -230,3 +230,40 @@ def test_a_practice_draws_answers_are_listed_and_never_count(exam_dir, tmp_path)
     assert part["counted_attempt"] == 1 and part["score"] == 0.0
     assert "1 (practice)" in page and "never (practice)" in page
     assert _counted_rows(page) == ["1"]
+
+
+def test_the_record_shows_the_exceptions_granted_and_the_timed_start(exam_dir, tmp_path):
+    from serve_support import Clock
+
+    opens = dt.datetime(2030, 4, 14, 8, 0, tzinfo=ZONE)
+    manifest = exam_copy(exam_dir, tmp_path / "timed", mode="homework", feedback="immediate",
+                         opens=opens, closes=opens + dt.timedelta(hours=4), time_limit=30,
+                         attempts=2)
+    clock = Clock(opens + dt.timedelta(hours=1))  # 09:00
+    with serve(manifest, clock=clock) as served:
+        granted = served.client.put("/api/v1/exceptions", json={
+            "students": ["s1"], "closes": "2030-04-14T14:00:00+02:00", "extra_minutes": 15,
+            "extra_attempts": {"projectile-range": 1}},
+            headers={"Authorization": f"Bearer {served.staff}"})
+        assert granted.status_code == 200, granted.text
+        started = served.client.post("/api/v1/start",
+                                     headers={"Authorization": f"Bearer {served.tokens['s1']}"})
+        assert started.status_code == 200, started.text
+        s1, s2 = _record(served, "s1").json()["terms"], _record(served, "s2").json()["terms"]
+        page = served.client.get(f"/i/{served.staff}/students/s1").text
+    # 09:00 start, 30 + 15 minutes: 09:45, before their close at 14:00
+    assert (s1["closes"], s1["extended"]) == ("2030-04-14 14:00:00 UTC+02:00", True)
+    assert (s1["started_at"], s1["time_ends"], s1["minutes"]) == \
+        ("2030-04-14 09:00:00 UTC+02:00", "2030-04-14 09:45:00 UTC+02:00", 45)
+    assert s1["exceptions"] == ["closes 2030-04-14 14:00 UTC+02:00", "15 extra minutes",
+                                "1 extra attempt on projectile-range"]
+    assert s1["granted_by"] == f"staff link {_link_id(served.staff)}"
+    assert (s2["exceptions"], s2["extended"], s2["started_at"]) == ([], False, None)
+    assert s2["closes"] == "2030-04-14 12:00:00 UTC+02:00"
+    assert "15 extra minutes" in page and "their time ends at 2030-04-14 09:45:00" in page
+
+
+def _link_id(token: str) -> str:
+    from dynagrade.serve import db
+
+    return db.link_id(token)

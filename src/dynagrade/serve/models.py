@@ -454,9 +454,34 @@ class ExerciseRecord(BaseModel):
     parts: list[PartRecord]
 
 
+class StudentTerms(BaseModel):
+    """The policy as it holds for one student (times in the course's zone, as text)."""
+
+    exceptions: list[str] = Field(description="one phrase per exception granted")
+    granted_by: str | None
+    granted_at: str | None
+    closes: str | None = Field(description="their close")
+    extended: bool = Field(description="whether an exception sets their opening or close")
+    timed: bool
+    minutes: int = Field(description="their time on a timed exam, extra minutes included")
+    started_at: str | None
+    time_ends: str | None
+
+
+class RegradedVerdict(BaseModel):
+    """A verdict of the student's that an applied regrade changed."""
+
+    at: str
+    exercise: str
+    part: str
+    attempt: int
+    before: float
+    after: float
+
+
 class StudentRecord(BaseModel):
-    """``GET /api/v1/students/{student_id}``: every attempt, the counted one, drafts and
-    points set by hand."""
+    """``GET /api/v1/students/{student_id}``: every attempt, the counted one, drafts,
+    points set by hand, the exceptions granted and the verdicts regrades changed."""
 
     student_id: str
     name: str
@@ -464,3 +489,5 @@ class StudentRecord(BaseModel):
     counts: Literal["best", "last"]
     total: float | None
     exercises: list[ExerciseRecord]
+    terms: StudentTerms
+    regrades: list[RegradedVerdict]

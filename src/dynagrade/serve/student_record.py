@@ -1,11 +1,11 @@
 """One student's record as the staff look it up: every attempt of every part, which one
-counts and why, the drafts and the points set by hand.
+counts and why, the drafts, the points set by hand, the exceptions to the policy they
+were granted (with their close and, on a timed exam, when they started), and the
+verdicts regrades changed.
 
 :func:`student_record` builds it as plain values (a dict), which the staff's student
 page renders (``templates/staff_student.html``) and the API returns
-(:class:`dynagrade.serve.models.StudentRecord`); further sections (the exceptions a
-student was granted, the regrades that changed their verdicts) are added to the dict by
-the modules that own them.
+(:class:`dynagrade.serve.models.StudentRecord`).
 
 The attempt that counts is the gradebook's (:func:`dynagrade.serve.gradebook.
 counted_answers`, by the policy's ``counts``), the points those of
@@ -17,7 +17,7 @@ page shows what the gradebook holds. Times are in the course's zone, to the seco
 from __future__ import annotations
 
 from ..i18n import N_, _
-from . import db, gradebook, moments, standing
+from . import allowances, db, gradebook, moments, standing
 from .exam_data import ExamData
 
 #: why an attempt counts, by the policy's ``counts``
@@ -68,7 +68,36 @@ def student_record(engine, data: ExamData, student_id: str) -> dict:
             "counts": data.policy.counts, "why_counted": _(WHY_COUNTED[data.policy.counts]),
             "total": standing.total(data, results)
             if any(r is not None for r in results.values()) else None,
-            "exercises": exercises}
+            "exercises": exercises,
+            "terms": _terms(allowances.rules_for(engine, data.exam_id, data.policy,
+                                                 student_id), zone),
+            "regrades": _regrades(data, db.replaced_verdicts(engine, data.exam_id,
+                                                             student_id), zone)}
+
+
+def _terms(rules: allowances.Rules, zone) -> dict:
+    """The policy as it holds for the student: the exceptions granted (one phrase each,
+    who granted them and when), their close, and on a timed exam their start and end."""
+    granted = rules.allowance
+
+    def shown(moment):
+        return moments.moment(moment, zone, seconds=True).text if moment else None
+
+    return {"exceptions": allowances.describe(granted, zone) if granted else [],
+            "granted_by": granted.updated_by if granted else None,
+            "granted_at": shown(granted.updated_at) if granted else None,
+            "closes": shown(rules.closes), "extended": rules.extended,
+            "timed": rules.timed, "minutes": rules.minutes,
+            "started_at": shown(rules.started_at), "time_ends": shown(rules.time_ends)}
+
+
+def _regrades(data: ExamData, replaced: list[db.ReplacedVerdict], zone) -> list[dict]:
+    """The verdicts of the student's answers that applied regrades changed, oldest first."""
+    labels = {(e, p.name): p.label or p.name for e, parts in data.manifest_parts.items()
+              for p in parts}
+    return [{"at": moments.moment(r.applied_at, zone, seconds=True).text,
+             "exercise": r.exercise_id, "part": labels.get((r.exercise_id, r.part), r.part),
+             "attempt": r.attempt, "before": r.before, "after": r.after} for r in replaced]
 
 
 def _attempt(answer: db.StoredAnswer, counted: db.StoredAnswer | None, zone) -> dict:
