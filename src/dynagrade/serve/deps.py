@@ -201,11 +201,18 @@ class PostedForm:
     exercise_id: str
 
 
-async def student_form(request: Request, caller: StudentLink, server: ServerDep) -> PostedForm:
-    """The form a student posted from their page, once its CSRF field is checked."""
+async def _checked_fields(request: Request, caller: Caller, server: Server) -> FormData:
+    """The fields of a form posted from ``caller``'s page; 403 unless its CSRF field is
+    the one that page was given."""
     form = await request.form()
     if not limits.csrf_ok(server.secret, caller.token, form.get("csrf")):
         raise HTTPException(403, _("the form is stale or not from this page; reload it"))
+    return form
+
+
+async def student_form(request: Request, caller: StudentLink, server: ServerDep) -> PostedForm:
+    """The form a student posted from their page, once its CSRF field is checked."""
+    form = await _checked_fields(request, caller, server)
     return PostedForm(caller, form, str(form.get("exercise", "")))
 
 
@@ -222,10 +229,7 @@ class StaffPostedForm:
 
 async def staff_form(request: Request, caller: StaffLink, server: ServerDep) -> StaffPostedForm:
     """The form a staff member posted from a staff page, once its CSRF field is checked."""
-    form = await request.form()
-    if not limits.csrf_ok(server.secret, caller.token, form.get("csrf")):
-        raise HTTPException(403, _("the form is stale or not from this page; reload it"))
-    return StaffPostedForm(caller, form)
+    return StaffPostedForm(caller, await _checked_fields(request, caller, server))
 
 
 StaffForm = Annotated[StaffPostedForm, Depends(staff_form)]
