@@ -11,7 +11,6 @@ import datetime as dt
 import pytest
 
 from dynagrade.exam.policy import Policy
-from dynagrade.serve.allowances import Allowance, Rules
 from serve_support import (Clock, database, exam_copy, exam_dir, postgres_url,  # noqa: F401
                            reference_answers, serve)
 
@@ -30,6 +29,8 @@ def at(hour: int, minute: int = 0) -> dt.datetime:
 
 
 def test_an_extension_opens_the_exam_for_that_student_only():
+    from dynagrade.serve.allowances import Allowance, Rules  # the server's libraries load lazily
+
     policy = Policy(mode="homework", opens=OPENS, closes=CLOSES, feedback="after-close")
     extended = Rules(policy, Allowance(closes=LATER))
     plain = Rules(policy)
@@ -44,6 +45,8 @@ def test_an_extension_opens_the_exam_for_that_student_only():
 
 
 def test_a_reopen_window_replaces_the_times():
+    from dynagrade.serve.allowances import Allowance, Rules  # the server's libraries load lazily
+
     policy = Policy(opens=OPENS, closes=CLOSES)
     window = Rules(policy, Allowance(opens=at(14), closes=at(15)))
     assert [window.is_open(at(h)) for h in (9, 13, 14, 15)] == [False, False, True, False]
@@ -51,6 +54,8 @@ def test_a_reopen_window_replaces_the_times():
 
 
 def test_the_most_specific_scope_of_extra_attempts_wins():
+    from dynagrade.serve.allowances import Allowance, Rules  # the server's libraries load lazily
+
     policy = Policy(mode="homework", attempts=2)
     rules = Rules(policy, Allowance(extra_attempts={"*": 1, "ex": 3, "ex/p": 5}))
     # one part: 2 + 5; the other parts of ex: 2 + 3; every other part: 2 + 1
@@ -62,6 +67,8 @@ def test_the_most_specific_scope_of_extra_attempts_wins():
 
 
 def test_a_timed_deadline_is_the_start_plus_the_time_unless_the_close_comes_first():
+    from dynagrade.serve.allowances import Allowance, Rules  # the server's libraries load lazily
+
     policy = Policy(opens=OPENS, closes=LATER, time_limit=30)
     started = at(10)
     mine = Rules(policy, Allowance(extra_minutes=15), started)

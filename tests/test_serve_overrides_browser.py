@@ -10,7 +10,6 @@ from __future__ import annotations
 import csv
 import io
 
-import httpx
 import pytest
 
 from serve_support import exam_copy, exam_dir, serving_process  # noqa: F401
@@ -29,6 +28,8 @@ NOTE = "Points set by the staff: 1.5 (graded 0): sign slip only, method right"
 def served(exam_dir, tmp_path):
     """A homework exam (verdicts shown) where Ada (s1) answered x_max wrong and Bo (s2)
     right: (base url, links rows by student, staff url)."""
+    import httpx
+
     from dynagrade.exam.manifest import load
 
     manifest = exam_copy(exam_dir, tmp_path / "hw", mode="homework", feedback="immediate")
@@ -45,6 +46,8 @@ def served(exam_dir, tmp_path):
 
 
 def _grades(base: str, staff: str) -> dict[str, dict[str, str]]:
+    import httpx
+
     token = staff.rsplit("/", 1)[1]
     text = httpx.get(f"{base}/api/v1/grades.csv",
                      headers={"Authorization": f"Bearer {token}"}).text

@@ -9,7 +9,6 @@ from __future__ import annotations
 import time
 
 import pytest
-import sqlalchemy as sa
 
 from regrade_support import EXERCISE_ID, demo_exam, lengths, write_exercise
 from serve_support import Clock, database, postgres_url, serve  # noqa: F401
@@ -53,6 +52,8 @@ TOTALS = {"s1": [2.0, 0.0], "s2": [0.0, 1.0], "s3": [0.0, 2.0], "s4": [4.0, 2.0]
 
 
 def _history(served) -> list[tuple]:
+    import sqlalchemy as sa
+
     from dynagrade.serve import db
 
     with served.server.engine.connect() as connection:
@@ -82,8 +83,8 @@ def test_a_regrade_previews_applies_once_and_grades_new_submits_by_the_new_key(
                for c in plan["changes"]}
         assert got == EXPECTED
         assert all(c["counts"] for c in plan["changes"])
-        assert {s: t["total"] for s, t in plan["students"].items()} == TOTALS
-        assert plan["source"]["exercises"][EXERCISE_ID]["path"].endswith("regrade_demo.py")
+        assert {s: t["total"] for s, t in plan["grades"].items()} == TOTALS
+        assert plan["source"]["exercise_files"][EXERCISE_ID]["path"].endswith("regrade_demo.py")
         other = _staff(served, "POST", "/api/v1/regrades").json()  # a second, same plan
         # nothing changed yet
         book = {r["student_id"]: r["total"] for r in

@@ -149,7 +149,7 @@ def _fresh_plan(served) -> int:
     data = served.server.data
     return db.store_regrade(served.server.engine, data.exam_id, "test",
                             regrade.source_of(data), {"answers": 0, "changes": [],
-                                                      "students": {}, "last_answer_id": 0})
+                                                      "grades": {}, "last_answer_id": 0})
 
 
 def _submissions(served) -> int:

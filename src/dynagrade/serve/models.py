@@ -317,7 +317,7 @@ class StudentChange(BaseModel):
     """An affected student's points, old and new: per exercise (null: not handed in) and
     in total, as the gradebook computes them."""
 
-    exercises: dict[str, list[float | None]]
+    cells: dict[str, list[float | None]] = Field(description="per exercise id")
     total: list[float | None]
 
 
@@ -331,11 +331,13 @@ class RegradePlan(BaseModel):
     applied_at: str | None
     answers: int = Field(description="the counted answers graded again")
     changes: list[RegradeChange]
-    students: dict[str, StudentChange] = Field(
-        description="the affected students' points per exercise and total, [old, new]")
+    grades: dict[str, StudentChange] = Field(
+        description="by student id: the affected students' points per exercise and "
+                    "total, [old, new]")
     source: dict[str, Any] = Field(description="the manifest and exercise files the "
                                                "verdicts were recomputed against: paths "
-                                               "and SHA-256")
+                                               "and SHA-256 digests (`manifest`, "
+                                               "`exercise_files`)")
     done: bool | None = Field(default=None, description="apply or discard: whether this "
                                                         "call changed the state (false: "
                                                         "it was done already)")
@@ -352,7 +354,7 @@ class RegradePlan(BaseModel):
         return cls(id=regrade.id, state=regrade.state, created_at=iso(regrade.created_at),
                    actor=regrade.actor, applied_at=iso(regrade.applied_at),
                    answers=plan["answers"], changes=plan["changes"],
-                   students=plan["students"], source=regrade.source, **extra)
+                   grades=plan["grades"], source=regrade.source, **extra)
 
 
 # -- points by hand and a student's record ------------------------------------------------

@@ -57,8 +57,8 @@ def _digest(path: str | Path) -> str:
 def source_of(data: ExamData) -> dict:
     """The files ``data`` was loaded from (the manifest, each exercise's file), each with
     its path and SHA-256 as it is on disk now."""
-    return {"manifest": {"path": str(data.path.resolve()), "sha256": _digest(data.path)},
-            "exercises": {i: {"path": str(e.file), "sha256": _digest(e.file)}
+    return {"manifest": {"path": str(data.path.resolve()), "digest": _digest(data.path)},
+            "exercise_files": {i: {"path": str(e.file), "digest": _digest(e.file)}
                           for i, e in data.exercises.items()}}
 
 
@@ -73,9 +73,9 @@ def _source_now(source: dict) -> dict | None:
 
 def _digests(source: dict) -> dict:
     return {"manifest": {"path": source["manifest"]["path"],
-                         "sha256": _digest(source["manifest"]["path"])},
-            "exercises": {i: {"path": f["path"], "sha256": _digest(f["path"])}
-                          for i, f in source["exercises"].items()}}
+                         "digest": _digest(source["manifest"]["path"])},
+            "exercise_files": {i: {"path": f["path"], "digest": _digest(f["path"])}
+                          for i, f in source["exercise_files"].items()}}
 
 
 def _recompute(manifest: str, folders: tuple[str, ...], jobs: list[Job]
@@ -90,7 +90,7 @@ def _recompute(manifest: str, folders: tuple[str, ...], jobs: list[Job]
     digest = _digest(manifest)
     data = ExamData(manifest, open_bank(folders))
     source = source_of(data)
-    if source["manifest"]["sha256"] != digest:  # replaced while loading: load it again
+    if source["manifest"]["digest"] != digest:  # replaced while loading: load it again
         return _recompute(manifest, folders, jobs)
     graded: dict[tuple, list[SubmittedPart]] = {}
     out = []
@@ -236,11 +236,11 @@ def _plan(data: ExamData, stored: list[tuple[int, StoredAnswer]],
     affected: set[str] = {str(c["student_id"]) for c in changes}
     before, after = (_grades(data, answers, affected, overrides)
                      for answers in (old_list, new_list))
-    students = {s: {"exercises": {e: [before[s]["exercises"][e], after[s]["exercises"][e]]
+    grades = {s: {"cells": {e: [before[s]["cells"][e], after[s]["cells"][e]]
                                   for e in data.exercise_ids},
                     "total": [before[s]["total"], after[s]["total"]]}
                 for s in sorted(affected) if s in before}
-    return {"answers": len(stored), "changes": changes, "students": students,
+    return {"answers": len(stored), "changes": changes, "grades": grades,
             "last_answer_id": max((i for i, _a in stored), default=0)}
 
 
@@ -257,7 +257,7 @@ def _grades(data: ExamData, answers: list[StoredAnswer], students: set[str],
     if not students:
         return {}
     rows = gradebook.outcome(data, answers, overrides).rows
-    return {row.student_id: {"exercises": dict(row.cells), "total": row.total}
+    return {row.student_id: {"cells": dict(row.cells), "total": row.total}
             for row in rows if row.student_id in students}
 
 
@@ -283,7 +283,7 @@ def apply(server: Server, regrade_id: int, actor: str) -> tuple[db.Regrade, bool
         raise Refused(409, _("the manifest or an exercise file changed since the "
                              "preview; preview again"))
     changes = found.plan["changes"]
-    totals = found.plan["students"]
+    totals = found.plan["grades"]
     before = {"state": "previewed", "answers": len(changes),
               "totals": {s: t["total"][0] for s, t in totals.items()}}
     after = {"state": "applied", "answers": len(changes),

@@ -28,7 +28,7 @@ def _plan_rows(server: Server, plan: dict) -> list[dict]:
     titles = {e: m.title for e, m in data.exercises_meta.items()}
     rows = []
     for change in plan["changes"]:
-        totals = plan["students"].get(change["student_id"], {}).get("total", [None, None])
+        totals = plan["grades"].get(change["student_id"], {}).get("total", [None, None])
         old, new = change["old"], change["new"]
         rows.append({
             "student": f"{change['student_id']} {change['name']}".strip(),
@@ -54,7 +54,7 @@ def _result(server: Server, applied: int | None) -> str | None:
     if found is None or found.state != "applied":
         return None
     changes = found.plan["changes"]
-    totals = sum(1 for t in found.plan["students"].values() if t["total"][0] != t["total"][1])
+    totals = sum(1 for t in found.plan["grades"].values() if t["total"][0] != t["total"][1])
     sentence = " ".join([
         ngettext("Regrade {id} applied: {n} verdict changed.",
                  "Regrade {id} applied: {n} verdicts changed.", len(changes)).format(
