@@ -24,10 +24,12 @@ pytestmark = pytest.mark.skipif(not (CHROMIUM.exists() and AXE.exists()),
 NOTE = "Points set by the staff: 1.5 (graded 0): sign slip only, method right"
 
 
-@pytest.fixture
-def served(exam_dir, tmp_path):
+@pytest.fixture(scope="module")
+def served(exam_dir, tmp_path_factory):
     """A homework exam (verdicts shown) where Ada (s1) answered x_max wrong and Bo (s2)
-    right: (base url, links rows by student, staff url)."""
+    right: (base url, links rows by student, staff url). One server for the module: each
+    test leaves the points set by hand as it found them."""
+    tmp_path = tmp_path_factory.mktemp("overrides")
     import httpx
 
     from dynagrade.exam.manifest import load
