@@ -126,6 +126,7 @@ _JSON_BODIES = {
     "/api/v1/exceptions": {"students": ["s3"], "extra_minutes": 5},
     "/api/v1/overrides": {"student": "s3", "exercise": "projectile-range", "part": "x_max",
                           "points": 0},
+    "/api/v1/policy": {"attempts": 0},
 }
 
 
@@ -230,7 +231,9 @@ def test_the_openapi_document_describes_every_response(served):
                            ("DELETE", "/api/v1/overrides/{student_id}/{exercise}/{part}",
                             "OverrideChange"),
                            ("GET", "/api/v1/overrides", "Overrides"),
-                           ("GET", "/api/v1/students/{student_id}", "StudentRecord")}
+                           ("GET", "/api/v1/students/{student_id}", "StudentRecord"),
+                           ("GET", "/api/v1/policy", "PolicyInForce"),
+                           ("PUT", "/api/v1/policy", "PolicyInForce")}
     refusal = operations[("POST", "/api/v1/answers")]["responses"]
     for status in ("401", "403", "413", "422", "429", "503"):
         schema = refusal[status]["content"]["application/json"]["schema"]

@@ -493,3 +493,31 @@ class StudentRecord(BaseModel):
     exercises: list[ExerciseRecord]
     terms: StudentTerms
     regrades: list[RegradedVerdict]
+
+
+# -- the policy ------------------------------------------------------------------------------
+
+
+class PolicyBody(BaseModel):
+    """``PUT /api/v1/policy``: the settings to change, as exam.toml writes them (times
+    with their offset, ``""`` for no time); the mode is the exam's and cannot change."""
+
+    model_config = {"extra": "forbid"}
+
+    opens: str | None = Field(default=None, max_length=64)
+    closes: str | None = Field(default=None, max_length=64)
+    attempts: int | None = None
+    penalty: float | None = None
+    feedback: str | None = Field(default=None, max_length=32)
+    counts: str | None = Field(default=None, max_length=32)
+    solutions: str | None = Field(default=None, max_length=32)
+    time_limit: int | None = None
+
+
+class PolicyInForce(BaseModel):
+    """``GET``/``PUT /api/v1/policy``: the policy in force (exam.toml's keys)."""
+
+    policy: dict[str, Any] = Field(description="mode, opens, closes, attempts, penalty, "
+                                               "feedback, counts, solutions, time_limit")
+    changed: bool | None = Field(default=None, description="PUT: whether this call changed "
+                                                           "the policy")

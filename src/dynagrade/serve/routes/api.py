@@ -18,7 +18,8 @@ from ..downloads import CsvResponse
 from ...i18n import _
 from ..models import (AnswersBody, DraftsBody, DraftsResponse, Gradebook, OverrideBody,
                       OverrideChange, OverrideEntry, Overrides, PreviewBody,
-                      PreviewResponse, StartResponse, StudentRecord, SubmitResponse, problem)
+                      PolicyBody, PolicyInForce, PreviewResponse, StartResponse, StudentRecord,
+                      SubmitResponse, problem)
 from ..student_record import student_record as record_of
 from .staff_students import on_roster
 from ..practice import practice_seed
@@ -167,3 +168,31 @@ def student_record(caller: StaffBearer, student_id: str, server: ServerDep) -> S
     on_roster(server, student_id)
     return StudentRecord.model_validate(
         record_of(server.engine, server.data, student_id))
+
+
+@router.get("/policy")
+def policy_in_force(caller: StaffBearer, data: Data) -> PolicyInForce:
+    """The policy in force: the manifest's, or the staff's latest change."""
+    return PolicyInForce(policy=data.policy.to_json())
+
+
+@router.put("/policy", responses={422: problem("a value the policy's rules refuse (the "
+                                               "reason names the setting)")})
+async def change_policy(caller: StaffBearer, body: PolicyBody, server: ServerDep
+                        ) -> PolicyInForce:
+    """Change the settings given, checked as exam.toml's policy is and recorded in the
+    audit log (the same change as the staff page's policy form); a change that changes
+    nothing records nothing."""
+    from ...exam.policy import PolicyError
+    from ..policy_changes import PolicySource, change_policy as apply
+
+    data = server.data
+    given = body.model_dump(exclude_unset=True)
+    try:
+        before, after = await run_in_threadpool(apply, server.engine, data.exam_id,
+                                                data.manifest_policy, caller.actor, given)
+    except PolicyError as error:
+        raise Refused(422, str(error)) from None
+    if isinstance(data.policy_source, PolicySource):
+        data.policy_source.forget()  # this worker holds the change at once
+    return PolicyInForce(policy=after.to_json(), changed=after != before)
