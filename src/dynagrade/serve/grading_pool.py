@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import asyncio
 import multiprocessing
+import time
 from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 
@@ -121,5 +122,15 @@ class GradingPool:
         self._successor = successor
         self._executor.shutdown(wait=True)
 
-    def close(self) -> None:
+    def close(self, seconds: float = 5.0) -> None:
+        """Stop the grading processes before the server process ends, so that none is
+        left running after it: waiting jobs are cancelled, a running one may finish
+        within ``seconds``, and a process still alive then is killed."""
+        processes = list((getattr(self._executor, "_processes", None) or {}).values())
         self._executor.shutdown(wait=False, cancel_futures=True)
+        deadline = time.monotonic() + seconds
+        for process in processes:
+            process.join(max(0.0, deadline - time.monotonic()))
+            if process.is_alive():
+                process.kill()
+                process.join(1.0)
