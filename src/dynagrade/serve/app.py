@@ -69,6 +69,7 @@ def build_app(settings: Settings, clock: Callable[[], dt.datetime] | None = None
     app.add_middleware(limits.ExamLanguage, code=data.manifest.exam.language)
     app.state.server = server
     errors.install(app)  # pages for browsers, JSON for the API, 503 when the store fails
+    limits.hide_tokens_in_access_log()
     for router in ROUTERS:
         app.include_router(router)
     return app

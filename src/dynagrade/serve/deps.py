@@ -97,6 +97,14 @@ async def bearer_token(credentials: Annotated[HTTPAuthorizationCredentials | Non
 BearerToken = Annotated[str, Depends(bearer_token)]
 
 
+async def client_address(request: Request) -> str:
+    """The address the request came from (behind a trusted proxy, the one it names)."""
+    return request.client.host if request.client else ""
+
+
+ClientAddress = Annotated[str, Depends(client_address)]
+
+
 # -- callers ------------------------------------------------------------------------------
 
 
@@ -122,12 +130,14 @@ class StudentCaller(Caller):
     student_id: str
 
 
-async def identify(server: Server, token: str, role: str) -> db.Identity:
+async def identify(server: Server, token: str, role: str, client: str = "") -> db.Identity:
     """The holder of ``token``, who must have ``role``; refuses as the module says.
 
     A token seen in the last seconds is known without leaving the event loop; an unseen
     one is looked up in the database in a thread, off the loop."""
-    if not server.limiter.allow(token):
+    if len(token) > limits.MAX_TOKEN_CHARS:  # no token of ours: nothing to look up
+        raise HTTPException(401, _("unknown link"))
+    if not server.limiter.allow(limits.limiter_key(client, token)):
         raise HTTPException(429, _("too many requests; slow down"), headers={"Retry-After": "1"})
     identity = server.identities.get(token)
     if identity is None:
@@ -141,36 +151,40 @@ async def identify(server: Server, token: str, role: str) -> db.Identity:
     return identity
 
 
-async def _student(server: Server, token: str) -> StudentCaller:
-    identity = await identify(server, token, STUDENT)
+async def _student(server: Server, token: str, client: str) -> StudentCaller:
+    identity = await identify(server, token, STUDENT, client)
     if identity.student_id is None:  # a student's token always names its student
         raise HTTPException(401, _("unknown link"))
     return StudentCaller(token, STUDENT, identity.student_id)
 
 
-async def _staff(server: Server, token: str) -> Caller:
-    identity = await identify(server, token, STAFF)
+async def _staff(server: Server, token: str, client: str) -> Caller:
+    identity = await identify(server, token, STAFF, client)
     return Caller(token, STAFF, label=identity.label)
 
 
-async def student_by_link(server: ServerDep, token: LinkToken) -> StudentCaller:
+async def student_by_link(server: ServerDep, token: LinkToken,
+                          client: ClientAddress) -> StudentCaller:
     """The student whose link this page is."""
-    return await _student(server, token)
+    return await _student(server, token, client)
 
 
-async def staff_by_link(server: ServerDep, token: LinkToken) -> Caller:
+async def staff_by_link(server: ServerDep, token: LinkToken,
+                        client: ClientAddress) -> Caller:
     """The staff member whose link this page is."""
-    return await _staff(server, token)
+    return await _staff(server, token, client)
 
 
-async def student_by_bearer(server: ServerDep, token: BearerToken) -> StudentCaller:
+async def student_by_bearer(server: ServerDep, token: BearerToken,
+                            client: ClientAddress) -> StudentCaller:
     """The student whose token the request carries."""
-    return await _student(server, token)
+    return await _student(server, token, client)
 
 
-async def staff_by_bearer(server: ServerDep, token: BearerToken) -> Caller:
+async def staff_by_bearer(server: ServerDep, token: BearerToken,
+                          client: ClientAddress) -> Caller:
     """The staff member whose token the request carries."""
-    return await _staff(server, token)
+    return await _staff(server, token, client)
 
 
 StudentLink = Annotated[StudentCaller, Depends(student_by_link)]

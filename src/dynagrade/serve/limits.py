@@ -1,9 +1,14 @@
 """Guards in front of the routes: request size, requests per token, CSRF fields.
 
 - Bodies over :data:`MAX_BODY_BYTES` are refused with 413 before they are read whole.
-- Each token may make :data:`BURST` requests at once and :data:`RATE` per second after
-  that (a token bucket per token, kept by each worker process; put a per-address limit
-  in the reverse proxy as well). Beyond it: 429 with ``Retry-After``.
+- Each client (its address) may make :data:`BURST` requests at once with one token and
+  :data:`RATE` per second after that (a token bucket per address and token, kept by each
+  worker process in a table of at most :data:`MAX_BUCKETS` entries, the longest idle
+  forgotten first, so that no stream of requests can grow it; put a per-address limit for
+  the whole class in the reverse proxy as well). Beyond it: 429 with ``Retry-After``. A
+  token longer than :data:`MAX_TOKEN_CHARS` is no token of ours and is refused before any
+  of this.
+- The access log shows a link's token as the start of its hash (:class:`TokenlessAccessLog`).
 - Every form carries a CSRF field: an HMAC of the page's token under the server's secret
   (stored in the database, so every worker checks what any worker signed).
 """
@@ -12,37 +17,52 @@ from __future__ import annotations
 
 import hashlib
 import hmac
+import logging
+import re
 import threading
 import time
+from collections import OrderedDict
 
 from ..errors import DynagradeError
 from ..i18n import language
 
 MAX_BODY_BYTES = 64 * 1024
-RATE = 5.0    # requests per second, sustained, per token
-BURST = 60    # requests at once, per token
+RATE = 5.0    # requests per second, sustained, per address and token
+BURST = 60    # requests at once, per address and token
+#: the most buckets a worker keeps (about 100 bytes each)
+MAX_BUCKETS = 20_000
+#: the longest token worth looking up (ours are 43 characters)
+MAX_TOKEN_CHARS = 100
+
+
+def limiter_key(client: str, token: str) -> str:
+    """The rate limiter's key of a request: the client's address and a digest of the
+    token (of fixed size, however long the token sent)."""
+    return f"{client} {hashlib.sha256(token.encode('utf-8', 'replace')).hexdigest()[:16]}"
 
 
 class RateLimiter:
-    """A token bucket per key; thread-safe."""
+    """A token bucket per key in a table of at most ``size`` keys, the longest idle
+    forgotten first; thread-safe."""
 
-    def __init__(self, rate: float = RATE, burst: int = BURST):
-        self.rate, self.burst = rate, burst
-        self._buckets: dict[str, tuple[float, float]] = {}
+    def __init__(self, rate: float = RATE, burst: int = BURST, size: int = MAX_BUCKETS):
+        self.rate, self.burst, self.size = rate, burst, size
+        self._buckets: OrderedDict[str, tuple[float, float]] = OrderedDict()
         self._lock = threading.Lock()
 
     def allow(self, key: str) -> bool:
         now = time.monotonic()
         with self._lock:
-            level, then = self._buckets.get(key, (float(self.burst), now))
+            level, then = self._buckets.pop(key, (float(self.burst), now))
             level = min(float(self.burst), level + (now - then) * self.rate)
-            if level < 1.0:
-                self._buckets[key] = (level, now)
-                return False
-            self._buckets[key] = (level - 1.0, now)
-            if len(self._buckets) > 100_000:  # forget idle tokens now and then
-                self._buckets = {k: v for k, v in self._buckets.items() if now - v[1] < 60}
-            return True
+            allowed = level >= 1.0
+            self._buckets[key] = (level - 1.0 if allowed else level, now)  # newest last
+            while len(self._buckets) > self.size:
+                self._buckets.popitem(last=False)
+            return allowed
+
+    def __len__(self) -> int:
+        return len(self._buckets)
 
 
 def csrf_field(secret: str, token: str) -> str:
@@ -176,3 +196,29 @@ async def _too_large(send) -> None:
                 "headers": [(b"content-type", b"application/json"),
                             (b"content-length", str(len(body)).encode())]})
     await send({"type": "http.response.body", "body": body})
+
+
+class TokenlessAccessLog(logging.Filter):
+    """The server's access log (uvicorn's ``uvicorn.access``) without secrets: the token
+    in a page's path (``/s/<token>``, ``/i/<token>``) is replaced by the start of its hash,
+    as the audit log and ``dynagrade links --list-staff`` name links."""
+
+    _TOKEN = re.compile(r"(/[si]/)([^/?#\s]+)")
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        if isinstance(record.args, tuple):
+            record.args = tuple(self._TOKEN.sub(self._hidden, arg) if isinstance(arg, str)
+                                else arg for arg in record.args)
+        return True
+
+    @staticmethod
+    def _hidden(match: re.Match) -> str:
+        digest = hashlib.sha256(match.group(2).encode("utf-8", "replace")).hexdigest()
+        return f"{match.group(1)}{digest[:8]}…"
+
+
+def hide_tokens_in_access_log() -> None:
+    """Install :class:`TokenlessAccessLog` on uvicorn's access log (once)."""
+    access = logging.getLogger("uvicorn.access")
+    if not any(isinstance(f, TokenlessAccessLog) for f in access.filters):
+        access.addFilter(TokenlessAccessLog())
