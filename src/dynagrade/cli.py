@@ -173,7 +173,8 @@ def show(context, exercise_id, seed, student, settings, answers, solution, as_js
 @main.command()
 @click.argument("exercise_id")
 @click.option("--seed", type=click.IntRange(0), default=0, show_default=True,
-              help="Seed for the parameters not set.")
+              help="Seed for the parameters not set (they keep the values this seed "
+                   "draws without --set).")
 @click.option("--set", "settings", multiple=True, metavar="NAME=VALUE",
               help="Fix a parameter, in its unit or with one.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (each answer with its unit).")
@@ -593,7 +594,8 @@ def _variant(exercise, seed, student, settings, force=False):
                                      + (" (--force computes anyway)" if force is not None
                                         else ""), param_hint="--set")
     try:
-        variant = exercise.variant(seed or 0, overrides, strict=not overrides)
+        variant = exercise.variant_set(seed or 0, overrides, finite=force is None) \
+            if overrides else exercise.variant(seed or 0)
     except (ArithmeticError, ValueError) as error:
         if isinstance(error, DynagradeError):
             raise
