@@ -173,7 +173,8 @@ def show(context, exercise_id, seed, student, settings, answers, solution, as_js
 @main.command()
 @click.argument("exercise_id")
 @click.option("--seed", type=click.IntRange(0), default=0, show_default=True,
-              help="Seed for the parameters not set.")
+              help="Seed for the parameters not set (they keep the values this seed "
+                   "draws without --set).")
 @click.option("--set", "settings", multiple=True, metavar="NAME=VALUE",
               help="Fix a parameter, in its unit or with one.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (each answer with its unit).")
@@ -230,15 +231,16 @@ def sheet(context, exercise_id, student, output, solution):
             click.echo(f"note: {exercise.id} has a figure; write the sheet with -o FILE to "
                        f"get it beside the file as {figure_file_name(exercise)}", err=True)
         return
-    Path(output).write_text(text, encoding="utf-8")
+    from .runs.files import write_atomic
+
+    write_atomic(output, text)
     click.echo(f"wrote {output}: {exercise.title}, variant of {student}", err=True)
     if figure is not None:
         from .render.figures import figure_svg
 
         svg = figure_svg(exercise, variant)  # an exercise with a figure draws one
         if svg is not None:
-            figure_path = Path(output).parent / figure
-            figure_path.write_text(svg, encoding="utf-8")
+            figure_path = write_atomic(Path(output).parent / figure, svg)
             click.echo(f"wrote {figure_path}: its figure", err=True)
 
 
@@ -593,7 +595,8 @@ def _variant(exercise, seed, student, settings, force=False):
                                      + (" (--force computes anyway)" if force is not None
                                         else ""), param_hint="--set")
     try:
-        variant = exercise.variant(seed or 0, overrides, strict=not overrides)
+        variant = exercise.variant_set(seed or 0, overrides, finite=force is None) \
+            if overrides else exercise.variant(seed or 0)
     except (ArithmeticError, ValueError) as error:
         if isinstance(error, DynagradeError):
             raise
@@ -608,14 +611,12 @@ def _write_figure(exercise, variant, figure_file) -> None:
     """Write the variant's figure as SVG to ``figure_file``; an error when the exercise
     draws none."""
     from .render.figures import figure_svg
+    from .runs.files import write_atomic
 
     svg = figure_svg(exercise, variant)
     if svg is None:
         raise click.ClickException(f"{exercise.id} draws no figure (it has no figure=)")
-    try:
-        Path(figure_file).write_text(svg, encoding="utf-8")
-    except OSError as error:
-        raise click.ClickException(f"cannot write {figure_file}: {error.strerror}") from None
+    write_atomic(figure_file, svg)
     click.echo(f"wrote {figure_file}: the figure of {exercise.id}, seed {variant.seed}",
                err=True)
 

@@ -258,10 +258,11 @@ def text(manifest: Manifest) -> str:
 
 
 def dump(manifest: Manifest, path: str | os.PathLike) -> Path:
-    """Write ``manifest`` to ``path`` atomically."""
+    """Write ``manifest`` to ``path`` atomically, readable by its owner only (it holds
+    the exam's secret and every student's answers)."""
     from ..runs.files import write_atomic
 
-    return write_atomic(path, text(manifest))
+    return write_atomic(path, text(manifest), private=True)
 
 
 # -- reading ------------------------------------------------------------------------------

@@ -15,6 +15,7 @@ from pathlib import Path
 from ..errors import DynagradeError
 from ..exercise.datafile import DataFileError, read_data_file
 from ..exercise.seeds import new_secret
+from ..runs.files import write_atomic
 
 MIN_SECRET_CHARACTERS = 32
 MAX_SECRET_BYTES = 4096
@@ -29,13 +30,7 @@ def load_secret(path: str | os.PathLike) -> str:
     path = Path(path)
     if not path.exists() and not path.is_symlink():
         secret = new_secret()
-        try:
-            descriptor = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
-            with os.fdopen(descriptor, "w", encoding="ascii") as handle:
-                handle.write(secret + "\n")
-        except OSError as error:
-            raise SecretError(f"{path}: cannot write the exam secret "
-                              f"({error.strerror})") from None
+        write_atomic(path, secret + "\n", private=True)
         return secret
     try:
         secret = read_data_file(path, MAX_SECRET_BYTES).decode("ascii").strip()

@@ -231,13 +231,16 @@ class Exercise:
         self._draw[:] = [key, si]
         return si
 
-    def solve_in_part_units(self, values: Mapping[str, float]) -> dict[str, Any]:
-        """Every part's reference answer for ``values``, in the part's unit."""
+    def solve_in_part_units(self, values: Mapping[str, float],
+                            finite: bool = True) -> dict[str, Any]:
+        """Every part's reference answer for ``values``, in the part's unit; a
+        non-finite one is a :class:`DefinitionError` unless ``finite`` is false."""
         solved = self.solve(self.si(values))
         answers = {}
         for part in self.parts:
             answer = part.reference(solved)
-            _require_finite(answer, self.id, part.name)
+            if finite:
+                _require_finite(answer, self.id, part.name)
             answers[part.name] = answer
         return answers
 
@@ -250,15 +253,30 @@ class Exercise:
         values, warnings = self.draw(seed, overrides, strict=strict, tally=tally)
         return self.variant_from_params(seed, values, warnings, with_statement)
 
+    def variant_set(self, seed: int, overrides: Mapping[str, float],
+                    finite: bool = True) -> Variant:
+        """The variant of ``seed`` with ``overrides`` fixed (declared units) and every
+        other parameter as the seed alone draws it, so that setting one value changes
+        nothing else (``dynagrade solve --seed S --set X=...``). The constraints the
+        values break are the variant's warnings; ``finite=False`` keeps a non-finite
+        reference answer instead of refusing it."""
+        for name in overrides:
+            self.parameter(name)
+        values, _ = self.draw(seed, strict=False)
+        values.update(overrides)
+        return self.variant_from_params(seed, values, tuple(self.broken_constraints(values)),
+                                        finite=finite)
+
     def variant_from_params(self, seed: int, values: Mapping[str, float],
                             warnings: tuple[str, ...] = (),
-                            with_statement: bool = True) -> Variant:
+                            with_statement: bool = True, finite: bool = True) -> Variant:
         """The variant with these parameter values, e.g. as stored in an exam manifest. A
         solver that raises is a :class:`SolverError` of one line naming the file, the
-        exercise and the seed."""
+        exercise and the seed; a non-finite reference answer is refused unless
+        ``finite`` is false."""
         values = {p.name: float(values[p.name]) for p in self.params}
         try:
-            answers = self.solve_in_part_units(values)
+            answers = self.solve_in_part_units(values, finite)
         except DynagradeError:
             raise
         except Exception as error:  # the author's solver: reported, never a traceback

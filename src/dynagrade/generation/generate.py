@@ -211,7 +211,7 @@ def _in_roster_order(pool: Pool, job: Callable, items: list, stage: str,
 def _write_key_csv(run: GenerationRun, manifest: Manifest) -> None:
     from ..render.keys import key_csv
 
-    write_atomic(run.out_dir / "key.csv", key_csv(manifest, run.exercises))
+    write_atomic(run.out_dir / "key.csv", key_csv(manifest, run.exercises), private=True)
 
 
 def _write_exports(run: GenerationRun, pool: Pool, manifest: Manifest,

@@ -76,7 +76,7 @@ def rekey(manifest_path: str | Path, exercise_ids: list[str], bank: Bank,
     if write_key_csv and key.exists():
         from ..render.keys import key_csv
 
-        write_atomic(key, key_csv(manifest, _loaded(manifest, bank, exercises)))
+        write_atomic(key, key_csv(manifest, _loaded(manifest, bank, exercises)), private=True)
     return report
 
 

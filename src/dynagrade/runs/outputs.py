@@ -49,7 +49,7 @@ def staging_folder(target: str | os.PathLike) -> Path:
         target.parent.mkdir(parents=True, exist_ok=True)
         if staging.exists():
             shutil.rmtree(staging)
-        staging.mkdir()
+        staging.mkdir(0o700)  # the run's key, manifest and grades are for staff only
     except OutputFolderError:
         raise
     except OSError as error:

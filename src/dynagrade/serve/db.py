@@ -48,6 +48,7 @@ import sqlalchemy as sa
 from sqlalchemy.exc import IntegrityError
 
 from ..errors import DynagradeError
+from ..runs.files import create_private
 
 metadata = sa.MetaData()
 
@@ -244,6 +245,9 @@ def connect(url: str) -> sa.Engine:
         engine = sa.create_engine(url, connect_args={"timeout": 30})
         sa.event.listen(engine, "connect", _sqlite_pragmas)
         database = engine.url.database or ":memory:"
+        if database != ":memory:":
+            # made 0600 before SQLite opens it; its -wal and -shm files take its mode
+            create_private(database)
         _WRITER_LOCKS.setdefault(database, _WriterLock(database))
     else:
         engine = sa.create_engine(url, pool_pre_ping=True, pool_size=5, max_overflow=5)

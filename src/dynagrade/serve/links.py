@@ -24,6 +24,7 @@ from pathlib import Path
 
 from ..errors import DynagradeError
 from ..i18n import _
+from ..runs.files import refuse_unless_replaceable, write_atomic
 from . import db, limits
 from .exam_data import ExamData
 
@@ -46,7 +47,10 @@ def staff_url(base_url: str, token: str) -> str:
 
 def write_links(data: ExamData, engine, out: Path, base_url: str,
                 rotate: bool = False) -> list[str]:
-    """Write ``out`` (student_id,name,email,url per roster student); returns notices."""
+    """Write ``out`` (student_id,name,email,url per roster student), readable by its
+    owner only (the links are the students' passwords); returns notices. A target that
+    is no regular file is refused before any token is issued or revoked."""
+    refuse_unless_replaceable(out)
     previous = {} if rotate else _previous_urls(out)
     issued = db.issue_tokens(engine, data.exam_id, list(data.students), rotate=rotate)
     rows: list[tuple[str, str, str, str]] = []
@@ -67,11 +71,7 @@ def write_links(data: ExamData, engine, out: Path, base_url: str,
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(LINK_HEADER)
     writer.writerows(rows)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    temporary = out.with_name(out.name + ".tmp")
-    temporary.write_text(buffer.getvalue(), encoding="utf-8")
-    temporary.chmod(0o600)  # the links are the students' passwords
-    temporary.replace(out)
+    write_atomic(out, buffer.getvalue(), private=True)
     if not unknown:
         return []
     return [f"{len(unknown)} students ({', '.join(unknown[:5])}{', ...' if len(unknown) > 5 else ''})"
