@@ -234,3 +234,46 @@ def test_the_staff_report_is_built_from_the_stored_verdicts_without_grading(
     # one of five students present, with 4 of the exam's 15 points: 26.67 %
     assert "1 with submissions" in report.text and "mean 26.67 %" in report.text
     assert dict(zip(*list(csv.reader(io.StringIO(grades)))[:3:2]))["percent"] == "26.67"
+
+
+#: answers that run in a spreadsheet, and one that only starts like a formula
+HOSTILE = ('=HYPERLINK("http://x","y")', "@SUM(1)", "-3.2 m/s")
+
+
+def test_answers_that_are_formulas_are_inert_in_submissions_csv_and_grade_the_same(
+        exams, tmp_path):
+    """Issue 26: ``=HYPERLINK(...)`` and ``@SUM(1)`` went into submissions.csv as they were
+    typed, and ran when the staff opened the file. Now each has a leading apostrophe, and
+    ``dynagrade grade`` on the download reads the answers as typed and gives the server's
+    grades. (The server refuses these answers as unreadable today, so they are stored here
+    directly, as an older server or a future part kind would have stored them.)"""
+    import datetime as dt
+
+    from dynagrade.serve import gradebook
+    from dynagrade.serve.db import StoredAnswer
+
+    manifest = exam_copy(exams[0.5], tmp_path / "exam", mode="homework")
+    with serve(manifest) as served:
+        data = served.server.data
+        parts = data.parts("projectile-range")
+        right = reference_answers(served, "s1", "projectile-range")
+        at = dt.datetime(2025, 4, 14, 10, 2, 3, tzinfo=dt.timezone.utc)
+        raws = [right[parts[0].name], *HOSTILE]
+        stored = [StoredAnswer(1, "s1", "projectile-range", 1, True, 1, at, part.name, raw,
+                               True, "", "correct" if n == 0 else "wrong", n == 0,
+                               part.points if n == 0 else 0.0, part.points, "")
+                  for n, (part, raw) in enumerate(zip(parts, raws))]
+        grades = gradebook.grades_csv(data, stored, [])
+        responses = gradebook.responses_csv(data, stored)
+    # the cells as a spreadsheet reads them (a csv reader that restores nothing)
+    cells = {row[2]: row[3] for row in list(csv.reader(io.StringIO(responses)))[1:]}
+    assert [cells[part.name] for part in parts[1:4]] == [
+        "'=HYPERLINK(\"http://x\",\"y\")", "'@SUM(1)", "'-3.2 m/s"]
+    (tmp_path / "submissions.csv").write_text(responses, encoding="utf-8")
+    offline = grade_class(manifest, [tmp_path / "submissions.csv"], tmp_path / "grading",
+                          jobs=1)
+    assert grades == (tmp_path / "grading" / "grades.csv").read_text(encoding="utf-8")
+    assert dict(zip(*list(csv.reader(io.StringIO(grades)))[:2]))["total"] == \
+        f"{parts[0].points:g}"
+    result = offline.feedback["s1"].results["projectile-range"]
+    assert [result.part(part.name).answer for part in parts[1:4]] == list(HOSTILE)

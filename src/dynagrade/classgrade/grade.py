@@ -33,14 +33,13 @@ A re-run with the same inputs writes the same files.
 
 from __future__ import annotations
 
-import csv
-import io
 import time
 from dataclasses import replace
 from pathlib import Path
 from typing import Mapping
 
 from ..errors import UnknownExercise
+from ..exam.csvcells import csv_text
 from ..exam.manifest import Manifest, ManifestError, PartEntry, StudentEntry, VariantEntry, load
 from ..exam.points import Rounding
 from ..exam.policy import Policy
@@ -287,12 +286,8 @@ def _run(work, manifest_parts, exercises, jobs, progress) -> list[dict]:
 
 
 def problems_csv(problems: list[Problem]) -> str:
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(["level", "source", "student_id", "exercise_id", "message"])
-    for problem in problems:
-        writer.writerow(problem.to_row())
-    return buffer.getvalue()
+    return csv_text([("level", "source", "student_id", "exercise_id", "message"),
+                     *(problem.to_row() for problem in problems)])
 
 
 def write_outputs(outcome: ClassOutcome, manifest: Manifest, out: Path, progress,

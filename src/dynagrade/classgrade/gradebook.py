@@ -28,12 +28,11 @@ follows):
 
 from __future__ import annotations
 
-import csv
-import io
 from dataclasses import dataclass
 from enum import StrEnum
 from typing import Mapping, Sequence
 
+from ..exam.csvcells import csv_text
 from ..exam.points import Rounding
 from ..exercise.numbers import percent_text
 from ..exercise.results import ExerciseResult
@@ -115,12 +114,6 @@ def _points(value: float | None, rounding: Rounding) -> str:
     return "" if value is None else rounding.text(value)
 
 
-def _csv(rows: list[list[str]]) -> str:
-    buffer = io.StringIO()
-    csv.writer(buffer, lineterminator="\n").writerows(rows)
-    return buffer.getvalue()
-
-
 def exercise_columns(exercise_ids: Sequence[str]) -> list[str]:
     """The headers of the exercise columns: each exercise's id, and ``exercise:<id>`` for
     an id that is also the name of a fixed column (an exercise called ``total``), so that
@@ -133,7 +126,7 @@ def gradebook_csv(outcome) -> str:
     rounding = outcome.rounding
     header = [*FIXED_COLUMNS[:3], *exercise_columns(outcome.exercise_ids),
               *FIXED_COLUMNS[3:]]
-    return _csv([header] + [
+    return csv_text([header] + [
         [row.student_id, row.name, row.email,
          *(_points(row.cells[e], rounding) for e in outcome.exercise_ids),
          _points(row.total, rounding), _points(row.max_total, rounding),
@@ -164,7 +157,7 @@ def moodle_csv(outcome, title: str) -> str:
              feedback_line(row, outcome.exercise_ids, rounding,
                            outcome.comments.get(row.student_id, ()))]
             for row in outcome.rows]
-    return _csv([header, *rows])
+    return csv_text([header, *rows])
 
 
 def canvas_csv(outcome, title: str) -> str:
@@ -177,7 +170,7 @@ def canvas_csv(outcome, title: str) -> str:
     possible = [CANVAS_POINTS_ROW, "", "", "", "", _points(outcome.max_total, rounding)]
     rows = [[row.name, "", row.student_id, "", "", _points(row.total, rounding)]
             for row in outcome.rows]
-    return _csv([header, possible, *rows])
+    return csv_text([header, possible, *rows])
 
 
 def platform_gradebook(outcome, layout: str, title: str) -> str:

@@ -43,6 +43,7 @@ from ..exercise.seeds import token_matches, variant_token
 from ..exercise.sheet import MAX_SHEET_BYTES, Sheet, SheetError, read_sheet, sheet_from_bytes
 from .downloads import MAX_CSV_BYTES, Identities, identities, read_download
 from .layouts import owner
+from ..exam.csvcells import restored_rows
 from ..exam.manifest import Manifest
 
 RESPONSE_HEADER = ("student_id", "exercise_id", "part", "answer")
@@ -309,7 +310,7 @@ def _read_responses(found: Found, exam: _Exam, problems: list[Problem]) -> list[
                                 "corrupt, skipped: not UTF-8 text", whose))
         return []
     try:
-        rows = list(csv.reader(io.StringIO(text, newline="")))
+        rows = restored_rows(csv.reader(io.StringIO(text, newline="")))
     except csv.Error:
         problems.append(Problem("error", source, "corrupt, skipped: not a CSV file", whose))
         return []

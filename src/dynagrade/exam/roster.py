@@ -38,6 +38,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import DynagradeError
+from .csvcells import restored_rows
 from ..exercise.datafile import DataFileError, read_data_file
 
 MAX_ROSTER_BYTES = 20_000_000
@@ -122,8 +123,10 @@ def parse_roster(raw: bytes, where: str = "<roster>", notices: list[str] | None 
 
 def csv_rows(raw: bytes, where: str, error: type[Exception] = RosterError) -> list[list[str]]:
     """The rows of a CSV file as people save it: UTF-8 with or without a byte-order mark,
-    the separator its header row uses (``,``, ``;`` or a tab), CRLF or LF; ``error`` (with
-    ``where`` and the row) when it is not UTF-8 or not CSV."""
+    the separator its header row uses (``,``, ``;`` or a tab), CRLF or LF, each cell with
+    the apostrophe that keeps a spreadsheet from running it dropped as dynagrade's own
+    CSVs add it (:func:`~dynagrade.exam.csvcells.restored`); ``error`` (with ``where`` and
+    the row) when it is not UTF-8 or not CSV."""
     try:
         text = raw.decode("utf-8-sig")
     except UnicodeDecodeError as problem:
@@ -132,7 +135,7 @@ def csv_rows(raw: bytes, where: str, error: type[Exception] = RosterError) -> li
     first_line = text.split("\n", 1)[0]
     separator = max(SEPARATORS, key=first_line.count)
     try:
-        return list(csv.reader(io.StringIO(text, newline=""), delimiter=separator))
+        return restored_rows(csv.reader(io.StringIO(text, newline=""), delimiter=separator))
     except csv.Error as problem:
         raise error(f"{where}: not a CSV file ({problem})") from None
 

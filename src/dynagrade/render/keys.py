@@ -7,10 +7,9 @@ that a written solution can be checked by hand against the numbers the student h
 
 from __future__ import annotations
 
-import csv
-import io
 from typing import TYPE_CHECKING, Mapping
 
+from ..exam.csvcells import csv_text
 from ..exercise.numbers import answer_text, points_text
 from ..exercise.statement import ShownValue, referenced_names
 from ..exercise.units import pretty_unit
@@ -62,14 +61,10 @@ def key_rows(manifest: Manifest, exercises: Mapping[str, Exercise] | None = None
 def key_csv(manifest: Manifest, exercises: Mapping[str, Exercise] | None = None) -> str:
     """The answer key as CSV, answers to 10 significant figures, each row with its
     variant's given values."""
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(KEY_COLUMNS)
-    for row in key_rows(manifest, exercises):
-        writer.writerow([row["student_id"], row["name"], row["exercise_id"], row["seed"],
-                         row["given"], row["part"], answer_text(row["value"], 10), row["unit"],
-                         points_text(row["points"])])
-    return buffer.getvalue()
+    return csv_text([KEY_COLUMNS, *(
+        [row["student_id"], row["name"], row["exercise_id"], row["seed"], row["given"],
+         row["part"], answer_text(row["value"], 10), row["unit"], points_text(row["points"])]
+        for row in key_rows(manifest, exercises))])
 
 
 def key_typst(manifest: Manifest, exercises: Mapping[str, Exercise] | None = None) -> str:

@@ -10,12 +10,11 @@ course's zone and its offset.
 
 from __future__ import annotations
 
-import csv
 import datetime as dt
-import io
 import json
 
 from ..i18n import N_, _
+from ..exam.csvcells import csv_text
 from . import db
 
 #: the columns of ``audit.csv``
@@ -36,13 +35,10 @@ def local_time(moment: dt.datetime, zone: dt.tzinfo) -> str:
 
 def audit_csv(entries: list[db.AuditEntry], zone: dt.tzinfo) -> str:
     """The entries, oldest first, as ``audit.csv``."""
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(AUDIT_COLUMNS)
-    for entry in sorted(entries, key=lambda e: e.id):
-        writer.writerow([entry.id, local_time(entry.at, zone), entry.actor, entry.action,
-                         entry.subject, _json(entry.before), _json(entry.after)])
-    return buffer.getvalue()
+    return csv_text([AUDIT_COLUMNS, *(
+        [entry.id, local_time(entry.at, zone), entry.actor, entry.action, entry.subject,
+         _json(entry.before), _json(entry.after)]
+        for entry in sorted(entries, key=lambda e: e.id))])
 
 
 def change_text(entry: db.AuditEntry) -> str:

@@ -17,8 +17,6 @@ each part's points here are the grader's points times the attempt's factor, roun
 from __future__ import annotations
 
 from ..i18n import N_, _
-import csv
-import io
 from typing import Sequence
 
 from ..classgrade.grade import class_outcome
@@ -27,6 +25,7 @@ from ..classgrade.gradebook import exercise_columns, gradebook_csv
 from ..classgrade.stats import declared_names
 from ..classgrade.submissions import ATTEMPT_COLUMNS, RESPONSE_HEADER
 from ..exercise.numbers import percent_text
+from ..exam.csvcells import csv_text
 from ..exam.manifest import PartEntry
 from ..exercise.results import ExerciseResult, GradedPart
 from . import db
@@ -130,19 +129,17 @@ def responses_csv(data: ExamData, stored: list[StoredAnswer]) -> str:
             attempts.setdefault((answer.student_id, answer.exercise_id, answer.part),
                                 []).append(answer)
     zone = data.policy.zone
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(RESPONSE_HEADER + ATTEMPT_COLUMNS)
+    rows: list[Sequence[object]] = [RESPONSE_HEADER + ATTEMPT_COLUMNS]
     for student_id in data.students:
         for exercise_id in data.exercise_ids:
             for part in data.parts(exercise_id):
                 for number, answer in enumerate(
                         attempts.get((student_id, exercise_id, part.name), []), 1):
                     at = db.utc(answer.created_at).astimezone(zone)
-                    writer.writerow([student_id, exercise_id, part.name, answer.raw, number,
-                                     at.isoformat(timespec="seconds"),
-                                     "yes" if id(answer) in chosen else "no"])
-    return buffer.getvalue()
+                    rows.append([student_id, exercise_id, part.name, answer.raw, number,
+                                 at.isoformat(timespec="seconds"),
+                                 "yes" if id(answer) in chosen else "no"])
+    return csv_text(rows)
 
 
 def progress(data: ExamData, stored: list[StoredAnswer]) -> list[dict]:

@@ -23,6 +23,7 @@ import io
 from pathlib import Path
 
 from ..errors import DynagradeError
+from ..exam.csvcells import csv_text, restored_rows
 from ..i18n import _
 from ..runs.files import refuse_unless_replaceable, write_atomic
 from . import db, limits
@@ -67,11 +68,7 @@ def write_links(data: ExamData, engine, out: Path, base_url: str,
             unknown.append(student_id)
             url = ""
         rows.append((student_id, student.name, student.email, url))
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(LINK_HEADER)
-    writer.writerows(rows)
-    write_atomic(out, buffer.getvalue(), private=True)
+    write_atomic(out, csv_text([LINK_HEADER, *rows]), private=True)
     if not unknown:
         return []
     return [f"{len(unknown)} students ({', '.join(unknown[:5])}{', ...' if len(unknown) > 5 else ''})"
@@ -81,10 +78,12 @@ def write_links(data: ExamData, engine, out: Path, base_url: str,
 
 def _previous_urls(path: Path) -> dict[str, str]:
     try:
-        rows = list(csv.DictReader(io.StringIO(path.read_text(encoding="utf-8"))))
+        rows = restored_rows(csv.reader(io.StringIO(path.read_text(encoding="utf-8"),
+                                                    newline="")))
     except (OSError, UnicodeDecodeError, csv.Error):
         return {}
-    return {r.get("student_id", ""): r.get("url", "") for r in rows if r.get("url")}
+    records = [dict(zip(rows[0], row)) for row in rows[1:]] if rows else []
+    return {r.get("student_id", ""): r.get("url", "") for r in records if r.get("url")}
 
 
 def _still_valid(engine, exam_id: str, student_id: str, url: str | None) -> str | None:

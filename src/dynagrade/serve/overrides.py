@@ -24,14 +24,13 @@ on the server's downloads gives the server's ``grades.csv``.
 
 from __future__ import annotations
 
-import csv
-import io
 from typing import Sequence
 
 import sqlalchemy as sa
 
 from ..classgrade.overrides import OVERRIDE_COLUMNS, Override, OverrideRules, not_handed_in
 from ..i18n import _
+from ..exam.csvcells import csv_text
 from . import db
 from .exam_data import ExamData
 from .submit import Refused
@@ -88,11 +87,7 @@ def overrides_csv(data: ExamData, stored: Sequence[db.StoredOverride]) -> str:
     order = {(s, e, p.name): n for n, (s, e, p) in enumerate(
         (s, e, p) for s in data.students for e in data.exercise_ids
         for p in data.manifest_parts[e])}
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(OVERRIDE_COLUMNS)
-    for o in sorted(stored, key=lambda o: order.get((o.student_id, o.exercise_id, o.part),
-                                                    len(order))):
-        writer.writerow([o.student_id, o.exercise_id, o.part, data.rounding.text(o.points),
-                         o.comment])
-    return buffer.getvalue()
+    return csv_text([OVERRIDE_COLUMNS, *(
+        [o.student_id, o.exercise_id, o.part, data.rounding.text(o.points), o.comment]
+        for o in sorted(stored, key=lambda o: order.get(
+            (o.student_id, o.exercise_id, o.part), len(order))))])
