@@ -71,3 +71,19 @@ def test_the_time_budget_bounds_the_high_precision_check():
     env = {"x": np.linspace(100, 300, 16)}
     ones = np.ones(16)
     assert agree_precisely(answer, reference, env, 0 * ones, ones, 1e-6 * ones, 1e-6, Deadline(0.0)) is None
+
+
+def test_a_number_with_a_leading_point_is_read_as_python_reads_it():
+    """``.0`` is 0 (mpmath alone refuses the spelling: grade() raised ValueError on
+    ``6666666666-.0``, issue 26): a verdict, worked out by hand, never an exception."""
+    from dynagrade.grading import grade
+    from dynagrade.grading.compare import build
+
+    def verdict(expected, answer):
+        return grade(*build({"kind": "symbolic", "expected": expected, "answer": answer,
+                             "variables": {"x": {"min": 1, "max": 2}}}))
+
+    assert verdict("x", "6666666666-.0").correct is False  # a constant is not x in [1, 2]
+    assert verdict("6666666666+x", "6666666666-.0+x").correct is True
+    assert verdict("x", ".000+x").correct is True
+    assert verdict("x/2", "x*.5").correct is True

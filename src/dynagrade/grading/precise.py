@@ -178,7 +178,7 @@ def _evaluate(mp, node: Expr, point: dict, largest: list):
 
 def _leaf_or_call(mp, node: Expr, point: dict, largest: list):
     if isinstance(node, Num):
-        return _guard(mp, mp.mpf(node.text.replace(",", ".")) if node.text else mp.mpf(node.value), largest)
+        return _guard(mp, mp.mpf(_decimal(node.text)) if node.text else mp.mpf(node.value), largest)
     if isinstance(node, Name):
         return _guard(mp, mp.mpf(point[node.id]), largest)
     if isinstance(node, Const):
@@ -194,6 +194,13 @@ def _leaf_or_call(mp, node: Expr, point: dict, largest: list):
             raise _GiveUp()  # exp of more than 65536: far beyond any float
         return _guard(mp, mp_call(mp, FUNCTIONS[node.func], args), largest)
     raise _GiveUp()  # units have no place in a formula
+
+
+def _decimal(text: str) -> str:
+    """A number as the student wrote it, in the spelling mpmath reads: a decimal comma as
+    a point, and a 0 before a leading point (mpmath refuses ``.0``, which Python reads)."""
+    text = text.replace(",", ".")
+    return "0" + text if text.startswith(".") else text
 
 
 def _arithmetic(mp, op: str, a, b):

@@ -85,9 +85,23 @@ def error_page(request: Request, status: int, detail: str | None = None,
                   status=status, language=language, retry=retry)
 
 
+def encodable(detail: Any) -> Any:
+    """``detail`` with every character UTF-8 cannot hold (a lone surrogate the request
+    sent, echoed in a message) written as its escape, ``\\ud800``: an answer that quotes
+    the request cannot fail to be sent."""
+    if isinstance(detail, str):
+        return detail.encode("utf-8", "backslashreplace").decode("utf-8")
+    if isinstance(detail, dict):
+        return {encodable(key): encodable(value) for key, value in detail.items()}
+    if isinstance(detail, (list, tuple)):
+        return [encodable(item) for item in detail]
+    return detail
+
+
 def answer(request: Request, status: int, detail: Any,
            headers: dict[str, str] | None = None) -> Response:
     """The error as a page or as JSON, as the caller wants."""
+    detail = encodable(detail)
     if wants_page(request):
         shown = detail if isinstance(detail, str) else None
         retry = _retry_form(request) if status == 503 else None
@@ -142,6 +156,10 @@ class KeepForm:
 
 async def _http_error(request: Request, error: Exception) -> Response:
     assert isinstance(error, HTTPException)
+    if isinstance(error.__cause__, UnicodeDecodeError):  # FastAPI's 400 for a body not UTF-8
+        return answer(request, 422, _("the body is not UTF-8 text (byte {position} cannot be "
+                                      "read); send the text as UTF-8").format(
+            position=error.__cause__.start))
     return answer(request, error.status_code, error.detail, dict(error.headers or {}))
 
 

@@ -1,11 +1,13 @@
 """Grading off the event loop, in a bounded pool of processes.
 
 Each pool process loads the exam once and grades in its main thread, so the grader's own
-time limits (SIGALRM around the exact symbolic check) work as they do on the command
-line, and in the exam's language (``language`` of exam.toml), so the feedback stored
-with each answer reads as the page around it. The server waits at most :func:`budget` seconds for a job; a job that takes longer
-gets "not graded in time" verdicts and the other students' jobs go on in the other
-processes. At most ``queue`` jobs wait per server process; beyond that a request gets
+time limits (interval timers around the exact symbolic check) work as they do on the
+command line, and in the exam's language (``language`` of exam.toml), so the feedback
+stored with each answer reads as the page around it. The grader's budget is CPU time, so
+its verdicts do not depend on the load; the server's own wait, :func:`budget`, is
+wall-clock seconds: a job that takes longer gets "not graded in time" (status error, for
+the staff to grade), never a wrong verdict, and the other students' jobs go on in the
+other processes. At most ``queue`` jobs wait per server process; beyond that a request gets
 503 with ``Retry-After`` instead of piling up.
 """
 

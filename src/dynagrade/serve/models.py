@@ -12,8 +12,9 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, Literal
 
-from pydantic import BaseModel, Field
+from pydantic import BaseModel, Field, field_validator
 
+from ..i18n import _
 from .exam_data import MAX_ANSWER_CHARS
 
 if TYPE_CHECKING:
@@ -23,14 +24,40 @@ if TYPE_CHECKING:
 # -- requests -----------------------------------------------------------------------------
 
 
-class AnswersBody(BaseModel):
+def _lone_surrogate(value: Any) -> str | None:
+    """The first lone surrogate in ``value`` (a text, or a mapping or list of texts), which
+    JSON can escape (``"\\ud800"``) but no UTF-8 text holds, or None."""
+    if isinstance(value, str):
+        return next((c for c in value if "\ud800" <= c <= "\udfff"), None)
+    if isinstance(value, dict):
+        value = [*value.keys(), *value.values()]
+    if isinstance(value, list):
+        return next((found for item in value if (found := _lone_surrogate(item))), None)
+    return None
+
+
+class TextBody(BaseModel):
+    """A request body of texts that the server stores, grades and shows again: each must
+    be text UTF-8 can hold, else the request is refused (422) naming the field."""
+
+    @field_validator("*")
+    @classmethod
+    def _characters_only(cls, value: Any) -> Any:
+        found = _lone_surrogate(value)
+        if found is not None:
+            raise ValueError(_("holds {code}, half of a UTF-16 pair and not a character; "
+                               "send the text as UTF-8").format(code=f"U+{ord(found):04X}"))
+        return value
+
+
+class AnswersBody(TextBody):
     """``POST /api/v1/answers``: one exercise's answers, part name → text."""
 
     exercise: str = Field(max_length=200)
     answers: dict[str, str]
 
 
-class DraftsBody(BaseModel):
+class DraftsBody(TextBody):
     """``PUT /api/v1/drafts``: what the student typed into one exercise's boxes, part
     name → text (an empty text: the box was cleared). Never graded, never counted."""
 
@@ -38,7 +65,7 @@ class DraftsBody(BaseModel):
     answers: dict[str, str]
 
 
-class PreviewBody(BaseModel):
+class PreviewBody(TextBody):
     """``POST /api/v1/preview``: how one answer reads."""
 
     exercise: str = Field(max_length=200)
