@@ -154,12 +154,3 @@ def progress(data: ExamData, stored: list[StoredAnswer]) -> list[dict]:
             entry["attempts"].get(answer.exercise_id, 0), answer.attempt)
         entry["last"] = answer.created_at
     return list(seen.values())
-
-
-def class_report_html(data: ExamData, stored: list[StoredAnswer],
-                      overrides: Sequence[StoredOverride]) -> str:
-    """Class grading's report (histogram, item statistics, wrong answers by what explains
-    them) of the counted verdicts and the points set by hand."""
-    from ..classgrade.report import report_html
-
-    return report_html(data.manifest.exam, outcome(data, stored, overrides))

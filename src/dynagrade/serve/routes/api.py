@@ -12,7 +12,7 @@ from typing import Annotated, Any, Literal
 from fastapi import APIRouter, Header
 from starlette.concurrency import run_in_threadpool
 
-from .. import allowances, db, downloads, drafts, gradebook, overrides, timed
+from .. import allowances, db, downloads, drafts, overrides, timed
 from ..deps import REFUSALS, Data, Now, Pool, ServerDep, StaffBearer, StudentBearer
 from ..downloads import CsvResponse
 from ...i18n import _
@@ -95,9 +95,7 @@ def _iso(moment) -> str | None:
 @router.get("/gradebook")
 def gradebook_json(caller: StaffBearer, server: ServerDep, data: Data) -> Gradebook:
     """The gradebook as JSON: every roster student's row, in roster order."""
-    stored = db.all_answers(server.engine, data.exam_id)
-    return Gradebook.from_rows(data.exercise_ids, gradebook.outcome(
-        data, stored, db.stored_overrides(server.engine, data.exam_id)).rows)
+    return Gradebook.from_rows(data.exercise_ids, downloads.class_outcome(server).rows)
 
 
 @router.get("/grades.csv", response_class=CsvResponse)

@@ -16,7 +16,7 @@ from fastapi import APIRouter
 from fastapi.responses import HTMLResponse, RedirectResponse
 from starlette.concurrency import run_in_threadpool
 
-from .. import db, downloads, gradebook, pages
+from .. import downloads, pages
 from ..deps import REFUSALS, Now, RootPath, ServerDep, StaffForm, StaffLink
 from ..downloads import CsvResponse
 from ..models import StaffTables, problem
@@ -86,11 +86,11 @@ def submissions_csv(caller: StaffLink, server: ServerDep) -> CsvResponse:
 
 @router.get("/report.html", response_class=HTMLResponse)
 def class_report(caller: StaffLink, server: ServerDep) -> HTMLResponse:
-    """Class grading's report of the counted answers."""
-    exam_id = server.data.exam_id
-    return HTMLResponse(gradebook.class_report_html(
-        server.data, db.all_answers(server.engine, exam_id),
-        db.stored_overrides(server.engine, exam_id)))
+    """Class grading's report (histogram, item statistics, wrong answers by what explains
+    them) of the counted verdicts and the points set by hand."""
+    from ...classgrade.report import report_html
+
+    return HTMLResponse(report_html(server.data.manifest.exam, downloads.class_outcome(server)))
 
 
 @router.get("/overrides.csv", response_class=CsvResponse)
