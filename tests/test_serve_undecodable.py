@@ -56,6 +56,21 @@ def test_bytes_that_are_not_utf8_are_refused_with_a_message(served, method, path
     assert "not UTF-8" in response.json()["detail"]
 
 
+@pytest.mark.parametrize("body", [b"Infinity", b"-Infinity", b"NaN",
+                                  b'{"exercise": "projectile-range", "answers": NaN}'])
+@pytest.mark.parametrize("method, path", [("POST", "/api/v1/answers"),
+                                          ("POST", "/api/v1/preview"),
+                                          ("PUT", "/api/v1/drafts")])
+def test_a_number_json_cannot_hold_is_refused_and_quoted_as_text(served, method, path,
+                                                                 body):
+    """Python's JSON reads ``Infinity`` and ``NaN``; the refusal quotes the input it
+    refused, and must still be JSON (the server's fuzzing found this 500)."""
+    response = _send(served, method, path, body)
+    assert response.status_code == 422, response.text
+    assert response.json()["detail"]
+    assert any(f'"{word}"' in response.text for word in ("inf", "-inf", "nan"))
+
+
 def test_nothing_refused_was_stored(served):
     _send(served, "POST", "/api/v1/answers",
           b'{"exercise": "%s", "answers": {"x_max": "\\ud800"}}' % EXERCISE.encode())

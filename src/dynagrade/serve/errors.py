@@ -14,6 +14,7 @@ without JavaScript), the 503 page carries what they typed in a form that sends i
 
 from __future__ import annotations
 
+import math
 from typing import Any
 from urllib.parse import parse_qsl
 
@@ -86,11 +87,15 @@ def error_page(request: Request, status: int, detail: str | None = None,
 
 
 def encodable(detail: Any) -> Any:
-    """``detail`` with every character UTF-8 cannot hold (a lone surrogate the request
-    sent, echoed in a message) written as its escape, ``\\ud800``: an answer that quotes
-    the request cannot fail to be sent."""
+    """``detail`` with what a JSON answer cannot hold written as text: a character UTF-8
+    cannot hold (a lone surrogate the request sent, echoed in a message) as its escape,
+    ``\\ud800``, and a number JSON has no word for (a body ``Infinity``, echoed as the
+    input a check refused) as ``"inf"``: an answer that quotes the request cannot fail to
+    be sent."""
     if isinstance(detail, str):
         return detail.encode("utf-8", "backslashreplace").decode("utf-8")
+    if isinstance(detail, float) and not math.isfinite(detail):
+        return str(detail)
     if isinstance(detail, dict):
         return {encodable(key): encodable(value) for key, value in detail.items()}
     if isinstance(detail, (list, tuple)):
