@@ -391,12 +391,17 @@ def test_every_text_colour_of_the_pages_has_at_least_4_5_to_1_on_white(outputs):
 
 
 def _svg_colours(svg: str):
-    """``(fill, stroke, is_text)`` of every styled element of an SVG: a figure's labels
-    are ``<text>`` elements, a matplotlib chart's glyphs ``<use>`` elements inside a
-    styled text group."""
-    for match in re.finditer(r'<(\w+)\b([^>]*?)style="([^"]*)"[^>]*>', svg):
-        style = dict(part.split(":", 1) for part in match.group(3).split(";") if ":" in part)
-        style = {k.strip(): v.strip() for k, v in style.items()}
+    """``(fill, stroke, is_text)`` of every painted element of an SVG (presentation
+    attributes or a style attribute): a figure's labels are ``<text>`` elements, a
+    matplotlib chart's glyphs ``<use>`` elements inside a styled text group."""
+    for match in re.finditer(r'<(\w+)\b([^>]*)>', svg):
+        attributes = dict(re.findall(r'([\w-]+)="([^"]*)"', match.group(2)))
+        style = {name: attributes[name] for name in ("fill", "stroke") if name in attributes}
+        written = attributes.get("style", "")  # matplotlib's charts style their elements
+        style.update((k.strip(), v.strip()) for k, v in
+                     (part.split(":", 1) for part in written.split(";") if ":" in part))
+        if not style:
+            continue
         following = svg[match.end():match.end() + 400]
         is_text = match.group(1) == "text" or (match.group(1) == "g"
                                                and following.lstrip().startswith("<use"))

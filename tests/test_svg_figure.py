@@ -47,7 +47,7 @@ def test_data_are_drawn_at_equal_scale_in_points():
     drawn = [coordinate for point in _path_points(path.get("d")) for coordinate in point]
     # pytest.approx compares flat sequences only: the points as x0, y0, x1, y1, ...
     assert drawn == pytest.approx([3.6, 143.28, 356.4, 143.28, 356.4, 72.72], abs=0.006)
-    assert "stroke:#1a1a1a" in path.get("style") and "stroke-width:1.2" in path.get("style")
+    assert (path.get("stroke"), path.get("stroke-width")) == ("#1a1a1a", "1.2")
 
 
 def test_the_picture_is_cropped_to_the_axes_plus_the_pad():
@@ -64,9 +64,8 @@ def test_dashes_scale_with_the_line_width_as_matplotlibs_do():
     drawing, axes = _wide_drawing()
     axes.plot([0, 1], [0, 0], "--", lw=2.0)
     axes.plot([0, 1], [1, 1], ls=":", lw=1.0)
-    styles = [p.get("style") for p in _root(drawing).iter(f"{SVG}path")]
-    assert "stroke-dasharray:7.4,3.2" in styles[0]      # (3.7, 1.6) x 2
-    assert "stroke-dasharray:1,1.65" in styles[1]
+    dashes = [p.get("stroke-dasharray") for p in _root(drawing).iter(f"{SVG}path")]
+    assert dashes[:2] == ["7.4,3.2", "1,1.65"]      # (3.7, 1.6) x 2 and (1, 1.65) x 1
 
 
 def test_a_label_is_anchored_where_ha_and_va_say():
@@ -184,3 +183,17 @@ def test_the_crop_of_a_plot_is_the_box_matplotlibs_own_tight_crop_gives():
     assert box.width * 72 == pytest.approx(width, abs=1e-5)
     assert box.height * 72 == pytest.approx(height, abs=1e-5)
     assert box.width > 4.0 and math.isfinite(box.height)
+
+
+def test_a_figure_paints_with_attributes_that_a_pages_csp_lets_through():
+    """The server's pages allow no inline style (docs/serve.md, "Deployment"): every
+    line, marker, shape, label and arrow is painted with presentation attributes."""
+    drawing, axes = _wide_drawing()
+    axes.plot([0, 1], [0, 1], "o--", color="C1", lw=1.5)
+    axes.add_patch(Circle((5.0, 1.0), 0.5, facecolor="0.8", edgecolor="k"))
+    axes.text(2.0, 1.0, "m = 2 kg", color="C2")
+    axes.annotate("", xy=(10.0, 0.0), xytext=(0.0, 0.0), arrowprops={"arrowstyle": "-|>"})
+    root = _root(drawing)
+    painted = [e for e in root.iter() if e.get("fill") or e.get("stroke")]
+    assert {e.tag.split("}")[1] for e in painted} >= {"path", "circle", "text", "polygon"}
+    assert not [e.tag for e in root.iter() if "style" in e.attrib]

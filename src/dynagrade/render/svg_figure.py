@@ -100,11 +100,17 @@ def drawing_svg(drawing: Drawing) -> str:
             + " </g>\n</svg>\n")
 
 
-def _stroke(colour, width: float, style: str = "-") -> str:
-    parts = [f"stroke:{to_hex(colour)}", f"stroke-width:{number(width)}"]
+def _stroke(colour, width: float, style: str = "-") -> dict[str, str]:
+    paint = {"stroke": to_hex(colour), "stroke-width": number(width)}
     if style in DASHES:
-        parts.append("stroke-dasharray:" + ",".join(number(d * width) for d in DASHES[style]))
-    return ";".join(parts)
+        paint["stroke-dasharray"] = ",".join(number(d * width) for d in DASHES[style])
+    return paint
+
+
+def _paint(presentation: dict[str, str]) -> str:
+    """``presentation`` as SVG presentation attributes (``fill="none" stroke="#000"``),
+    never a ``style`` attribute, which a page's Content-Security-Policy would refuse."""
+    return " ".join(f'{name}="{value}"' for name, value in presentation.items())
 
 
 def _line(line: Line, frame: _Frame) -> str:
@@ -119,9 +125,9 @@ def _line(line: Line, frame: _Frame) -> str:
             commands.append(f"{'L' if pen_down else 'M'}{number(px)} {number(py)}")
             pen_down = True
         if commands:
-            elements.append(f'<path d="{" ".join(commands)}" style="fill:none;'
-                            f'{_stroke(line.colour, line.width, line.style)};'
-                            f'stroke-linecap:{CAPS.get(line.capstyle, "square")}" '
+            paint = {"fill": "none", **_stroke(line.colour, line.width, line.style),
+                     "stroke-linecap": CAPS.get(line.capstyle, "square")}
+            elements.append(f'<path d="{" ".join(commands)}" {_paint(paint)} '
                             f'clip-path="url(#{CLIP_ID})"/>')
     if line.marker:
         colour = to_hex(line.colour)
@@ -133,39 +139,42 @@ def _line(line: Line, frame: _Frame) -> str:
 
 
 def _marker(kind: str, x: float, y: float, size: float, colour: str) -> str:
-    style = f'style="fill:{colour};stroke:{colour};stroke-width:1" clip-path="url(#{CLIP_ID})"'
+    attributes = (f'{_paint({"fill": colour, "stroke": colour, "stroke-width": "1"})} '
+                  f'clip-path="url(#{CLIP_ID})"')
     half = size / 2
     if kind in "o.":
         radius = half if kind == "o" else half / 2
-        return f'<circle cx="{number(x)}" cy="{number(y)}" r="{number(radius)}" {style}/>'
+        return f'<circle cx="{number(x)}" cy="{number(y)}" r="{number(radius)}" {attributes}/>'
     if kind == "s":
         return (f'<rect x="{number(x - half)}" y="{number(y - half)}" width="{number(size)}" '
-                f'height="{number(size)}" {style}/>')
+                f'height="{number(size)}" {attributes}/>')
     corners = {"^": ((0, -1), (-1, 1), (1, 1)), "v": ((0, 1), (-1, -1), (1, -1)),
                "D": ((0, -1), (1, 0), (0, 1), (-1, 0))}[kind]
     points = " ".join(f"{number(x + half * u)},{number(y + half * v)}" for u, v in corners)
-    return f'<polygon points="{points}" {style}/>'
+    return f'<polygon points="{points}" {attributes}/>'
 
 
 def _shape(shape, frame: _Frame) -> str:
     fill = to_hex(shape.facecolor) if shape.facecolor is not None else "none"
     stroke = (_stroke(shape.edgecolor, shape.linewidth, shape.linestyle)
-              if shape.edgecolor is not None and shape.linewidth > 0 else "stroke:none")
-    style = f'style="fill:{fill};{stroke};stroke-linejoin:miter" clip-path="url(#{CLIP_ID})"'
+              if shape.edgecolor is not None and shape.linewidth > 0 else {"stroke": "none"})
+    paint = {"fill": fill, **stroke, "stroke-linejoin": "miter"}
+    attributes = f'{_paint(paint)} clip-path="url(#{CLIP_ID})"'
     if isinstance(shape, Ellipse):
         cx, cy = frame.point(*shape.center)
         rx, ry = shape.width / 2 * frame.scale, shape.height / 2 * frame.scale
         if isinstance(shape, Circle) or rx == ry:
-            return f'<circle cx="{number(cx)}" cy="{number(cy)}" r="{number(rx)}" {style}/>'
+            return (f'<circle cx="{number(cx)}" cy="{number(cy)}" r="{number(rx)}" '
+                    f'{attributes}/>')
         turn = f' transform="rotate({number(-shape.angle)} {number(cx)} {number(cy)})"' \
             if shape.angle else ""
         return (f'<ellipse cx="{number(cx)}" cy="{number(cy)}" rx="{number(rx)}" '
-                f'ry="{number(ry)}"{turn} {style}/>')
+                f'ry="{number(ry)}"{turn} {attributes}/>')
     if isinstance(shape, Polygon):
         points = " ".join(f"{number(px)},{number(py)}"
                           for px, py in (frame.point(x, y) for x, y in shape.points))
         tag = "polygon" if shape.closed else "polyline"
-        return f'<{tag} points="{points}" {style}/>'
+        return f'<{tag} points="{points}" {attributes}/>'
     raise TypeError(f"cannot draw {type(shape).__name__}")
 
 
@@ -188,7 +197,7 @@ def _label(label: Label, frame: _Frame) -> str:
     rotate = (f' transform="rotate({number(-label.rotation)} {number(x)} {number(y)})"'
               if label.rotation else "")
     return (f'<text x="{number(x)}" y="{number(y + baseline)}" font-size="{number(size)}" '
-            f'text-anchor="{anchor}" style="fill:{to_hex(label.colour)}"{rotate}>'
+            f'text-anchor="{anchor}" fill="{to_hex(label.colour)}"{rotate}>'
             f'{svg_tspans(runs, size)}</text>')
 
 
@@ -217,7 +226,8 @@ def _arrow(arrow: Arrow, frame: _Frame) -> str:
         tail = (ax + ux * head, ay + uy * head) if arrow.heads == "both" else (ax, ay)
         tip = (bx - ux * head, by - uy * head) if arrow.heads != "none" else (bx, by)
         path = f"M{number(tail[0])} {number(tail[1])} L{number(tip[0])} {number(tip[1])}"
-    elements.append(f'<path d="{path}" style="fill:none;{_stroke(arrow.colour, arrow.width)}"/>')
+    elements.append(f'<path d="{path}" '
+                    f'{_paint({"fill": "none", **_stroke(arrow.colour, arrow.width)})}/>')
     for (tx, ty), (dx, dy) in heads:
         norm = math.hypot(dx, dy) or 1.0
         ux, uy = dx / norm, dy / norm
@@ -226,8 +236,9 @@ def _arrow(arrow: Arrow, frame: _Frame) -> str:
         for px, py in corners:
             frame.include(px, py)
         points = " ".join(f"{number(px)},{number(py)}" for px, py in corners)
-        elements.append(f'<polygon points="{points}" style="fill:{colour};'
-                        f'{_stroke(arrow.colour, arrow.width)};stroke-linejoin:miter"/>')
+        paint = {"fill": colour, **_stroke(arrow.colour, arrow.width),
+                 "stroke-linejoin": "miter"}
+        elements.append(f'<polygon points="{points}" {_paint(paint)}/>')
     frame.include(ax, ay)
     frame.include(bx, by)
     return "\n  ".join(elements)
