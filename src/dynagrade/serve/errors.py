@@ -83,7 +83,8 @@ def error_page(request: Request, status: int, detail: str | None = None,
     language = server.data.manifest.exam.language if server is not None else "en"
     title, help_text = _help(status)
     return render("error.html", title=title, help=help_text, detail=detail,
-                  status=status, language=language, retry=retry)
+                  status=status, language=language, retry=retry,
+                  base=request.scope.get("root_path", ""))
 
 
 def encodable(detail: Any) -> Any:

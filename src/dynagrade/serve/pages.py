@@ -101,7 +101,6 @@ def student_html(server: Server, token: str, student_id: str, practice: str | No
         max_total=sum(float(m.points) for m in data.exercises_meta.values()),
         instructions=Markup(markdown_to_html(data.instructions))
         if data.instructions and not before and not waiting else "",
-        script=Markup(_SCRIPT),
         regraded=[] if before else regrade.notices(server, student_id, now),
         submit_label=_("Save answers") if not verdicts else _("Submit"))
 
@@ -119,8 +118,6 @@ def _close_word(rules: Rules) -> str | None:
 _STATUS_WORDS = {"correct": N_("correct"), "follow-through": N_("follow-through"),
                  "partial": N_("partial"), "wrong": N_("wrong"),
                  "not answered": N_("not answered"), "error": N_("error")}
-
-_SCRIPT = (Path(__file__).resolve().parent / "templates" / "student.js").read_text("utf-8")
 
 
 def _exercise(server: Server, rules: Rules, student_id: str, exercise_id: str,

@@ -1,6 +1,7 @@
 """The server's routes, one router per audience (docs/serve.md lists them all).
 
 - :mod:`.health`: ``GET /healthz``, for monitoring; no token.
+- :mod:`.assets`: ``GET /static/{name}``, the pages' stylesheets and scripts; no token.
 - :mod:`.student`: the student's page ``/s/{token}`` and its forms.
 - :mod:`.staff`: the staff page ``/i/{token}`` and its downloads.
 - :mod:`.staff_students`: the staff's page of one student ``/i/{token}/students/{id}``
@@ -18,9 +19,9 @@ tests/test_serve_routes.py holds every route of every router to that.
 
 from __future__ import annotations
 
-from . import (api, audit, exceptions, health, regrade, staff, staff_links, staff_students,
-               student)
+from . import (api, assets, audit, exceptions, health, regrade, staff, staff_links,
+               staff_students, student)
 
-ROUTERS = (health.router, student.router, staff.router, staff_students.router, api.router,
+ROUTERS = (health.router, assets.router, student.router, staff.router, staff_students.router, api.router,
            exceptions.page_router, exceptions.api_router, staff_links.pages_router,
            staff_links.api_router, audit.pages_router, audit.api_router, *regrade.ROUTERS)
