@@ -3,7 +3,8 @@
 ``create_app(manifest, db_url)`` builds it; every worker process builds its own, and
 they share nothing but the database. A token in the path (pages) or in
 ``Authorization: Bearer`` (API) decides who is asking (:mod:`dynagrade.serve.deps`);
-nothing else does. docs/serve.md lists the routes; ``/api/openapi.json`` describes them.
+nothing else does. docs/serve.md lists the routes; ``/api/openapi.json`` describes them
+(no browsable page: it would load scripts from elsewhere on a server of tokens).
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ from typing import Callable
 from fastapi import FastAPI
 from starlette.concurrency import run_in_threadpool
 
-from . import db, errors, limits
+from . import db, errors, headers, limits
 from .exam_data import ExamData
 from .policy_changes import PolicySource
 from .reload import ExamReloader
@@ -62,10 +63,11 @@ def build_app(settings: Settings, clock: Callable[[], dt.datetime] | None = None
             engine.dispose()
 
     app = FastAPI(title=f"dynagrade serve: {data.title}", lifespan=lifespan,
-                  root_path=settings.root_path, docs_url="/api/docs", redoc_url=None,
+                  root_path=settings.root_path, docs_url=None, redoc_url=None,
                   openapi_url="/api/openapi.json")
     app.add_middleware(limits.BodySizeLimit)
-    app.add_middleware(limits.PrivateHeaders)
+    app.add_middleware(headers.SecurityHeaders)
+    app.add_middleware(headers.HeadAsGet)
     app.add_middleware(limits.ExamLanguage, code=data.manifest.exam.language)
     app.state.server = server
     errors.install(app)  # pages for browsers, JSON for the API, 503 when the store fails

@@ -23,7 +23,6 @@ import threading
 import time
 from collections import OrderedDict
 
-from ..errors import DynagradeError
 from ..i18n import language
 
 MAX_BODY_BYTES = 64 * 1024
@@ -121,30 +120,6 @@ class RecentlySeen:
             self._seen[token] = (time.monotonic(), identity)
 
 
-class PrivateHeaders:
-    """ASGI middleware: pages and answers are private to their token's holder: never
-    cached, never sent as a referrer, never sniffed as another type."""
-
-    HEADERS = [(b"referrer-policy", b"no-referrer"), (b"cache-control", b"no-store"),
-               (b"x-content-type-options", b"nosniff"), (b"x-frame-options", b"DENY")]
-
-    def __init__(self, app):
-        self.app = app
-
-    async def __call__(self, scope, receive, send):
-        if scope["type"] != "http":
-            return await self.app(scope, receive, send)
-
-        async def with_headers(message):
-            if message["type"] == "http.response.start":
-                names = {name.lower() for name, _ in message.get("headers", [])}
-                message["headers"] = list(message.get("headers", [])) + [
-                    h for h in self.HEADERS if h[0] not in names]
-            await send(message)
-
-        await self.app(scope, receive, with_headers)
-
-
 class ExamLanguage:
     """Answer every request in the exam's language (``language`` of exam.toml; docs/serve.md,
     "Languages"): the active language of :mod:`dynagrade.i18n` for the request's work."""
@@ -158,7 +133,12 @@ class ExamLanguage:
 
 
 class BodySizeLimit:
-    """ASGI middleware: 413 for a body over ``limit`` bytes (declared or streamed)."""
+    """ASGI middleware: 413 for a body over ``limit`` bytes, declared or streamed.
+
+    A body of declared length is refused on its ``Content-Length`` before it is read; a
+    streamed one (``Transfer-Encoding: chunked``) is read here, at most ``limit`` bytes,
+    and handed on whole, so that no route's parser ever meets the limit halfway (it would
+    answer 400)."""
 
     def __init__(self, app, limit: int = MAX_BODY_BYTES):
         self.app, self.limit = app, limit
@@ -167,27 +147,29 @@ class BodySizeLimit:
         if scope["type"] != "http":
             return await self.app(scope, receive, send)
         declared = dict(scope.get("headers") or []).get(b"content-length")
-        if declared is not None and (not declared.isdigit() or int(declared) > self.limit):
-            return await _too_large(send)
-        seen = 0
-
-        async def limited_receive():
-            nonlocal seen
+        if declared is not None:
+            if not declared.isdigit() or int(declared) > self.limit:
+                return await _too_large(send)
+            return await self.app(scope, receive, send)
+        body, more = b"", True
+        while more:
             message = await receive()
-            if message["type"] == "http.request":
-                seen += len(message.get("body", b""))
-                if seen > self.limit:
-                    raise _TooLarge()
-            return message
+            if message["type"] != "http.request":  # the client left: nothing to answer
+                return
+            body += message.get("body", b"")
+            more = message.get("more_body", False)
+            if len(body) > self.limit:
+                return await _too_large(send)
+        read = False
 
-        try:
-            await self.app(scope, limited_receive, send)
-        except _TooLarge:
-            await _too_large(send)
+        async def replayed():
+            nonlocal read
+            if read:
+                return await receive()
+            read = True
+            return {"type": "http.request", "body": body, "more_body": False}
 
-
-class _TooLarge(DynagradeError):
-    """A request body over MAX_BODY_BYTES, stopping the read before the rest arrives."""
+        await self.app(scope, replayed, send)
 
 
 async def _too_large(send) -> None:

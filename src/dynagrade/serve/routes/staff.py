@@ -19,6 +19,7 @@ from starlette.concurrency import run_in_threadpool
 from .. import downloads, pages
 from ..deps import REFUSALS, Now, RootPath, ServerDep, StaffForm, StaffLink
 from ..downloads import CsvResponse
+from ..headers import STANDALONE_DOCUMENT_POLICY
 from ..models import StaffTables, problem
 
 router = APIRouter(prefix="/i/{token}", tags=["staff pages"], responses=REFUSALS)
@@ -87,10 +88,12 @@ def submissions_csv(caller: StaffLink, server: ServerDep) -> CsvResponse:
 @router.get("/report.html", response_class=HTMLResponse)
 def class_report(caller: StaffLink, server: ServerDep) -> HTMLResponse:
     """Class grading's report (histogram, item statistics, wrong answers by what explains
-    them) of the counted verdicts and the points set by hand."""
+    them) of the counted verdicts and the points set by hand: the document ``dynagrade
+    grade`` saves, with its own inline styles and no script."""
     from ...classgrade.report import report_html
 
-    return HTMLResponse(report_html(server.data.manifest.exam, downloads.class_outcome(server)))
+    return HTMLResponse(report_html(server.data.manifest.exam, downloads.class_outcome(server)),
+                        headers={"Content-Security-Policy": STANDALONE_DOCUMENT_POLICY})
 
 
 @router.get("/overrides.csv", response_class=CsvResponse)
