@@ -45,35 +45,29 @@ EVERYDAY: dict[str, tuple[tuple[str, int], ...]] = {
     "secs": (("s", 1),),
 }
 
-_MEGA = N_("'{unit}' is molar (mol/L) here; for mega write a prefix with a unit, e.g. MN")
-_ENZYME = N_("'{unit}' is an enzyme unit here; a revolution is U (German Umdrehung) or rev, "
-             "without a prefix, e.g. U/min")
 _YARN = N_("'{unit}' is a yarn count here; for a torque write N·m or kN·m (also Nm, kNm)")
-_GRADIAN = N_("'{unit}' is the gradian (400 to a full turn) here; for degrees write ° or deg "
-              "(or Grad)")
-_PREFIXED_ANGLE = N_("'{unit}' is a prefixed angle unit here; write angles in rad, mrad, deg or "
-                     "rev")
 _CONSTANT = N_("'{unit}' is a physical constant here, not a unit; give a number with a unit, "
                "e.g. 12 kN")
-_KILO = N_("'{unit}' is Boltzmann's constant here; for kilo write a prefix with a unit, e.g. kN")
-_GIGA = N_("'{unit}' is the gauss (a magnetic unit) here; for giga write a prefix with a unit, "
-           "e.g. GPa")
-_TESLA = N_("'{unit}' is the tesla (a magnetic unit) here; for tonnes write t, for tera a prefix "
-            "with a unit")
-_POISE = N_("'{unit}' is the poise (a viscosity) here; for a power write W, for peta a prefix "
-            "with a unit")
+_PREFIXED_ANGLE = N_("'{unit}' is a prefixed angle unit here; write angles in rad, mrad, deg or "
+                     "rev")
 
-#: pint's unit (without its prefix) -> the message that refuses it
+#: pint's unit (without its prefix) -> the message that refuses it, naming the likely meaning
 DENIED: dict[str, str] = {
-    "molar": _MEGA,
-    "enzyme_unit": _ENZYME,
+    "molar": N_("'{unit}' is molar (mol/L) here; for mega write a prefix with a unit, e.g. MN"),
+    "enzyme_unit": N_("'{unit}' is an enzyme unit here; a revolution is U (German Umdrehung) "
+                      "or rev, without a prefix, e.g. U/min"),
     "number_meter": _YARN,
     "number_english": _YARN,
-    "grade": _GRADIAN,
-    "boltzmann_constant": _KILO,
-    "gauss": _GIGA,
-    "tesla": _TESLA,
-    "poise": _POISE,
+    "grade": N_("'{unit}' is the gradian (400 to a full turn) here; for degrees write ° or deg "
+                "(or Grad)"),
+    "boltzmann_constant": N_("'{unit}' is Boltzmann's constant here; for kilo write a prefix "
+                             "with a unit, e.g. kN"),
+    "gauss": N_("'{unit}' is the gauss (a magnetic unit) here; for giga write a prefix with a "
+                "unit, e.g. GPa"),
+    "tesla": N_("'{unit}' is the tesla (a magnetic unit) here; for tonnes write t, for tera a "
+                "prefix with a unit"),
+    "poise": N_("'{unit}' is the poise (a viscosity) here; for a power write W, for peta a "
+                "prefix with a unit"),
     "speed_of_light": _CONSTANT,
     "elementary_charge": _CONSTANT,
     "molar_gas_constant": _CONSTANT,

@@ -31,6 +31,15 @@ _ANGLE = (0.0,) * 7 + (1.0,)
 _HERTZ = ("Hz", "hertz")
 
 
+#: the spellings of a frequency an export offers besides the part's own unit
+SPELLINGS = ("rad/s", "s^-1", "Hz", "rpm", "U/min", "min^-1")
+
+
+def is_frequency(dim: tuple) -> bool:
+    """Whether a dimension is a frequency of either kind (1/s, with or without an angle)."""
+    return units.same(dim, (0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0), ignore_angle=True)
+
+
 def unit_powers(unit_part: Expr | None) -> dict[str, float] | None:
     """The powers of the unit names in a unit part (``U/min`` -> {U: 1, min: -1}); None when
     the part is no plain product of powers of units."""

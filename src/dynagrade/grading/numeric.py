@@ -110,6 +110,20 @@ def _read_in_part_unit(spec: NumericSpec, q: Quantity, part_factor: float, part_
     return _Reading(typed, False, _("you gave {given}, expected {wanted}").format(given=given, wanted=wanted), False)
 
 
+def one_unit_in_part_unit(name: str, part_unit: str) -> float | None:
+    """How much one ``name`` is in the part's unit as the grader reads an answer ``1 name``
+    (the frequency rule included: one Hz in a rad/s part is 2π), or None when the grader
+    does not take ``name`` for that part. Exports that convert units themselves (Moodle's
+    unit multipliers) use it, so that they convert as the grader does."""
+    try:
+        q = read_quantity("1 " + name, decimal_comma=False)
+    except AnswerError:
+        return None
+    factor, dim = unit_info(part_unit)
+    reading = _read_in_part_unit(NumericSpec(unit=part_unit), q, factor, dim)
+    return reading.value if (q.dim is not None and reading.unit_ok) else None
+
+
 def _close(spec: NumericSpec, value: float, e: float) -> bool:
     if spec.sigfigs is not None:
         return same_sigfigs(value, e, spec.sigfigs)

@@ -10,7 +10,13 @@ Rule for angles (see :func:`compatible`): two dimensions match when all other
 exponents agree and the angle exponents agree -- or one side has no angle at all,
 in which case it is read in radians (SI makes the radian 1). So ``1/s`` is accepted
 for ``rad/s`` (read as rad/s) and ``rpm`` for ``1/s`` (converted to rad/s), while
-``30 m`` is never an angle.
+``30 m`` is never an angle. Hz stays 1/s here (so that parameters in Hz reach the solvers
+as cycles per second); the graders read it as turns per second where the frequency rule
+of :mod:`.frequency` says so.
+
+A name is looked up in the built-in table, then in the everyday table of
+:mod:`.everyday_units` (``kNm``, ``Grad``, ``U``), then in pint, whose answer the deny-list
+of :mod:`.everyday_units` may refuse (``M`` is molar, ``grad`` the gradian).
 """
 
 from __future__ import annotations
