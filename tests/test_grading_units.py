@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 
 from dynagrade.grading import grade, read_number
 from dynagrade.grading import units
+from dynagrade.grading.everyday_units import EVERYDAY
 from dynagrade.grading.compare import compare_lines, compare_record
 from dynagrade.grading.quantity import unit_info
 from dynagrade.grading.spec import NumericSpec, SymbolicSpec, Variable
@@ -23,7 +24,7 @@ SRC = Path(__file__).resolve().parent.parent / "src"
 @pytest.mark.parametrize("name", sorted(units.BUILTIN))
 def test_builtin_unit_table_agrees_with_pint(name):
     factor, dim = units.BUILTIN[name]
-    parts = units._ALIASES.get(name, ((name, 1),))
+    parts = EVERYDAY.get(name, ((name, 1),))
     pint_factor, pint_dim = 1.0, units.DIMENSIONLESS
     for unit, power in parts:
         f, d = units._pint_unit(unit)

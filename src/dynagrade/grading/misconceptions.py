@@ -23,6 +23,9 @@ TWO_PI = N_("factor 2π")
 POWER_OF_TEN = N_("power of ten")
 #: an answer in a unit of the wrong dimension (the verdict names it; no value is tried)
 UNIT = N_("unit")
+#: a right number in the other kind of frequency: ω's value labelled Hz, or f's labelled rad/s
+#: (:mod:`.frequency`; the numeric grader names it, no value is tried)
+CYCLES = N_("Hz for rad/s")
 
 
 def numeric_candidates(expected: float, *, angle_unit: str | None = None,

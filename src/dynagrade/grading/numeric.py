@@ -10,11 +10,11 @@ from __future__ import annotations
 from ..i18n import _, ngettext
 import math
 
-from . import units
+from . import frequency, units
 from .errors import AnswerError, SpecError
 from .feedback import show_number, show_tolerance, show_value
-from .misconceptions import UNIT, numeric_candidates
-from .quantity import Quantity, read_quantity, unit_info
+from .misconceptions import CYCLES, UNIT, numeric_candidates
+from .quantity import Quantity, read_quantity, unit_cycles, unit_info
 from .spec import NumericSpec
 from .tolerance import count_sigfigs, digits_needed, is_close, round_sig, same_sigfigs
 from .verdict import Verdict, unreadable
@@ -73,13 +73,20 @@ def _read(spec: NumericSpec, answer: str) -> tuple[Quantity, _Reading]:
 
 
 class _Reading:
-    """The answer's value in the part's unit, and what is wrong with its unit."""
+    """The answer's value in the part's unit, and what is wrong with its unit.
 
-    def __init__(self, value: float, unit_ok: bool, unit_problem: str | None, converted: bool):
+    ``turns`` is the power of 2π the frequency rule converted with (:func:`.frequency.align`:
+    1 for Hz read as rad/s, -1 for rad/s read as Hz), ``unconverted`` the value that the
+    other reading (Hz taken as rad/s and back) would give."""
+
+    def __init__(self, value: float, unit_ok: bool, unit_problem: str | None, converted: bool,
+                 turns: float = 0.0, unconverted: float = math.nan):
         self.value = value
         self.unit_ok = unit_ok
         self.unit_problem = unit_problem
         self.converted = converted
+        self.turns = turns
+        self.unconverted = unconverted
 
 
 def _read_in_part_unit(spec: NumericSpec, q: Quantity, part_factor: float, part_dim: tuple) -> _Reading:
@@ -88,10 +95,12 @@ def _read_in_part_unit(spec: NumericSpec, q: Quantity, part_factor: float, part_
         if spec.require_unit and wants_unit:
             return _Reading(q.value, False, _("give the unit with your answer (the answer is in {unit})").format(unit=spec.unit), False)
         return _Reading(q.value, True, None, False)
-    if units.compatible(q.dim, part_dim):
+    given_dim, wanted_dim, turns = frequency.align(q.dim, q.cycles, part_dim, unit_cycles(spec.unit))
+    if units.compatible(given_dim, wanted_dim):
         same_unit = abs(q.unit_factor - part_factor) <= 1e-12 * part_factor and \
-            units.same(q.dim, part_dim)
-        return _Reading(q.value / part_factor, True, None, not same_unit)
+            units.same(q.dim, part_dim) and not turns
+        return _Reading(q.value * frequency.TWO_PI ** turns / part_factor, True, None,
+                        not same_unit, turns, q.value / part_factor)
     given = f"{units.describe_dimension(q.dim)} ({q.unit_text or units.format_dimension(q.dim)})"
     if wants_unit:
         wanted = f"{units.describe_dimension(part_dim)} ({spec.unit})"
@@ -99,6 +108,20 @@ def _read_in_part_unit(spec: NumericSpec, q: Quantity, part_factor: float, part_
         wanted = _("a pure number (no unit)")
     typed = q.value / q.unit_factor if q.unit_text else q.value
     return _Reading(typed, False, _("you gave {given}, expected {wanted}").format(given=given, wanted=wanted), False)
+
+
+def one_unit_in_part_unit(name: str, part_unit: str) -> float | None:
+    """How much one ``name`` is in the part's unit as the grader reads an answer ``1 name``
+    (the frequency rule included: one Hz in a rad/s part is 2π), or None when the grader
+    does not take ``name`` for that part. Exports that convert units themselves (Moodle's
+    unit multipliers) use it, so that they convert as the grader does."""
+    try:
+        q = read_quantity("1 " + name, decimal_comma=False)
+    except AnswerError:
+        return None
+    factor, dim = unit_info(part_unit)
+    reading = _read_in_part_unit(NumericSpec(unit=part_unit), q, factor, dim)
+    return reading.value if (q.dim is not None and reading.unit_ok) else None
 
 
 def _close(spec: NumericSpec, value: float, e: float) -> bool:
@@ -119,16 +142,15 @@ def _verdict(spec: NumericSpec, e: float, q: Quantity, reading: _Reading) -> Ver
     reveal = " " + _("The expected answer is {answer}.").format(
         answer=show_value(e, spec.unit)) if spec.reveal else ""
     if _accepted(spec, e, reading):
+        if reading.turns:
+            return Verdict(True, 1.0, _cycles_note(reading.turns).format(answer=shown))
         if reading.converted:
             return Verdict(True, 1.0, _("Correct (read as {answer}).").format(answer=shown))
         return Verdict(True, 1.0, _("Correct."))
     if not reading.unit_ok:
-        score = (1.0 - u) if (u is not None and value_ok) else 0.0
-        text = _("Unit problem: {problem}.").format(problem=reading.unit_problem)
-        if u is not None:
-            text += " " + (_("The number is right.") if value_ok else
-                           _("The number is not right either."))
-        return Verdict(False, score, text + reveal, misconception=UNIT)
+        return _unit_verdict(spec, reading.unit_problem, value_ok, reveal, UNIT)
+    if reading.turns and _close(spec, reading.unconverted, e):
+        return _unit_verdict(spec, _cycles_confusion(reading.turns, q), True, reveal, CYCLES)
     unit_score = u if u is not None else 0.0
     found = _misconception(spec, e, reading.value, q)
     if found is not None:
@@ -143,6 +165,36 @@ def _verdict(spec: NumericSpec, e: float, q: Quantity, reading: _Reading) -> Ver
             answer=shown, tolerance=show_tolerance(spec.rtol, spec.atol, spec.unit))
     text += "." + _digits_hint(spec, e, q, reading) + reveal
     return Verdict(False, unit_score, text)
+
+
+def _unit_verdict(spec: NumericSpec, problem: str | None, value_ok: bool, reveal: str,
+                  name: str) -> Verdict:
+    """The verdict on an answer whose unit is wrong (``unit_credit`` scores a right number)."""
+    u = spec.unit_credit
+    score = (1.0 - u) if (u is not None and value_ok) else 0.0
+    text = _("Unit problem: {problem}.").format(problem=problem)
+    if u is not None:
+        text += " " + (_("The number is right.") if value_ok else
+                       _("The number is not right either."))
+    return Verdict(False, score, text + reveal, misconception=name)
+
+
+def _cycles_note(turns: float) -> str:
+    """The note of a right answer the frequency rule converted (``{answer}`` to fill)."""
+    if turns > 0:
+        return _("Correct (read as {answer}: a frequency in Hz or rpm counts turns, ω = 2π·f).")
+    return _("Correct (read as {answer}: an angular frequency in rad/s is 2π times the "
+             "frequency, f = ω/(2π)).")
+
+
+def _cycles_confusion(turns: float, q: Quantity) -> str:
+    """What is wrong with a number that is right but labelled in the other kind of frequency."""
+    unit = q.unit_text or units.format_dimension(q.dim or units.DIMENSIONLESS)
+    if turns > 0:
+        return _("your number is the angular frequency ω in rad/s, but {unit} counts cycles per "
+                 "time; the frequency is f = ω/(2π)").format(unit=unit)
+    return _("your number is the frequency f in Hz, but {unit} measures an angle per time; the "
+             "angular frequency is ω = 2π·f").format(unit=unit)
 
 
 def _misconception(spec: NumericSpec, e: float, value: float, q: Quantity):

@@ -12,11 +12,11 @@ import math
 from dataclasses import dataclass
 from functools import lru_cache
 
-from . import units
+from . import frequency, units
 from .dims import DimensionIssue, dimension
 from .errors import AnswerError, SpecError
 from .evaluate import evaluate_constant
-from .nodes import BinOp, Expr, Neg, Num, Unit, has_units, to_text, walk
+from .nodes import BinOp, Call, Expr, Neg, Num, Unit, has_units, to_text, walk
 from .parser import parse_quantity
 
 
@@ -26,7 +26,8 @@ class Quantity:
 
     ``unit_text``/``unit_factor`` describe the unit part as written (``km/h``,
     0.2777…); ``number_text`` is the typed number when the value is one literal
-    (possibly times a power of ten), for significant-figure hints.
+    (possibly times a power of ten), for significant-figure hints; ``cycles`` is the
+    power of Hz in the unit part (:mod:`.frequency`: Hz counts cycles).
     """
 
     value: float
@@ -35,6 +36,7 @@ class Quantity:
     unit_factor: float
     number_text: str | None
     tree: Expr
+    cycles: float = 0.0
 
 
 def read_quantity(text: str, *, decimal_comma: bool = True) -> Quantity:
@@ -67,7 +69,13 @@ def quantity_from_tree(tree: Expr, text: str, *, require_number: bool = True) ->
     from .evaluate import evaluate
 
     value = float(evaluate(tree, {}, factors))
+    if units.is_dimensionless(dim, ignore_angle=False) and not _units_outside_calls(tree):
+        # 144*sin(70°)/9.81: the degree sign is the argument's, the answer a bare number
+        return Quantity(value, None, None, 1.0, number_text, tree)
     unit_text, unit_factor = None, 1.0
+    powers = frequency.unit_powers(unit_part)
+    if frequency.per_minute(powers):  # 1500 min⁻¹ is 1500 rev/min
+        value, dim = value * frequency.TWO_PI, frequency.as_turns(dim, 1.0)
     if unit_part is not None:
         unit_text = to_text(unit_part)
         unit_factor = float(evaluate(unit_part, {}, factors))
@@ -75,7 +83,24 @@ def quantity_from_tree(tree: Expr, text: str, *, require_number: bool = True) ->
             shown = unit_text if len(unit_text) <= 30 else unit_text[:30] + "…"
             raise AnswerError(_("the unit '{unit}' is too large or too small to compute with").format(
                 unit=shown))
-    return Quantity(value, dim, unit_text, unit_factor, number_text, tree)
+        if frequency.per_minute(powers):
+            unit_factor *= frequency.TWO_PI
+    return Quantity(value, dim, unit_text, unit_factor, number_text, tree, frequency.cycles(powers))
+
+
+def _units_outside_calls(tree: Expr) -> bool:
+    """Whether a unit stands outside every function's argument (``2 m``, not ``sin(70°)``);
+    iterative, like :func:`.nodes.walk`, so that deep trees are safe."""
+    stack = [tree]
+    while stack:
+        node = stack.pop()
+        if isinstance(node, Unit):
+            return True
+        if isinstance(node, BinOp):
+            stack.extend((node.left, node.right))
+        elif isinstance(node, Neg):
+            stack.append(node.operand)
+    return False
 
 
 def split_product(tree: Expr) -> tuple[Expr | None, Expr | None]:
@@ -139,8 +164,18 @@ def _number_text(value_part: Expr | None) -> str | None:
 @lru_cache(maxsize=512)
 def unit_info(unit: str | None) -> tuple[float, tuple]:
     """(factor to SI, dimension) of a part's unit text; ``None``/``""``/``"1"`` is a pure number."""
+    return _part_unit(unit)[:2]
+
+
+@lru_cache(maxsize=512)
+def unit_cycles(unit: str | None) -> float:
+    """The power of Hz in a part's unit text (:mod:`.frequency`): 1 for ``Hz``, 0 for ``rad/s``."""
+    return _part_unit(unit)[2]
+
+
+def _part_unit(unit: str | None) -> tuple[float, tuple, float]:
     if unit is None or unit.strip() in ("", "1", "dimensionless", "-"):
-        return 1.0, units.DIMENSIONLESS
+        return 1.0, units.DIMENSIONLESS, 0.0
     try:
         tree = parse_quantity(unit, decimal_comma=False)
         quantity = quantity_from_tree(tree, unit, require_number=False) if has_units(tree) else None
@@ -150,4 +185,4 @@ def unit_info(unit: str | None) -> tuple[float, tuple]:
         raise SpecError(f"the unit {unit!r} contains no unit")
     if not (math.isfinite(quantity.value) and quantity.value > 0):
         raise SpecError(f"the unit {unit!r} is not a usable unit")
-    return quantity.value, quantity.dim
+    return quantity.value, quantity.dim, quantity.cycles

@@ -12,11 +12,12 @@ from .errors import AnswerError
 def read_number(text: str, unit: str | None = None) -> float:
     """The value of a number answer (``"45 km/h"``, ``"12,5"``, ``"2*pi"``) in ``unit``.
 
-    A bare number is taken to be in ``unit`` already. Raises :class:`AnswerError` when
+    A bare number is taken to be in ``unit`` already; Hz counts cycles (:mod:`.frequency`:
+    ``1 Hz`` in rad/s is 2π). Raises :class:`AnswerError` when
     the text cannot be read, is not finite, or has a unit of another dimension.
     """
-    from . import units
-    from .quantity import read_quantity, unit_info
+    from . import frequency, units
+    from .quantity import read_quantity, unit_cycles, unit_info
 
     q = read_quantity(text)
     if not math.isfinite(q.value):
@@ -24,11 +25,12 @@ def read_number(text: str, unit: str | None = None) -> float:
     if q.dim is None:
         return q.value
     factor, dim = unit_info(unit)
-    if not units.compatible(q.dim, dim):
+    given, wanted, turns = frequency.align(q.dim, q.cycles, dim, unit_cycles(unit))
+    if not units.compatible(given, wanted):
         raise AnswerError(_("you gave {given}, expected {wanted}").format(
             given=units.describe_dimension(q.dim),
             wanted=f"{units.describe_dimension(dim)} ({unit or _('no unit')})"))
-    return q.value / factor
+    return q.value * frequency.TWO_PI ** turns / factor
 
 
 def evaluate_expression(expression: str, values: Mapping[str, float]) -> float:

@@ -10,7 +10,13 @@ Rule for angles (see :func:`compatible`): two dimensions match when all other
 exponents agree and the angle exponents agree -- or one side has no angle at all,
 in which case it is read in radians (SI makes the radian 1). So ``1/s`` is accepted
 for ``rad/s`` (read as rad/s) and ``rpm`` for ``1/s`` (converted to rad/s), while
-``30 m`` is never an angle.
+``30 m`` is never an angle. Hz stays 1/s here (so that parameters in Hz reach the solvers
+as cycles per second); the graders read it as turns per second where the frequency rule
+of :mod:`.frequency` says so.
+
+A name is looked up in the built-in table, then in the everyday table of
+:mod:`.everyday_units` (``kNm``, ``Grad``, ``U``), then in pint, whose answer the deny-list
+of :mod:`.everyday_units` may refuse (``M`` is molar, ``grad`` the gradian).
 """
 
 from __future__ import annotations
@@ -21,6 +27,7 @@ from fractions import Fraction
 from functools import lru_cache
 
 from .errors import AnswerError
+from .everyday_units import EVERYDAY, refusal
 from .names import suggest
 
 BASE_SYMBOLS = ("kg", "m", "s", "A", "K", "mol", "cd", "rad")
@@ -32,18 +39,6 @@ _ROOTS = {  # pint root unit -> (base index, factor of one root unit in SI)
     "kelvin": (4, 1.0), "mole": (5, 1.0), "candela": (6, 1.0), "radian": (7, 1.0),
 }
 
-#: Spellings pint does not know (or reads differently), as products of pint units.
-_ALIASES = {
-    "Nm": (("newton", 1), ("meter", 1)),
-    "Nms": (("newton", 1), ("meter", 1), ("second", 1)),
-    "Ns": (("newton", 1), ("second", 1)),
-    "kmh": (("kilometer", 1), ("hour", -1)),
-    "rev": (("revolution", 1),),
-    "revs": (("revolution", 1),),
-    "degrees": (("degree", 1),),
-    "sec": (("second", 1),),
-    "secs": (("second", 1),),
-}
 _REFUSED = {"degC", "degF", "celsius", "fahrenheit", "degree_Celsius", "degree_Fahrenheit",
             "delta_degC", "delta_degF", "percent", "ppm", "count"}
 _COMMON = ("m", "s", "kg", "g", "N", "J", "W", "Pa", "Hz", "rad", "deg", "rev", "rpm",
@@ -108,15 +103,22 @@ def _find(name: str) -> tuple[float, tuple]:
         return BUILTIN[name]
     if name in _REFUSED:
         raise AnswerError(_("the unit '{unit}' is not supported here").format(unit=name))
-    if name in _ALIASES:
-        return _product(_ALIASES[name])
+    if name in EVERYDAY:
+        return _product(EVERYDAY[name])
     try:
         return _pint_unit(name)
+    except _Refused:
+        raise
     except AnswerError:
         pieces = _split(name)
         if pieces:
             return _product(tuple((p, 1) for p in pieces))
         raise
+
+
+class _Refused(AnswerError):
+    """A unit pint knows that no student of the course means (:mod:`.everyday_units`): it
+    is refused as written, never read as a product of shorter units."""
 
 
 def _product(parts) -> tuple[float, tuple]:
@@ -140,6 +142,9 @@ def _pint_unit(name: str) -> tuple[float, tuple]:
             raise AnswerError(_("'{unit}' is not a unit I know; did you mean '{hint}'?").format(
                 unit=name, hint=hint)) from None
         raise AnswerError(_("'{unit}' is not a unit I know").format(unit=name)) from None
+    refused = refusal(name, ureg.parse_unit_name(name))
+    if refused:
+        raise _Refused(refused)
     exps = [0.0] * 8
     factor = float(factor)
     for root_name, power in dict(root._units).items():

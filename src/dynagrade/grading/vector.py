@@ -22,13 +22,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import units
+from . import frequency, units
 from .errors import AnswerError, SpecError
 from .feedback import show_number, show_value
 from .misconceptions import UNIT
 from .nodes import BinOp
 from .parser import parse_vector
-from .quantity import quantity_from_tree, unit_info
+from .quantity import quantity_from_tree, unit_cycles, unit_info
 from .spec import VectorSpec
 from .tolerance import allowed_error, is_close
 from .verdict import Verdict, unreadable
@@ -158,10 +158,10 @@ def _answer_values(spec: VectorSpec, answer: str) -> np.ndarray | Verdict:
 
 def _read(spec, components, unit_tree, text, part_factor, part_dim):
     values = []
-    trailing_factor, trailing_dim = 1.0, None
+    trailing_factor, trailing_dim, trailing_cycles = 1.0, None, 0.0
     if unit_tree is not None:
         q = quantity_from_tree(unit_tree, text, require_number=False)
-        trailing_factor, trailing_dim = q.value, q.dim
+        trailing_factor, trailing_dim, trailing_cycles = q.value, q.dim, q.cycles
     wants_unit = not units.is_dimensionless(part_dim, ignore_angle=False)
     for k, tree in enumerate(components):
         q = quantity_from_tree(tree, text)
@@ -176,12 +176,14 @@ def _read(spec, components, unit_tree, text, part_factor, part_dim):
                     unit=spec.unit)
             values.append(value)
             continue
-        if not units.compatible(dim, part_dim):
+        dim, wanted_dim, turns = frequency.align(dim, q.cycles + trailing_cycles, part_dim,
+                                                 unit_cycles(spec.unit))
+        if not units.compatible(dim, wanted_dim):
             wanted = f"{units.describe_dimension(part_dim)} ({spec.unit})" if wants_unit \
                 else _("pure numbers")
             return [], _("component {k} is {given}, expected {wanted}").format(
                 k=k + 1, given=units.describe_dimension(dim), wanted=wanted)
-        values.append(value / part_factor)
+        values.append(value * frequency.TWO_PI ** turns / part_factor)
     return np.array(values, dtype=np.float64), None
 
 

@@ -428,10 +428,41 @@ def _numerical_question(quiz: ET.Element, described: ExerciseEntry, variant: Var
         _sub(answer, "text", number_text(alternative.answer))
         _sub(answer, "tolerance", number_text(alternative.tolerance))
         _text(answer, "feedback", _html(alternative.feedback), format="html")
-    for tag, setting in (("unitgradingtype", "0"), ("unitpenalty", "0"), ("showunits", "3"),
-                         ("unitsleft", "0")):
+    accepted = unit_multipliers(part.unit) if part.unit else []
+    if accepted:
+        listed = _sub(question, "units")
+        for name, multiplier in accepted:
+            entry = _sub(listed, "unit")
+            _sub(entry, "multiplier", number_text(multiplier))
+            _sub(entry, "unit_name", name)
+    # units optional: typed with the number (showunits 0) and converted, or left out (3)
+    for tag, setting in (("unitgradingtype", "0"), ("unitpenalty", "0"),
+                         ("showunits", "0" if accepted else "3"), ("unitsleft", "0")):
         _sub(question, tag, setting)
     return question
+
+
+def unit_multipliers(unit: str) -> list[tuple[str, float]]:
+    """The units a numerical question converts, each with Moodle's multiplier (how many of
+    it make one of the part's unit; Moodle divides a response by it): the part's unit as
+    written and as printed, and for a frequency part its other spellings (rad/s, s^-1, Hz,
+    rpm, U/min, min^-1). A name that starts with a digit (``1/s``) is left out: Moodle
+    drops the spaces of a response, so its number would run into the unit. Every multiplier is the grader's own reading of ``1 <unit>``
+    (:func:`dynagrade.grading.numeric.one_unit_in_part_unit`), so Moodle applies the same
+    frequency rule: in a rad/s part a Hz is 2π rad/s (multiplier 1/(2π)), not 1 rad/s."""
+    from ..grading import frequency
+    from ..grading.numeric import one_unit_in_part_unit
+    from ..grading.quantity import unit_info
+
+    names = [unit.strip(), pretty_unit(unit)]
+    if frequency.is_frequency(unit_info(unit)[1]):
+        names += frequency.SPELLINGS
+    accepted: list[tuple[str, float]] = []
+    for name in names:
+        value = one_unit_in_part_unit(name, unit)
+        if value and not name[:1].isdigit() and name not in {known for known, _ in accepted}:
+            accepted.append((name, 1.0 / value))
+    return accepted
 
 
 def _cloze_question(quiz: ET.Element, described: ExerciseEntry, marks: Marks,
