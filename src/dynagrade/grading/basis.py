@@ -46,6 +46,8 @@ _BRACED = re.compile(r"(?<![A-Za-z_])e_\{([^{}]{1,12})\}")
 _E_SUBSCRIPT = re.compile(r"(?<![A-Za-z_])e_?([" + "".join(_SUBSCRIPT_DIGIT) + "])")
 _E_GREEK = re.compile(r"(?<![A-Za-z_])e_([" + "".join(GREEK) + "])")
 _E_VARIANT = re.compile(r"(?<![A-Za-z_])e_var(phi|theta)\b")
+#: what every spelling of a known basis vector starts with (a quick test before tokenizing)
+_MAYBE_BASIS = re.compile(r"(?<![A-Za-z_])(?:e[_0-9{\u2080-\u2089]|[ijkîĵ](?![A-Za-z_]))")
 _KNOWN = dict.fromkeys([n for family in CARTESIAN for n in family] + list(OTHER_BASES), 0)
 #: Greek letters by their spelled-out names (the first letter of a name: φ, not ϕ)
 _LETTERS = {spelled: letter for letter, spelled in reversed(list(GREEK.items()))}
@@ -98,7 +100,7 @@ def read_basis(size: int, basis: tuple[str, ...], text: str) -> BasisReading | N
     """The components of ``text`` written with basis vectors, or None when ``text`` uses
     none (then it is read in brackets). :class:`AnswerError` when it uses them wrongly."""
     index = basis_index(size, basis)
-    if not index:
+    if not index or (not basis and not _MAYBE_BASIS.search(text)):
         return None
     text = normalise(text)
     tokens = _tokens(text)

@@ -33,7 +33,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from ..i18n import N_, _
+from ..i18n import _
 from .functions import FUNCTIONS
 from .names import CONSTANTS, GREEK, SUBSCRIPTS, SUPERSCRIPTS
 
@@ -106,12 +106,12 @@ def strip(text: str, mode: str | None) -> Stripped:
     if mode == QUANTITY:
         text = _remark(text, changes)
         text = _final_stop(text, changes)
-        text = _rewrite(text, _TIMES_TEN, "*10", N_("read '{typed}' as '{read}'"), changes)
-        text = _rewrite(text, _PI, "pi", N_("read '{typed}' as '{read}'"), changes)
+        text = _rewrite(text, _TIMES_TEN, "*10", changes)
+        text = _rewrite(text, _PI, "pi", changes)
         if _POWER_DIGIT.search(text) and any(c.isdigit() for c in text):
             text = _powers(text, changes)
     text = _swiss(text, changes)
-    return Stripped(text, tuple(changes))
+    return Stripped(text, tuple(dict.fromkeys(changes)))
 
 
 def _invisible(text: str, changes: list[str]) -> str:
@@ -171,12 +171,16 @@ def _remark(text: str, changes: list[str]) -> str:
     return text[:m.start()].rstrip()
 
 
-def _rewrite(text: str, pattern: re.Pattern[str], read: str, message: str,
-             changes: list[str]) -> str:
+def _read_as(typed: str, read: str) -> str:
+    return _("read '{typed}' as '{read}'").format(typed=typed, read=read)
+
+
+def _rewrite(text: str, pattern: re.Pattern[str], read: str, changes: list[str]) -> str:
+    """Every match of ``pattern`` replaced by ``read``, noted once."""
     m = pattern.search(text)
     if m is None:
         return text
-    changes.append(_(message).format(typed=m.group().strip(), read=read))
+    changes.append(_read_as(m.group().strip(), read))
     return pattern.sub(read, text)
 
 
@@ -187,8 +191,7 @@ def _powers(text: str, changes: list[str]) -> str:
     m = _POWER_DIGIT.search(tail)
     if m is None:
         return text
-    changes.append(_("read '{typed}' as '{read}'").format(
-        typed=m.group(), read=m.group(1) + "^" + m.group(2)))
+    changes.append(_read_as(m.group(), m.group(1) + "^" + m.group(2)))
     return head + _POWER_DIGIT.sub(r"\1^\2", tail)
 
 
@@ -198,9 +201,12 @@ def _swiss(text: str, changes: list[str]) -> str:
     m = _SWISS_THOUSANDS.search(text)
     if m is None:
         return text
-    changes.append(_("read '{typed}' as '{read}'").format(
-        typed=m.group(), read=m.group().replace("'", "").replace("’", "")))
-    return _SWISS_THOUSANDS.sub(lambda s: s.group().replace("'", "").replace("’", ""), text)
+    changes.append(_read_as(m.group(), _unquoted(m.group())))
+    return _SWISS_THOUSANDS.sub(lambda s: _unquoted(s.group()), text)
+
+
+def _unquoted(digits: str) -> str:
+    return digits.replace("'", "").replace("’", "")
 
 
 def annotated(verdict, stripped: Stripped, spec):
