@@ -63,6 +63,14 @@ _TIMES_TEN = re.compile(r"(?<=[0-9])\s*[xX]\s*10(?=\s*(?:\^|\*\*|[" + "".join(SU
 _PI = re.compile(r"(?<![A-Za-z_])(?:Pi|PI)(?![A-Za-z0-9_])")
 _POWER_DIGIT = re.compile(r"(?<=[0-9\s/*·])(s|m|mm|cm|km)([23])(?![A-Za-z0-9_])")
 
+#: what an answer with a decoration contains somewhere (one quick test: most answers have
+#: none and are read as typed)
+_MAY_BE_DRESSED = {
+    FORMULA: re.compile(rf"[=≈:'’{INVISIBLE}]|\.\s*$"),
+    QUANTITY: re.compile(rf"[=≈~∼≃:'’{INVISIBLE}]|[.)]\s*$|(?i:^\s*(?:ca|approx|circa))"
+                         r"|[xX]\s*10|P[iI]|[sm][23]"),
+}
+
 
 @dataclass(frozen=True)
 class Stripped:
@@ -97,7 +105,7 @@ def mode_for(spec) -> str | None:
 def strip(text: str, mode: str | None) -> Stripped:
     """``text`` without the decorations of ``mode`` (:data:`QUANTITY`, :data:`FORMULA`;
     None strips nothing), with a note for each."""
-    if mode is None or not isinstance(text, str):
+    if mode is None or not isinstance(text, str) or not _MAY_BE_DRESSED[mode].search(text):
         return Stripped(text)
     changes: list[str] = []
     text = _invisible(text, changes)
