@@ -2,14 +2,15 @@
 
 A vector part reads ``3 e1 + 2 e2``, ``3e_1+2e_2``, ``3*e1 + 2*e2``, ``3i+2j``,
 ``(3 e1 + 2 e2) m/s`` and, in a part that declares the polar or path basis of the notes
-(``VectorSpec(basis=("e_r", "e_phi"))``, eq. (1.19)–(1.20); ``("e_t", "e_n")``), ``3 e_r +
-2 e_φ``. Without a declared basis a part of 2 or 3 components has the Cartesian basis
+(``VectorSpec(basis=("e_r", "e_phi"))``, the polar basis {e_r, e_ϕ} of section 1.1.3,
+eq. (1.27); ``("e_t", "e_n")``, the path basis {e_t, e_n, e_b} of section 1.1.4), ``3 e_r
++ 2 e_φ``. Without a declared basis a part of 2 or 3 components has the Cartesian basis
 e1, e2, e3 of the notes, also spelled ``e_1``, ``e₁``, ``e_x`` and ``i``, ``j``, ``k``
 (``î``, ``ĵ``, ``k̂``). A declared basis vector is spelled as declared, with its Greek
 letter typed or spelled out (``e_φ``, ``e_phi``, ``e_{phi}``).
 
-The answer is parsed by the ordinary quantity parser (a basis vector is a name there)
-and split into components by linearity: every term of the sum holds exactly one basis
+The answer is parsed by the ordinary quantity parser (a basis vector comes out of it as
+a unit's name, ``Unit("e1")``, and is never looked up) and split into components by linearity: every term of the sum holds exactly one basis
 vector as a factor (``3 m/s e1``, ``e2*2``, ``-e2``), never in a denominator, a power or
 a function; the coefficients of one basis vector add up, and a missing one is 0. So a
 basis-vector sum reads as the same components as its bracket form ``(3, 2)``, and
