@@ -307,12 +307,17 @@ class Numeric(Part):
 
 @dataclass(frozen=True)
 class Vector(Part):
-    """A vector of ``size`` components in one unit, graded component by component."""
+    """A vector of ``size`` components in one unit, graded component by component.
+
+    ``basis`` names the components' basis vectors when they are not the Cartesian e1,
+    e2, e3 (``("e_r", "e_phi")``, ``("e_t", "e_n")``): the answer may then be written
+    ``3 e_r + 2 e_φ`` (:class:`~dynagrade.grading.spec.VectorSpec`)."""
 
     unit: str | None = None
     size: int = 2
     rtol: float = DEFAULT_RTOL
     atol: float | None = None
+    basis: tuple[str, ...] = ()
 
     kind = "vector"
     grading = GRADING_KINDS["vector"]
@@ -340,7 +345,7 @@ class Vector(Part):
 
     def spec(self, params):
         return VectorSpec(size=self.size, unit=self.unit, rtol=self.rtol, atol=self.atol,
-                          misconceptions=self._known_wrong(params))
+                          misconceptions=self._known_wrong(params), basis=self.basis)
 
 
 @dataclass(frozen=True)

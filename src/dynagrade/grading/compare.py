@@ -7,7 +7,7 @@ Each input line is one record::
      "variables"?: {name: {"min": number, "max": number, "unit"?: str, "symbol"?: str,
                            "aliases"?: [str]}}, "up_to_constant"?: bool | [str],
      "require_unit"?: bool, "unit_credit"?: number, "reveal"?: bool, "form"?: [str],
-     "size"?: int, "choices"?: [str], "multiple"?: bool, "aliases"?: {str: str},
+     "size"?: int, "basis"?: [str], "choices"?: [str], "multiple"?: bool, "aliases"?: {str: str},
      "misconceptions"?: [{"name": str, "value": ..., "feedback": str, "score"?: number}]}
 
 and gives one output line ``{"id", "correct", "score", "feedback", "error"}``. A

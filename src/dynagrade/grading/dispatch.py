@@ -4,6 +4,7 @@ and their functions: :mod:`.kinds`)."""
 from __future__ import annotations
 
 from ..i18n import _
+from . import decorations
 from .errors import AnswerError, SpecError
 from .kinds import kind_of
 from .verdict import Verdict, unreadable
@@ -14,23 +15,27 @@ def grade(spec, expected, answer: str) -> Verdict:
 
     ``expected`` is a float in ``spec.unit`` (NumericSpec), an expression string
     (SymbolicSpec), a tuple of floats in ``spec.unit`` (VectorSpec), or an option label
-    or tuple of labels (ChoiceSpec). Never raises because of ``answer``: an answer that
+    or tuple of labels (ChoiceSpec). The answer's decorations (``v =``, ``ca.``, a final
+    remark: :mod:`.decorations`) are left out first and the feedback says so. Never
+    raises because of ``answer``: an answer that
     cannot be read gets a verdict with ``error`` set. Raises :class:`SpecError` only
     when the spec or the reference is unusable, whatever the answer.
     """
     if not isinstance(answer, str):
         return unreadable(_("the answer must be text"))
     grader = _grader(spec)
+    stripped = decorations.strip(answer, decorations.mode_for(spec))
     try:
-        return grader(spec, expected, answer)
+        verdict = grader(spec, expected, stripped.text)
     except SpecError:
         raise
     except AnswerError as error:
-        return unreadable(str(error))
+        verdict = unreadable(str(error))
     except RecursionError:
-        return unreadable(_("the answer is too deeply nested to read"))
+        verdict = unreadable(_("the answer is too deeply nested to read"))
     except MemoryError:
-        return unreadable(_("the answer is too large to read"))
+        verdict = unreadable(_("the answer is too large to read"))
+    return decorations.annotated(verdict, stripped, spec)
 
 
 def accepts(spec, expected, answer: str) -> bool:
@@ -43,7 +48,8 @@ def accepts(spec, expected, answer: str) -> bool:
     if kind is None or kind.accepts is None or not isinstance(answer, str):
         return grade(spec, expected, answer).correct
     try:
-        return kind.function("accepts")(spec, expected, answer)
+        return kind.function("accepts")(spec, expected,
+                                         decorations.strip(answer, decorations.mode_for(spec)).text)
     except SpecError:
         raise
     except (AnswerError, RecursionError, MemoryError):

@@ -32,15 +32,19 @@ def readability(spec, text: str) -> Readability:
         return Readability(False, _("no answer yet"))
     from .kinds import kind_of
 
+    from .decorations import mode_for, noted_reading, strip
+
     kind = kind_of(spec)
     if kind is None:
         return Readability(False, _("this kind of answer cannot be checked here"))
+    stripped = strip(text, mode_for(spec))
     try:
-        return kind.function("read")(spec, text)
+        found = kind.function("read")(spec, stripped.text)
     except AnswerError as error:
-        return Readability(False, str(error))
+        found = Readability(False, str(error))
     except (RecursionError, MemoryError):
-        return Readability(False, _("the answer cannot be read (too large or too deeply nested)"))
+        found = Readability(False, _("the answer cannot be read (too large or too deeply nested)"))
     except Exception:  # a reader's own failure on odd input: still an answer, not a crash
-        return Readability(False, _("the answer cannot be read; write a number, a unit and "
-                                    "operators only"))
+        found = Readability(False, _("the answer cannot be read; write a number, a unit and "
+                                     "operators only"))
+    return noted_reading(found, stripped, spec)

@@ -7,6 +7,7 @@ additive and always have defaults.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
@@ -14,6 +15,9 @@ from typing import Mapping
 from .names import NameClash, alias_table
 from .units import BUILTIN as BUILTIN_UNITS
 from .tolerance import DEFAULT_RTOL
+
+#: How a declared basis vector is named: ``e_r``, ``e_phi``, ``e_t``.
+_BASIS_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 
 #: Form tests a symbolic part may require on top of equivalence.
 FORM_TESTS = ("no_decimals", "simplified", "no_functions")
@@ -182,6 +186,11 @@ class VectorSpec:
     Component i is right when |a_i - e_i| <= max(atol, rtol*max(|e_i|, 0.01*|e|)), with
     |e| the Euclidean norm of the reference, so a zero component is gradable.
     The score is the fraction of right components.
+
+    ``basis`` names the basis vectors of the components, one per component, when they are
+    not the Cartesian e1, e2, e3 of the notes (``("e_r", "e_phi")`` for polar components,
+    ``("e_t", "e_n")`` for path components): the answer may then be written ``3 e_r + 2
+    e_φ`` (:mod:`.basis`). Without it a part of 2 or 3 components reads ``3 e1 + 2 e2``.
     """
 
     size: int
@@ -192,12 +201,19 @@ class VectorSpec:
     require_unit: bool = False
     reveal: bool = False
     generic_misconceptions: bool = True
+    basis: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         _check_tolerances(self.rtol, self.atol)
         if not (isinstance(self.size, int) and 1 <= self.size <= 100):
             raise ValueError(f"size must be an integer in 1..100, got {self.size!r}")
         object.__setattr__(self, "misconceptions", tuple(self.misconceptions))
+        basis = tuple(self.basis)
+        if basis and (len(basis) != self.size or len(set(basis)) != len(basis) or not all(
+                isinstance(b, str) and _BASIS_NAME.fullmatch(b) for b in basis)):
+            raise ValueError(f"basis must name {self.size} different basis vectors like "
+                             f"'e_r' (letters, digits, '_'), got {self.basis!r}")
+        object.__setattr__(self, "basis", basis)
 
 
 @dataclass(frozen=True)

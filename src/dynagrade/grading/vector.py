@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from ..i18n import N_, _
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -26,7 +26,8 @@ from . import frequency, units
 from .errors import AnswerError, SpecError
 from .feedback import show_number, show_value
 from .misconceptions import UNIT
-from .nodes import BinOp
+from .basis import read_basis
+from .nodes import BinOp, Expr
 from .parser import parse_vector
 from .quantity import quantity_from_tree, unit_cycles, unit_info
 from .spec import VectorSpec
@@ -104,9 +105,13 @@ def component_credits(spec: VectorSpec, expected, values: np.ndarray) -> list[fl
 
 def grade_vector(spec: VectorSpec, expected, answer: str) -> Verdict:
     e = _expected(spec, expected)
-    values = _answer_values(spec, answer)
+    values, note = _answer_values(spec, answer)
     if isinstance(values, Verdict):
-        return values
+        return _noted(values, note)
+    return _noted(_verdict(spec, e, values), note)
+
+
+def _verdict(spec: VectorSpec, e: np.ndarray, values: np.ndarray) -> Verdict:
     scale = component_scale(e)
     right = is_close(values, e, spec.rtol, spec.atol, scale)
     reveal = ""
@@ -131,29 +136,49 @@ def accepts_vector(spec: VectorSpec, expected, answer: str) -> bool:
     """Whether :func:`grade_vector` calls ``answer`` correct, decided without looking
     for the misconception behind a wrong answer or writing its feedback."""
     e = _expected(spec, expected)
-    values = _answer_values(spec, answer)
+    values, _note = _answer_values(spec, answer)
     return not isinstance(values, Verdict) and \
         bool(is_close(values, e, spec.rtol, spec.atol, component_scale(e)).all())
 
 
-def _answer_values(spec: VectorSpec, answer: str) -> np.ndarray | Verdict:
+def _noted(verdict: Verdict, note: str) -> Verdict:
+    """``verdict`` with the note on how the answer was read (:mod:`.basis`)."""
+    if not note:
+        return verdict
+    return replace(verdict, feedback=f"{verdict.feedback} {note}")
+
+
+def _parse(spec: VectorSpec, text: str) -> tuple[list[Expr | None], Expr | None, str]:
+    """The answer's component trees (None: a basis vector left out, 0), the unit written
+    after its brackets, and a note on how it was read: with basis vectors
+    (:mod:`.basis`) when it uses them, else in brackets (:func:`.parser.parse_vector`)."""
+    reading = read_basis(spec.size, spec.basis, text)
+    if reading is not None:
+        return reading.components, None, reading.note
+    components, unit_tree = parse_vector(text)
+    return list(components), unit_tree, ""
+
+
+def _answer_values(spec: VectorSpec, answer: str) -> tuple[np.ndarray | Verdict, str]:
     """The answer's components in the part's unit, or the verdict on an answer that
-    gives none to compare (unreadable, a unit problem, a wrong count, not finite)."""
+    gives none to compare (unreadable, a unit problem, a wrong count, not finite); and
+    the note on how it was read."""
     part_factor, part_dim = unit_info(spec.unit)
+    note = ""
     try:
-        components, unit_tree = parse_vector(answer)
+        components, unit_tree, note = _parse(spec, answer)
         values, problem = _read(spec, components, unit_tree, answer, part_factor, part_dim)
     except AnswerError as error:
-        return unreadable(str(error))
+        return unreadable(str(error)), note
     if problem:
         return Verdict(False, 0.0, _("Unit problem: {problem}.").format(problem=problem),
-                       misconception=UNIT)
+                       misconception=UNIT), note
     if len(values) != spec.size:
         return Verdict(False, 0.0, _("Not correct: the answer needs {size} components, you gave "
-                                     "{given}.").format(size=spec.size, given=len(values)))
+                                     "{given}.").format(size=spec.size, given=len(values))), note
     if not np.all(np.isfinite(values)):
-        return unreadable(_("a component of your answer is not a finite number"))
-    return values
+        return unreadable(_("a component of your answer is not a finite number")), note
+    return values, note
 
 
 def _read(spec, components, unit_tree, text, part_factor, part_dim):
@@ -164,6 +189,9 @@ def _read(spec, components, unit_tree, text, part_factor, part_dim):
         trailing_factor, trailing_dim, trailing_cycles = q.value, q.dim, q.cycles
     wants_unit = not units.is_dimensionless(part_dim, ignore_angle=False)
     for k, tree in enumerate(components):
+        if tree is None:  # a basis vector the answer leaves out
+            values.append(0.0)
+            continue
         q = quantity_from_tree(tree, text)
         dim = q.dim
         value = q.value
@@ -227,7 +255,7 @@ def _misconception(spec: VectorSpec, e: np.ndarray, values: np.ndarray, scale: n
 
 def read_vector(spec: VectorSpec, text: str) -> Readability:
     """How ``text`` reads as an answer to ``spec`` (:func:`.readability.readability`)."""
-    components, unit_tree = parse_vector(text)
+    components, unit_tree, note = _parse(spec, text)
     factor, dim = unit_info(spec.unit)
     values, problem = _read(spec, components, unit_tree, text, factor, dim)
     if problem:
@@ -239,7 +267,8 @@ def read_vector(spec: VectorSpec, text: str) -> Readability:
         return Readability(False, _("a component is not a finite number"))
     shown = ", ".join(show_value(float(v), None) for v in values)
     unit = f" {spec.unit}" if spec.unit else ""
-    return Readability(True, _("reads as {answer}").format(answer=f"({shown}){unit}"))
+    return Readability(True, _("reads as {answer}").format(answer=f"({shown}){unit}") +
+                       (f". {note}" if note else ""))
 
 
 def build_vector(record: dict, common: Common):
@@ -249,7 +278,11 @@ def build_vector(record: dict, common: Common):
             isinstance(x, (int, float)) and not isinstance(x, bool) for x in expected):
         raise records.RecordError("field 'expected' of a vector must be a list of numbers")
     size = records.number(record, "size", integer=True) or len(expected)
-    spec = VectorSpec(size, unit=common.unit, **common.tolerances(),
-                      misconceptions=common.misconceptions,
-                      require_unit=records.flag(record, "require_unit"), reveal=common.reveal)
+    try:
+        spec = VectorSpec(size, unit=common.unit, **common.tolerances(),
+                          misconceptions=common.misconceptions,
+                          require_unit=records.flag(record, "require_unit"), reveal=common.reveal,
+                          basis=tuple(records.strings(record, "basis", "the record")))
+    except ValueError as error:
+        raise records.RecordError(str(error)) from None
     return spec, tuple(float(x) for x in expected)
