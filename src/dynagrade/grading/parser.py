@@ -24,7 +24,7 @@ from ..i18n import _, ngettext
 from dataclasses import dataclass
 from functools import lru_cache
 
-from . import lexer
+from . import lexer, onpaper
 from .errors import AnswerError
 from .lexer import COMMA, END, EQUALS, LPAR, NAME, NUM, OP, ROOT, RPAR, SEMI, SUP, Token
 from .functions import FUNCTIONS
@@ -329,6 +329,11 @@ class _Parser:
         function = canonical_function(word)
         if function and follows_bracket and word not in self.vocabulary.variables:
             return self.call(token, function)
+        if function and word not in self.vocabulary.variables:
+            written = onpaper.application(self, token, function, quantity=self.vocabulary.quantity,
+                                          product_power=_BP_PRODUCT)
+            if written is not None:
+                return written
         if self.vocabulary.quantity:
             return self.quantity_name(token, function)
         variables = self.vocabulary.variables
@@ -361,6 +366,11 @@ class _Parser:
         known = ", ".join(sorted(variables)) if variables else _("none")
         raise self.error(_("unknown name '{name}'{did_you_mean} (the variables are: {names})")
                          .format(name=word, did_you_mean=did_you_mean, names=known), token)
+
+    def is_function(self, token: Token) -> bool:
+        """Whether a name token names a function rather than a declared variable."""
+        return token.kind == NAME and token.value not in self.vocabulary.variables and \
+            canonical_function(token.value) is not None
 
     def product_of_pieces(self, token: Token, pieces: list[str]) -> Expr:
         """Read the first piece now and put the others back into the token stream, so
