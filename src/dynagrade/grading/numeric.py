@@ -14,6 +14,7 @@ from . import units
 from .errors import AnswerError, SpecError
 from .feedback import show_number, show_tolerance, show_value
 from .misconceptions import UNIT, numeric_candidates
+from .latex import plain_text
 from .quantity import Quantity, read_quantity, unit_info
 from .spec import NumericSpec
 from .tolerance import count_sigfigs, digits_needed, is_close, round_sig, same_sigfigs
@@ -209,7 +210,8 @@ def read_numeric(spec: NumericSpec, text: str) -> Readability:
         return Readability(True, _("reads as {answer}").format(answer=shown))
     if not reading.converted:
         return Readability(True, _("reads as {answer}").format(answer=shown))
-    return Readability(True, _("reads as {answer}").format(answer=f"{text.strip()} = {shown}"))
+    written = plain_text(text.strip(), quantity=True)
+    return Readability(True, _("reads as {answer}").format(answer=f"{written} = {shown}"))
 
 
 def build_numeric(record: dict, common: Common):

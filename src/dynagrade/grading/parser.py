@@ -24,7 +24,7 @@ from ..i18n import _, ngettext
 from dataclasses import dataclass
 from functools import lru_cache
 
-from . import lexer, onpaper
+from . import latex, onpaper
 from .errors import AnswerError
 from .lexer import COMMA, END, EQUALS, LPAR, NAME, NUM, OP, ROOT, RPAR, SEMI, SUP, Token
 from .functions import FUNCTIONS
@@ -98,7 +98,7 @@ def parse_vector(text: str) -> tuple[list[Expr], Expr | None]:
     (then commas are decimal commas: ``(1,5; 2,5)``).
     """
     decimal_comma = ";" in text
-    tokens = lexer.tokenize(text, quantity=True, decimal_comma=decimal_comma)
+    tokens = latex.tokenize(text, max_depth=MAX_DEPTH, quantity=True, decimal_comma=decimal_comma)
     parser = _Parser(tokens, text, Vocabulary(quantity=True))
     separator = SEMI if decimal_comma else COMMA
     opener = parser.peek()
@@ -157,8 +157,9 @@ def _has_top_level(tokens: list[Token], separator: str) -> bool:
 
 
 def _parse(text: str, vocabulary: Vocabulary, *, decimal_comma: bool) -> Expr:
-    tokens = lexer.tokenize(text, quantity=vocabulary.quantity, decimal_comma=decimal_comma,
-                            names=vocabulary.variables, spellings=vocabulary.spelled_symbols)
+    tokens = latex.tokenize(text, max_depth=MAX_DEPTH, quantity=vocabulary.quantity,
+                            decimal_comma=decimal_comma, names=vocabulary.variables,
+                            spellings=vocabulary.spelled_symbols)
     # "v = 12 m/s": the name on the left of a single '=' is ignored.
     if len(tokens) > 2 and tokens[0].kind == NAME and tokens[1].kind == EQUALS:
         tokens = tokens[2:]
