@@ -71,21 +71,24 @@ _KNOWN = sorted({*GREEK_COMMANDS, *_SYMBOLS, *_FRACTIONS, *_WRAPPERS, *ACCENTS, 
                  "ln", "sinh", "cosh", "tanh", "quad"} - {"{", "}"})
 
 
-def is_latex(text: str) -> bool:
-    """Whether an answer is read as LaTeX: it has a backslash or a dollar sign, which the
-    plain syntax refuses, or a braced subscript ``_{`` (``F_{max}``), which it reads
-    as the same name (``v_{02}`` is ``v_02`` either way)."""
-    return "\\" in text or "$" in text or "_{" in text
+def is_latex(text: str, *, quantity: bool = False) -> bool:
+    """Whether an answer is read as LaTeX: it has a backslash, a dollar sign, or a
+    formula has a brace, which the plain syntax refuses; or braces follow ``_`` or ``^``
+    (``F_{max}``, ``m^{2}``), which the LaTeX reads as the plain syntax did where it read
+    them at all (``v_{02}`` is ``v_02`` either way, ``m^{2}`` is ``m^(2)``)."""
+    return "\\" in text or "$" in text or "_{" in text or "^{" in text or \
+        (not quantity and "{" in text)
 
 
 def tokenize(text: str, *, max_depth: int, **options) -> list[Token]:
     """The tokens of an answer (:func:`.lexer.tokenize` with its ``options``), LaTeX
     read as the plain syntax; positions are the LaTeX's. ``max_depth`` bounds the
     nesting of braces, as the parser bounds that of brackets."""
-    if not isinstance(text, str) or not is_latex(text) or len(text) > lexer.MAX_LENGTH:
+    quantity = options.get("quantity", False)
+    if not isinstance(text, str) or not is_latex(text, quantity=quantity) or \
+            len(text) > lexer.MAX_LENGTH:
         return lexer.tokenize(text, **options)
-    plain, origin = translate(text, quantity=options.get("quantity", False),
-                              max_depth=max_depth)
+    plain, origin = translate(text, quantity=quantity, max_depth=max_depth)
     try:
         tokens = lexer.tokenize(plain, **options)
     except AnswerError as error:
@@ -97,7 +100,7 @@ def tokenize(text: str, *, max_depth: int, **options) -> list[Token]:
 def plain_text(text: str, *, quantity: bool = False) -> str:
     """How a LaTeX answer reads in the plain syntax, spaces tidied, for a preview (the
     answer itself when it is no LaTeX or cannot be translated)."""
-    if not isinstance(text, str) or not is_latex(text):
+    if not isinstance(text, str) or not is_latex(text, quantity=quantity):
         return text
     try:
         plain, _origin = translate(text, quantity=quantity, max_depth=100)
@@ -173,6 +176,8 @@ class _Translator:
         """The position of the ``}`` that closes the ``{`` at ``opening``."""
         level = 0
         for k in range(opening, end):
+            if k > opening and self.text[k - 1] == "\\":
+                continue  # \{ and \} are brackets, not groups
             if self.text[k] == "{":
                 level += 1
             elif self.text[k] == "}":
@@ -194,8 +199,9 @@ class _Translator:
             close = self.closing(i, end)
             return i + 1, close, close + 1
         if self.text[i] == "\\":
-            word_end = _COMMAND.match(self.text, i)
-            assert word_end is not None
+            word_end = _COMMAND.match(self.text, i, end)
+            if word_end is None:
+                raise self.error(_("a backslash must start a LaTeX command"), i)
             return i, word_end.end(), word_end.end()
         return i, i + 1, i + 1
 
