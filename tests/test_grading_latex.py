@@ -160,8 +160,17 @@ def test_the_preview_shows_latex_in_the_plain_syntax():
 
 
 def test_the_translation_remembers_where_each_character_came_from():
-    plain, origin = translate(r"\alpha+1")
-    assert plain == " α+1" and origin == [0, 0, 6, 7]
+    plain, origin, closers = translate(r"\frac{k}{m}+\alpha")
+    assert plain == " (k/m)+ α" and origin == [0, 0, 6, 0, 9, 10, 11, 12, 12]
+    assert closers == {10}
+
+
+def test_no_note_on_a_written_product_after_a_printed_fraction():
+    """"a/2g is read as (a/2)·g" is for a division written without brackets; a \\frac is
+    printed with its own, so \\frac{1}{2}mv^2 gets no such note."""
+    assert "a/2g" not in grade(PROJECTILE, "v0^2*sin(2*alpha)/g",
+                               r"\frac{v_0^2}{2g}\sin(2\alpha)").feedback
+    assert "a/2g" in grade(PROJECTILE, "v0^2*sin(2*alpha)/g", "v0^2/2g sin(2α)").feedback
 
 
 PROJECTILE = SymbolicSpec({"v0": Variable(1, 50, "m/s"), "alpha": Variable(0.1, 1.4, "rad"),

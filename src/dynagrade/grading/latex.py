@@ -31,11 +31,12 @@ Any other command is refused with a caret at its backslash.
 from __future__ import annotations
 
 import re
+from typing import NamedTuple
 
 from ..i18n import _
 from . import lexer
 from .errors import AnswerError
-from .lexer import Token
+from .lexer import LPAR, NAME, NUM, OP, ROOT, RPAR, Token
 from .names import ACCENTS, GREEK, LATEX_VARIANTS, canonical_function, suggest
 
 #: Greek letter commands -> the Unicode letter the tokenizer reads (``\varphi`` -> φ).
@@ -59,6 +60,7 @@ _OPENERS = {"(": "(", "[": "(", "\\{": "(", "\\lbrace": "(", "|": "abs(", "\\ver
             "\\lvert": "abs(", ".": ""}
 _CLOSERS = {")": ")", "]": ")", "\\}": ")", "\\rbrace": ")", "|": ")", "\\vert": ")",
             "\\rvert": ")", ".": ""}
+_STARTS_OPERAND = frozenset({NUM, NAME, LPAR, ROOT})
 _COMMAND = re.compile(r"\\(?:[A-Za-z]+|.)", re.DOTALL)
 #: A fraction's numerator or denominator that needs no brackets: a number or one letter
 #: (``\frac{2}{mg}`` is 2/(m·g), so ``mg`` keeps its brackets).
@@ -88,13 +90,22 @@ def tokenize(text: str, *, max_depth: int, **options) -> list[Token]:
     if not isinstance(text, str) or not is_latex(text, quantity=quantity) or \
             len(text) > lexer.MAX_LENGTH:
         return lexer.tokenize(text, **options)
-    plain, origin = translate(text, quantity=quantity, max_depth=max_depth)
+    plain, origin, closers = translate(text, quantity=quantity, max_depth=max_depth)
     try:
         tokens = lexer.tokenize(plain, **options)
     except AnswerError as error:
         where = None if error.position is None else _source(origin, error.position, text)
         raise AnswerError(error.message, where, text) from None
-    return [token._replace(pos=_source(origin, token.pos, text)) for token in tokens]
+    read: list[Token] = []
+    for token in tokens:
+        token = token._replace(pos=_source(origin, token.pos, text))
+        if not quantity and read and read[-1].kind == RPAR and read[-1].value == ")" and \
+                read[-1].pos in closers and token.kind in _STARTS_OPERAND:
+            # \frac{a}{b}c is printed as a fraction times c: a product with an operator,
+            # so the note on a/2g (a division written without brackets) is not given
+            read.append(Token(OP, "*", token.pos))
+        read.append(token)
+    return read
 
 
 def plain_text(text: str, *, quantity: bool = False) -> str:
@@ -103,19 +114,29 @@ def plain_text(text: str, *, quantity: bool = False) -> str:
     if not isinstance(text, str) or not is_latex(text, quantity=quantity):
         return text
     try:
-        plain, _origin = translate(text, quantity=quantity, max_depth=100)
+        plain = translate(text, quantity=quantity, max_depth=100).plain
     except AnswerError:
         return text
     return " ".join(plain.split())
 
 
-def translate(text: str, *, quantity: bool = False, max_depth: int = 100) -> tuple[str, list[int]]:
-    """The plain-syntax text of a LaTeX answer, and for each of its characters the
-    position in ``text`` it comes from. Raises :class:`AnswerError` at a command
+class Translation(NamedTuple):
+    """The plain syntax of a LaTeX answer."""
+
+    plain: str
+    #: for each character of ``plain``, the position in the LaTeX it comes from
+    origin: list[int]
+    #: the LaTeX positions of the closing brackets of printed groups (a fraction, braces,
+    #: ``\right)``), after which an operand is a product with an operator
+    closers: frozenset[int]
+
+
+def translate(text: str, *, quantity: bool = False, max_depth: int = 100) -> Translation:
+    """The plain-syntax text of a LaTeX answer. Raises :class:`AnswerError` at a command
     outside the subset."""
     translator = _Translator(text, quantity, max_depth)
     translator.run(0, len(text), 0)
-    return "".join(translator.out), translator.origin
+    return Translation("".join(translator.out), translator.origin, frozenset(translator.closers))
 
 
 def _source(origin: list[int], position: int, text: str) -> int:
@@ -131,11 +152,17 @@ class _Translator:
         self.max_depth = max_depth
         self.out: list[str] = []
         self.origin: list[int] = []
+        self.closers: list[int] = []
         self.join_next = False
 
     def emit(self, piece: str, position: int) -> None:
         self.out.append(piece)
         self.origin.extend([position] * len(piece))
+
+    def close_group(self, position: int) -> None:
+        """A ``)`` that closes a printed group, at the LaTeX's ``position``."""
+        self.closers.append(position)
+        self.emit(")", position)
 
     def error(self, message: str, position: int) -> AnswerError:
         return AnswerError(message, position, self.text)
@@ -156,7 +183,7 @@ class _Translator:
                 close = self.closing(i, end)
                 self.emit("(", i)
                 self.run(i + 1, close, depth + 1)
-                self.emit(")", close)
+                self.close_group(close)
                 i = close + 1
             elif ch == "}":
                 raise self.error(_("unexpected '}' (no matching '{')"), i)
@@ -300,7 +327,7 @@ class _Translator:
         self.wrapped(top_start, top_end, depth)
         self.emit("/", i)
         self.wrapped(bottom_start, bottom_end, depth)
-        self.emit(")", goes_on - 1)
+        self.close_group(goes_on - 1)
         return goes_on
 
     def root(self, i: int, after: int, end: int, depth: int) -> int:
@@ -341,7 +368,10 @@ class _Translator:
         if written not in table:
             raise self.error(_("'\\left' and '\\right' need a bracket after them: "
                                "\\left( ... \\right)"), i)
-        self.emit(table[written], i)
+        if table[written] == ")":
+            self.close_group(i)
+        else:
+            self.emit(table[written], i)
         return j + len(written)
 
     def accent(self, i: int, name: str, after: int, end: int, depth: int) -> int:
