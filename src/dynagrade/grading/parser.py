@@ -11,7 +11,10 @@ Two modes share one grammar:
 Grammar, loosest first: sums ``+ -``; products ``* /`` and products written
 without an operator (``2g``, ``m g``, ``2(a+b)``, ``(a)(b)``), all left-associative
 at the same level (so ``1/2g`` is ``(1/2)·g``); unary ``- +``; powers ``^``/``**``
-(right-associative, ``-x^2`` is ``-(x^2)``) and superscripts. The parser never
+(right-associative, ``-x^2`` is ``-(x^2)``) and superscripts. A function is called with
+brackets, or as written on paper (``sin^2 x``, ``m g sin α``: :mod:`.onpaper`); an answer in
+LaTeX is read through :mod:`.latex`, which hands the tokens of its plain reading over
+with the LaTeX's positions. The parser never
 evaluates anything and stops with a positioned :class:`AnswerError` on the first
 problem. Limits: :data:`lexer.MAX_LENGTH` characters, :data:`lexer.MAX_TOKENS`
 tokens, :data:`MAX_DEPTH` levels of nesting, :data:`MAX_TERMS` terms in a flat sum or
