@@ -77,7 +77,7 @@ def test_pi_is_a_constant_unless_declared():
     ("f(x)", "unknown function 'f'", 0),
     ("sine(x)", "did you mean 'sin'", 0),
     ("alhpa", "did you mean 'alpha'", 0),
-    ("sin x", "brackets", 0),
+    ("sin -x", "brackets", 0),  # "sin x" is read as on paper (grading/onpaper.py)
     ("a, b", "comma", 1),
     ("atan2(a)", "takes 2 arguments", 0),
     ("a!", "factorial", 1),

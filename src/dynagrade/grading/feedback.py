@@ -6,6 +6,7 @@ from ..i18n import _
 import math
 
 from .nodes import BinOp, Expr, walk
+from .onpaper import notes
 
 
 def show_number(value: float, digits: int = 4) -> str:
@@ -40,9 +41,11 @@ def show_tolerance(rtol: float, atol: float | None, unit: str | None) -> str:
 
 
 def reading_hints(tree: Expr) -> list[str]:
-    """Hints about how a written product was read: ``a/2g`` is ``(a/2)·g``."""
+    """Hints about how a written product was read (``a/2g`` is ``(a/2)·g``), and about
+    functions written on paper (``cos^-1`` is arccos: :func:`.onpaper.notes`)."""
     for node in walk(tree):
         if isinstance(node, BinOp) and node.op == "*" and node.implicit and \
                 isinstance(node.left, BinOp) and node.left.op == "/":
-            return [_("Note: a/2g is read as (a/2)·g; write a/(2g) if you mean to divide by 2g.")]
-    return []
+            return [_("Note: a/2g is read as (a/2)·g; write a/(2g) if you mean to divide by 2g.")] \
+                + notes(tree)
+    return notes(tree)

@@ -98,11 +98,11 @@ def suggest(name: str, candidates) -> str | None:
 SUBSCRIPTS: dict[str, str] = {chr(0x2080 + k): str(k) for k in range(10)}
 
 #: LaTeX spellings of Greek letters that the course prints but students type plainly.
-_LATEX_VARIANTS = {"varphi": "phi", "vartheta": "theta", "varepsilon": "epsilon",
-                   "varrho": "rho", "varsigma": "sigma", "varpi": "pi"}
+LATEX_VARIANTS = {"varphi": "phi", "vartheta": "theta", "varepsilon": "epsilon",
+                  "varrho": "rho", "varsigma": "sigma", "varpi": "pi"}
 #: LaTeX accents, each typed as a word after the letter: ``\dot\varphi`` is ``phidot``.
-_ACCENTS = ("ddot", "dot", "hat", "bar", "tilde")
-_ACCENT = re.compile(r"\\(" + "|".join(_ACCENTS) + r")\s*(\{[^{}]*\}|\\[A-Za-z]+|[A-Za-z])")
+ACCENTS = ("ddot", "dot", "hat", "bar", "tilde")
+_ACCENT = re.compile(r"\\(" + "|".join(ACCENTS) + r")\s*(\{[^{}]*\}|\\[A-Za-z]+|[A-Za-z])")
 _WRAPPERS = re.compile(r"\\(?:mathrm|text|mathit|operatorname|boldsymbol|mathbf)\s*\{([^{}]*)\}")
 _COMMAND = re.compile(r"\\([A-Za-z]+)")
 _SPACING = re.compile(r"\\[,;!: ]|\s+")
@@ -121,7 +121,7 @@ class NameClash(SpecError):
 
 def _greek_command(match: re.Match) -> str:
     word = match.group(1)
-    return _LATEX_VARIANTS.get(word, word)
+    return LATEX_VARIANTS.get(word, word)
 
 
 def typed_forms(symbol: str) -> list[str]:

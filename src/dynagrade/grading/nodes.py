@@ -60,10 +60,13 @@ class BinOp:
 
 @dataclass(frozen=True, slots=True)
 class Call:
-    """A function applied to arguments; ``func`` is the canonical name."""
+    """A function applied to arguments; ``func`` is the canonical name. ``written`` is
+    how an inverse function was written on paper (``cos^-1``), kept for the note that
+    says how it was read, and ignored by ``==``."""
 
     func: str
     args: tuple
+    written: str = field(default="", compare=False)
 
 
 Expr = Union[Num, Name, Const, Unit, Neg, BinOp, Call]

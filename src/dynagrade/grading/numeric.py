@@ -13,6 +13,7 @@ import math
 from . import frequency, units
 from .errors import AnswerError, SpecError
 from .feedback import show_number, show_tolerance, show_value
+from .latex import plain_text
 from .misconceptions import CYCLES, UNIT, numeric_candidates
 from .quantity import Quantity, read_quantity, unit_cycles, unit_info
 from .spec import NumericSpec
@@ -261,7 +262,8 @@ def read_numeric(spec: NumericSpec, text: str) -> Readability:
         return Readability(True, _("reads as {answer}").format(answer=shown))
     if not reading.converted:
         return Readability(True, _("reads as {answer}").format(answer=shown))
-    return Readability(True, _("reads as {answer}").format(answer=f"{text.strip()} = {shown}"))
+    written = plain_text(text.strip(), quantity=True)
+    return Readability(True, _("reads as {answer}").format(answer=f"{written} = {shown}"))
 
 
 def build_numeric(record: dict, common: Common):

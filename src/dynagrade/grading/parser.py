@@ -11,7 +11,10 @@ Two modes share one grammar:
 Grammar, loosest first: sums ``+ -``; products ``* /`` and products written
 without an operator (``2g``, ``m g``, ``2(a+b)``, ``(a)(b)``), all left-associative
 at the same level (so ``1/2g`` is ``(1/2)·g``); unary ``- +``; powers ``^``/``**``
-(right-associative, ``-x^2`` is ``-(x^2)``) and superscripts. The parser never
+(right-associative, ``-x^2`` is ``-(x^2)``) and superscripts. A function is called with
+brackets, or as written on paper (``sin^2 x``, ``m g sin α``: :mod:`.onpaper`); an answer in
+LaTeX is read through :mod:`.latex`, which hands the tokens of its plain reading over
+with the LaTeX's positions. The parser never
 evaluates anything and stops with a positioned :class:`AnswerError` on the first
 problem. Limits: :data:`lexer.MAX_LENGTH` characters, :data:`lexer.MAX_TOKENS`
 tokens, :data:`MAX_DEPTH` levels of nesting, :data:`MAX_TERMS` terms in a flat sum or
@@ -24,7 +27,7 @@ from ..i18n import _, ngettext
 from dataclasses import dataclass
 from functools import lru_cache
 
-from . import lexer
+from . import latex, onpaper
 from .errors import AnswerError
 from .lexer import COMMA, END, EQUALS, LPAR, NAME, NUM, OP, ROOT, RPAR, SEMI, SUP, Token
 from .functions import FUNCTIONS
@@ -98,7 +101,7 @@ def parse_vector(text: str) -> tuple[list[Expr], Expr | None]:
     (then commas are decimal commas: ``(1,5; 2,5)``).
     """
     decimal_comma = ";" in text
-    tokens = lexer.tokenize(text, quantity=True, decimal_comma=decimal_comma)
+    tokens = latex.tokenize(text, max_depth=MAX_DEPTH, quantity=True, decimal_comma=decimal_comma)
     parser = _Parser(tokens, text, Vocabulary(quantity=True))
     separator = SEMI if decimal_comma else COMMA
     opener = parser.peek()
@@ -157,8 +160,9 @@ def _has_top_level(tokens: list[Token], separator: str) -> bool:
 
 
 def _parse(text: str, vocabulary: Vocabulary, *, decimal_comma: bool) -> Expr:
-    tokens = lexer.tokenize(text, quantity=vocabulary.quantity, decimal_comma=decimal_comma,
-                            names=vocabulary.variables, spellings=vocabulary.spelled_symbols)
+    tokens = latex.tokenize(text, max_depth=MAX_DEPTH, quantity=vocabulary.quantity,
+                            decimal_comma=decimal_comma, names=vocabulary.variables,
+                            spellings=vocabulary.spelled_symbols)
     # "v = 12 m/s": the name on the left of a single '=' is ignored.
     if len(tokens) > 2 and tokens[0].kind == NAME and tokens[1].kind == EQUALS:
         tokens = tokens[2:]
@@ -329,6 +333,11 @@ class _Parser:
         function = canonical_function(word)
         if function and follows_bracket and word not in self.vocabulary.variables:
             return self.call(token, function)
+        if function and word not in self.vocabulary.variables:
+            written = onpaper.application(self, token, function, quantity=self.vocabulary.quantity,
+                                          product_power=_BP_PRODUCT)
+            if written is not None:
+                return written
         if self.vocabulary.quantity:
             return self.quantity_name(token, function)
         variables = self.vocabulary.variables
@@ -361,6 +370,11 @@ class _Parser:
         known = ", ".join(sorted(variables)) if variables else _("none")
         raise self.error(_("unknown name '{name}'{did_you_mean} (the variables are: {names})")
                          .format(name=word, did_you_mean=did_you_mean, names=known), token)
+
+    def is_function(self, token: Token) -> bool:
+        """Whether a name token names a function rather than a declared variable."""
+        return token.kind == NAME and token.value not in self.vocabulary.variables and \
+            canonical_function(token.value) is not None
 
     def product_of_pieces(self, token: Token, pieces: list[str]) -> Expr:
         """Read the first piece now and put the others back into the token stream, so

@@ -41,6 +41,7 @@ from .errors import AnswerError, SpecError
 from .evaluate import evaluate
 from .feedback import reading_hints
 from .nodes import BinOp, Call, Expr, Neg, Num, names_in, to_text, walk
+from .onpaper import notes
 from .parser import parse_expression
 from .quantity import unit_info
 from .spec import SymbolicSpec
@@ -206,11 +207,11 @@ def grade_symbolic(spec: SymbolicSpec, expected, answer: str) -> Verdict:
                                      "number, or a number too large to compute) where the expected one is "
                                      "defined.") + reveal)
     if _equivalent(tree, ref, values, deadline):
-        return _form_verdict(spec, ref, tree)
+        return _form_verdict(spec, ref, tree, " ".join(notes(tree)))
     base = None if ref.based is None else _values(tree, ref.based, values.shape)
     if base is not None and ref.base is not None and ref.base_tol is not None and \
             _same_differences(values, base, ref.values, ref.base, ref.tol + ref.base_tol):
-        return _form_verdict(spec, ref, tree, constant_ignored(spec))
+        return _form_verdict(spec, ref, tree, " ".join([constant_ignored(spec)] + notes(tree)))
     hints = " ".join(reading_hints(tree))
     with np.errstate(all="ignore"):  # ratios of values near the float limit overflow
         found = _misconception(spec, ref, values, base)
@@ -350,7 +351,8 @@ def read_symbolic(spec: SymbolicSpec, text: str) -> Readability:
         listed = ", ".join(allowed) or _("none")
         return Readability(False, _("'{name}' is not a name of this part (allowed: {names})")
                            .format(name=unknown[0], names=listed))
-    return Readability(True, _("reads as {answer}").format(answer=to_text(tree)))
+    return Readability(True, " ".join([_("reads as {answer}").format(answer=to_text(tree))]
+                                      + notes(tree)))
 
 
 def build_symbolic(record: dict, common: Common):
