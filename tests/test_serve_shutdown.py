@@ -45,6 +45,16 @@ def _command(pid: int) -> str:
         return ""
 
 
+def _helpers(pids: set[int]) -> set[int]:
+    """The processes of ``pids`` that are multiprocessing's helpers, a resource tracker or
+    a fork server, not the grading processes forked from a fork server (which carry its
+    command line)."""
+    parents = _children()
+    helper = ("multiprocessing.resource_tracker", "multiprocessing.forkserver")
+    return {p for p in pids if any(h in _command(p) for h in helper)
+            and not any(h in _command(parents.get(p, 0)) for h in helper)}
+
+
 def _alive(pid: int) -> bool:
     try:
         state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
@@ -80,10 +90,12 @@ def test_a_clean_sigterm_leaves_no_process_of_the_server_running(exam_dir, tmp_p
         server.send_signal(signal.SIGTERM)
         server.wait(timeout=60)
         # when the command has ended, so has every process it started; only
-        # multiprocessing's resource tracker ends after it (it waits for its parent's
-        # pipe to close), and within a moment
-        assert [(p, _command(p)) for p in started
-                if _alive(p) and "resource_tracker" not in _command(p)] == []
+        # multiprocessing's helpers, its resource tracker and the grading processes' fork
+        # server, end after it (each waits for its parent's pipe to close), and within
+        # a moment
+        helpers = _helpers(started)
+        assert [(p, _command(p)) for p in started - helpers
+                if _alive(p) and _command(p)] == []  # (no command line: its memory is gone)
         deadline = time.monotonic() + 5
         while time.monotonic() < deadline and any(_alive(p) for p in started):
             time.sleep(0.1)

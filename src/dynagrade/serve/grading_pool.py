@@ -63,6 +63,18 @@ def _read(student_id, exercise_id, part, text, seed):
         return data.preview(student_id, exercise_id, part, text, seed)
 
 
+def _process_context():
+    """How grading processes start: forked from a fork server that has imported
+    :mod:`.grading_preload` (the grader's libraries, built once), where the platform has
+    one; otherwise each process starts afresh. Never forked from the server itself, whose
+    threads a fork would copy mid-flight."""
+    if "forkserver" not in multiprocessing.get_all_start_methods():
+        return multiprocessing.get_context("spawn")
+    context = multiprocessing.get_context("forkserver")
+    context.set_forkserver_preload(["dynagrade.serve.grading_preload"])
+    return context
+
+
 class GradingPool:
     """``workers`` processes grading answers for one exam."""
 
@@ -77,7 +89,7 @@ class GradingPool:
         self._successor: GradingPool | None = None
 
     def _start(self) -> ProcessPoolExecutor:
-        return ProcessPoolExecutor(self._workers, mp_context=multiprocessing.get_context("spawn"),
+        return ProcessPoolExecutor(self._workers, mp_context=_process_context(),
                                    initializer=_load, initargs=self._args)
 
     def warm_up(self) -> None:
