@@ -15,10 +15,11 @@ vector answer ``a`` of student *s* and every other student *t*:
 
 **Chance of a match.** The probability that a random other student's key falls within
 the tolerance window around ``a`` is estimated from the spread of the class's keys: with
-``c`` the number of keys of the other students (*s* and *t* left out) within
-:data:`WIDE` times the tolerance of ``a``, ``n`` the students compared,
+``N`` the students on the roster with a variant of the exercise (those absent too: their
+keys are drawn alike) and ``c`` the number of their keys, *s*'s and *t*'s left out,
+within :data:`WIDE` times the tolerance of ``a``,
 
-    p = (c + 1) / ((n - 1) · WIDE)
+    p = (c + 1) / ((N - 1) · WIDE)
 
 (the density of keys around ``a``, smoothed by one key). A match on another student's
 answer takes the larger of that and the same estimate over the class's wrong answers.
@@ -27,8 +28,10 @@ combine as independent coincidences, ``P = Π p``, and
 
     E = n (n - 1) / 2 · P
 
-is the number of pairs a class of ``n`` would show with coincidences this unlikely (a
-Bonferroni bound over the class's pairs). A pair is listed when ``E ≤`` :data:`THRESHOLD`
+is the number of pairs a class of ``n`` students who handed something in would show with
+coincidences this unlikely (a Bonferroni bound over the class's pairs). With fewer than
+:data:`~.stats.MIN_STUDENTS` keys the spread rests on few numbers, and the report says
+so: the list is then a hint. A pair is listed when ``E ≤`` :data:`THRESHOLD`
 (one class in twenty would show one such pair by chance); the report shows ``−log10 E``
 as its score (1.3 at the threshold, 3 for one class in a thousand). Listed pairs that share a student form
 clusters (a source and several copiers). The list is evidence for a conversation: it
@@ -38,7 +41,7 @@ clusters (a source and several copiers). The list is evidence for a conversation
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import AbstractSet, Iterable, Mapping
 
 import numpy as np
@@ -49,6 +52,7 @@ from ..exam.manifest import Manifest, PartEntry
 from ..exercise.numbers import answer_text
 from .answer_values import Value, answer_value, as_rows, close_to, compared, key_value
 from .answered import Answered
+from .stats import MIN_STUDENTS
 
 #: keys closer than this many tolerances make a part no evidence
 NEAR_KEYS = 3.0
@@ -104,9 +108,18 @@ class Copies:
 
     pairs: tuple[CopiedPair, ...] = ()
     clusters: tuple[tuple[str, ...], ...] = ()
+    #: the students who handed something in
     students: int = 0
     threshold: float = THRESHOLD
-    parts: int = field(default=0)
+    #: the number parts compared
+    parts: int = 0
+    #: the students on the roster, whose keys give the spread
+    roster: int = 0
+
+    @property
+    def few_keys(self) -> bool:
+        """Whether the spread of keys rests on fewer than :data:`~.stats.MIN_STUDENTS`."""
+        return self.roster < MIN_STUDENTS
 
 
 def detect(manifest: Manifest, records: Iterable[Answered],
@@ -125,7 +138,7 @@ def detect(manifest: Manifest, records: Iterable[Answered],
             if not compared(entry):
                 continue
             parts += 1
-            for match in _part_matches(manifest, described.id, entry, by_part, explained, n):
+            for match in _part_matches(manifest, described.id, entry, by_part, explained):
                 pair = tuple(sorted((match.student, match.other)))
                 kept = best.setdefault(pair, {})
                 where = (match.exercise_id, match.part)
@@ -137,37 +150,34 @@ def detect(manifest: Manifest, records: Iterable[Answered],
         if expected <= threshold:
             pairs.append(CopiedPair(pair, tuple(matches.values()), expected))
     pairs.sort(key=lambda p: (p.expected, p.students))
-    return Copies(tuple(pairs), clusters(pairs), n, threshold, parts)
+    return Copies(tuple(pairs), clusters(pairs), n, threshold, parts, len(manifest.students))
 
 
 def _part_matches(manifest: Manifest, exercise_id: str, entry: PartEntry,
                   by_part: Mapping[tuple[str, str, str], Answered],
-                  explained: AbstractSet[tuple[str, str, str]], n: int) -> list[Match]:
+                  explained: AbstractSet[tuple[str, str, str]]) -> list[Match]:
     """Every match of one part, with its chance."""
     ids, keys, records = [], [], []
     for student in manifest.students:
         variant = student.variant(exercise_id)
-        record = by_part.get((student.student_id, exercise_id, entry.name))
         key = key_value(entry, variant.answers.get(entry.name)) if variant else None
-        if record is None or key is None:
-            continue
-        ids.append(student.student_id)
-        keys.append(key)
-        records.append(record)
+        if key is not None:
+            ids.append(student.student_id)
+            keys.append(key)
+            records.append(by_part.get((student.student_id, exercise_id, entry.name)))
     if len(ids) < 2:
         return []
     key_rows = as_rows(keys)
-    values: list[Value | None] = [answer_value(entry, r.answer) if r.wrong else None
+    values: list[Value | None] = [answer_value(entry, r.answer) if r and r.wrong else None
                                   for r in records]
     wrong = [i for i, v in enumerate(values) if v is not None]
     answer_rows = as_rows([v for v in values if v is not None]) if wrong else np.zeros((0, 1))
     found = []
     for i in wrong:
-        if (ids[i], exercise_id, entry.name) in explained \
-                or records[i].misconception:
+        record, value = records[i], values[i]
+        assert record is not None and value is not None  # a wrong answer has both
+        if (ids[i], exercise_id, entry.name) in explained or record.misconception:
             continue
-        value = values[i]
-        assert value is not None
         near_keys = close_to(entry, keys[i], key_rows, NEAR_KEYS)
         on_key = close_to(entry, value, key_rows) & ~near_keys
         wide_keys = close_to(entry, value, key_rows, WIDE)
@@ -181,14 +191,15 @@ def _part_matches(manifest: Manifest, exercise_id: str, entry: PartEntry,
         for j in np.flatnonzero(on_key | on_answer):
             others = np.ones(len(ids), dtype=bool)
             others[i] = others[j] = False
-            chance = (int((wide_keys & others).sum()) + 1) / ((n - 1) * WIDE)
+            chance = (int((wide_keys & others).sum()) + 1) / ((len(ids) - 1) * WIDE)
             if on_answer[j]:
                 spread = (int((wide_answers & others).sum()) + 1) / (max(len(wrong) - 1, 1) * WIDE)
                 chance = max(chance, spread)
+            other = records[j]
             found.append(Match(exercise_id, entry.name, entry.unit, ids[i], ids[j],
-                               KEY if on_key[j] else ANSWER, records[i].answer or "",
-                               keys[i], keys[j], records[j].answer or "", min(chance, 1.0),
-                               records[i].time, records[j].time))
+                               KEY if on_key[j] else ANSWER, record.answer or "",
+                               keys[i], keys[j], (other.answer or "") if other else "",
+                               min(chance, 1.0), record.time, other.time if other else ""))
     return found
 
 
