@@ -67,6 +67,8 @@ class SyntheticClass:
     #: per group, whether its copiers copied the whole exam (else one exercise)
     whole: list[bool]
     clusters: list[Cluster]
+    #: each student's graded results by exercise, in roster order
+    results: list[dict]
 
     @property
     def copying(self) -> set[str]:
@@ -120,7 +122,7 @@ def synthetic_class(students: int = 200, seed: int = 1, groups: int = 10,
     results = {sid: {e: grade_variant(bank[e], variants[sid][e], answers[sid][e])
                      for e in bank} for sid in ids}
     return SyntheticClass(manifest, bank, from_results(results), copying, whole_exam,
-                          clusters)
+                          clusters, [results[sid] for sid in ids])
 
 
 def _honest(rng: random.Random, exercise: Exercise, variant, noise: float) -> dict:

@@ -67,6 +67,19 @@ def test_listed_pairs_that_share_a_student_form_one_cluster(measured):
     assert any(frozenset(trio) in found for trio in trios)
 
 
+def test_attaching_the_findings_changes_no_grade_and_no_feedback(measured):
+    from copy import deepcopy
+
+    from dynagrade.classgrade.grade import class_outcome, with_findings
+
+    synthetic, _, _ = measured
+    outcome = class_outcome(synthetic.manifest, deepcopy(synthetic.results), [], {})
+    rows, feedback = deepcopy(outcome.rows), deepcopy(outcome.feedback)
+    with_findings(outcome, synthetic.manifest, synthetic.exercises)
+    assert outcome.findings is not None and outcome.findings.copies.pairs
+    assert outcome.rows == rows and outcome.feedback == feedback
+
+
 # -- the chance of a match, by hand -------------------------------------------------------
 
 def _class(keys: list, kind: str = "numeric") -> Manifest:
