@@ -33,7 +33,7 @@ from ..exercise.model import Exercise
 from ..exercise.params import ParamValues, to_si_values
 from .answer_values import Value, answer_value, as_rows, close_to, compared, is_near, key_value
 from .answered import Answered
-from .perturbations import Perturbation, space
+from .perturbations import Perturbation, Rerun, solver_reruns, space
 
 #: the fewest students a proposal must explain
 MIN_SUPPORT = 3
@@ -104,10 +104,14 @@ def discover(manifest: Manifest, exercises: Mapping[str, Exercise],
         exercise = exercises.get(described.id)
         if exercise is None:
             continue
+        # one ParamValues per student and one set of reruns for all the exercise's parts:
+        # each perturbed solve then runs once per student, whichever part asks
+        params: dict[str, ParamValues] = {}
+        reruns = solver_reruns(exercise)
         for entry in described.parts:
             if compared(entry):
-                wrong = _unexplained(manifest, described, entry, exercise, by_part)
-                proposals += _propose(described, entry, exercise, wrong)
+                wrong = _unexplained(manifest, described, entry, exercise, by_part, params)
+                proposals += _propose(described, entry, exercise, wrong, reruns)
     return proposals
 
 
@@ -117,8 +121,8 @@ def explained_students(proposals: Iterable[Proposal]) -> set[tuple[str, str, str
 
 
 def _unexplained(manifest: Manifest, described: ExerciseEntry, entry: PartEntry,
-                 exercise: Exercise, by_part: Mapping[tuple[str, str, str], Answered]
-                 ) -> list[_Wrong]:
+                 exercise: Exercise, by_part: Mapping[tuple[str, str, str], Answered],
+                 params_of: dict[str, ParamValues]) -> list[_Wrong]:
     wrong = []
     for student in manifest.students:
         record = by_part.get((student.student_id, described.id, entry.name))
@@ -130,8 +134,8 @@ def _unexplained(manifest: Manifest, described: ExerciseEntry, entry: PartEntry,
         if value is None or key is None:
             continue
         params = {p.name: float(variant.params[p.name]) for p in exercise.params}
-        wrong.append(_Wrong(student.student_id, record.answer or "", value, key,
-                            to_si_values(exercise.params, params),
+        si = params_of.setdefault(student.student_id, to_si_values(exercise.params, params))
+        wrong.append(_Wrong(student.student_id, record.answer or "", value, key, si,
                             tuple(sorted(params.items()))))
     return wrong
 
@@ -179,11 +183,11 @@ def _by_chance(entry: PartEntry, wrong: list[_Wrong], predicted: list[Value | No
 
 
 def _propose(described: ExerciseEntry, entry: PartEntry, exercise: Exercise,
-             wrong: list[_Wrong]) -> list[Proposal]:
+             wrong: list[_Wrong], reruns: list[Rerun]) -> list[Proposal]:
     if len(wrong) < MIN_SUPPORT:
         return []
     tried = []
-    for perturbation in space(exercise, exercise.part(entry.name)):
+    for perturbation in space(exercise, exercise.part(entry.name), reruns):
         predicted = _predictions(perturbation, exercise, entry, wrong)
         explained = _explains(entry, wrong, predicted)
         if len(explained) >= MIN_SUPPORT:

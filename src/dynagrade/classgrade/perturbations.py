@@ -25,6 +25,7 @@ discovery and are not repeated here. A perturbation that fails at some parameter
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, replace
 from itertools import combinations
 from typing import Any, Callable, Iterator, Mapping, Sequence
@@ -55,17 +56,25 @@ class Perturbation:
     imports: tuple[str, ...] = ()
 
     def value(self, params: ParamValues) -> Any:
-        """The wrong answer at ``params`` (SI), None where the perturbation fails."""
+        """The wrong answer at ``params`` (SI), None where the perturbation fails (its
+        numpy warnings silenced: failing is expected of many)."""
+        import numpy as np
+
         try:
-            value = self.compute(params)
+            with warnings.catch_warnings(), np.errstate(all="ignore"):
+                warnings.simplefilter("ignore")
+                return self.compute(params)
         except Exception:  # noqa: BLE001 - a perturbation outside its domain has no value
             return None
-        return value
 
 
-def space(exercise: Exercise, part: Part) -> list[Perturbation]:
-    """Every perturbation tried on ``part`` of ``exercise``, simplest first."""
-    found = list(_through_solver(exercise, part))
+def space(exercise: Exercise, part: Part,
+          reruns: Sequence[Rerun] | None = None) -> list[Perturbation]:
+    """Every perturbation tried on ``part`` of ``exercise``, simplest first; ``reruns``
+    are the exercise's :func:`solver_reruns` (made once for all its parts, so that each
+    perturbed solve runs once per draw, whichever part asks)."""
+    found = list(_through_solver(exercise, part,
+                                 solver_reruns(exercise) if reruns is None else reruns))
     formula = _formula_of(exercise, part)
     if formula is not None:
         found += _through_formula(formula, part.name)
@@ -83,54 +92,83 @@ def space(exercise: Exercise, part: Part) -> list[Perturbation]:
 _PARAMS = "from dynagrade.exercise import ParamValues"
 
 
-def _through_solver(exercise: Exercise, part: Part) -> Iterator[Perturbation]:
+@dataclass(frozen=True)
+class Rerun:
+    """A change of the parameters, and the exercise's solver re-run with it (every
+    part's answer); ``shown`` is the change as the entries of a dict in ``p``."""
+
+    name: str
+    family: str
+    shown: str
+    imports: tuple[str, ...]
+    run: Callable[[ParamValues], Mapping[str, Any]]
+
+
+def solver_reruns(exercise: Exercise) -> list[Rerun]:
+    """Every change of the exercise's parameters the space tries (module docstring)."""
+    def rerun(name: str, family: str, changes: Callable[[dict], dict], shown: str,
+              imports: tuple[str, ...] = ()) -> Rerun:
+        def run(p: ParamValues) -> Mapping[str, Any]:
+            return exercise.solve(ParamValues(changes(dict(p))))
+        return Rerun(name, family, shown, imports, run)
+
+    found = []
+    for param in exercise.params:
+        x = param.name
+        found += [rerun(f"{x} doubled", "factor 2 or ½ on a parameter",
+                        _mapped(x, _times(2.0)), f'"{x}": 2 * p.{x}'),
+                  rerun(f"{x} halved", "factor 2 or ½ on a parameter",
+                        _mapped(x, _times(0.5)), f'"{x}": p.{x} / 2'),
+                  rerun(f"sign of {x} flipped", "sign flip", _mapped(x, _times(-1.0)),
+                        f'"{x}": -p.{x}')]
+        if param.unit in ANGLE_UNITS:
+            found += [rerun(f"{x} in degrees taken as radians", "degrees and radians",
+                            _mapped(x, math.degrees), f'"{x}": math.degrees(p.{x})',
+                            ("import math",)),
+                      rerun(f"{x} in radians taken as degrees", "degrees and radians",
+                            _mapped(x, math.radians), f'"{x}": math.radians(p.{x})',
+                            ("import math",)),
+                      rerun(f"sin and cos of {x} swapped", "trigonometric function swapped",
+                            _mapped(x, _complement), f'"{x}": math.pi / 2 - p.{x}',
+                            ("import math",))]
+        if _is_g(param):
+            found += [rerun(f"{x} = {g:g}", "g = 10 or 9.8", _mapped(x, _constant(g)),
+                            f'"{x}": {g!r}') for g in G_VALUES]
+    for a, b in combinations(exercise.params, 2):
+        if a.unit is not None and a.unit == b.unit:
+            found.append(rerun(f"{a.name} and {b.name} swapped",
+                               "parameters of one kind swapped", _swapped(a.name, b.name),
+                               f'"{a.name}": p.{b.name}, "{b.name}": p.{a.name}'))
+    return found
+
+
+def _through_solver(exercise: Exercise, part: Part, reruns: Sequence[Rerun]
+                    ) -> Iterator[Perturbation]:
     solver = getattr(exercise.solve, "__name__", "")
     solver = solver if solver.isidentifier() else "EXERCISE.solve"
     name = part.name
-
-    def changed(label: str, family: str, changes: Callable[[dict], dict],
-                shown: str, imports: tuple[str, ...] = ()) -> Perturbation:
-        def compute(p: ParamValues) -> Any:
-            return exercise.solve(ParamValues(changes(dict(p))))[name]
-        return Perturbation(label, family, f'{solver}(ParamValues({{**p, {shown}}}))["{name}"]',
-                            compute, (_PARAMS, *imports))
-
-    for param in exercise.params:
-        x = param.name
-        yield changed(f"{x} doubled", "factor 2 or ½ on a parameter", _mapped(x, _times(2.0)),
-                      f'"{x}": 2 * p.{x}')
-        yield changed(f"{x} halved", "factor 2 or ½ on a parameter", _mapped(x, _times(0.5)),
-                      f'"{x}": p.{x} / 2')
-        yield changed(f"sign of {x} flipped", "sign flip", _mapped(x, _times(-1.0)),
-                      f'"{x}": -p.{x}')
-        if param.unit in ANGLE_UNITS:
-            yield changed(f"{x} in degrees taken as radians", "degrees and radians",
-                          _mapped(x, math.degrees), f'"{x}": math.degrees(p.{x})',
-                          ("import math",))
-            yield changed(f"{x} in radians taken as degrees", "degrees and radians",
-                          _mapped(x, math.radians), f'"{x}": math.radians(p.{x})',
-                          ("import math",))
-            yield changed(f"sin and cos of {x} swapped", "trigonometric function swapped",
-                          _mapped(x, _complement), f'"{x}": math.pi / 2 - p.{x}',
-                          ("import math",))
-        if _is_g(param):
-            for g in G_VALUES:
-                yield changed(f"{x} = {g:g}", "g = 10 or 9.8", _mapped(x, _constant(g)),
-                              f'"{x}": {g!r}')
-    for a, b in combinations(exercise.params, 2):
-        if a.unit is not None and a.unit == b.unit:
-            yield changed(f"{a.name} and {b.name} swapped", "parameters of one kind swapped",
-                          _swapped(a.name, b.name),
-                          f'"{a.name}": p.{b.name}, "{b.name}": p.{a.name}')
+    for rerun in reruns:
+        yield Perturbation(rerun.name, rerun.family,
+                           f'{solver}(ParamValues({{**p, {rerun.shown}}}))["{name}"]',
+                           _answer_of(rerun.run, name), (_PARAMS, *rerun.imports))
     if part.kind == "numeric":
         result = f'{solver}(p)["{name}"]'
+        reference = _answer_of(exercise.solve, name)
         yield Perturbation("result squared (a missing root)", "a missing square or root",
-                           f"{result} ** 2",
-                           lambda p: float(exercise.solve(p)[name]) ** 2)
+                           f"{result} ** 2", lambda p: float(reference(p)) ** 2)
         yield Perturbation("square root of the result (a missing square)",
                            "a missing square or root", f"math.sqrt({result})",
-                           lambda p: math.sqrt(float(exercise.solve(p)[name])),
-                           ("import math",))
+                           lambda p: math.sqrt(float(reference(p))), ("import math",))
+
+
+def _answer_of(run: Callable[[ParamValues], Mapping[str, Any]], name: str
+               ) -> Callable[[ParamValues], Any]:
+    """Part ``name``'s answer (SI) of ``run``, which runs once per draw: every part and
+    perturbation asking for it at the same parameters shares one solve."""
+    def answer(p: ParamValues) -> Any:
+        solved = p.once(run) if isinstance(p, ParamValues) else run(p)
+        return solved[name]
+    return answer
 
 
 def _mapped(name: str, change: Callable[[float], float]) -> Callable[[dict], dict]:
