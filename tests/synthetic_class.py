@@ -1,5 +1,5 @@
 """A synthetic class with a known truth, for measuring copy detection and misconception
-discovery (tests/test_classgrade_findings.py, bench/detect.py).
+discovery (tests/test_exam_findings.py, bench/detect.py).
 
 Two exercises of the bank (projectile-range: three numbers; two-cart-collision: three
 numbers, whose energy part has a reference formula) are drawn for every student, as an
