@@ -111,7 +111,7 @@ class Copies:
     #: the students who handed something in
     students: int = 0
     threshold: float = THRESHOLD
-    #: the number parts compared
+    #: the numeric and vector parts compared
     parts: int = 0
     #: the students on the roster, whose keys give the spread
     roster: int = 0
