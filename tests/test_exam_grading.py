@@ -150,6 +150,21 @@ def test_item_statistics_match_the_class(graded):
             assert (graded["out"] / "grading" / "feedback" / f"{student_id}.{suffix}").exists()
 
 
+def test_class_grading_writes_answers_csv_and_copies_csv_beside_the_gradebook(graded):
+    """answers.csv holds every graded part of the students present (dynagrade discover
+    reads it); copies.csv is written even when no pair is listed (issue 32)."""
+    from dynagrade.classgrade.answered import read_answered
+    from dynagrade.classgrade.copies import COPIES_HEADER
+
+    grading = graded["out"] / "grading"
+    records = read_answered(grading / "answers.csv")
+    assert records == graded["outcome"].records()
+    present = {r.student_id for r in graded["outcome"].rows if r.status != "absent"}
+    assert {r.student_id for r in records} == present
+    assert (grading / "copies.csv").read_text(encoding="utf-8").splitlines()[0] == \
+        ",".join(COPIES_HEADER)
+
+
 def test_a_rerun_after_an_interruption_writes_the_same_gradebook(graded, bank, tmp_path):
     grading = graded["out"] / "grading"
     before = {p.name: p.read_bytes() for p in grading.iterdir() if p.is_file()}

@@ -236,6 +236,24 @@ def test_the_staff_report_is_built_from_the_stored_verdicts_without_grading(
     assert dict(zip(*list(csv.reader(io.StringIO(grades)))[:3:2]))["percent"] == "26.67"
 
 
+def test_the_staff_report_holds_the_sections_on_undeclared_mistakes_and_copied_answers(
+        exams, tmp_path):
+    """The server's report.html is class grading's, findings included (issue 32): s3
+    hands in s2's answers, wrong for s3's own numbers; with a roster of five the report
+    lists the pair and says that its chance rests on few keys."""
+    manifest = exam_copy(exams[0.01], tmp_path / "exam", mode="homework")
+    with serve(manifest) as served:
+        right = reference_answers(served, "s2", "sliding-up-a-slope")
+        assert served.submit("s2", "sliding-up-a-slope", right).status_code == 200
+        assert served.submit("s3", "sliding-up-a-slope", right).status_code == 200
+        report = served.client.get(f"/i/{served.staff}/report.html")
+    assert report.status_code == 200
+    assert "<h2>Mistakes nobody declared</h2>" in report.text
+    assert "never changes a grade" in report.text
+    assert "s2 and s3" in report.text
+    assert "the roster has 5 students, fewer than 30" in report.text
+
+
 #: answers that run in a spreadsheet, and one that only starts like a formula
 HOSTILE = ('=HYPERLINK("http://x","y")', "@SUM(1)", "-3.2 m/s")
 

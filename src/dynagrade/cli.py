@@ -9,6 +9,7 @@ Usage::
     dynagrade verify --variants 200
     dynagrade exam exam.toml --roster roster.csv -o out/
     dynagrade grade --manifest out/manifest.json out/submissions/ -o out/grading/
+    dynagrade discover out/manifest.json out/grading/
     dynagrade moodle projectile-range --variants 50 -o pool.xml
     dynagrade links out/manifest.json -o links.csv --instructor
     dynagrade serve out/manifest.json
@@ -349,6 +350,40 @@ def grade_command(context, files, as_json, manifest, output, jobs, strict, roste
 
 
 @main.command()
+@click.argument("manifest", type=click.Path(exists=True, dir_okay=False))
+@click.argument("graded_dir", type=click.Path(exists=True, file_okay=False))
+@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@click.pass_obj
+def discover(context, manifest, graded_dir, as_json):
+    """Propose misconceptions nobody declared: the mistakes of a bounded set (see
+    docs/exams.md) that explain clusters of unexplained wrong answers in GRADED_DIR
+    (the folder `dynagrade grade --manifest -o` wrote), each with a Misconception(...)
+    to paste into the exercise file. Changes no grade."""
+    from dataclasses import asdict
+
+    from .classgrade.answered import read_answered
+    from .classgrade.discover import discover as proposals_of, proposal_lines
+    from .exam.manifest import load
+
+    exam = load(manifest)
+    answers = Path(graded_dir) / "answers.csv"
+    if not answers.exists():
+        raise click.ClickException(f"{answers} is missing: grade the class with this "
+                                   "version of `dynagrade grade --manifest ... -o` first")
+    exercises = {e.id: context.exercise(e.id, templates=False) for e in exam.exercises}
+    try:
+        records = read_answered(answers)
+    except ValueError as error:
+        raise click.ClickException(str(error)) from None
+    proposals = proposals_of(exam, exercises, records)
+    if as_json:
+        click.echo(json.dumps([asdict(p) for p in proposals], indent=2, ensure_ascii=False))
+        return
+    for line in proposal_lines(proposals):
+        click.echo(line)
+
+
+@main.command()
 @click.argument("exam_file", type=click.Path(exists=True, dir_okay=False))
 @click.option("--roster", required=True, type=click.Path(exists=True, dir_okay=False),
               help="CSV with the header student_id,name[,email], or as Excel, Moodle "
@@ -560,8 +595,8 @@ def _grade_class(context, manifest, files, output, jobs, as_json, strict, option
         from .classgrade.gradebook import GRADEBOOK_FILES
 
         written = ["grades.csv", *(GRADEBOOK_FILES[f] for f in options["formats"])]
-        click.echo(f"wrote {output}: {', '.join(written)}, problems.csv, feedback/, "
-                   "report.html", err=True)
+        click.echo(f"wrote {output}: {', '.join(written)}, problems.csv, answers.csv, "
+                   "copies.csv, feedback/, report.html", err=True)
     errors = sum(p.level == "error" for p in outcome.problems)
     if strict and errors:
         click.echo(f"--strict: {errors} problem(s) reported as errors", err=True)

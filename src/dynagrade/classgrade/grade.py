@@ -26,7 +26,13 @@ Outputs (built in a staging folder and swapped in whole, :mod:`dynagrade.runs.ou
     feedback/<student_id>.md, feedback/<student_id>.html
     report.html       score histogram, difficulty and discrimination per part (with a
                       caution below 30 students), wrong answers grouped by the
-                      mistake that explains them and the unexplained share per part
+                      mistake that explains them and the unexplained share per part,
+                      mistakes nobody declared (:mod:`.discover`) and copied answers
+                      (:mod:`.copies`)
+    answers.csv       every graded part: status, answer, the mistake named (:mod:`.answered`;
+                      ``dynagrade discover`` reads it)
+    copies.csv        the pairs of students whose wrong answers match each other's keys
+                      or answers beyond chance, with the evidence (never a grade)
 
 A re-run with the same inputs writes the same files.
 """
@@ -53,6 +59,9 @@ from ..runs.caches import file_sha256
 from ..runs.files import write_atomic
 from ..runs.outputs import staging_folder, swap_in
 from ..runs.workers import Pool, default_jobs
+from .answered import answered_csv
+from .copies import copies_csv
+from .findings import class_findings
 from .gradebook import (GRADEBOOK_FILES, gradebook_csv, gradebook_row,
                         platform_gradebook)
 from .overrides import Override, apply_overrides, read_overrides
@@ -167,6 +176,7 @@ def grade_class(manifest_path, paths, out_dir=None, bank: Bank | None = None,
     if "moodle" in formats:
         outcome.problems += missing_emails(manifest)
     solutions = Policy.from_json(manifest.exam.policy).solutions
+    with_findings(outcome, manifest, exercises)
     if out_dir is not None and with_feedback(solutions):
         _add_solutions(outcome, manifest, exercises)
     if out_dir is not None:
@@ -215,6 +225,16 @@ def class_outcome(manifest: Manifest, graded: list[dict[str, ExerciseResult | No
     return ClassOutcome(manifest.exam.title, exercise_ids, rows, problems,
                         part_statistics(ordered_parts, analysed, declared=declared), feedback,
                         timings, rounding, max_total, comments, len(overrides))
+
+
+def with_findings(outcome: ClassOutcome, manifest: Manifest,
+                  exercises: Mapping[str, Exercise],
+                  times: Mapping[tuple[str, str], str] | None = None) -> ClassOutcome:
+    """``outcome`` with the mistakes nobody declared and the copied answers attached
+    (:mod:`.findings`; the report shows them, no grade changes); class grading and the
+    server's report both call it."""
+    outcome.findings = class_findings(manifest, exercises, outcome.records(times))
+    return outcome
 
 
 def part_errors(manifest: Manifest,
@@ -305,6 +325,9 @@ def write_outputs(outcome: ClassOutcome, manifest: Manifest, out: Path, progress
     write_atomic(out / "report.html", report_html(manifest.exam, outcome))
     write_atomic(out / "problems.csv", problems_csv(outcome.problems))
     write_atomic(out / GRADEBOOK_FILES["csv"], gradebook_csv(outcome))
+    write_atomic(out / "answers.csv", answered_csv(outcome.records()))
+    if outcome.findings is not None:
+        write_atomic(out / "copies.csv", copies_csv(outcome.findings.copies))
     for layout in formats:
         write_atomic(out / GRADEBOOK_FILES[layout],
                      platform_gradebook(outcome, layout, assignment or manifest.exam.title))

@@ -6,10 +6,13 @@ statistics and the problems found, as class grading and the server's gradebook b
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Mapping
 
 from ..exam.manifest import StudentEntry
 from ..exam.points import Rounding
 from ..exercise.results import ExerciseResult
+from .answered import Answered, from_results
+from .findings import Findings
 from .gradebook import GradebookRow
 from .stats import PartStats
 from .submissions import Problem
@@ -47,6 +50,14 @@ class ClassOutcome:
     comments: dict[str, list[str]] = field(default_factory=dict)
     #: how many parts the overrides replaced
     overridden: int = 0
+    #: discovered misconceptions and copied answers (:mod:`.findings`; None: not searched)
+    findings: Findings | None = None
+
+    def records(self, times: Mapping[tuple[str, str], str] | None = None) -> list[Answered]:
+        """Every graded part (the points that count, overrides included); ``times`` maps
+        ``(student_id, exercise_id)`` to when it was handed in."""
+        return from_results({student_id: feedback.results
+                             for student_id, feedback in self.feedback.items()}, times)
 
     def summary(self) -> dict:
         """The gradebook and the problems as ``dynagrade grade --json`` prints them."""

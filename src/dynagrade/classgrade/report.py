@@ -14,11 +14,14 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from ..exam.points import Rounding
+from ..i18n import _
 from ..exercise.numbers import answer_text, format_number, percent_text
 from ..exercise.units import with_unit
 from ..render.accessible_svg import accessible_svg, sentence_list
 from ..render.figures import SVG_SETTINGS, inline_svg
 from ..render.sheets import render_template
+from .copies import NEAR_KEYS, NEVER_A_GRADE, THRESHOLD
+from .discover import CHANCE_FACTOR, MIN_SUPPORT, MIN_VARIANTS, PROPOSALS_ONLY
 from .stats import MIN_STUDENTS, PartStats
 
 if TYPE_CHECKING:
@@ -193,13 +196,25 @@ def small_class_caution(stats: list[PartStats]) -> str:
             "them, and the shares of wrong answers, as hints, not measurements.")
 
 
+def findings_settings() -> dict:
+    """The settings the report's sections on discovered mistakes and copied answers
+    state, and their notes in the active language."""
+    return {"discovery": {"min_support": MIN_SUPPORT, "min_variants": MIN_VARIANTS,
+                          "chance_factor": format_number(CHANCE_FACTOR),
+                          "note": _(PROPOSALS_ONLY)},
+            "copying": {"threshold": format_number(THRESHOLD),
+                        "near_keys": format_number(NEAR_KEYS), "note": _(NEVER_A_GRADE)}}
+
+
 def report_html(exam: ExamEntry, outcome) -> str:
     """The class report: summary, histogram, item statistics (with a caution where they
-    rest on few students) and the wrong answers grouped by what explains them."""
+    rest on few students), the wrong answers grouped by what explains them and, where
+    the outcome has them, the mistakes nobody declared and the copied answers."""
     percents = [r.percent for r in outcome.rows if r.status != "absent"]
     return render_template(
         "report.html", exam=exam, outcome=outcome, summary=class_summary(outcome.rows),
         histogram=histogram(percents) if percents else None,
         items=items_svg(outcome.stats) if percents else "", fmt=_stat,
         caution=small_class_caution(outcome.stats), reliability=reliability, share=share,
-        min_students=MIN_STUDENTS, wrong_parts=[s for s in outcome.stats if s.wrong])
+        min_students=MIN_STUDENTS, wrong_parts=[s for s in outcome.stats if s.wrong],
+        findings=outcome.findings, shown=_shown, **findings_settings())

@@ -159,6 +159,13 @@ def _parse(spec: VectorSpec, text: str) -> tuple[list[Expr | None], Expr | None,
     return list(components), unit_tree, ""
 
 
+def answer_components(spec: VectorSpec, answer: str) -> np.ndarray | None:
+    """The answer's components in the part's unit, read as the grader reads them; None
+    when it gives none to compare (unreadable, a unit problem, a wrong count)."""
+    values, _note = _answer_values(spec, answer)
+    return values if isinstance(values, np.ndarray) else None
+
+
 def _answer_values(spec: VectorSpec, answer: str) -> tuple[np.ndarray | Verdict, str]:
     """The answer's components in the part's unit, or the verdict on an answer that
     gives none to compare (unreadable, a unit problem, a wrong count, not finite); and

@@ -9,6 +9,7 @@ from __future__ import annotations
 from starlette.responses import PlainTextResponse
 
 from ..classgrade.gradebook import GRADEBOOK_FILES, gradebook_csv, platform_gradebook
+from ..classgrade.grade import with_findings
 from ..classgrade.outcome import ClassOutcome
 from . import db, gradebook
 from .overrides import overrides_csv
@@ -32,6 +33,20 @@ def class_outcome(server: Server) -> ClassOutcome:
     data, engine = server.data, server.engine
     return gradebook.outcome(data, db.all_answers(engine, data.exam_id),
                              db.stored_overrides(engine, data.exam_id))
+
+
+def reported_outcome(server: Server) -> ClassOutcome:
+    """The class's outcome with the mistakes nobody declared and the copied answers
+    (class grading's :func:`~dynagrade.classgrade.grade.with_findings`), each exercise
+    timed by its latest counted answer."""
+    data = server.data
+    stored = db.all_answers(server.engine, data.exam_id)
+    outcome = gradebook.outcome(data, stored, db.stored_overrides(server.engine, data.exam_id))
+    times: dict[tuple[str, str], str] = {}
+    for answer in gradebook.counted_answers(data, stored).values():
+        key = (answer.student_id, answer.exercise_id)
+        times[key] = max(times.get(key, ""), answer.created_at.isoformat(timespec="seconds"))
+    return with_findings(outcome, data.manifest, data.exercises, times)
 
 
 def grades(server: Server) -> CsvResponse:

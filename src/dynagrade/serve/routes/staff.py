@@ -88,11 +88,13 @@ def submissions_csv(caller: StaffLink, server: ServerDep) -> CsvResponse:
 @router.get("/report.html", response_class=HTMLResponse)
 def class_report(caller: StaffLink, server: ServerDep) -> HTMLResponse:
     """Class grading's report (histogram, item statistics, wrong answers by what explains
-    them) of the counted verdicts and the points set by hand: the document ``dynagrade
-    grade`` saves, with its own inline styles and no script."""
+    them, mistakes nobody declared, copied answers) of the counted verdicts and the
+    points set by hand: the document ``dynagrade grade`` saves, with its own inline
+    styles and no script."""
     from ...classgrade.report import report_html
 
-    return HTMLResponse(report_html(server.data.manifest.exam, downloads.class_outcome(server)),
+    return HTMLResponse(report_html(server.data.manifest.exam,
+                                    downloads.reported_outcome(server)),
                         headers={"Content-Security-Policy": STANDALONE_DOCUMENT_POLICY})
 
 

@@ -1,0 +1,243 @@
+"""Copied-answer detection: wrong answers that are right for someone else.
+
+Every student has their own numbers, so a wrong answer equal, within the part's
+tolerance, to a classmate's reference answer (or to the classmate's own wrong answer)
+is a coincidence whose chance can be measured on the class. For every wrong numeric or
+vector answer ``a`` of student *s* and every other student *t*:
+
+- *s*'s answer **matches** *t* on the part when ``a`` lies within the part's tolerance
+  of *t*'s key (or of *t*'s wrong answer) and *t*'s key is not itself within
+  :data:`NEAR_KEYS` tolerances of *s*'s key (two nearly equal variants make a small slip
+  look like a copy);
+- an answer that a mistake on the student's *own* numbers explains (a misconception or
+  slip the grader named, follow-through, or a proposal of :mod:`.discover`) is an honest
+  mistake first and is no evidence.
+
+**Chance of a match.** The probability that a random other student's key falls within
+the tolerance window around ``a`` is estimated from the spread of the class's keys: with
+``N`` the students on the roster with a variant of the exercise (those absent too: their
+keys are drawn alike) and ``c`` the number of their keys, *s*'s and *t*'s left out,
+within :data:`WIDE` times the tolerance of ``a``,
+
+    p = (c + 1) / ((N - 1) · WIDE)
+
+(the density of keys around ``a``, smoothed by one key). A match on another student's
+answer takes the larger of that and the same estimate over the class's wrong answers.
+**Pair score.** The parts of one pair (both directions; per part the smallest ``p``)
+combine as independent coincidences, ``P = Π p``, and
+
+    E = n (n - 1) / 2 · P
+
+is the number of pairs a class of ``n`` students who handed something in would show with
+coincidences this unlikely (a Bonferroni bound over the class's pairs). With fewer than
+:data:`~.stats.MIN_STUDENTS` keys the spread rests on few numbers, and the report says
+so: the list is then a hint. A pair is listed when ``E ≤`` :data:`THRESHOLD`
+(one class in twenty would show one such pair by chance); the report shows ``−log10 E``
+as its score (1.3 at the threshold, 3 for one class in a thousand). Listed pairs that share a student form
+clusters (a source and several copiers). The list is evidence for a conversation: it
+**never changes a grade**.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import AbstractSet, Iterable, Mapping
+
+import numpy as np
+
+from ..exam.csvcells import csv_text
+from ..i18n import N_
+from ..exam.manifest import Manifest, PartEntry
+from ..exercise.numbers import answer_text
+from .answer_values import Value, answer_value, as_rows, close_to, compared, key_value
+from .answered import Answered
+from .stats import MIN_STUDENTS
+
+#: keys closer than this many tolerances make a part no evidence
+NEAR_KEYS = 3.0
+#: the window, in tolerances, in which the density of keys is counted
+WIDE = 10.0
+#: a pair is listed when a class of its size would show at most this many such pairs by chance
+THRESHOLD = 0.05
+KEY, ANSWER = "key", "answer"
+#: what the report and ``dynagrade discover`` say of the list
+NEVER_A_GRADE = N_("This list never changes a grade: each pair is evidence to look at, and "
+                   "a conversation with the students decides.")
+
+
+@dataclass(frozen=True)
+class Match:
+    """One part on which ``student``'s wrong answer matches ``other``'s key or answer."""
+
+    exercise_id: str
+    part: str
+    unit: str | None
+    student: str
+    other: str
+    #: :data:`KEY` or :data:`ANSWER`: what of ``other``'s it matches
+    against: str
+    answer: str
+    student_key: Value
+    other_key: Value
+    other_answer: str
+    #: the chance estimate ``p`` of the module's docstring
+    chance: float
+    student_time: str = ""
+    other_time: str = ""
+
+
+@dataclass(frozen=True)
+class CopiedPair:
+    """Two students whose answers match beyond chance, with the evidence."""
+
+    students: tuple[str, ...]
+    matches: tuple[Match, ...]
+    #: pairs a class of this size would show by chance (``E``)
+    expected: float
+
+    @property
+    def score(self) -> float:
+        """``−log10 E``: 2 means one class in a hundred would show such a pair by chance."""
+        return -math.log10(max(self.expected, 1e-300))
+
+
+@dataclass(frozen=True)
+class Copies:
+    """The pairs and clusters found, and the number of students compared."""
+
+    pairs: tuple[CopiedPair, ...] = ()
+    clusters: tuple[tuple[str, ...], ...] = ()
+    #: the students who handed something in
+    students: int = 0
+    threshold: float = THRESHOLD
+    #: the numeric and vector parts compared
+    parts: int = 0
+    #: the students on the roster, whose keys give the spread
+    roster: int = 0
+
+    @property
+    def few_keys(self) -> bool:
+        """Whether the spread of keys rests on fewer than :data:`~.stats.MIN_STUDENTS`."""
+        return self.roster < MIN_STUDENTS
+
+
+def detect(manifest: Manifest, records: Iterable[Answered],
+           explained: AbstractSet[tuple[str, str, str]] = frozenset(),
+           threshold: float = THRESHOLD) -> Copies:
+    """The pairs of students whose wrong answers match each other's keys or answers
+    beyond chance; ``explained`` holds ``(student_id, exercise_id, part)`` of answers a
+    mistake on the student's own numbers explains (no evidence)."""
+    by_part = {(r.student_id, r.exercise_id, r.part): r for r in records}
+    present = sorted({r.student_id for r in by_part.values()})
+    n = len(present)
+    best: dict[tuple[str, ...], dict[tuple[str, str], Match]] = {}
+    parts = 0
+    for described in manifest.exercises:
+        for entry in described.parts:
+            if not compared(entry):
+                continue
+            parts += 1
+            for match in _part_matches(manifest, described.id, entry, by_part, explained):
+                pair = tuple(sorted((match.student, match.other)))
+                kept = best.setdefault(pair, {})
+                where = (match.exercise_id, match.part)
+                if where not in kept or match.chance < kept[where].chance:
+                    kept[where] = match
+    pairs = []
+    for pair, matches in best.items():
+        expected = n * (n - 1) / 2 * math.prod(m.chance for m in matches.values())
+        if expected <= threshold:
+            pairs.append(CopiedPair(pair, tuple(matches.values()), expected))
+    pairs.sort(key=lambda p: (p.expected, p.students))
+    return Copies(tuple(pairs), clusters(pairs), n, threshold, parts, len(manifest.students))
+
+
+def _part_matches(manifest: Manifest, exercise_id: str, entry: PartEntry,
+                  by_part: Mapping[tuple[str, str, str], Answered],
+                  explained: AbstractSet[tuple[str, str, str]]) -> list[Match]:
+    """Every match of one part, with its chance."""
+    ids, keys, records = [], [], []
+    for student in manifest.students:
+        variant = student.variant(exercise_id)
+        key = key_value(entry, variant.answers.get(entry.name)) if variant else None
+        if key is not None:
+            ids.append(student.student_id)
+            keys.append(key)
+            records.append(by_part.get((student.student_id, exercise_id, entry.name)))
+    if len(ids) < 2:
+        return []
+    key_rows = as_rows(keys)
+    values: list[Value | None] = [answer_value(entry, r.answer) if r and r.wrong else None
+                                  for r in records]
+    wrong = [i for i, v in enumerate(values) if v is not None]
+    answer_rows = as_rows([v for v in values if v is not None]) if wrong else np.zeros((0, 1))
+    found = []
+    for i in wrong:
+        record, value = records[i], values[i]
+        assert record is not None and value is not None  # a wrong answer has both
+        if (ids[i], exercise_id, entry.name) in explained or record.misconception:
+            continue
+        near_keys = close_to(entry, keys[i], key_rows, NEAR_KEYS)
+        on_key = close_to(entry, value, key_rows) & ~near_keys
+        wide_keys = close_to(entry, value, key_rows, WIDE)
+        on_answer = np.zeros(len(ids), dtype=bool)
+        wide_answers = np.zeros(len(ids), dtype=bool)
+        if len(wrong) > 1:
+            on_answer[wrong] = close_to(entry, value, answer_rows)
+            wide_answers[wrong] = close_to(entry, value, answer_rows, WIDE)
+        on_answer &= ~near_keys & ~on_key
+        on_key[i] = on_answer[i] = False
+        for j in np.flatnonzero(on_key | on_answer):
+            others = np.ones(len(ids), dtype=bool)
+            others[i] = others[j] = False
+            chance = (int((wide_keys & others).sum()) + 1) / ((len(ids) - 1) * WIDE)
+            if on_answer[j]:
+                spread = (int((wide_answers & others).sum()) + 1) / (max(len(wrong) - 1, 1) * WIDE)
+                chance = max(chance, spread)
+            other = records[j]
+            found.append(Match(exercise_id, entry.name, entry.unit, ids[i], ids[j],
+                               KEY if on_key[j] else ANSWER, record.answer or "",
+                               keys[i], keys[j], (other.answer or "") if other else "",
+                               min(chance, 1.0), record.time, other.time if other else ""))
+    return found
+
+
+def clusters(pairs: Iterable[CopiedPair]) -> tuple[tuple[str, ...], ...]:
+    """The groups of students that listed pairs connect, largest first."""
+    parent: dict[str, str] = {}
+
+    def root(x: str) -> str:
+        while parent.setdefault(x, x) != x:
+            x = parent[x]
+        return x
+
+    for pair in pairs:
+        a, b = (root(s) for s in pair.students)
+        if a != b:
+            parent[max(a, b)] = min(a, b)
+    groups: dict[str, list[str]] = {}
+    for student in parent:
+        groups.setdefault(root(student), []).append(student)
+    return tuple(sorted((tuple(sorted(g)) for g in groups.values()),
+                        key=lambda g: (-len(g), g)))
+
+
+COPIES_HEADER = ("cluster", "student_a", "student_b", "pairs_expected_by_chance", "score",
+                 "exercise_id", "part", "answer_of", "matches", "answer", "own_key",
+                 "other_key", "other_answer", "chance", "time_answer", "time_other")
+
+
+def copies_csv(found: Copies) -> str:
+    """``copies.csv``: one row per matching part of every listed pair, with the evidence
+    (both keys, both answers, the chance and the times when known)."""
+    cluster_of = {s: k for k, group in enumerate(found.clusters, 1) for s in group}
+    rows: list[tuple] = [COPIES_HEADER]
+    for pair in found.pairs:
+        for m in pair.matches:
+            rows.append((cluster_of.get(pair.students[0], ""), *pair.students,
+                         f"{pair.expected:.3g}", f"{pair.score:.1f}", m.exercise_id, m.part,
+                         m.student, f"{m.against} of {m.other}", m.answer,
+                         answer_text(m.student_key), answer_text(m.other_key), m.other_answer,
+                         f"{m.chance:.3g}", m.student_time, m.other_time))
+    return csv_text(rows)
