@@ -12,7 +12,11 @@ The template's context (docs/authoring.md, "Worked solutions"):
   with the project's number formatter and without a unit; ``{{ si.alpha }}`` is also every
   parameter in SI (a value the solver returns under the same name wins);
   ``{{ si.alpha | deg }}`` prints an angle in degrees, ``{{ si.a | abs }}`` a magnitude,
-  ``{{ si.r[0] }}`` a vector's component.
+  ``{{ si.r[0] }}`` a vector's component;
+- ``{{ checks.frictionless }}``: what the exercise's check of that name recomputed by its
+  own route (:mod:`.checks`), in SI like ``si``: the number a closing sanity line
+  ("with mu -> 0 this is the frictionless ...") prints, which ``verify`` has compared with
+  the key. The checks run only when the template names ``checks``.
 
 The solution is rendered from the parameter values alone (the solver runs again), so an
 exam manifest, which stores each variant's parameters, is all a later rendering needs.
@@ -89,7 +93,33 @@ def solution_context(exercise: Exercise, variant: Variant) -> dict[str, Any]:
                for part in exercise.parts}
     si = {name: SiValue(value) for name, value in solver_values(exercise, variant).items()}
     shown = {p.name: ShownValue(p, variant.params[p.name]) for p in exercise.params}
-    return {**shown, "answers": _Named("answers", answers), "si": _Named("si", si)}
+    return {**shown, "answers": _Named("answers", answers), "si": _Named("si", si),
+            "checks": _Checks(exercise, variant)}
+
+
+class _Checks(_Named):
+    """``checks`` in the template: each check's recomputed value, computed when the
+    template first reads one (most solutions print none)."""
+
+    def __init__(self, exercise: Exercise, variant: Variant):
+        super().__init__("checks", {})
+        self._source: tuple[Exercise, Variant] | None = (exercise, variant)
+
+    def __getitem__(self, name: str):
+        if self._source is not None:
+            exercise, variant = self._source
+            self._source = None
+            self._values = {name: SiValue(value) for name, value
+                            in check_values(exercise, variant).items()}
+        return super().__getitem__(name)
+
+
+def check_values(exercise: Exercise, variant: Variant) -> dict[str, Any]:
+    """Each of the exercise's checks' recomputed value for ``variant``, in SI, by the
+    check's name."""
+    from .checks.run import recomputed_values
+
+    return recomputed_values(exercise, exercise.si(variant.params))
 
 
 def solver_values(exercise: Exercise, variant: Variant) -> dict[str, Any]:

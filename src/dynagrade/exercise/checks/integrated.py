@@ -1,0 +1,70 @@
+"""A key read off the equations of motion integrated numerically (``scipy``'s
+``solve_ivp``): the peak height where the vertical speed turns, the range where the
+height returns to zero, the period between two upward zero crossings, the speed at an
+event. No closed form is used: only the equations of motion and the initial state."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Callable, Mapping, Sequence
+
+from ..params import ParamValues
+from .base import Check, CheckCase, Outcome
+
+RightHandSide = Callable[[float, Any, ParamValues], Sequence[float]]
+Reading = Callable[[float, Any, ParamValues], Any]
+
+#: the integrator's own tolerances: far below the check's, so the check measures the key
+_INTEGRATION_RTOL = 1e-10
+_INTEGRATION_ATOL = 1e-12
+
+
+@dataclass(frozen=True)
+class Integrated(Check):
+    """Integrate ``y' = rhs(t, y, p)`` from ``start(p)`` over ``[0, horizon(p, solved)]``
+    and compare ``read(t, y, p)`` with the solver's ``key``: at the ``occurrence``-th time
+    ``event(t, y, p)`` crosses zero (in ``direction``: +1 upward, -1 downward, 0 either)
+    after the start, or at the horizon when there is no ``event``. An event that never
+    comes within the horizon is a disagreement (the recomputed value is ``nan``)."""
+
+    key: str
+    rhs: RightHandSide
+    start: Callable[[ParamValues], Sequence[float]]
+    horizon: Callable[[ParamValues, Mapping[str, Any]], float]
+    read: Reading
+    name: str
+    event: Callable[[float, Any, ParamValues], float] | None = None
+    direction: float = 0.0
+    occurrence: int = 1
+    rtol: float = 1e-6
+    atol: float = 0.0
+
+    def outcome(self, case: CheckCase) -> Outcome:
+        return Outcome(self.name, self.key, case.value(self.key), self.recompute(case),
+                       self.rtol, self.atol)
+
+    def recompute(self, case: CheckCase) -> Any:
+        from scipy.integrate import solve_ivp  # here: listing the bank imports no scipy
+
+        p = case.params
+        horizon = float(self.horizon(p, case.solved))
+        events = None
+        if self.event is not None:
+            event = self.event
+
+            def crossing(t, y):
+                return event(t, y, p)
+
+            crossing.direction = self.direction  # type: ignore[attr-defined]
+            events = [crossing]
+        solution = solve_ivp(lambda t, y: self.rhs(t, y, p), (0.0, horizon),
+                             list(self.start(p)), method="DOP853", events=events,
+                             rtol=_INTEGRATION_RTOL, atol=_INTEGRATION_ATOL)
+        if events is None:
+            return self.read(float(solution.t[-1]), solution.y[:, -1], p)
+        later = [(t, y) for t, y in zip(solution.t_events[0], solution.y_events[0])
+                 if t > horizon * 1e-9]  # a start on the event is no crossing
+        if len(later) < self.occurrence:
+            return float("nan")
+        t, y = later[self.occurrence - 1]
+        return self.read(float(t), y, p)
