@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector,
                                 per_draw)
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import kinematics
 
 
@@ -28,6 +29,11 @@ def solve(p):
 def _centripetal_only(p):
     phi, phidot, _ = _angles(p)
     return tuple(kinematics.circular_acceleration(p.r, phi, phidot, 0.0))
+
+
+def _acceleration_magnitude(p, solved):
+    """eq. (1.20) with phi = c t^2: normal r phi'^2 and tangential r phi'' components."""
+    return p.r * np.hypot((2 * p.c * p.t) ** 2, 2 * p.c)
 
 
 EXERCISE = Exercise(
@@ -79,6 +85,10 @@ $\ddot\varphi = 2c$ = {{ si.phiddot }} rad/s².
    $|a| = r\sqrt{\dot\varphi^4 + \ddot\varphi^2}$ = {{ answers.a_abs }}.
 """,
     solve=solve,
+    checks=(
+        Recompute("a_abs", _acceleration_magnitude, name="polar_components"),
+        Recompute("speed", lambda p, s: p.r * 2 * p.c * p.t, name="speed_eq_1_19"),
+    ),
     parts=(
         Vector("v", "velocity", question=1, unit="m/s", size=2, points=2,
                misconceptions=(

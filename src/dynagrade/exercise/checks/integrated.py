@@ -17,6 +17,11 @@ Reading = Callable[[float, Any, ParamValues], Any]
 #: the integrator's own tolerances: far below the check's, so the check measures the key
 _INTEGRATION_RTOL = 1e-10
 _INTEGRATION_ATOL = 1e-12
+#: a crossing this close to where the integration started (a fraction of the horizon) is
+#: the start itself; after a crossing the integration moves on by _NUDGE before it looks
+#: for the next
+_SAME_TIME = 1e-9
+_NUDGE = 1e-7
 
 
 @dataclass(frozen=True)
@@ -48,23 +53,31 @@ class Integrated(Check):
 
         p = case.params
         horizon = float(self.horizon(p, case.solved))
-        events = None
-        if self.event is not None:
-            event = self.event
 
-            def crossing(t, y):
-                return event(t, y, p)
-
-            crossing.direction = self.direction  # type: ignore[attr-defined]
-            events = [crossing]
-        solution = solve_ivp(lambda t, y: self.rhs(t, y, p), (0.0, horizon),
-                             list(self.start(p)), method="DOP853", events=events,
+        def run(t0, y0, until, events=None):
+            return solve_ivp(lambda t, y: self.rhs(t, y, p), (t0, until), y0,
+                             method="DOP853", events=events,
                              rtol=_INTEGRATION_RTOL, atol=_INTEGRATION_ATOL)
-        if events is None:
+
+        if self.event is None:
+            solution = run(0.0, list(self.start(p)), horizon)
             return self.read(float(solution.t[-1]), solution.y[:, -1], p)
-        later = [(t, y) for t, y in zip(solution.t_events[0], solution.y_events[0])
-                 if t > horizon * 1e-9]  # a start on the event is no crossing
-        if len(later) < self.occurrence:
-            return float("nan")
-        t, y = later[self.occurrence - 1]
-        return self.read(float(t), y, p)
+        event = self.event
+
+        def crossing(t, y):
+            return event(t, y, p)
+
+        crossing.terminal = True  # type: ignore[attr-defined]
+        crossing.direction = self.direction  # type: ignore[attr-defined]
+        t0, y0, seen = 0.0, list(self.start(p)), 0
+        while True:  # from one crossing to the next, stopping at each
+            solution = run(t0, y0, horizon, [crossing])
+            if solution.status != 1:  # the horizon came first
+                return float("nan")
+            t, y = float(solution.t_events[0][0]), solution.y_events[0][0]
+            if t > t0 + _SAME_TIME * horizon:  # a start on the event is no crossing
+                seen += 1
+                if seen == self.occurrence:
+                    return self.read(t, y, p)
+            step = run(t, y, t + _NUDGE * horizon)  # past the crossing, to look for the next
+            t0, y0 = float(step.t[-1]), step.y[:, -1]
