@@ -30,7 +30,11 @@ class Integrated(Check):
     and compare ``read(t, y, p)`` with the solver's ``key``: at the ``occurrence``-th time
     ``event(t, y, p)`` crosses zero (in ``direction``: +1 upward, -1 downward, 0 either)
     after the start, or at the horizon when there is no ``event``. An event that never
-    comes within the horizon is a disagreement (the recomputed value is ``nan``)."""
+    comes within the horizon is a disagreement (the recomputed value is ``nan``).
+
+    ``from_keys`` names solver values the equations of motion take beside the parameters
+    (``p.k`` then reads the solver's ``k``): keys identified from a measurement must
+    reproduce it when the motion they describe is integrated."""
 
     key: str
     rhs: RightHandSide
@@ -41,6 +45,7 @@ class Integrated(Check):
     event: Callable[[float, Any, ParamValues], float] | None = None
     direction: float = 0.0
     occurrence: int = 1
+    from_keys: tuple[str, ...] = ()
     rtol: float = 1e-6
     atol: float = 0.0
 
@@ -52,6 +57,8 @@ class Integrated(Check):
         from scipy.integrate import solve_ivp  # here: listing the bank imports no scipy
 
         p = case.params
+        if self.from_keys:
+            p = ParamValues({**p, **{key: float(case.value(key)) for key in self.from_keys}})
         horizon = float(self.horizon(p, case.solved))
 
         def run(t0, y0, until, events=None):
