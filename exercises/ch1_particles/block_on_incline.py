@@ -101,6 +101,8 @@ slides down (eq. (1.74)).
    keeps speeding up and never comes to rest — **{{ answers.stops }}**.
 {%- endif %}
 4. **Formula.** $\ddot x_1$ = `{{ answers.a_formula }}`.
+5. **Check.** Without friction ($\mu \to 0$, Example 1.8) the block would speed up at
+   $g\sin\alpha$ = {{ checks.frictionless }} m/s²: friction only ever lowers $\ddot x_1$.
 """,
     solve=solve,
     checks=(

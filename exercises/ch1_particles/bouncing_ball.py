@@ -62,6 +62,8 @@ floor reverses the normal velocity and scales it by the coefficient of restituti
 4. **Third rebound.** Every impact multiplies the height by $e^2$, so after three impacts
    $h_3 = e^6 h_0$ = {{ answers.h3 }}.
 5. **Formula.** $h_1$ = `{{ answers.h1_formula }}`.
+6. **Check.** With $e = 1$ (a perfectly elastic floor) the ball would come back to
+   $h_1 = h_0$ = {{ checks.elastic }} m and lose no energy.
 """,
     solve=solve,
     checks=(

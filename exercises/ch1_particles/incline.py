@@ -83,8 +83,8 @@ slides up.
 3. **Time.** The deceleration is constant, so the speed $v_0 - at$ vanishes at
    $t = v_0/a$ = {{ answers.t_stop }}.
 4. **Formula.** $\Delta x$ = `{{ answers.delta_x_formula }}`.
-**Check.** Without friction ($\mu \to 0$) the block would slide up
-$v_0^2/(2g\sin\alpha)$ = {{ checks.frictionless }} m, farther than with it, as it must.
+5. **Check.** Without friction ($\mu \to 0$) the block would slide up
+   $v_0^2/(2g\sin\alpha)$ = {{ checks.frictionless }} m, farther than with it, as it must.
 """,
     solve=solve,
     checks=(

@@ -97,6 +97,8 @@ $v_n' = e\,v_n$ = {{ si.v_n_out }} m/s (with $e$ = {{ e }}) and $v_t' = v_t$.
 4. **Impulse.** Linear momentum balance across the impact: the impulse equals the change of
    momentum, which is purely normal, $J = m(v_n' + v_n) = (1 + e)\, m v_n$ = {{ answers.J }}.
 5. **Formula.** $\theta'$ = `{{ answers.theta_formula }}`.
+6. **Check.** With $e = 1$ the ball would leave as fast as it came,
+   $v'$ = {{ checks.elastic }} m/s, mirrored about the normal.
 """,
     solve=solve,
     checks=(

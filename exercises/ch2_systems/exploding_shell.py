@@ -78,8 +78,8 @@ $v_0\cos\alpha$ = {{ si.v_apex }} m/s, reached at $t_{\text{top} } = v_0\sin\alp
    $x_C = (m_1 x_1 + (M - m_1)\,x_2)/M$ = {{ answers.x_c }} — exactly the range
    $v_0^2\sin 2\alpha/g$ the shell would have had without exploding: only external forces
    (gravity) move the centre of mass.
-**Check.** The explosion's forces are internal, so the centre of mass lands where the
-intact shell would have: $v_0^2\sin 2\alpha/g$ = {{ checks.centre_of_mass_range }} m, eq. (1.80).
+4. **Check.** The intact shell's range, eq. (1.80), is $v_0^2\sin 2\alpha/g$ =
+   {{ checks.centre_of_mass_range }} m: the same number as $x_C$.
 """,
     solve=solve,
     checks=(

@@ -123,6 +123,8 @@ $m_2$ = {{ m2 }}).
    $\Delta T = \frac{m_1 m_2\,(1 - e^2)\,(v_1 - v_2)^2}{2\,(m_1 + m_2)}$
    = {{ answers.dT }}.
 4. **Formula.** $\Delta T$ = `{{ answers.dT_formula }}`.
+5. **Check.** With $e = 1$ the factor $1 - e^2$ vanishes: an elastic impact loses
+   $\Delta T$ = {{ checks.elastic }} J.
 """,
     solve=solve,
     checks=(

@@ -47,10 +47,6 @@ def _matrix_by_hand(p):
     return about_e1 @ about_e3
 
 
-def _vector(p):
-    return np.array([p.a1, p.a2, p.a3])
-
-
 EXERCISE = Exercise(
     id="active-passive-rotation",
     title="Active and passive rotations",

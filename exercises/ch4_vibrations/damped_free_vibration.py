@@ -103,6 +103,8 @@ $\ddot x + 2 \zeta \omega_n \dot x + \omega_n^2 x = 0$ (Section 4.3.2).
 4. Successive peaks are one period $T_d$ apart, so their ratio is
    $e^{\zeta \omega_n T_d}$ and the logarithmic decrement is
    $\delta = \zeta \omega_n T_d = 2\pi\zeta/\sqrt{1 - \zeta^2}$ = {{ answers.delta }}.
+5. **Check.** Without damping ($c \to 0$) the oscillator would swing at
+   $\omega_d = \omega_n$ = {{ checks.undamped }} rad/s; damping only slows it.
 """,
     solve=solve,
     checks=(

@@ -91,6 +91,8 @@ $e^{\delta}$; from $\delta$ and the measured period we recover $\zeta$, $\omega_
    that is $\omega_n$ = {{ answers.omega_n }}.
 4. **Stiffness and damping.** With $m$ = {{ m }}: $k = m\,\omega_n^2$, so $k$ = {{ answers.k }},
    and $c = 2\zeta\sqrt{k m}$, so $c$ = {{ answers.c }}.
+5. **Check.** Without decay ($x_n = x_0$, so $\zeta = 0$) the measured frequency would be
+   the natural one, $2\pi/T_d$ = {{ checks.undamped }} rad/s, below the $\omega_n$ found.
 """,
     solve=solve,
     checks=(

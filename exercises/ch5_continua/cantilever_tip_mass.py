@@ -73,8 +73,8 @@ system is one mass on the tip spring (effective mass and Rayleigh's estimate, Se
    $k$ = {{ si.k }} N/m. With the tip mass $m$ = {{ m }},
    $$\omega \approx \sqrt{\frac{k}{m + m_{\mathrm{eff} } } },$$
    here $\omega$ = {{ si.omega }} rad/s, and $f = \omega/(2\pi)$ = {{ answers.f }}.
-**Check.** Were the beam massless ($\rho \to 0$), the tip mass alone would give
-$\sqrt{k/m}/(2\pi)$ = {{ checks.massless_beam }} Hz: the beam's own mass lowers the frequency.
+3. **Check.** Were the beam massless ($\rho \to 0$), the tip mass alone would give
+   $\sqrt{k/m}/(2\pi)$ = {{ checks.massless_beam }} Hz: the beam's own mass lowers the frequency.
 """,
     solve=solve,
     checks=(
