@@ -17,6 +17,20 @@ def _sliding(t, y, p):
     return (y[1], -p.mu * p.g)
 
 
+def _pushed_off(p):
+    return (0.0, p.v0)
+
+
+def _longer_than_the_slide(p, solved):
+    """The slide lasts v0 / (mu g)."""
+    return 2 * p.v0 / (p.mu * p.g)
+
+
+def _speed(t, y, p):
+    """The speed, zero when the block stops."""
+    return y[1]
+
+
 EXERCISE = Exercise(
     id="frictional-sliding-stop",
     title="Frictional sliding to rest",
@@ -56,12 +70,12 @@ $T_2 - T_1 = W_{12}$, eq. (1.87), between the start ($T_1 = \tfrac{1}{2} m v_0^2
 """,
     solve=solve,
     checks=(
-        Integrated("dx", _sliding, lambda p: (0.0, p.v0), lambda p, s: 2 * p.v0 / (p.mu * p.g),
+        Integrated("dx", _sliding, _pushed_off, _longer_than_the_slide,
                    lambda t, y, p: y[0], name="integrated_slide",
-                   event=lambda t, y, p: y[1], direction=-1),
-        Integrated("t_stop", _sliding, lambda p: (0.0, p.v0), lambda p, s: 2 * p.v0 / (p.mu * p.g),
+                   event=_speed, direction=-1),
+        Integrated("t_stop", _sliding, _pushed_off, _longer_than_the_slide,
                    lambda t, y, p: t, name="integrated_stop_time",
-                   event=lambda t, y, p: y[1], direction=-1),
+                   event=_speed, direction=-1),
         # work-energy balance, eq. (1.87): the kinetic energy is spent against friction
         Balance("energy", lambda p, s: p.m * p.v0**2 / 2, lambda p, s: abs(s["W"]),
                 name="work_energy"),

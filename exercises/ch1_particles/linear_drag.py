@@ -32,6 +32,11 @@ def _slowed(t, y, p):
     return y[1] - p.fraction * p.v0
 
 
+def _ten_decay_times(p, solved):
+    """Longer than the slowing to v1 >= 0.2 v0 takes (ln 5 decay times)."""
+    return 10 / p.k
+
+
 EXERCISE = Exercise(
     id="linear-drag-coasting",
     title="Coasting against linear drag",
@@ -78,9 +83,9 @@ integrate (Example 1.2).
     checks=(
         Integrated("v_t", _drag, _start, lambda p, s: p.t, lambda t, y, p: y[1],
                    name="integrated_speed"),
-        Integrated("t_1", _drag, _start, lambda p, s: 10 / p.k, lambda t, y, p: t,
+        Integrated("t_1", _drag, _start, _ten_decay_times, lambda t, y, p: t,
                    name="integrated_time_to_v1", event=_slowed, direction=-1),
-        Integrated("x_1", _drag, _start, lambda p, s: 10 / p.k, lambda t, y, p: y[0],
+        Integrated("x_1", _drag, _start, _ten_decay_times, lambda t, y, p: y[0],
                    name="integrated_distance_to_v1", event=_slowed, direction=-1),
         # after many decay times the distance is within e^-40 of the total
         Integrated("x_total", _drag, _start, lambda p, s: 40 / p.k, lambda t, y, p: y[0],

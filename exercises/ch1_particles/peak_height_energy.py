@@ -25,6 +25,16 @@ def sin_and_cos_differ(p):
     return abs(np.tan(p.alpha) - 1) > 0.02
 
 
+def _launch(p):
+    """The launch state of eq. (1.75)."""
+    return launched(p.v0, p.alpha)
+
+
+def _longer_than_the_rise(p, solved):
+    """The rise takes v0 sin(alpha) / g at most."""
+    return 2 * p.v0 / p.g
+
+
 EXERCISE = Exercise(
     id="peak-height-by-energy",
     title="Peak height of a throw by the energy balance",
@@ -64,10 +74,9 @@ Only gravity acts during the flight and gravity is conservative, so $T + V$ is c
 """,
     solve=solve,
     checks=(
-        Integrated("h", thrown, lambda p: launched(p.v0, p.alpha), lambda p, s: 2 * p.v0 / p.g,
+        Integrated("h", thrown, _launch, _longer_than_the_rise,
                    lambda t, y, p: y[1], name="integrated_peak", event=rising, direction=-1),
-        Integrated("v_top", thrown, lambda p: launched(p.v0, p.alpha),
-                   lambda p, s: 2 * p.v0 / p.g, lambda t, y, p: np.hypot(y[2], y[3]),
+        Integrated("v_top", thrown, _launch, _longer_than_the_rise, lambda t, y, p: np.hypot(y[2], y[3]),
                    name="integrated_speed_at_peak", event=rising, direction=-1),
         # energy conservation, eq. (1.102): T0 = T_top + m g h
         Balance("energy", lambda p, s: s["T0"], lambda p, s: s["T_top"] + p.m * p.g * s["h"],

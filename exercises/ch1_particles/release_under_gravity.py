@@ -28,6 +28,15 @@ def _no_half(p):
     return p.h0 + p.v02 * p.t - p.g * p.t**2
 
 
+def _released(p):
+    """The state at release: at height h0 with the velocity (v01, v02)."""
+    return (0.0, p.h0, p.v01, p.v02)
+
+
+def _until_t(p, solved):
+    return p.t
+
+
 EXERCISE = Exercise(
     id="release-under-gravity",
     title="Release under gravity: position and velocity at time t",
@@ -77,9 +86,9 @@ $v_1(0)$ = {{ v01 }}, $v_2(0)$ = {{ v02 }}; $t$ = {{ t }}, $g$ = {{ g }}.
 """,
     solve=solve,
     checks=(
-        Integrated("r_t", thrown, lambda p: (0.0, p.h0, p.v01, p.v02), lambda p, s: p.t,
+        Integrated("r_t", thrown, _released, _until_t,
                    lambda t, y, p: (y[0], y[1]), name="integrated_position", atol=1e-9),
-        Integrated("v_t", thrown, lambda p: (0.0, p.h0, p.v01, p.v02), lambda p, s: p.t,
+        Integrated("v_t", thrown, _released, _until_t,
                    lambda t, y, p: (y[2], y[3]), name="integrated_velocity", atol=1e-9),
     ),
     parts=(

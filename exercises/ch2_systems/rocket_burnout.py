@@ -30,6 +30,14 @@ def _ascent(t, y, p):
     return (y[1], p.u * q / (p.m0 - q * t) - p.g)
 
 
+def _on_the_pad(p):
+    return (0.0, 0.0)
+
+
+def _until_burnout(p, solved):
+    return p.tb
+
+
 EXERCISE = Exercise(
     id="rocket-burnout-speed",
     title="Rocket burn-out speed",
@@ -83,9 +91,9 @@ $m(t)\,\dot v = q u - m(t)\,g, \qquad m(t) = m_0 - qt$.
 """,
     solve=solve,
     checks=(
-        Integrated("v_b", _ascent, lambda p: (0.0, 0.0), lambda p, s: p.tb, lambda t, y, p: y[1],
+        Integrated("v_b", _ascent, _on_the_pad, _until_burnout, lambda t, y, p: y[1],
                    name="integrated_speed"),
-        Integrated("h_b", _ascent, lambda p: (0.0, 0.0), lambda p, s: p.tb, lambda t, y, p: y[0],
+        Integrated("h_b", _ascent, _on_the_pad, _until_burnout, lambda t, y, p: y[0],
                    name="integrated_height"),
         Recompute("F", lambda p, s: p.u * p.mf / p.tb, name="thrust"),
     ),

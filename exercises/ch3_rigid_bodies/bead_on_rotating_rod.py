@@ -23,6 +23,15 @@ def _on_the_rod(t, y, p):
     return (y[1], p.Omega**2 * y[0])
 
 
+def _at_rest_on_the_rod(p):
+    """At r0, at rest relative to the rod."""
+    return (p.r0, 0.0)
+
+
+def _until_t(p, solved):
+    return p.t
+
+
 EXERCISE = Exercise(
     id="bead-on-rotating-rod",
     title="Bead on a rotating rod",
@@ -72,9 +81,9 @@ to the rod, in the horizontal plane, the rod must supply the Coriolis term.
 """,
     solve=solve,
     checks=(
-        Integrated("r_t", _on_the_rod, lambda p: (p.r0, 0.0), lambda p, s: p.t,
+        Integrated("r_t", _on_the_rod, _at_rest_on_the_rod, _until_t,
                    lambda t, y, p: y[0], name="integrated_position"),
-        Integrated("rdot_t", _on_the_rod, lambda p: (p.r0, 0.0), lambda p, s: p.t,
+        Integrated("rdot_t", _on_the_rod, _at_rest_on_the_rod, _until_t,
                    lambda t, y, p: y[1], name="integrated_speed"),
         # the rod supplies the Coriolis force across it: N = 2 m Omega r'
         Recompute("N", lambda p, s: 2 * p.m * p.Omega * s["rdot_t"], name="coriolis_force"),

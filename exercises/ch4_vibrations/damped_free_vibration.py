@@ -63,6 +63,11 @@ def _peak(t, y, p):
     return y[1]
 
 
+def _at_a_peak(p):
+    """Released from rest at x = 1: a peak."""
+    return (1.0, 0.0)
+
+
 EXERCISE = Exercise(
     id="damped-free-vibration",
     title="Mass-spring-damper: free damped vibration",
@@ -109,9 +114,9 @@ $\ddot x + 2 \zeta \omega_n \dot x + \omega_n^2 x = 0$ (Section 4.3.2).
     solve=solve,
     checks=(
         # released at a peak, the next peak comes one damped period later, e^delta lower
-        Integrated("T_d", _oscillator, lambda p: (1.0, 0.0), _horizon, lambda t, y, p: t,
+        Integrated("T_d", _oscillator, _at_a_peak, _horizon, lambda t, y, p: t,
                    name="integrated_period", event=_peak, direction=-1),
-        Integrated("delta", _oscillator, lambda p: (1.0, 0.0), _horizon,
+        Integrated("delta", _oscillator, _at_a_peak, _horizon,
                    lambda t, y, p: -np.log(y[0]), name="integrated_decay", event=_peak,
                    direction=-1),
         Recompute("zeta", lambda p, s: p.c / (2 * np.sqrt(p.k * p.m)), name="c_over_c_critical"),

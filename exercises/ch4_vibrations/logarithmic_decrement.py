@@ -45,6 +45,11 @@ def _next_peak(t, y, p):
     return y[1]
 
 
+def _at_a_peak(p):
+    """Released from rest at x = 1: a peak."""
+    return (1.0, 0.0)
+
+
 EXERCISE = Exercise(
     id="logarithmic-decrement-measurement",
     title="Damping from a measured decay",
@@ -98,10 +103,10 @@ $e^{\delta}$; from $\delta$ and the measured period we recover $\zeta$, $\omega_
     checks=(
         # released at a peak (x = 1, x' = 0), the identified oscillator must peak again
         # after the measured period T_d and have shrunk by e^delta
-        Integrated("omega_d", _identified_oscillator, lambda p: (1.0, 0.0), _decay_horizon,
+        Integrated("omega_d", _identified_oscillator, _at_a_peak, _decay_horizon,
                    lambda t, y, p: 2 * np.pi / t, name="identified_period",
                    event=_next_peak, direction=-1, from_keys=("k", "c")),
-        Integrated("delta", _identified_oscillator, lambda p: (1.0, 0.0), _decay_horizon,
+        Integrated("delta", _identified_oscillator, _at_a_peak, _decay_horizon,
                    lambda t, y, p: -np.log(y[0]), name="identified_decay",
                    event=_next_peak, direction=-1, from_keys=("k", "c")),
         # no decay (x_n -> x_0): no damping, and omega_n is the measured 2 pi / T_d

@@ -40,6 +40,15 @@ def _two_masses(t, y, p):
     return (y[2], y[3], (-p.k * x1 - p.kc * (x1 - x2)) / p.m, (-p.k * x2 - p.kc * (x2 - x1)) / p.m)
 
 
+def _first_pulled_aside(p):
+    """Mass 1 held at a, mass 2 at rest in place, both released."""
+    return (p.a, 0.0, 0.0, 0.0)
+
+
+def _until_t1(p, solved):
+    return p.t1
+
+
 EXERCISE = Exercise(
     id="modal-decomposition-coupled-masses",
     title="Coupled masses released from rest: modal decomposition",
@@ -95,9 +104,9 @@ an amplitude fixed by the initial state (modal decomposition, Section 4.4.4).
 """,
     solve=solve,
     checks=(
-        Integrated("x1", _two_masses, lambda p: (p.a, 0.0, 0.0, 0.0), lambda p, s: p.t1,
+        Integrated("x1", _two_masses, _first_pulled_aside, _until_t1,
                    lambda t, y, p: y[0], name="integrated_x1", atol=1e-9),
-        Integrated("x2", _two_masses, lambda p: (p.a, 0.0, 0.0, 0.0), lambda p, s: p.t1,
+        Integrated("x2", _two_masses, _first_pulled_aside, _until_t1,
                    lambda t, y, p: y[1], name="integrated_x2", atol=1e-9),
         # in phase the coupling spring is idle; in antiphase it is stretched twice
         Recompute("omega1", lambda p, s: np.sqrt(p.k / p.m), name="in_phase"),

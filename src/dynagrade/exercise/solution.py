@@ -114,12 +114,22 @@ class _Checks(_Named):
         return super().__getitem__(name)
 
 
+#: the latest variant's check values, as (exercise, its parameters, values): rendering a
+#: solution and checking its numbers ask for the same variant's, which run integrations
+_LATEST_CHECKS: list = []
+
+
 def check_values(exercise: Exercise, variant: Variant) -> dict[str, Any]:
     """Each of the exercise's checks' recomputed value for ``variant``, in SI, by the
-    check's name."""
+    check's name (the latest variant's are kept)."""
     from .checks.run import recomputed_values
 
-    return recomputed_values(exercise, exercise.si(variant.params))
+    params = dict(variant.params)
+    if _LATEST_CHECKS and _LATEST_CHECKS[0] is exercise and _LATEST_CHECKS[1] == params:
+        return dict(_LATEST_CHECKS[2])
+    values = recomputed_values(exercise, exercise.si(variant.params))
+    _LATEST_CHECKS[:] = [exercise, params, values]
+    return dict(values)
 
 
 def solver_values(exercise: Exercise, variant: Variant) -> dict[str, Any]:

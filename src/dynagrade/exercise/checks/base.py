@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from abc import ABC, abstractmethod
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
 from ..numbers import answer_text
@@ -24,11 +24,20 @@ RTOL = 1e-6
 @dataclass(frozen=True)
 class CheckCase:
     """One variant as a check sees it: ``params`` in SI, ``solved`` what the solver returned
-    (SI), and ``resolve`` the solver run again with some parameters changed (SI)."""
+    (SI), and ``resolve`` the solver run again with some parameters changed (SI).
+    ``shared`` keeps what several checks of the variant compute alike (one integration
+    read for the range and for the flight time), by a key the check chooses."""
 
     params: ParamValues
     solved: Mapping[str, Any]
     resolve: Callable[[Mapping[str, float]], Mapping[str, Any]]
+    shared: dict = field(default_factory=dict, compare=False)
+
+    def once(self, key: Any, compute: Callable[[], Any]) -> Any:
+        """``compute()``, the first time a check of this variant asks for ``key``."""
+        if key not in self.shared:
+            self.shared[key] = compute()
+        return self.shared[key]
 
     def value(self, key: str) -> Any:
         """The solver's value of ``key``; a key the solver does not return is the check's

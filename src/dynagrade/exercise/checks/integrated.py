@@ -15,7 +15,7 @@ RightHandSide = Callable[[float, Any, ParamValues], Sequence[float]]
 Reading = Callable[[float, Any, ParamValues], Any]
 
 #: the integrator's own tolerances: far below the check's, so the check measures the key
-_INTEGRATION_RTOL = 1e-10
+_INTEGRATION_RTOL = 1e-9
 _INTEGRATION_ATOL = 1e-12
 #: a crossing this close to where the integration started (a fraction of the horizon) is
 #: the start itself; after a crossing the integration moves on by _NUDGE before it looks
@@ -54,12 +54,26 @@ class Integrated(Check):
                        self.rtol, self.atol)
 
     def recompute(self, case: CheckCase) -> Any:
+        """What ``read`` gives at the event (or the horizon); ``nan`` when the event does
+        not come. Checks of the variant that integrate the same motion to the same event
+        share one integration."""
+        p = self._params(case)
+        key = (self.rhs, self.start, self.horizon, self.event, self.direction,
+               self.occurrence, self.from_keys)
+        reached = case.once(key, lambda: self._integrate(p, case.solved))
+        return float("nan") if reached is None else self.read(reached[0], reached[1], p)
+
+    def _params(self, case: CheckCase) -> ParamValues:
+        if not self.from_keys:
+            return case.params
+        return ParamValues({**case.params,
+                            **{key: float(case.value(key)) for key in self.from_keys}})
+
+    def _integrate(self, p: ParamValues, solved: Mapping[str, Any]) -> tuple[float, Any] | None:
+        """``(t, y)`` at the event (or the horizon), ``None`` when the event does not come."""
         from scipy.integrate import solve_ivp  # here: listing the bank imports no scipy
 
-        p = case.params
-        if self.from_keys:
-            p = ParamValues({**p, **{key: float(case.value(key)) for key in self.from_keys}})
-        horizon = float(self.horizon(p, case.solved))
+        horizon = float(self.horizon(p, solved))
 
         def run(t0, y0, until, events=None):
             return solve_ivp(lambda t, y: self.rhs(t, y, p), (t0, until), y0,
@@ -68,7 +82,7 @@ class Integrated(Check):
 
         if self.event is None:
             solution = run(0.0, list(self.start(p)), horizon)
-            return self.read(float(solution.t[-1]), solution.y[:, -1], p)
+            return float(solution.t[-1]), solution.y[:, -1]
         event = self.event
 
         def crossing(t, y):
@@ -80,11 +94,11 @@ class Integrated(Check):
         while True:  # from one crossing to the next, stopping at each
             solution = run(t0, y0, horizon, [crossing])
             if solution.status != 1:  # the horizon came first
-                return float("nan")
+                return None
             t, y = float(solution.t_events[0][0]), solution.y_events[0][0]
             if t > t0 + _SAME_TIME * horizon:  # a start on the event is no crossing
                 seen += 1
                 if seen == self.occurrence:
-                    return self.read(t, y, p)
+                    return t, y
             step = run(t, y, t + _NUDGE * horizon)  # past the crossing, to look for the next
             t0, y0 = float(step.t[-1]), step.y[:, -1]
