@@ -147,6 +147,9 @@ $v$ = {{ v }}, $d$ = {{ d }} and $e$ = {{ e }}: $\hat F$ = {{ si.impulse }} N·s
         Balance("separation speed", lambda p, s: p.e * p.v,
                 lambda p, s: s["omega"] * p.d - s["v_after"], name="restitution"),
         Recompute("d_percussion", lambda p, s: 2 * p.L / 3, name="rod_two_thirds"),
+        # the rod's linear momentum: M (L/2) omega = J + R, so the pivot's impulse is the rest
+        Recompute("R_pivot", lambda p, s: abs(p.M * p.L / 2 * s["omega"] - s["impulse"]),
+                  name="rod_linear_momentum"),
     ),
     figure=figure, figure_to_scale=True,
     parts=(
