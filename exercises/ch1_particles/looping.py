@@ -133,6 +133,9 @@ $R(1 - \cos\varphi)$ above the entry (Example 1.13).
         # eq. (1.118): the top is reached with N >= 0 from v0 = sqrt(5 g R)
         Recompute("v_min_entry", lambda p, s: np.sqrt(5 * p.g * p.R), name="eq_1_118"),
         Recompute("N_max", lambda p, s: p.m * p.v0**2 / p.R + p.m * p.g, name="at_the_bottom"),
+        # eq. (1.122): the foundation's moment from the normal force at phi
+        Recompute("M_A", lambda p, s: _normal_force(p, s) * p.R * np.sin(p.phi),
+                  name="support_moment"),
     ),
     figure=figure, figure_to_scale=True,
     parts=(

@@ -24,6 +24,21 @@ def _launch(t, y, p):
     return (y[1], push / p.m - p.g)
 
 
+def _compressed(p):
+    """At rest with the spring compressed (x = 0)."""
+    return (0.0, 0.0)
+
+
+def _launch_horizon(p, solved):
+    """Longer than the push (half a period of the spring) and the climb after it."""
+    return np.pi * np.sqrt(p.m / p.k) + 2 * p.dx * np.sqrt(p.k / p.m) / p.g
+
+
+def _relaxed(t, y, p):
+    """Zero when the spring reaches its natural length."""
+    return y[0] - p.dx
+
+
 EXERCISE = Exercise(
     id="spring-launch-height",
     title="Spring launch: how high does the particle fly?",
@@ -72,13 +87,16 @@ Measure heights from the starting point.
 """,
     solve=solve,
     checks=(
-        Integrated("h", _launch, lambda p: (0.0, 0.0),
-                   lambda p, s: np.pi * np.sqrt(p.m / p.k) + 2 * p.dx * np.sqrt(p.k / p.m) / p.g,
+        Integrated("h", _launch, _compressed,
+                   _launch_horizon,
                    lambda t, y, p: y[0], name="integrated_launch",
                    event=lambda t, y, p: y[1], direction=-1, rtol=1e-5),
         # energy conservation, eq. (1.107): the spring's energy ends as m g h
         Balance("energy", lambda p, s: s["V_spring"], lambda p, s: p.m * p.g * s["h"],
                 name="energy_balance"),
+        # at the spring's natural length (x = dx) the speed of the same integration
+        Integrated("v_release", _launch, _compressed, _launch_horizon, lambda t, y, p: y[1],
+                   name="integrated_release", event=_relaxed, direction=1),
     ),
     parts=(
         Numeric("h", "height above the start", question=1, unit="m", points=2,

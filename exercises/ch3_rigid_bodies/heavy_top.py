@@ -35,6 +35,13 @@ def _gyroscopic(rate):
     return lambda p, s: s[rate] * (p.I3 * p.w3 - p.I1 * s[rate] * np.cos(p.theta))
 
 
+def _roots(p):
+    """The steady precession rates solve I1 cos(theta) psi'^2 - I3 w3 psi' + m g l = 0."""
+    a, b, c = p.I1 * np.cos(p.theta), -p.I3 * p.w3, p.m * p.g * p.l
+    root = np.sqrt(b * b - 4 * a * c)
+    return sorted(((-b - root) / (2 * a), (-b + root) / (2 * a)))
+
+
 EXERCISE = Exercise(
     id="heavy-top-steady-precession",
     title="Steady precession of a heavy top",
@@ -101,6 +108,9 @@ $\theta$ = {{ theta }}, $\omega_3$ = {{ w3 }} and $g$ = {{ g }}.
         Recompute("w_min", lambda p, s: np.sqrt(4 * p.I1 * p.m * p.g * p.l * np.cos(p.theta)) / p.I3,
                   name="double_root"),
         Recompute("psi_approx", lambda p, s: p.m * p.g * p.l / (p.I3 * p.w3), name="fast_top"),
+        # which root is which: the slow one is the smaller, by the quadratic formula
+        Recompute("psi_slow", lambda p, s: _roots(p)[0], name="smaller_root"),
+        Recompute("psi_fast", lambda p, s: _roots(p)[1], name="larger_root"),
     ),
     parts=(
         Numeric("w_min", "smallest axial spin", question=1, unit="rad/s", points=1),

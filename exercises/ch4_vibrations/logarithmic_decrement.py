@@ -5,7 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Choice, Constraint, Exercise, Misconception, Numeric, Uniform,
                                 per_draw)
-from dynagrade.exercise.checks import Integrated, Limit
+from dynagrade.exercise.checks import Integrated, Limit, Recompute
 from dynagrade.mechanics import vibrations
 
 
@@ -111,6 +111,8 @@ $e^{\delta}$; from $\delta$ and the measured period we recover $\zeta$, $\omega_
                    event=_next_peak, direction=-1, from_keys=("k", "c")),
         # no decay (x_n -> x_0): no damping, and omega_n is the measured 2 pi / T_d
         Limit("omega_n", {"xn": 1.0, "x0": 1.0}, lambda p: 2 * np.pi / p.Td, name="undamped"),
+        # the identified oscillator must shrink by the measured x_n / x_0 after n periods
+        Recompute("delta", lambda p, s: np.log(p.x0 / p.xn) / p.n, name="measured_decay"),
     ),
     parts=(
         Numeric("delta", "logarithmic decrement", question=1, points=1,
