@@ -26,6 +26,7 @@ imported when a solution is first checked or rendered, as for statements.
 
 from __future__ import annotations
 
+import re
 from typing import Any, Iterator, Mapping
 
 from .model import Exercise, Variant
@@ -112,6 +113,14 @@ class _Checks(_Named):
             self._values = {name: SiValue(value) for name, value
                             in check_values(exercise, variant).items()}
         return super().__getitem__(name)
+
+
+_CHECKS_IN_TEMPLATE = re.compile(r"\{\{[^}]*\bchecks\b")
+
+
+def prints_checks(exercise: Exercise) -> bool:
+    """Whether the exercise's worked solution prints a check's value (``{{ checks.x }}``)."""
+    return exercise.solution is not None and bool(_CHECKS_IN_TEMPLATE.search(exercise.solution))
 
 
 #: the latest variant's check values, as (exercise, its parameters, values): rendering a

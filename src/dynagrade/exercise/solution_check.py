@@ -20,7 +20,8 @@ from typing import Any, Iterable, Iterator
 
 from .loader import builtin_bank, exercise_files, load_file
 from .model import Exercise, Variant
-from .solution import SolutionError, check_values, render_solution, solver_values
+from .solution import (SolutionError, check_values, prints_checks, render_solution,
+                       solver_values)
 
 #: integers up to this are the formulas' own numbers (2, 1/2, 4 pi^2, ...)
 SMALL_INTEGER = 12
@@ -92,7 +93,7 @@ def _variant_numbers(exercise: Exercise, variant: Variant) -> Iterator[float]:
     yield from _floats(variant.params.values())
     yield from _floats(variant.answers.values())
     printed = list(solver_values(exercise, variant).values())
-    if exercise.solution is not None and "checks" in exercise.solution:
+    if prints_checks(exercise):
         printed += check_values(exercise, variant).values()
     for value in printed:
         for number in _floats([value]):

@@ -8,11 +8,11 @@ formula against mechanics core). A misconception is tried only where it ``applie
 report counts the variants an exam would redraw and the draws the constraints reject
 (:mod:`.redraws`). Once per exercise: every part answers a numbered question of the
 statement and every question has a part, and every variable of a formula is shown in the
-statement under a name the grader accepts (:mod:`.asked`), and every formula has the dimension of the part it ``equals``. The
-exercise's independent checks (:mod:`.checks`) run on every variant: a failing one is
-named with the seed, the key's number, the recomputed one and the tolerance. What
-each kind tries is its own
-(:mod:`dynagrade.exercise.parts`). The worked solution of every variant is checked too
+statement under a name the grader accepts (:mod:`.asked`), and every formula has the
+dimension of the part it ``equals`` (:mod:`.checks.dimensions`). The exercise's
+independent checks (:mod:`.checks`) run on every variant: a failing one is named with the
+seed, the key's number, the recomputed one and the tolerance. What each kind tries is its
+own (:mod:`dynagrade.exercise.parts`). The worked solution of every variant is checked too
 (:mod:`.solution_check`), its math once per exercise by ``math_check`` (the render
 layer's, handed in by the command); an exercise without a solution is a finding when
 ``require_solution`` is set (the command sets it once the shipped bank is complete, or
