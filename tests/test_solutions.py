@@ -164,12 +164,13 @@ def test_every_exercise_has_a_solution_showing_each_parts_key_answer_at_two_seed
 # of the notes (values rounded to 6 significant figures):
 # projectile-range, v0 = 25.5 m/s, alpha = 20 deg: v0 cos a = 23.9622, v0 sin a = 8.72151,
 #   t_peak = 0.889043 s, x_max = v0^2 sin 40 deg / g = 42.6068 m, h = 3.8769 m,
-#   t_flight = 1.77809 s;
+#   t_flight = 1.77809 s, the closing check at alpha = 45 deg v0^2 / g = 66.2844 m;
 # ballistic-pendulum, m = 42 g, M = 0.8 kg, v = 190 m/s: m v = 7.98, V = 9.47743 m/s,
 #   h = V^2/(2g) = 457.807 cm, T1 = 758.1 J, T2 = 37.815 J, lost 720.285 J, M/(m+M) =
 #   0.950119;
 # damped-free-vibration, m = 41 kg, k = 1900 N/m, c = 144 N s/m: omega_n = 6.80746,
-#   c_cr = 558.211, zeta = 0.257967, omega_d = 6.57705, T_d = 0.95532 s, delta = 1.67763.
+#   c_cr = 558.211, zeta = 0.257967, omega_d = 6.57705, T_d = 0.95532 s, delta = 1.67763,
+#   the closing check at c = 0 omega_d = omega_n = 6.80746.
 
 GOLDEN_PARAMS = {
     "projectile-range": {"v0": 25.5, "alpha": 20.0, "g": 9.81},

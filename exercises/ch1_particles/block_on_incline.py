@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Options,
                                 Symbolic, Uniform)
+from dynagrade.exercise.checks import Limit, Recompute
 from dynagrade.exercise.figure import block, inclined_plane
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics.examples import incline
@@ -45,6 +46,12 @@ def swap_matters(p):
     tolerance); near 45° it does not, and the swap is not tried there."""
     key = incline.sliding_acceleration(p.alpha, p.mu, p.g)
     return abs(swapped(p) - key) > 0.02 * abs(key)
+
+
+def _sliding_down(p, solved):
+    """Linear momentum balance along the slope with Coulomb friction, eq. (1.73):
+    x1'' = g (sin(alpha) - mu cos(alpha))."""
+    return p.g * (np.sin(p.alpha) - p.mu * np.cos(p.alpha))
 
 
 EXERCISE = Exercise(
@@ -94,8 +101,17 @@ slides down (eq. (1.74)).
    keeps speeding up and never comes to rest — **{{ answers.stops }}**.
 {%- endif %}
 4. **Formula.** $\ddot x_1$ = `{{ answers.a_formula }}`.
+5. **Check.** Without friction ($\mu \to 0$, Example 1.8) the block would speed up at
+   $g\sin\alpha$ = {{ checks.frictionless }} m/s²: friction only ever lowers $\ddot x_1$.
 """,
     solve=solve,
+    checks=(
+        Recompute("a", _sliding_down, name="momentum_balance_along_slope"),
+        # eq. (1.68) tilted: the normal force carries the weight's component m g cos(alpha)
+        Recompute("N", lambda p, s: p.m * p.g * np.cos(p.alpha), name="normal_balance"),
+        # Example 1.8 without friction: x1'' = g sin(alpha)
+        Limit("a", {"mu": 0.0}, lambda p: p.g * np.sin(p.alpha), name="frictionless"),
+    ),
     figure=figure, figure_to_scale=True,
     parts=(
         Numeric("a", "acceleration down the slope", question=1, unit="m/s^2", points=2,

@@ -1,8 +1,12 @@
 """A ball dropped on a hard floor: rebound speed and height, energy lost, and the
 coefficient of restitution from measured heights (Section 1.2.4)."""
 
+import numpy as np
+
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform)
+from dynagrade.exercise.checks import Balance, Integrated, Limit, Recompute
+from dynagrade.exercise.checks.motions import falling, height
 from dynagrade.mechanics import energy, impact
 
 
@@ -58,8 +62,22 @@ floor reverses the normal velocity and scales it by the coefficient of restituti
 4. **Third rebound.** Every impact multiplies the height by $e^2$, so after three impacts
    $h_3 = e^6 h_0$ = {{ answers.h3 }}.
 5. **Formula.** $h_1$ = `{{ answers.h1_formula }}`.
+6. **Check.** With $e = 1$ (a perfectly elastic floor) the ball would come back to
+   $h_1 = h_0$ = {{ checks.elastic }} m and lose no energy.
 """,
     solve=solve,
+    checks=(
+        Integrated("v_in", falling, lambda p: (p.h0, 0.0), lambda p, s: 2 * np.sqrt(2 * p.h0 / p.g),
+                   lambda t, y, p: abs(y[1]), name="integrated_fall", event=height, direction=-1),
+        # energy after the bounce, eq. (1.102): m g h1 = m v_out^2 / 2
+        Balance("energy after the bounce", lambda p, s: p.g * s["h1"], lambda p, s: s["v_out"]**2 / 2,
+                name="rebound_energy"),
+        # each bounce keeps e^2 of the height: h3 = e^6 h0
+        Recompute("h3", lambda p, s: p.e**6 * p.h0, name="three_bounces"),
+        Recompute("dT", lambda p, s: p.m * p.g * p.h0 * (1 - p.e**2), name="energy_lost"),
+        # e = 1: a perfectly elastic bounce returns to the starting height
+        Limit("h1", {"e": 1.0}, lambda p: p.h0, name="elastic"),
+    ),
     parts=(
         Numeric("v_out", "rebound speed", question=1, unit="m/s", points=1),
         Numeric("h1", "height after the first bounce", question=2, unit="m", points=2,

@@ -4,6 +4,7 @@
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import kinematics
 
 
@@ -19,6 +20,18 @@ def solve(p):
         "phi": kinematics.angle_from_arc_length(s, p.R),
         "s": s,
     }
+
+
+def _speed_from_distance(p, solved):
+    """Constant path acceleration s'' = a_t: v^2 = v0^2 + 2 a_t s (eq. (1.42) integrated
+    in s rather than t)."""
+    return np.sqrt(p.v0**2 + 2 * p.at * solved["s"])
+
+
+def _total_acceleration(p, solved):
+    """eq. (1.51): a = s'' e_t + (s'^2 / rho) e_n, its magnitude with v from eq. (1.42)."""
+    v = p.v0 + p.at * p.t
+    return np.hypot(p.at, v**2 / p.R)
 
 
 EXERCISE = Exercise(
@@ -63,6 +76,12 @@ towards the centre. The acceleration is $a = \ddot s\, e_t + \frac{v^2}{\rho} e_
    = {{ si.s }} m, and $\varphi = s/R$ = {{ answers.phi }}.
 """,
     solve=solve,
+    checks=(
+        Recompute("v", _speed_from_distance, name="speed_from_distance"),
+        Recompute("a_abs", _total_acceleration, name="path_acceleration"),
+        Recompute("phi", lambda p, s: (p.v0 * p.t + p.at * p.t**2 / 2) / p.R,
+                  name="arc_length_angle"),
+    ),
     parts=(
         Numeric("v", "speed", question=1, unit="m/s", points=1),
         Numeric("a_n", "normal acceleration", question=2, unit="m/s^2", points=2,

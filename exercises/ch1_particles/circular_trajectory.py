@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector,
                                 per_draw)
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import kinematics
 
 
@@ -28,6 +29,18 @@ def solve(p):
 def _centripetal_only(p):
     phi, phidot, _ = _angles(p)
     return tuple(kinematics.circular_acceleration(p.r, phi, phidot, 0.0))
+
+
+def _cartesian(p, radial, tangential):
+    """e1, e2 components of radial e_r + tangential e_phi at phi = c t^2, eq. (1.27)."""
+    phi = p.c * p.t**2
+    return (radial * np.cos(phi) - tangential * np.sin(phi),
+            radial * np.sin(phi) + tangential * np.cos(phi))
+
+
+def _acceleration_magnitude(p, solved):
+    """eq. (1.20) with phi = c t^2: normal r phi'^2 and tangential r phi'' components."""
+    return p.r * np.hypot((2 * p.c * p.t) ** 2, 2 * p.c)
 
 
 EXERCISE = Exercise(
@@ -79,6 +92,15 @@ $\ddot\varphi = 2c$ = {{ si.phiddot }} rad/s².
    $|a| = r\sqrt{\dot\varphi^4 + \ddot\varphi^2}$ = {{ answers.a_abs }}.
 """,
     solve=solve,
+    checks=(
+        Recompute("a_abs", _acceleration_magnitude, name="polar_components"),
+        Recompute("speed", lambda p, s: p.r * 2 * p.c * p.t, name="speed_eq_1_19"),
+        # eqs. (1.19) and (1.20) in Cartesian components with phi = c t^2
+        Recompute("v", lambda p, s: _cartesian(p, 0.0, 2 * p.c * p.t * p.r), name="velocity_eq_1_19",
+                  atol=1e-12),
+        Recompute("a", lambda p, s: _cartesian(p, -p.r * (2 * p.c * p.t) ** 2, 2 * p.c * p.r),
+                  name="acceleration_eq_1_20", atol=1e-12),
+    ),
     parts=(
         Vector("v", "velocity", question=1, unit="m/s", size=2, points=2,
                misconceptions=(

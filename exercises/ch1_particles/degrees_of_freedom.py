@@ -2,6 +2,7 @@
 eqs. 1.2 and 1.21)."""
 
 from dynagrade.exercise import Choice, Exercise, Options
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import kinematics
 
 COUNTS = ("0", "1", "2", "3")
@@ -56,6 +57,11 @@ Here $d$ = {{ d }}.
    given force, not a reaction. Cases: **{{ answers.reaction }}**.
 """,
     solve=solve,
+    checks=(
+        # eq. (1.2) and (1.21): d DOFs, d - k with k constraints
+        Recompute("free", lambda p, s: p.d, name="free_particle"),
+        Recompute("ground", lambda p, s: p.d - 1, name="one_constraint"),
+    ),
     parts=(
         Options("free", "free particle", question=1, options=COUNTS, points=1),
         Options("ground", "on the ground", question=2, options=COUNTS, points=1),

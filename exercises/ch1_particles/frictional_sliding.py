@@ -2,6 +2,7 @@
 balance (Example 1.11, eq. 1.91)."""
 
 from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symbolic, Uniform)
+from dynagrade.exercise.checks import Balance, Integrated, Limit
 from dynagrade.mechanics import energy, particle
 
 
@@ -9,6 +10,25 @@ def solve(p):
     dx = energy.sliding_stopping_distance(p.v0, p.mu, p.g)
     return {"dx": dx, "t_stop": particle.sliding_stop_time(p.v0, p.mu, p.g),
             "W": energy.friction_work_on_floor(p.mu, p.m, p.g, dx)}
+
+
+def _sliding(t, y, p):
+    """Coulomb friction on level ground while sliding, eq. (1.103): x'' = -mu g."""
+    return (y[1], -p.mu * p.g)
+
+
+def _pushed_off(p):
+    return (0.0, p.v0)
+
+
+def _longer_than_the_slide(p, solved):
+    """The slide lasts v0 / (mu g)."""
+    return 2 * p.v0 / (p.mu * p.g)
+
+
+def _speed(t, y, p):
+    """The speed, zero when the block stops."""
+    return y[1]
 
 
 EXERCISE = Exercise(
@@ -49,6 +69,17 @@ $T_2 - T_1 = W_{12}$, eq. (1.87), between the start ($T_1 = \tfrac{1}{2} m v_0^2
 4. **Formula.** $\Delta x$ = `{{ answers.dx_formula }}`.
 """,
     solve=solve,
+    checks=(
+        Integrated("dx", _sliding, _pushed_off, _longer_than_the_slide,
+                   lambda t, y, p: y[0], name="integrated_slide",
+                   event=_speed, direction=-1),
+        Integrated("t_stop", _sliding, _pushed_off, _longer_than_the_slide,
+                   lambda t, y, p: t, name="integrated_stop_time",
+                   event=_speed, direction=-1),
+        # work-energy balance, eq. (1.87): the kinetic energy is spent against friction
+        Balance("energy", lambda p, s: p.m * p.v0**2 / 2, lambda p, s: abs(s["W"]),
+                name="work_energy"),
+    ),
     parts=(
         Numeric("dx", "stopping distance", question=1, unit="m", points=2,
                 misconceptions=(

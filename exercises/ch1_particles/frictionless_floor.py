@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform)
+from dynagrade.exercise.checks import Limit, Recompute
 from dynagrade.mechanics import kinematics, particle
 
 
@@ -70,6 +71,14 @@ $\sum F_i = m a$, eq. (1.63), component by component (Example 1.7):
 5. **Formula.** $N$ = `{{ answers.N_formula }}`.
 """,
     solve=solve,
+    checks=(
+        # eq. (1.68) with the pull's vertical part: N = m g - F sin(theta)
+        Recompute("N", lambda p, s: p.m * p.g - p.F * np.sin(p.theta), name="vertical_balance"),
+        Recompute("v_t", lambda p, s: p.v0 + p.F * np.cos(p.theta) / p.m * p.t,
+                  name="horizontal_balance"),
+        # no pull: Example 1.7's N = m g and uniform motion
+        Limit("N", {"F": 0.0}, lambda p: p.m * p.g, name="no_pull"),
+    ),
     parts=(
         Numeric("N", "normal force", question=1, unit="N", points=2,
                 misconceptions=(

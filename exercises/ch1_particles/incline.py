@@ -4,6 +4,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform)
+from dynagrade.exercise.checks import Balance, Limit
 from dynagrade.exercise.figure import arrow, block, inclined_plane
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics.examples import incline
@@ -82,8 +83,22 @@ slides up.
 3. **Time.** The deceleration is constant, so the speed $v_0 - at$ vanishes at
    $t = v_0/a$ = {{ answers.t_stop }}.
 4. **Formula.** $\Delta x$ = `{{ answers.delta_x_formula }}`.
+5. **Check.** Without friction ($\mu \to 0$) the block would slide up
+   $v_0^2/(2g\sin\alpha)$ = {{ checks.frictionless }} m, farther than with it, as it must.
 """,
     solve=solve,
+    checks=(
+        # work-energy balance of Example 1.15, eq. (1.127): m v0^2/2 = m g dx sin(alpha)
+        # + mu m g cos(alpha) dx
+        Balance("energy per unit mass", lambda p, s: p.v0**2 / 2,
+                lambda p, s: p.g * s["delta_x"] * (np.sin(p.alpha) + p.mu * np.cos(p.alpha)),
+                name="work_energy"),
+        Balance("speed", lambda p, s: p.v0, lambda p, s: abs(s["a_up"]) * s["t_stop"],
+                name="uniform_deceleration"),
+        # mu -> 0: the frictionless climb v0^2 / (2 g sin(alpha))
+        Limit("delta_x", {"mu": 0.0}, lambda p: p.v0**2 / (2 * p.g * np.sin(p.alpha)),
+              name="frictionless"),
+    ),
     figure=figure, figure_to_scale=True,
     parts=(
         Numeric("delta_x", "distance up the slope", question=1, unit="m", points=2,

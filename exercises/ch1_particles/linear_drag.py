@@ -4,6 +4,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform)
+from dynagrade.exercise.checks import Integrated
 from dynagrade.mechanics import kinematics
 
 
@@ -15,6 +16,25 @@ def solve(p):
         "x_1": kinematics.linear_drag_distance_to_speed(p.v0, v1, p.k),
         "x_total": kinematics.linear_drag_coasting_distance(p.v0, p.k),
     }
+
+
+def _drag(t, y, p):
+    """Linear drag alone, eq. (1.104) with eq. (1.13): x'' = -k x'."""
+    return (y[1], -p.k * y[1])
+
+
+def _start(p):
+    return (0.0, p.v0)
+
+
+def _slowed(t, y, p):
+    """Zero when the speed has fallen to v1 = fraction v0."""
+    return y[1] - p.fraction * p.v0
+
+
+def _ten_decay_times(p, solved):
+    """Longer than the slowing to v1 >= 0.2 v0 takes (ln 5 decay times)."""
+    return 10 / p.k
 
 
 EXERCISE = Exercise(
@@ -60,6 +80,17 @@ integrate (Example 1.2).
 5. **Formula.** $v(t)$ = `{{ answers.v_formula }}`.
 """,
     solve=solve,
+    checks=(
+        Integrated("v_t", _drag, _start, lambda p, s: p.t, lambda t, y, p: y[1],
+                   name="integrated_speed"),
+        Integrated("t_1", _drag, _start, _ten_decay_times, lambda t, y, p: t,
+                   name="integrated_time_to_v1", event=_slowed, direction=-1),
+        Integrated("x_1", _drag, _start, _ten_decay_times, lambda t, y, p: y[0],
+                   name="integrated_distance_to_v1", event=_slowed, direction=-1),
+        # after many decay times the distance is within e^-40 of the total
+        Integrated("x_total", _drag, _start, lambda p, s: 40 / p.k, lambda t, y, p: y[0],
+                   name="integrated_coasting"),
+    ),
     parts=(
         Numeric("v_t", "speed at t", question=1, unit="m/s", points=1,
                 misconceptions=(

@@ -4,6 +4,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform)
+from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.exercise.figure import angle_arc, arrow, describe, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics.examples import looping
@@ -52,6 +53,13 @@ def solve(p):
         "N_phi": looping.looping_normal_force(p.phi, p.m, p.v0, p.R, p.g),
         "M_A": reactions.MA,
     }
+
+
+def _normal_force(p, solved):
+    """Radial momentum balance at angle phi, eq. (1.115): N = m v(phi)^2 / R
+    + m g cos(phi), with v(phi) from the energy balance eq. (1.110)."""
+    v_squared = p.v0**2 - 2 * p.g * p.R * (1 - np.cos(p.phi))
+    return p.m * v_squared / p.R + p.m * p.g * np.cos(p.phi)
 
 
 EXERCISE = Exercise(
@@ -116,6 +124,19 @@ $R(1 - \cos\varphi)$ above the entry (Example 1.13).
 6. **Formula.** $v_{0,\min}$ = `{{ answers.v_min_formula }}`.
 """,
     solve=solve,
+    checks=(
+        # energy balance from the bottom to phi, eq. (1.109)
+        Balance("energy per unit mass", lambda p, s: p.v0**2 / 2,
+                lambda p, s: s["v_phi"]**2 / 2 + p.g * p.R * (1 - np.cos(p.phi)),
+                name="energy_balance"),
+        Recompute("N_phi", _normal_force, name="radial_balance"),
+        # eq. (1.118): the top is reached with N >= 0 from v0 = sqrt(5 g R)
+        Recompute("v_min_entry", lambda p, s: np.sqrt(5 * p.g * p.R), name="eq_1_118"),
+        Recompute("N_max", lambda p, s: p.m * p.v0**2 / p.R + p.m * p.g, name="at_the_bottom"),
+        # eq. (1.122): the foundation's moment from the normal force at phi
+        Recompute("M_A", lambda p, s: _normal_force(p, s) * p.R * np.sin(p.phi),
+                  name="support_moment"),
+    ),
     figure=figure, figure_to_scale=True,
     parts=(
         Numeric("v_min_entry", "smallest entry speed", question=1, unit="m/s", points=2,

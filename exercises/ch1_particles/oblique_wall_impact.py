@@ -4,6 +4,7 @@
 import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
+from dynagrade.exercise.checks import Balance, Limit, Recompute
 from dynagrade.exercise.figure import angle_arc, arrow, new_drawing, wall
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import impact
@@ -96,8 +97,21 @@ $v_n' = e\,v_n$ = {{ si.v_n_out }} m/s (with $e$ = {{ e }}) and $v_t' = v_t$.
 4. **Impulse.** Linear momentum balance across the impact: the impulse equals the change of
    momentum, which is purely normal, $J = m(v_n' + v_n) = (1 + e)\, m v_n$ = {{ answers.J }}.
 5. **Formula.** $\theta'$ = `{{ answers.theta_formula }}`.
+6. **Check.** With $e = 1$ the ball would leave as fast as it came,
+   $v'$ = {{ checks.elastic }} m/s, mirrored about the normal.
 """,
     solve=solve,
+    checks=(
+        # the wall acts along its normal only: the tangential speed is kept, the normal one
+        # reversed and scaled by e
+        Recompute("v_out", lambda p, s: np.hypot(p.e * p.v * np.cos(p.theta), p.v * np.sin(p.theta)),
+                  name="components"),
+        Balance("kinetic energy", lambda p, s: p.m * p.v**2 / 2,
+                lambda p, s: p.m * s["v_out"]**2 / 2 + s["dT"], name="energy_balance"),
+        Recompute("J", lambda p, s: p.m * (1 + p.e) * p.v * np.cos(p.theta),
+                  name="normal_momentum_change"),
+        Limit("v_out", {"e": 1.0}, lambda p: p.v, name="elastic"),
+    ),
     figure=figure, figure_to_scale=True,
     parts=(
         Numeric("theta_out", "rebound angle", question=1, unit="deg", points=2,

@@ -2,6 +2,7 @@
 it (Section 1.1.4, eqs. 1.48, 1.49 and 1.51)."""
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import kinematics
 
 
@@ -9,6 +10,11 @@ def solve(p):
     rho = float(kinematics.parabola_radius_of_curvature(p.c, p.x1))
     return {"rho": rho, "rho_vertex": float(kinematics.parabola_radius_of_curvature(p.c, 0.0)),
             "a_n": kinematics.path_centripetal_acceleration(p.v, rho)}
+
+
+def _radius(p, solved):
+    """eq. (1.48) for x2 = c x1^2: rho = (1 + (2 c x1)^2)^(3/2) / |2 c|."""
+    return (1 + (2 * p.c * p.x1) ** 2) ** 1.5 / (2 * p.c)
 
 
 EXERCISE = Exercise(
@@ -48,6 +54,11 @@ $\rho = \sqrt{1 + f'^2}^{\,3}/|f''|$ (eq. (1.48)).
 4. **Formula.** $\rho$ = `{{ answers.rho_formula }}`.
 """,
     solve=solve,
+    checks=(
+        Recompute("rho", _radius, name="curvature_eq_1_48"),
+        Recompute("rho_vertex", lambda p, s: 1 / (2 * p.c), name="at_the_vertex"),
+        Recompute("a_n", lambda p, s: p.v**2 / _radius(p, s), name="normal_acceleration"),
+    ),
     parts=(
         Numeric("rho", "radius of curvature at x1", question=1, unit="m", points=2,
                 misconceptions=(

@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
                                 Variable)
+from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import describe, dimension, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import kinematics, particle
@@ -93,6 +94,12 @@ $\omega = 2\pi n$ = {{ si.omega }} rad/s (with $n$ in revolutions per second).
 4. **Formula.** $S$ = `{{ answers.S_formula }}`.
 """,
     solve=solve,
+    checks=(
+        # eq. (1.84): S = m l omega^2, omega the rate n in rad/s
+        Recompute("S", lambda p, s: p.m * p.l * p.n**2, name="radial_balance"),
+        Recompute("S_double", lambda p, s: 4 * s["S"], name="twice_the_rate"),
+        Recompute("v", lambda p, s: p.l * p.n, name="speed_eq_1_19"),
+    ),
     figure=figure,
     parts=(
         Numeric("S", "string force", question=1, unit="N", points=2,

@@ -4,6 +4,8 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform)
+from dynagrade.exercise.checks import Balance, Integrated
+from dynagrade.exercise.checks.motions import launched, rising, thrown
 from dynagrade.mechanics import energy
 from dynagrade.mechanics.examples import projectile
 
@@ -21,6 +23,16 @@ def sin_and_cos_differ(p):
     """Whether sin α and cos α differ by more than 2 % (twice the tolerance): near 45°
     taking one for the other is no mistake, so it is not tried there."""
     return abs(np.tan(p.alpha) - 1) > 0.02
+
+
+def _launch(p):
+    """The launch state of eq. (1.75)."""
+    return launched(p.v0, p.alpha)
+
+
+def _longer_than_the_rise(p, solved):
+    """The rise takes v0 sin(alpha) / g at most."""
+    return 2 * p.v0 / p.g
 
 
 EXERCISE = Exercise(
@@ -61,6 +73,15 @@ Only gravity acts during the flight and gravity is conservative, so $T + V$ is c
 4. **Formula.** $h$ = `{{ answers.h_formula }}`.
 """,
     solve=solve,
+    checks=(
+        Integrated("h", thrown, _launch, _longer_than_the_rise,
+                   lambda t, y, p: y[1], name="integrated_peak", event=rising, direction=-1),
+        Integrated("v_top", thrown, _launch, _longer_than_the_rise, lambda t, y, p: np.hypot(y[2], y[3]),
+                   name="integrated_speed_at_peak", event=rising, direction=-1),
+        # energy conservation, eq. (1.102): T0 = T_top + m g h
+        Balance("energy", lambda p, s: s["T0"], lambda p, s: s["T_top"] + p.m * p.g * s["h"],
+                name="energy_balance"),
+    ),
     parts=(
         Numeric("v_top", "speed at the top", question=1, unit="m/s", points=1,
                 misconceptions=(

@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform, per_draw)
+from dynagrade.exercise.checks import Integrated, Recompute
 from dynagrade.mechanics import angular_momentum as am
 
 
@@ -16,6 +17,17 @@ def solve(p):
         "S": float(am.pendulum_string_force(p.m, p.R, p.g, p.phi, p.phidot)),
         "omega_n": am.pendulum_natural_frequency(p.g, p.R),
     }
+
+
+def _swing(t, y, p):
+    """The undamped pendulum, eq. (1.145): phi'' = -(g/R) sin(phi)."""
+    return (y[1], -p.g / p.R * np.sin(y[0]))
+
+
+def _angular_acceleration(p, solved):
+    """Angular momentum balance about the pivot with the drag torque, eqs. (1.143) and
+    (1.148): m R phi'' = -m g sin(phi) - k R phi'."""
+    return -p.g / p.R * np.sin(p.phi) - p.k / p.m * p.phidot
 
 
 EXERCISE = Exercise(
@@ -74,6 +86,17 @@ $\ddot\varphi = -\frac{k}{m}\dot\varphi - \frac{g}{R}\sin\varphi$.
 4. **Formula.** $\ddot\varphi$ = `{{ answers.eom }}`.
 """,
     solve=solve,
+    checks=(
+        # released from rest at 0.01 rad: the swing returns to rest after one period; the
+        # amplitude lengthens it by a^2/16 (6e-6) only
+        Integrated("T", _swing, lambda p: (0.01, 0.0), lambda p, s: 1.5 * 2 * np.pi * np.sqrt(p.R / p.g),
+                   lambda t, y, p: t, name="integrated_small_swing",
+                   event=lambda t, y, p: y[1], direction=-1, rtol=1e-4),
+        Recompute("phi_ddot", _angular_acceleration, name="angular_momentum_balance"),
+        # radial momentum balance: S - m g cos(phi) = m R phi'^2
+        Recompute("S", lambda p, s: p.m * p.R * p.phidot**2 + p.m * p.g * np.cos(p.phi),
+                  name="radial_balance"),
+    ),
     parts=(
         Numeric("T", "small-angle period", question=1, unit="s", points=1,
                 misconceptions=(

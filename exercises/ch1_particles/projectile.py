@@ -4,6 +4,8 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform)
+from dynagrade.exercise.checks import Integrated, Limit, Symmetry
+from dynagrade.exercise.checks.motions import height, launched, rising, thrown
 from dynagrade.exercise.figure import angle_arc, arrow, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics.examples import projectile
@@ -50,6 +52,16 @@ def double_angle_matters(p):
     return abs(np.sin(p.alpha) - np.sin(2 * p.alpha)) > 0.02 * np.sin(2 * p.alpha)
 
 
+def _launch(p):
+    """The launch state of eq. (1.75)."""
+    return launched(p.v0, p.alpha)
+
+
+def _flight_horizon(p, solved):
+    """Longer than any flight: v0 sin(alpha)/g is half of it."""
+    return 4 * p.v0 / p.g
+
+
 EXERCISE = Exercise(
     id="projectile-range",
     title="Throwing a ball: range, peak height and flight time",
@@ -92,8 +104,23 @@ $x_2(t) = v_0 t\sin\alpha - g t^2/2$.
 3. The flight time is $t_{1,\max} = 2 v_0\sin\alpha/g$ = {{ answers.t_flight }}: twice the
    time to the peak, because the parabola is symmetric about its peak.
 4. Step 1 as a formula: `{{ answers.x_max_formula }}`.
+5. **Check.** At $\alpha = \pi/4$ the same speed would reach $v_0^2/g$ = {{ checks.at_45_degrees }}
+   m, the longest range of all (Example 1.9), and no less than {{ answers.x_max }}.
 """,
     solve=solve,
+    checks=(
+        Integrated("x_max", thrown, _launch, _flight_horizon, lambda t, y, p: y[0],
+                   name="integrated_range", event=height, direction=-1),
+        Integrated("t_flight", thrown, _launch, _flight_horizon, lambda t, y, p: t,
+                   name="integrated_flight_time", event=height, direction=-1),
+        Integrated("h_max", thrown, _launch, _flight_horizon, lambda t, y, p: y[1],
+                   name="integrated_peak", event=rising, direction=-1),
+        # Example 1.9: the range is largest, v0^2/g, at alpha = pi/4
+        Limit("x_max", {"alpha": np.pi / 4}, lambda p: p.v0**2 / p.g, name="at_45_degrees"),
+        # eq. (1.80): sin(2 alpha) is the same at the complementary angle
+        Symmetry("x_max", lambda p: {"alpha": np.pi / 2 - p.alpha},
+                 name="complementary_angle"),
+    ),
     figure=figure, figure_to_scale=True,
     parts=(
         Numeric("x_max", "landing distance", question=1, unit="m", points=2,

@@ -5,6 +5,8 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform, Variable, Vector, per_draw)
+from dynagrade.exercise.checks import Integrated
+from dynagrade.exercise.checks.motions import thrown
 from dynagrade.mechanics import kinematics
 
 
@@ -24,6 +26,15 @@ def solve(p):
 @per_draw
 def _no_half(p):
     return p.h0 + p.v02 * p.t - p.g * p.t**2
+
+
+def _released(p):
+    """The state at release: at height h0 with the velocity (v01, v02)."""
+    return (0.0, p.h0, p.v01, p.v02)
+
+
+def _until_t(p, solved):
+    return p.t
 
 
 EXERCISE = Exercise(
@@ -74,6 +85,12 @@ $v_1(0)$ = {{ v01 }}, $v_2(0)$ = {{ v02 }}; $t$ = {{ t }}, $g$ = {{ g }}.
 4. **Formula.** $x_2(t)$ = `{{ answers.x2_formula }}`.
 """,
     solve=solve,
+    checks=(
+        Integrated("r_t", thrown, _released, _until_t,
+                   lambda t, y, p: (y[0], y[1]), name="integrated_position", atol=1e-9),
+        Integrated("v_t", thrown, _released, _until_t,
+                   lambda t, y, p: (y[2], y[3]), name="integrated_velocity", atol=1e-9),
+    ),
     parts=(
         Vector("r_t", "position at t", question=1, unit="m", size=2, points=2,
                misconceptions=(

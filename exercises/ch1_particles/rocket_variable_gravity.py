@@ -1,8 +1,11 @@
 """A body shot straight up against height-dependent gravity g R^2/(R+x)^2 (Example 1.2,
 acceleration known as a function of position, eq. 1.17)."""
 
+import numpy as np
+
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform, per_draw)
+from dynagrade.exercise.checks import Integrated, Limit, Recompute
 from dynagrade.mechanics import energy, kinematics
 
 
@@ -13,6 +16,17 @@ def solve(p):
         "h_max": float(kinematics.rocket_peak_height(p.v0, p.g, p.R)),
         "v_esc": kinematics.escape_speed(p.g, p.R),
     }
+
+
+def _climb(t, y, p):
+    """Vertical flight under gravity falling off with distance: x'' = -g R^2 / (R + x)^2
+    (Newton's law of gravitation with g at the surface)."""
+    return (y[1], -p.g * p.R**2 / (p.R + y[0]) ** 2)
+
+
+def _speed_at_height(p, solved):
+    """Energy conservation with the potential -m g R^2 / (R + x), eq. (1.102)."""
+    return np.sqrt(p.v0**2 - 2 * p.g * p.R * p.x / (p.R + p.x))
 
 
 EXERCISE = Exercise(
@@ -59,8 +73,21 @@ $\tfrac{1}{2} v^2 - \tfrac{1}{2} v_0^2 = -\int_0^x \frac{gR^2}{(R + \xi)^2}\,\ma
 3. **Escape speed.** $h_{\max}$ grows without bound as $v_0^2 \to 2gR$: above
    $v_{\text{esc} } = \sqrt{2gR}$ = {{ answers.v_esc }} the probe never comes back.
 4. **Formula.** $h_{\max}$ = `{{ answers.h_formula }}`.
+5. **Check.** Were gravity uniform ($R \to \infty$) the probe would rise only
+   $v_0^2/(2g)$ = {{ checks.uniform_gravity }} m: gravity falling off with height lets it climb higher.
 """,
     solve=solve,
+    checks=(
+        # R -> infinity: uniform gravity, the vertical throw's v0^2 / (2 g), eq. (1.106);
+        # at R = 1e12 m the remaining v0^2 / (2 g R) is below 5e-6
+        Limit("h_max", {"R": 1e12}, lambda p: p.v0**2 / (2 * p.g), name="uniform_gravity",
+              rtol=1e-5),
+        Integrated("h_max", _climb, lambda p: (0.0, p.v0), lambda p, s: 20 * p.v0 / p.g,
+                   lambda t, y, p: y[0], name="integrated_climb",
+                   event=lambda t, y, p: y[1], direction=-1),
+        Recompute("v_x", _speed_at_height, name="energy_balance"),
+        Recompute("v_esc", lambda p, s: np.sqrt(2 * p.g * p.R), name="zero_total_energy"),
+    ),
     parts=(
         Numeric("v_x", "speed at height x", question=1, unit="km/s", points=1,
                 misconceptions=(

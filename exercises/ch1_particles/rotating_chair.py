@@ -2,6 +2,7 @@
 angular momentum (Example 1.19; eqs. 1.135 and 1.139)."""
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
+from dynagrade.exercise.checks import Balance
 from dynagrade.mechanics import angular_momentum as am
 from dynagrade.mechanics import rigid_kinetics
 
@@ -70,6 +71,15 @@ $r_0$ = {{ r0 }}, $r_1$ = {{ r1 }}).
 4. **Formula.** $\omega_1$ = `{{ answers.omega_formula }}`.
 """,
     solve=solve,
+    checks=(
+        # angular momentum about the fixed axis is conserved, eq. (1.151)
+        Balance("angular momentum", lambda p, s: (p.I + p.m * p.r0**2) * p.omega0,
+                lambda p, s: (p.I + p.m * p.r1**2) * s["omega1"], name="angular_momentum"),
+        # the work done equals the gain of kinetic energy, eq. (1.87)
+        Balance("energy", lambda p, s: s["W"],
+                lambda p, s: ((p.I + p.m * p.r1**2) * s["omega1"]**2
+                              - (p.I + p.m * p.r0**2) * p.omega0**2) / 2, name="work_energy"),
+    ),
     parts=(
         Numeric("omega1", "final angular velocity", question=1, unit="rad/s", points=2,
                 misconceptions=(

@@ -4,6 +4,7 @@ linear drag (Example 1.16, eqs. 1.142-1.144)."""
 import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
+from dynagrade.exercise.checks import Integrated, Recompute
 from dynagrade.mechanics import angular_momentum as am
 from dynagrade.mechanics import kinematics
 
@@ -16,6 +17,11 @@ def solve(p):
         "phi_total": float(am.drag_rotation_angle(np.inf, p.omega0, p.k, p.m)),
         "rate": am.rotation_decay_rate(p.k, p.m),
     }
+
+
+def _spin_down(t, y, p):
+    """Angular momentum balance with the drag torque, eq. (1.144): phi'' = -(k/m) phi'."""
+    return (y[1], -p.k / p.m * y[1])
 
 
 EXERCISE = Exercise(
@@ -68,6 +74,15 @@ does. Use the angular momentum balance about the axis (Example 1.16).
 5. **Formula.** $\dot\varphi(t)$ = `{{ answers.omega_formula }}`.
 """,
     solve=solve,
+    checks=(
+        Integrated("omega_t", _spin_down, lambda p: (0.0, p.omega0), lambda p, s: p.t,
+                   lambda t, y, p: y[1], name="integrated_spin"),
+        Integrated("phi_total", _spin_down, lambda p: (0.0, p.omega0), lambda p, s: 40 * p.m / p.k,
+                   lambda t, y, p: y[0], name="integrated_total_angle"),
+        # eq. (1.143): the drag -k v at radius R gives the torque -k R^2 phi'
+        Recompute("M0", lambda p, s: p.k * p.R**2 * p.omega0, name="drag_torque"),
+        Recompute("t_half", lambda p, s: p.m * np.log(2) / p.k, name="half_life"),
+    ),
     parts=(
         Numeric("M0", "drag torque at t = 0", question=1, unit="N*m", points=1,
                 misconceptions=(

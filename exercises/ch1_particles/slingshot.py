@@ -4,6 +4,7 @@ eqs. 1.124-1.125)."""
 import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
+from dynagrade.exercise.checks import Integrated
 from dynagrade.exercise.figure import describe, dimension, ground, new_drawing, spring
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import energy
@@ -53,6 +54,13 @@ def solve(p):
             "v": float(energy.slingshot_speed(p.k, p.m, p.dx, p.l0))}
 
 
+def _in_the_slot(t, y, p):
+    """The particle in the slot, pulled by the spring from the point l0 above the slot:
+    m x'' = -k (L - l0) x / L with L = sqrt(x^2 + l0^2) (Example 1.14)."""
+    length = np.hypot(y[0], p.l0)
+    return (y[1], -p.k / p.m * (length - p.l0) * y[0] / length)
+
+
 EXERCISE = Exercise(
     id="elastic-slingshot",
     title="Elastic slingshot",
@@ -100,6 +108,11 @@ force is the only force doing work, and it is conservative: the energy $T + V$ i
 4. **Formula.** $v$ = `{{ answers.v_formula }}`.
 """,
     solve=solve,
+    checks=(
+        Integrated("v", _in_the_slot, lambda p: (p.dx, 0.0), lambda p, s: 100 * np.sqrt(p.m / p.k) * (1 + p.dx / p.l0),
+                   lambda t, y, p: abs(y[1]), name="integrated_release",
+                   event=lambda t, y, p: y[0], direction=-1),
+    ),
     figure=figure, figure_to_scale=True,
     parts=(
         Numeric("stretch", "stretch of the spring", question=1, unit="cm", points=1,

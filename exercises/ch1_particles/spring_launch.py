@@ -1,8 +1,11 @@
 """A particle shot upward by a compressed spring: launch height (Example 1.12, variation,
 eq. 1.108)."""
 
+import numpy as np
+
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform, per_draw)
+from dynagrade.exercise.checks import Balance, Integrated
 from dynagrade.mechanics import energy
 
 
@@ -12,6 +15,28 @@ def solve(p):
     return {"h": h, "V_spring": float(energy.spring_potential_of_stretch(p.k, p.dx)),
             "v_release": float(energy.speed_after_work(p.m, 0.0, energy.spring_potential_of_stretch(p.k, p.dx)
                                                        - p.m * p.g * p.dx))}
+
+
+def _launch(t, y, p):
+    """The particle on the spring while compressed, under gravity after: x measured up from
+    the compressed start, the spring pushes k (dx - x) while x < dx (eqs. (1.96), (1.97))."""
+    push = p.k * (p.dx - y[0]) if y[0] < p.dx else 0.0
+    return (y[1], push / p.m - p.g)
+
+
+def _compressed(p):
+    """At rest with the spring compressed (x = 0)."""
+    return (0.0, 0.0)
+
+
+def _launch_horizon(p, solved):
+    """Longer than the push (half a period of the spring) and the climb after it."""
+    return np.pi * np.sqrt(p.m / p.k) + 2 * p.dx * np.sqrt(p.k / p.m) / p.g
+
+
+def _relaxed(t, y, p):
+    """Zero when the spring reaches its natural length."""
+    return y[0] - p.dx
 
 
 EXERCISE = Exercise(
@@ -61,6 +86,18 @@ Measure heights from the starting point.
 4. **Formula.** $h$ = `{{ answers.h_formula }}`.
 """,
     solve=solve,
+    checks=(
+        Integrated("h", _launch, _compressed,
+                   _launch_horizon,
+                   lambda t, y, p: y[0], name="integrated_launch",
+                   event=lambda t, y, p: y[1], direction=-1, rtol=1e-5),
+        # energy conservation, eq. (1.107): the spring's energy ends as m g h
+        Balance("energy", lambda p, s: s["V_spring"], lambda p, s: p.m * p.g * s["h"],
+                name="energy_balance"),
+        # at the spring's natural length (x = dx) the speed of the same integration
+        Integrated("v_release", _launch, _compressed, _launch_horizon, lambda t, y, p: y[1],
+                   name="integrated_release", event=_relaxed, direction=1),
+    ),
     parts=(
         Numeric("h", "height above the start", question=1, unit="m", points=2,
                 misconceptions=(

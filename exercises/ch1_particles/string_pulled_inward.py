@@ -4,6 +4,7 @@ hole: conservation of angular momentum (Example 1.18, eqs. 1.151-1.155)."""
 import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
+from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.mechanics import angular_momentum as am, energy, kinematics
 
 
@@ -65,6 +66,17 @@ circumferential velocity $v_t = l\omega$ contributes: $H_B = m\,l\,v_t$ (eq. (1.
 4. **Formula.** $\omega_1$ = `{{ answers.omega_formula }}`.
 """,
     solve=solve,
+    checks=(
+        # angular momentum about the hole is conserved, eq. (1.154): l v_t = const.
+        Balance("angular momentum per unit mass", lambda p, s: p.l0 * p.l0 * p.omega0,
+                lambda p, s: p.l1 * p.l1 * s["omega1"], name="angular_momentum"),
+        Balance("work", lambda p, s: s["W"], lambda p, s: p.m * (s["v1"]**2 - s["v0"]**2) / 2,
+                name="work_energy"),
+        # the tangential speed keeps l v_t, eq. (1.154)
+        Balance("angular momentum per unit mass, from the speeds", lambda p, s: p.l0 * p.l0 * p.omega0,
+                lambda p, s: p.l1 * s["v1"], name="tangential_speed"),
+        Recompute("v_ratio", lambda p, s: p.l0 / p.l1, name="speed_ratio"),
+    ),
     parts=(
         Numeric("omega1", "final angular velocity", question=1, unit="rad/s", points=2,
                 misconceptions=(

@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
                                 per_draw)
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import kinematics
 
 
@@ -60,6 +61,12 @@ Here $l$ = {{ l }}, $\dot\varphi = \omega$ = {{ omega }} and $\ddot\varphi = \do
 5. **Formula.** $a_r$ = `{{ answers.a_r_formula }}`.
 """,
     solve=solve,
+    checks=(
+        # eq. (1.36): v = l phi', a = -l phi'^2 e_r + l phi'' e_phi
+        Recompute("a_r", lambda p, s: -p.l * p.omega**2, name="centripetal_eq_1_36"),
+        Recompute("a_phi", lambda p, s: p.l * p.alpha, name="tangential_eq_1_36"),
+        Recompute("v", lambda p, s: p.l * p.omega, name="speed_eq_1_36"),
+    ),
     parts=(
         Numeric("v", "speed", question=1, unit="m/s", points=1),
         Numeric("a_r", "radial acceleration", question=2, unit="m/s^2", points=2,

@@ -4,6 +4,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform)
+from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.exercise.figure import arrow, block, ceiling, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import collisions, energy
@@ -99,6 +100,15 @@ are perpendicular to the motion), so mechanical energy is conserved.
 4. From step 1: `{{ answers.V_formula }}`.
 """,
     solve=solve,
+    checks=(
+        # momentum balance of the plastic impact: m v = (m + M) V
+        Balance("momentum", lambda p, s: p.m * p.v, lambda p, s: (p.m + p.M) * s["V"],
+                name="momentum_balance"),
+        # energy balance of the swing, eq. (1.102): (m + M) V^2 / 2 = (m + M) g h
+        Balance("energy per unit mass", lambda p, s: s["V"]**2 / 2, lambda p, s: p.g * s["h"],
+                name="swing_energy"),
+        Recompute("fraction_lost", lambda p, s: p.M / (p.m + p.M), name="plastic_loss"),
+    ),
     figure=figure,
     parts=(
         Numeric("V", "speed just after the impact", question=1, unit="m/s", points=2,

@@ -2,6 +2,7 @@
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform)
+from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.mechanics import variable_mass
 
 
@@ -55,6 +56,13 @@ $m(t) = m_0 + qt$ = {{ si.mass }} kg (with $m_0$ = {{ m0 }}, $q$ = {{ q }}, $t$ 
 3. **Formula.** $v(t)$ = `{{ answers.v_t_formula }}`.
 """,
     solve=solve,
+    checks=(
+        # no horizontal force: the momentum of cart and collected load is conserved
+        Balance("momentum", lambda p, s: p.m0 * p.v0, lambda p, s: (p.m0 + p.q * p.t) * s["v_t"],
+                name="momentum_balance"),
+        # to keep v0 the collected mass must be brought to v0: F = q v0
+        Recompute("F_keep", lambda p, s: p.q * p.v0, name="momentum_flux"),
+    ),
     parts=(
         Numeric("v_t", "speed after loading for t", question=1, unit="m/s", points=2,
                 misconceptions=(

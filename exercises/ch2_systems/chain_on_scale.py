@@ -2,6 +2,7 @@
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform)
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import impact, particle, variable_mass
 
 
@@ -14,6 +15,13 @@ def solve(p):
         "lam": lam,
         "v_arrive": impact.impact_speed_after_fall(p.x, p.g),
     }
+
+
+def _scale_force(p, solved):
+    """The weight of the chain already on the scale, lam x g, plus the momentum flux of
+    the links arriving at the speed of a free fall through x, lam v^2 = 2 lam g x."""
+    lam = p.m / p.L
+    return lam * p.x * p.g + lam * 2 * p.g * p.x
 
 
 EXERCISE = Exercise(
@@ -58,6 +66,11 @@ force $\lambda v \cdot v = \lambda v^2$ (the momentum flux).
 4. **Formula.** $F$ = `{{ answers.F_x_formula }}`.
 """,
     solve=solve,
+    checks=(
+        Recompute("F_x", _scale_force, name="weight_plus_momentum_flux"),
+        Recompute("F_max", lambda p, s: 3 * p.m * p.g, name="last_link_arriving"),
+        Recompute("F_end", lambda p, s: p.m * p.g, name="at_rest"),
+    ),
     parts=(
         Numeric("F_x", "reading after x has fallen", question=1, unit="N", points=2,
                 misconceptions=(

@@ -4,6 +4,7 @@ fixed point (Section 2.2.3)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.exercise.figure import angle_arc, arrow, describe, dimension, new_drawing
 from dynagrade.mechanics import systems
 
@@ -145,6 +146,14 @@ $M = m_1 + m_2$ = {{ si.M }} kg (with $m_1$ = {{ m1 }} and $m_2$ = {{ m2 }}).
    Hence $H_O = H_C - M d v$ = {{ answers.H_O }}.
 """,
     solve=solve,
+    checks=(
+        # about C the dumbbell spins with the reduced mass: H_C = m1 m2 / (m1 + m2) L^2 omega
+        Recompute("H_C", lambda p, s: p.m1 * p.m2 / (p.m1 + p.m2) * p.L**2 * p.omega,
+                  name="spin_about_c"),
+        # H_O = H_C + r_C x M v_C with r_C = d e2, v_C = v e1: the orbit adds -M v d
+        Balance("angular momentum about O", lambda p, s: s["H_O"],
+                lambda p, s: s["H_C"] - (p.m1 + p.m2) * p.v * p.d, name="transfer"),
+    ),
     figure=figure,
     figure_to_scale=True,
     parts=(

@@ -3,6 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import systems
 from dynagrade.mechanics.examples import projectile
 
@@ -77,8 +78,18 @@ $v_0\cos\alpha$ = {{ si.v_apex }} m/s, reached at $t_{\text{top} } = v_0\sin\alp
    $x_C = (m_1 x_1 + (M - m_1)\,x_2)/M$ = {{ answers.x_c }} — exactly the range
    $v_0^2\sin 2\alpha/g$ the shell would have had without exploding: only external forces
    (gravity) move the centre of mass.
+4. **Check.** The intact shell's range, eq. (1.80), is $v_0^2\sin 2\alpha/g$ =
+   {{ checks.centre_of_mass_range }} m: the same number as $x_C$.
 """,
     solve=solve,
+    checks=(
+        # the explosion's forces are internal: the centre of mass flies on as the unexploded
+        # shell and lands at its range, eq. (1.80)
+        Recompute("x_c", lambda p, s: p.v0**2 * np.sin(2 * p.alpha) / p.g,
+                  name="centre_of_mass_range"),
+        Recompute("v2", lambda p, s: p.M * p.v0 * np.cos(p.alpha) / (p.M - p.m1),
+                  name="momentum_balance"),
+    ),
     parts=(
         Numeric("v2", "speed of fragment 2 after the explosion", question=1, unit="m/s", points=1,
                 misconceptions=(

@@ -4,6 +4,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector,
                                 per_draw)
+from dynagrade.exercise.checks import Balance
 from dynagrade.mechanics import collisions
 
 
@@ -30,6 +31,11 @@ def solve(p):
             # normal components along the line of impact, before and after
             "v_n": float(np.dot([p.v, 0.0], n)),
             "v1n": float(np.dot(after.v1, n)), "v2n": float(np.dot(after.v2, n))}
+
+
+def _tangent(p):
+    """The unit vector across the line of impact."""
+    return np.array([-np.sin(p.beta), np.cos(p.beta)])
 
 
 EXERCISE = Exercise(
@@ -83,6 +89,19 @@ $v_{2,n}'$ = {{ si.v2n }} m/s.
 3. **Speed of ball 2.** $|v_2'| = v_{2,n}'$ = {{ answers.speed2 }}.
 """,
     solve=solve,
+    checks=(
+        # momentum balance of the pair, a vector
+        Balance("momentum", lambda p, s: (p.m1 * p.v, 0.0),
+                lambda p, s: tuple(p.m1 * np.asarray(s["v1_after"]) + p.m2 * np.asarray(s["v2_after"])),
+                name="momentum_balance", atol=1e-12),
+        # Newton's law of restitution along the line of impact
+        Balance("normal relative speed", lambda p, s: p.e * p.v * np.cos(p.beta),
+                lambda p, s: s["v2n"] - s["v1n"], name="restitution"),
+        # smooth pucks: the impulse is along the line of impact, tangential speeds are kept
+        Balance("tangential speed of puck 1", lambda p, s: -p.v * np.sin(p.beta),
+                lambda p, s: float(np.dot(s["v1_after"], _tangent(p))), name="smooth_contact",
+                atol=1e-12),
+    ),
     parts=(
         Vector("v1_after", "velocity of ball 1 after the impact", question=1,
                unit="m/s", size=2, points=2,

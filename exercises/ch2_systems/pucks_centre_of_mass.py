@@ -4,6 +4,7 @@ and velocities relative to it (kinematics of systems of particles, Section 2.1).
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Uniform, Vector, per_draw
+from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import arrow, describe, new_drawing
 from dynagrade.mechanics import systems
 
@@ -199,6 +200,22 @@ $m_3$ = {{ m3 }}).
    $\dot y_2$ = {{ w2 }}: $\dot\rho_2$ = {{ answers.u_2 }}.
 """,
     solve=solve,
+    checks=(
+        # the mass-weighted mean of the positions and of the velocities
+        Recompute("r_C", lambda p, s: ((p.m1 * p.x1 + p.m2 * p.x2 + p.m3 * p.x3) / (p.m1 + p.m2 + p.m3),
+                                       (p.m1 * p.y1 + p.m2 * p.y2 + p.m3 * p.y3) / (p.m1 + p.m2 + p.m3)),
+                  name="weighted_mean_position", atol=1e-12),
+        Recompute("v_C", lambda p, s: ((p.m1 * p.u1 + p.m2 * p.u2 + p.m3 * p.u3) / (p.m1 + p.m2 + p.m3),
+                                       (p.m1 * p.w1 + p.m2 * p.w2 + p.m3 * p.w3) / (p.m1 + p.m2 + p.m3)),
+                  name="weighted_mean_velocity", atol=1e-12),
+        # relative to the centre of mass: puck 1's position, puck 2's velocity
+        Recompute("rho_1", lambda p, s: (p.x1 - (p.m1 * p.x1 + p.m2 * p.x2 + p.m3 * p.x3) / (p.m1 + p.m2 + p.m3),
+                                         p.y1 - (p.m1 * p.y1 + p.m2 * p.y2 + p.m3 * p.y3) / (p.m1 + p.m2 + p.m3)),
+                  name="relative_position", atol=1e-12),
+        Recompute("u_2", lambda p, s: (p.u2 - (p.m1 * p.u1 + p.m2 * p.u2 + p.m3 * p.u3) / (p.m1 + p.m2 + p.m3),
+                                       p.w2 - (p.m1 * p.w1 + p.m2 * p.w2 + p.m3 * p.w3) / (p.m1 + p.m2 + p.m3)),
+                  name="relative_velocity", atol=1e-12),
+    ),
     figure=figure,
     figure_to_scale=True,
     parts=(

@@ -3,6 +3,7 @@
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform)
+from dynagrade.exercise.checks import Integrated, Recompute
 from dynagrade.mechanics import variable_mass
 
 
@@ -20,6 +21,21 @@ def solve(p):
         "q": q,
         "m_b": variable_mass.mass_at_time(p.tb, p.m0, -q),
     }
+
+
+def _ascent(t, y, p):
+    """Vertical flight with thrust u q against gravity, the mass falling as m0 - q t
+    (variable-mass momentum balance): v' = u q / (m0 - q t) - g."""
+    q = p.mf / p.tb
+    return (y[1], p.u * q / (p.m0 - q * t) - p.g)
+
+
+def _on_the_pad(p):
+    return (0.0, 0.0)
+
+
+def _until_burnout(p, solved):
+    return p.tb
 
 
 EXERCISE = Exercise(
@@ -74,6 +90,13 @@ $m(t)\,\dot v = q u - m(t)\,g, \qquad m(t) = m_0 - qt$.
 5. **Formula.** $v_b$ = `{{ answers.v_b_formula }}`.
 """,
     solve=solve,
+    checks=(
+        Integrated("v_b", _ascent, _on_the_pad, _until_burnout, lambda t, y, p: y[1],
+                   name="integrated_speed"),
+        Integrated("h_b", _ascent, _on_the_pad, _until_burnout, lambda t, y, p: y[0],
+                   name="integrated_height"),
+        Recompute("F", lambda p, s: p.u * p.mf / p.tb, name="thrust"),
+    ),
     parts=(
         Numeric("F", "thrust", question=1, unit="kN", points=1),
         Numeric("dv_free", "speed gain without gravity", question=2, unit="m/s", points=1,

@@ -4,6 +4,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform)
+from dynagrade.exercise.checks import Balance
 from dynagrade.mechanics import energy, systems
 
 
@@ -68,6 +69,13 @@ $k$ = {{ k }}, $\delta$ = {{ delta }}; work–energy balance, Section 2.2.2).
 4. **Formula.** $v_1$ = `{{ answers.v1_formula }}`.
 """,
     solve=solve,
+    checks=(
+        # starting from rest: the momenta cancel, the spring's energy becomes kinetic
+        Balance("momentum magnitude", lambda p, s: p.m1 * abs(s["v1"]), lambda p, s: p.m2 * abs(s["v2"]),
+                name="momentum_balance"),
+        Balance("energy", lambda p, s: p.k * p.delta**2 / 2,
+                lambda p, s: (p.m1 * s["v1"]**2 + p.m2 * s["v2"]**2) / 2, name="energy_balance"),
+    ),
     parts=(
         Numeric("v1", "speed of cart 1", question=1, unit="m/s", points=2,
                 misconceptions=(

@@ -2,6 +2,7 @@
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform)
+from dynagrade.exercise.checks import Balance, Limit, Recompute
 from dynagrade.exercise.figure import arrow, block, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import collisions
@@ -122,8 +123,23 @@ $m_2$ = {{ m2 }}).
    $\Delta T = \frac{m_1 m_2\,(1 - e^2)\,(v_1 - v_2)^2}{2\,(m_1 + m_2)}$
    = {{ answers.dT }}.
 4. **Formula.** $\Delta T$ = `{{ answers.dT_formula }}`.
+5. **Check.** With $e = 1$ the factor $1 - e^2$ vanishes: an elastic impact loses
+   $\Delta T$ = {{ checks.elastic }} J.
 """,
     solve=solve,
+    checks=(
+        Balance("momentum", lambda p, s: p.m1 * p.v1 + p.m2 * p.v2,
+                lambda p, s: p.m1 * s["v1_after"] + p.m2 * s["v2_after"], name="momentum_balance"),
+        Balance("relative speed", lambda p, s: p.e * (p.v1 - p.v2),
+                lambda p, s: s["v2_after"] - s["v1_after"], name="restitution"),
+        Balance("energy", lambda p, s: (p.m1 * p.v1**2 + p.m2 * p.v2**2) / 2,
+                lambda p, s: (p.m1 * s["v1_after"]**2 + p.m2 * s["v2_after"]**2) / 2 + s["dT"],
+                name="energy_balance"),
+        Recompute("v_c", lambda p, s: (p.m1 * p.v1 + p.m2 * p.v2) / (p.m1 + p.m2),
+                  name="plastic_common_speed"),
+        # e = 1: no kinetic energy is lost
+        Limit("dT", {"e": 1.0}, lambda p: 0.0, name="elastic", atol=1e-9),
+    ),
     figure=figure,
     parts=(
         Numeric("v1_after", "velocity of cart 1 after the impact", question=1, unit="m/s", points=2,

@@ -4,6 +4,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector,
                                 per_draw)
+from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.mechanics import rotations
 
 E1, E3 = np.array([1.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0])
@@ -34,6 +35,16 @@ def solve(p):
 
 def _differ(u, w):
     return np.max(np.abs(np.asarray(u) - np.asarray(w))) > 0.05 * np.linalg.norm(u)
+
+
+def _matrix_by_hand(p):
+    """R = R_1(beta) R_3(gamma), each a right-handed rotation about a basis vector written
+    out (Section 3.4.1): first about e3 by gamma, then about e1 by beta."""
+    c, s = np.cos(p.gamma), np.sin(p.gamma)
+    about_e3 = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    c, s = np.cos(p.beta), np.sin(p.beta)
+    about_e1 = np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
+    return about_e1 @ about_e3
 
 
 EXERCISE = Exercise(
@@ -92,6 +103,18 @@ $(0, -\sin\beta, \cos\beta)$.
    The angles $\gamma$ and $\beta$ about different axes do not simply add.
 """,
     solve=solve,
+    checks=(
+        Recompute("a_rotated", lambda p, s: tuple(_matrix_by_hand(p) @ _vector(p)),
+                  name="active_by_hand", atol=1e-12),
+        Recompute("a_in_B", lambda p, s: tuple(_matrix_by_hand(p).T @ _vector(p)),
+                  name="passive_by_hand", atol=1e-12),
+        # the trace of a rotation by theta is 1 + 2 cos(theta)
+        Recompute("angle", lambda p, s: np.arccos((np.trace(_matrix_by_hand(p)) - 1) / 2),
+                  name="angle_from_trace", atol=1e-9),
+        # a rotation keeps lengths
+        Balance("length", lambda p, s: np.linalg.norm(_vector(p)),
+                lambda p, s: np.linalg.norm(s["a_rotated"]), name="length_kept"),
+    ),
     parts=(
         Vector("a_rotated", "actively rotated vector", question=1, size=3, points=2, atol=0.02,
                misconceptions=(

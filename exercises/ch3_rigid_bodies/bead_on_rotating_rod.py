@@ -4,6 +4,7 @@ in the rotating frame (Section 3.4.3)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise.checks import Integrated, Recompute
 from dynagrade.mechanics import frames
 
 
@@ -14,6 +15,21 @@ def solve(p):
         "rdot_t": rdot,
         "N": frames.bead_normal_force(p.m, p.Omega, rdot),
     }
+
+
+def _on_the_rod(t, y, p):
+    """The bead's radial equation in the rod's rotating frame (Section 3.4.3): no force
+    along the smooth rod, so r'' = Omega^2 r."""
+    return (y[1], p.Omega**2 * y[0])
+
+
+def _at_rest_on_the_rod(p):
+    """At r0, at rest relative to the rod."""
+    return (p.r0, 0.0)
+
+
+def _until_t(p, solved):
+    return p.t
 
 
 EXERCISE = Exercise(
@@ -64,6 +80,14 @@ to the rod, in the horizontal plane, the rod must supply the Coriolis term.
    forward in the sense of rotation. The centrifugal term is along the rod and needs no force there.
 """,
     solve=solve,
+    checks=(
+        Integrated("r_t", _on_the_rod, _at_rest_on_the_rod, _until_t,
+                   lambda t, y, p: y[0], name="integrated_position"),
+        Integrated("rdot_t", _on_the_rod, _at_rest_on_the_rod, _until_t,
+                   lambda t, y, p: y[1], name="integrated_speed"),
+        # the rod supplies the Coriolis force across it: N = 2 m Omega r'
+        Recompute("N", lambda p, s: 2 * p.m * p.Omega * s["rdot_t"], name="coriolis_force"),
+    ),
     parts=(
         Numeric("r_t", "distance from O", question=1, unit="m", points=2,
                 misconceptions=(

@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Uniform,
                                 per_draw)
+from dynagrade.exercise.checks import Integrated, Recompute
 from dynagrade.mechanics import inertia, rigid_kinetics
 
 
@@ -40,6 +41,17 @@ def _with_moment(p, i_o):
     mass = p.m_r + p.m_d
     return abs(rigid_kinetics.compound_pendulum_angular_acceleration(np.pi / 2, p.g, mass,
                                                             _centre_distance(p), i_o))
+
+
+def _pivot_moment(p):
+    """Rod about its end m_r L^2 / 3, disk about its centre m_d R^2 / 2 moved by L
+    (parallel axes, Section 3.2.2)."""
+    return p.m_r * p.L**2 / 3 + p.m_d * p.R**2 / 2 + p.m_d * p.L**2
+
+
+def _swing(t, y, p):
+    """Angular momentum balance about the pivot: I_O phi'' = -(m_r L/2 + m_d L) g sin(phi)."""
+    return (y[1], -(p.m_r * p.L / 2 + p.m_d * p.L) * p.g * np.sin(y[0]) / _pivot_moment(p))
 
 
 EXERCISE = Exercise(
@@ -97,6 +109,15 @@ O and the work-energy balance (Section 3.2.2), both with the moment of inertia a
    and the rod passes the vertical at $\omega$ = {{ answers.omega_bottom }}.
 """,
     solve=solve,
+    checks=(
+        Recompute("I_O", lambda p, s: _pivot_moment(p), name="parallel_axes"),
+        Recompute("alpha0", lambda p, s: abs(_swing(0.0, (np.pi / 2, 0.0), p)[1]),
+                  name="released_horizontal"),
+        # released horizontal, the speed at the bottom by integrating the swing
+        Integrated("omega_bottom", _swing, lambda p: (np.pi / 2, 0.0),
+                   lambda p, s: 20 * np.sqrt(p.L / p.g), lambda t, y, p: abs(y[1]),
+                   name="integrated_swing", event=lambda t, y, p: y[0], direction=-1),
+    ),
     parts=(
         Numeric("I_O", "moment of inertia about O", question=1, unit="kg*m^2", points=2,
                 misconceptions=(

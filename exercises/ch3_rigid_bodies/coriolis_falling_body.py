@@ -5,12 +5,23 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform)
+from dynagrade.exercise.checks import Integrated, Recompute
 from dynagrade.mechanics import frames, kinematics
 
 
 def solve(p):
     return {"d": frames.eastward_deflection_of_falling_body(p.h, p.lat, p.Omega_E, p.g),
             "t_fall": kinematics.time_from_rest_over_distance(p.h, p.g)}
+
+
+def _falling_on_earth(t, y, p):
+    """The fall in the Earth's rotating frame (Section 3.4.3) with east, north, up axes:
+    a = -g e_up - 2 Omega x v, Omega = Omega_E (0, cos(lat), sin(lat)); the centrifugal
+    term is in g."""
+    ve, vn, vu = y[3], y[4], y[5]
+    wn, wu = p.Omega_E * np.cos(p.lat), p.Omega_E * np.sin(p.lat)
+    cross = (wn * vu - wu * vn, wu * ve, -wn * ve)
+    return (ve, vn, vu, -2 * cross[0], -2 * cross[1], -p.g - 2 * cross[2])
 
 
 EXERCISE = Exercise(
@@ -57,6 +68,12 @@ $v = g t$ downward.
    written as `{{ answers.d_formula }}`.
 """,
     solve=solve,
+    checks=(
+        Integrated("d", _falling_on_earth, lambda p: (0.0,) * 6, lambda p, s: 2 * np.sqrt(2 * p.h / p.g),
+                   lambda t, y, p: y[0], name="integrated_fall",
+                   event=lambda t, y, p: y[2] + p.h, direction=-1, rtol=1e-4),
+        Recompute("t_fall", lambda p, s: np.sqrt(2 * p.h / p.g), name="free_fall_time"),
+    ),
     parts=(
         Numeric("d", "eastward deflection", question=1, unit="mm", points=2,
                 misconceptions=(

@@ -4,6 +4,7 @@
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import angle_arc, block, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import rigid_kinematics as rk
@@ -123,6 +124,20 @@ def _distinct(a, b):
     return abs(a - b) > 0.04 * max(abs(a), abs(b))
 
 
+def _slider_speed(p, solved):
+    """The slider at x_B = r cos(theta) + sqrt(l^2 - r^2 sin^2(theta)) (the rod's length
+    fixed), differentiated in time with theta' = 2 pi n (Section 3.1.1)."""
+    root = np.sqrt(p.l**2 - (p.r * np.sin(p.theta)) ** 2)
+    dx_dtheta = -p.r * np.sin(p.theta) - p.r**2 * np.sin(p.theta) * np.cos(p.theta) / root
+    return dx_dtheta * 2 * np.pi * p.n
+
+
+def _rod_rate(p, solved):
+    """l sin(beta) = r sin(theta) differentiated: beta' = r cos(theta) theta' / (l cos(beta))."""
+    beta = np.arcsin(p.r * np.sin(p.theta) / p.l)
+    return abs(p.r * np.cos(p.theta) * 2 * np.pi * p.n / (p.l * np.cos(beta)))
+
+
 EXERCISE = Exercise(
     id="crank-slider-velocity",
     title="Crank-slider mechanism",
@@ -176,6 +191,11 @@ $\beta$ = {{ si.beta | deg }}°.
    and the rod turns at $|\omega_{AB}|$ = {{ answers.omega_rod }}.
 """,
     solve=solve,
+    checks=(
+        Recompute("v_B", _slider_speed, name="differentiated_position"),
+        Recompute("omega_rod", _rod_rate, name="differentiated_constraint", atol=1e-9),
+        Recompute("beta", lambda p, s: np.arcsin(p.r * np.sin(p.theta) / p.l), name="sine_rule"),
+    ),
     figure=figure, figure_to_scale=True,
     parts=(
         Numeric("v_B", "slider velocity", question=1, unit="m/s", points=2,

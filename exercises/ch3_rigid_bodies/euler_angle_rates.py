@@ -4,6 +4,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector,
                                 per_draw)
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import gyro
 
 
@@ -22,6 +23,14 @@ def solve(p):
 def _rates_added(p):
     """The wrong route: precession and spin added as if about one axis."""
     return np.array([p.theta_dot, 0.0, p.psi_dot + p.phi_dot])
+
+
+def _magnitude(p, solved):
+    """omega = psi' (space axis) + theta' (line of nodes) + phi' (body axis), Section 3.5.1:
+    the line of nodes is perpendicular to both axes, which enclose theta, so
+    |omega|^2 = theta'^2 + psi'^2 + phi'^2 + 2 psi' phi' cos(theta) in any convention."""
+    return np.sqrt(p.theta_dot**2 + p.psi_dot**2 + p.phi_dot**2
+                   + 2 * p.psi_dot * p.phi_dot * np.cos(p.theta))
 
 
 EXERCISE = Exercise(
@@ -75,6 +84,9 @@ where $e_1'$ is the line of nodes. To add them we need all three in the body fra
    symmetry axis make the angle $\theta$.
 """,
     solve=solve,
+    checks=(
+        Recompute("omega_abs", _magnitude, name="magnitude_without_components"),
+    ),
     parts=(
         Vector("omega_body", "body-frame angular velocity", question=1,
                unit="rad/s", size=3, points=3,

@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Uniform,
                                 per_draw)
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import gyro, inertia, rigid_kinetics, vibrations
 
 
@@ -22,6 +23,12 @@ def solve(p):
     # one precession revolution takes the period of the rotation at the rate psi_dot
     return {"H": float(spin_momentum), "psi_dot": rate, "T": vibrations.period(rate),
             "omega_spin": _spin(p), "I3": disk[2, 2]}
+
+
+def _precession(p, solved):
+    """The gravity torque m g l turns the spin momentum H = (m R^2 / 2) omega_s around:
+    m g l = H psi' for a fast top (Section 3.5.2)."""
+    return p.m * p.g * p.l / (p.m * p.R**2 / 2 * 2 * np.pi * p.n)
 
 
 EXERCISE = Exercise(
@@ -70,6 +77,10 @@ change $\dot\psi\,e_3\times H$ equals the moment (gyroscope, Section 3.5.2).
    that is $T$ = {{ answers.T }}.
 """,
     solve=solve,
+    checks=(
+        Recompute("psi_dot", _precession, name="torque_turns_momentum"),
+        Recompute("T", lambda p, s: 2 * np.pi / _precession(p, s), name="one_revolution"),
+    ),
     parts=(
         Numeric("H", "spin angular momentum", question=1, unit="kg*m^2/s", points=1,
                 misconceptions=(

@@ -4,6 +4,7 @@ approximation and the smallest spin (Section 3.5.2)."""
 import numpy as np
 
 from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.mechanics import gyro
 
 
@@ -22,6 +23,23 @@ def solve(p):
         "psi_fast": _rates(p).fast,
         "psi_approx": _fast_top(p),
     }
+
+
+def _gravity_torque(p, solved):
+    return p.m * p.g * p.l
+
+
+def _gyroscopic(rate):
+    """The torque steady precession at ``rate`` needs about the nodal axis, per
+    sin(theta) (Section 3.5.2): psi' (I3 omega3 - I1 psi' cos(theta))."""
+    return lambda p, s: s[rate] * (p.I3 * p.w3 - p.I1 * s[rate] * np.cos(p.theta))
+
+
+def _roots(p):
+    """The steady precession rates solve I1 cos(theta) psi'^2 - I3 w3 psi' + m g l = 0."""
+    a, b, c = p.I1 * np.cos(p.theta), -p.I3 * p.w3, p.m * p.g * p.l
+    root = np.sqrt(b * b - 4 * a * c)
+    return sorted(((-b - root) / (2 * a), (-b + root) / (2 * a)))
 
 
 EXERCISE = Exercise(
@@ -81,6 +99,19 @@ $\theta$ = {{ theta }}, $\omega_3$ = {{ w3 }} and $g$ = {{ g }}.
    of the tilt.
 """,
     solve=solve,
+    checks=(
+        Balance("torque of the slow precession", _gravity_torque, _gyroscopic("psi_slow"),
+                name="slow_precession_balance"),
+        Balance("torque of the fast precession", _gravity_torque, _gyroscopic("psi_fast"),
+                name="fast_precession_balance"),
+        # the two rates meet where the quadratic's discriminant vanishes
+        Recompute("w_min", lambda p, s: np.sqrt(4 * p.I1 * p.m * p.g * p.l * np.cos(p.theta)) / p.I3,
+                  name="double_root"),
+        Recompute("psi_approx", lambda p, s: p.m * p.g * p.l / (p.I3 * p.w3), name="fast_top"),
+        # which root is which: the slow one is the smaller, by the quadratic formula
+        Recompute("psi_slow", lambda p, s: _roots(p)[0], name="smaller_root"),
+        Recompute("psi_fast", lambda p, s: _roots(p)[1], name="larger_root"),
+    ),
     parts=(
         Numeric("w_min", "smallest axial spin", question=1, unit="rad/s", points=1),
         Numeric("psi_slow", "slow precession rate", question=2, unit="rad/s", points=2,

@@ -4,6 +4,7 @@ inertia, moment about a diagonal and principal moments (Section 3.2.3)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import inertia
 
 
@@ -89,6 +90,15 @@ $b$ = {{ b }}:
    which gives $I_{\min}$ = {{ answers.I_min }}.
 """,
     solve=solve,
+    checks=(
+        # the integrals over the plate 0 < x < a, 0 < y < b of m/(a b) (y^2, -x y, x^2 + y^2)
+        Recompute("I11", lambda p, s: p.m * p.b**2 / 3, name="integral_of_y_squared"),
+        Recompute("I12", lambda p, s: -p.m * p.a * p.b / 4, name="product_integral"),
+        Recompute("I33", lambda p, s: p.m * (p.a**2 + p.b**2) / 3, name="polar_integral"),
+        # about the diagonal: the mean squared distance from it, m a^2 b^2 / (6 (a^2 + b^2))
+        Recompute("I_diag", lambda p, s: p.m * p.a**2 * p.b**2 / (6 * (p.a**2 + p.b**2)),
+                  name="distance_to_the_diagonal"),
+    ),
     parts=(
         Numeric("I11", "I11 about the corner", question=1, unit="kg*m^2", points=1,
                 misconceptions=(

@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Options, Symbolic,
                                 Uniform)
+from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.mechanics import inertia, kinematics, rigid_kinetics
 
 
@@ -98,6 +99,16 @@ The three bodies differ only in $I_C/(mR^2)$: ½ for the cylinder, 2/5 for the s
 6. **As a formula.** From step 1, $a_{\mathrm{cyl} }$ = `{{ answers.a_cyl_formula }}`.
 """,
     solve=solve,
+    checks=(
+        # rolling without slip, I = k m R^2: a = g sin(alpha) / (1 + k) (Section 3.2.1)
+        Recompute("a_cyl", lambda p, s: p.g * np.sin(p.alpha) / (1 + 1 / 2), name="cylinder_k_half"),
+        Recompute("t_sphere", lambda p, s: np.sqrt(2 * p.s / (p.g * np.sin(p.alpha) / (1 + 2 / 5))),
+                  name="sphere_k_two_fifths"),
+        # energy: m g h = m v^2 / 2 + (m R^2)(v / R)^2 / 2 = m v^2 for the hoop
+        Balance("energy per unit mass", lambda p, s: p.g * p.s * np.sin(p.alpha),
+                lambda p, s: s["v_hoop"]**2, name="hoop_energy"),
+        Recompute("mu_min", lambda p, s: np.tan(p.alpha) / 3, name="cylinder_friction"),
+    ),
     parts=(
         Numeric("a_cyl", "acceleration of the cylinder", question=1, unit="m/s^2", points=2,
                 misconceptions=(

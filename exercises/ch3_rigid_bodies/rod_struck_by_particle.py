@@ -1,6 +1,7 @@
 """A hanging rod struck by a particle: eccentric impact on a pinned body (Section 3.3)."""
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.checks import Balance, Recompute
 import numpy as np
 
 from dynagrade.exercise.figure import arrow, block, dimension, new_drawing, pivot
@@ -137,6 +138,19 @@ $v$ = {{ v }}, $d$ = {{ d }} and $e$ = {{ e }}: $\hat F$ = {{ si.impulse }} N·s
    so $d_P$ = {{ answers.d_percussion }}, whatever the ball and its speed.
 """,
     solve=solve,
+    checks=(
+        # angular momentum about the pivot is conserved through the impact (Section 3.3)
+        Balance("angular momentum about the pivot", lambda p, s: p.m * p.v * p.d,
+                lambda p, s: p.m * s["v_after"] * p.d + p.M * p.L**2 / 3 * s["omega"],
+                name="angular_momentum"),
+        # Newton's restitution at the struck point
+        Balance("separation speed", lambda p, s: p.e * p.v,
+                lambda p, s: s["omega"] * p.d - s["v_after"], name="restitution"),
+        Recompute("d_percussion", lambda p, s: 2 * p.L / 3, name="rod_two_thirds"),
+        # the rod's linear momentum: M (L/2) omega = J + R, so the pivot's impulse is the rest
+        Recompute("R_pivot", lambda p, s: abs(p.M * p.L / 2 * s["omega"] - s["impulse"]),
+                  name="rod_linear_momentum"),
+    ),
     figure=figure, figure_to_scale=True,
     parts=(
         Numeric("omega", "angular speed of the rod", question=1, unit="rad/s", points=2,

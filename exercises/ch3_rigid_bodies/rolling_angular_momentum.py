@@ -4,6 +4,7 @@ point: the angular momentum transfer formula (Section 3.2.4)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import inertia, rigid_kinetics
 
 
@@ -68,6 +69,14 @@ $\omega = -\frac{v}{R}\,e_3$. Here $m$ = {{ m }}, $R$ = {{ R }} and $v$ = {{ v }
    changes sign.
 """,
     solve=solve,
+    checks=(
+        # a sphere rolling to the right spins clockwise, omega = -v/R e3: about C
+        # H = (2/5) m R^2 omega; about a point at height h add (r_C - r_A) x m v = -m (R - h) v
+        Recompute("H_C", lambda p, s: -2 / 5 * p.m * p.R * p.v, name="spin_only"),
+        Recompute("H_P", lambda p, s: -7 / 5 * p.m * p.R * p.v, name="about_the_contact"),
+        Recompute("H_A", lambda p, s: -2 / 5 * p.m * p.R * p.v - p.m * (p.R - p.h) * p.v,
+                  name="transfer_to_a"),
+    ),
     parts=(
         Numeric("H_C", "angular momentum about C", question=1, unit="kg*m^2/s", points=1),
         Numeric("H_P", "angular momentum about P", question=2, unit="kg*m^2/s", points=2,

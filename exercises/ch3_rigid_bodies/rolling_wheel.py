@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform, Vector)
+from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.exercise.figure import (angle_arc, arrow, describe, dimension,
                                        ground, new_drawing)
 from dynagrade.exercise.numbers import format_number
@@ -115,6 +116,14 @@ $\varphi$ = {{ phi }}.
 5. **As a formula.** From step 3, $|v_P|$ = `{{ answers.speed_formula }}`.
 """,
     solve=solve,
+    checks=(
+        # the rim point at angle phi from the contact point moves about it: speed
+        # 2 v sin(phi/2), distance 2 R sin(phi/2) (Section 3.1.1)
+        Recompute("speed", lambda p, s: 2 * p.v * abs(np.sin(p.phi / 2)), name="chord_speed"),
+        Recompute("d_ICR", lambda p, s: 2 * p.R * abs(np.sin(p.phi / 2)), name="chord_length"),
+        Balance("speed", lambda p, s: s["speed"], lambda p, s: s["omega"] * s["d_ICR"],
+                name="rotation_about_icr"),
+    ),
     figure=figure, figure_to_scale=True,
     parts=(
         Numeric("omega", "angular speed", question=1, unit="rad/s", points=1),

@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector,
                                 per_draw)
+from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.mechanics import rigid_kinematics as rk
 
 
@@ -21,6 +22,13 @@ def _r(p):
 def solve(p):
     v = rk.velocity_of_point(np.zeros(3), _omega(p), _r(p))
     return {"omega_vec": _omega(p), "v_P": v, "speed": float(np.linalg.norm(v))}
+
+
+def _cross_by_hand(p, solved):
+    """v = omega x r with omega = (omega_s, 0, Omega), r = (d, R sin(gamma), R cos(gamma))."""
+    return (-p.Omega * p.R * np.sin(p.gamma),
+            p.Omega * p.d - p.ws * p.R * np.cos(p.gamma),
+            p.ws * p.R * np.sin(p.gamma))
 
 
 EXERCISE = Exercise(
@@ -68,6 +76,13 @@ $\Omega$ = {{ Omega }}, $d$ = {{ d }}, $R$ = {{ R }}, $\gamma$ = {{ gamma }}.
 3. **Speed.** $|v_P| = \sqrt{v_1^2 + v_2^2 + v_3^2}$ = {{ answers.speed }}.
 """,
     solve=solve,
+    checks=(
+        Recompute("v_P", _cross_by_hand, name="cross_product_by_hand", atol=1e-12),
+        # a rotation about O moves P across both omega and r
+        Balance("v_P . omega", lambda p, s: 0.0,
+                lambda p, s: float(np.dot(s["v_P"], (p.ws, 0.0, p.Omega))),
+                name="across_omega", atol=1e-9),
+    ),
     parts=(
         Vector("omega_vec", "angular velocity", question=1, unit="rad/s", size=3, points=1,
                misconceptions=(

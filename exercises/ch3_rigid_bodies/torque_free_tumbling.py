@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Options, Uniform,
                                 per_draw)
+from dynagrade.exercise.checks import Integrated, Recompute
 from dynagrade.mechanics import euler_equations, inertia
 
 AXES = ("e1", "e2", "e3")
@@ -31,6 +32,32 @@ def solve(p):
         "axis_max": AXES[_largest(p)],
         "axis_min": AXES[int(np.argmin(moments))],
     }
+
+
+def _box_moments(p):
+    """A box a x b x c about its central axes: m (b^2 + c^2)/12, ... (Section 3.2)."""
+    return np.array([p.b**2 + p.c**2, p.a**2 + p.c**2, p.a**2 + p.b**2]) * p.m / 12
+
+
+def _euler(t, y, p):
+    """Euler's equations without torque, I1 w1' = (I2 - I3) w2 w3 and cyclic."""
+    i = _box_moments(p)
+    return ((i[1] - i[2]) * y[1] * y[2] / i[0], (i[2] - i[0]) * y[2] * y[0] / i[1],
+            (i[0] - i[1]) * y[0] * y[1] / i[2])
+
+
+def _nudged_spin(p):
+    """Spin w about the largest axis, the next axis's component zero and the third's
+    nudged by 1e-6 w."""
+    largest = int(np.argmax(_box_moments(p)))
+    spin = np.zeros(3)
+    spin[largest], spin[(largest + 2) % 3] = p.w, 1e-6 * p.w
+    return spin
+
+
+def _wobble(t, y, p):
+    """The wobbling component that starts at zero: it is zero again half a period on."""
+    return y[(int(np.argmax(_box_moments(p))) + 1) % 3]
 
 
 EXERCISE = Exercise(
@@ -88,6 +115,13 @@ rotation, Section 3.4.4).
    which gives $\nu$ = {{ answers.nu }}.
 """,
     solve=solve,
+    checks=(
+        Recompute("I_max", lambda p, s: max(_box_moments(p)), name="box_moments"),
+        # the small wobble about the largest axis: half a period to the next zero
+        Integrated("nu", _euler, _nudged_spin, lambda p, s: 4 * np.pi / s["nu"],
+                   lambda t, y, p: np.pi / t, name="integrated_wobble", event=_wobble,
+                   rtol=1e-4),
+    ),
     parts=(
         Numeric("I_max", "largest principal moment", question=1, unit="kg*m^2", points=1,
                 misconceptions=(

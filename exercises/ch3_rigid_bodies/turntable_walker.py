@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform, Vector,
                                 per_draw)
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import frames, particle
 
 
@@ -23,6 +24,12 @@ def solve(p):
 def _without_coriolis(p):
     """The wrong route: the Coriolis term left out."""
     return _acceleration(p) - frames.coriolis_acceleration([0, 0, p.Omega], [p.u, 0, 0])
+
+
+def _polar_acceleration(p, solved):
+    """Polar components, eq. (1.33), with r' = u, r'' = a_rel, phi' = Omega:
+    (a_rel - r Omega^2, 2 u Omega + r Omega')."""
+    return (p.a_rel - p.r * p.Omega**2, 2 * p.u * p.Omega + p.r * p.Omega_dot)
 
 
 EXERCISE = Exercise(
@@ -76,6 +83,11 @@ $\Omega$ = {{ Omega }} and $\dot\Omega$ = {{ Omega_dot }}.
    Coriolis term, is what pushes the walker sideways.
 """,
     solve=solve,
+    checks=(
+        Recompute("a", _polar_acceleration, name="polar_coordinates"),
+        Recompute("F", lambda p, s: p.m * np.hypot(*_polar_acceleration(p, s)),
+                  name="momentum_balance"),
+    ),
     parts=(
         Vector("a", "absolute acceleration", question=1, unit="m/s^2", size=2, points=3, atol=0.01,
                misconceptions=(

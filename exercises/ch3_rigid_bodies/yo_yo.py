@@ -4,6 +4,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform)
+from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.mechanics import inertia, rigid_kinetics
 from dynagrade.mechanics import rigid_kinematics as rk
 
@@ -68,6 +69,15 @@ from the axle, so the centre's speed and the spin are tied by $v = \omega r$.
 4. **As a formula.** From step 1, $v$ = `{{ answers.v_formula }}`.
 """,
     solve=solve,
+    checks=(
+        # energy: m g h = m v^2 / 2 + (m R^2 / 2)(v / r)^2 / 2 (Section 3.2.5)
+        Balance("energy", lambda p, s: p.m * p.g * p.h,
+                lambda p, s: p.m * s["v"]**2 / 2 + p.m * p.R**2 / 4 * (s["v"] / p.r) ** 2,
+                name="energy_balance"),
+        # m a = m g - S and (m R^2 / 2) a / r = S r
+        Recompute("S", lambda p, s: p.m * p.g * (p.R**2 / 2) / (p.R**2 / 2 + p.r**2),
+                  name="momentum_balances"),
+    ),
     parts=(
         Numeric("v", "speed after dropping h", question=1, unit="m/s", points=2,
                 misconceptions=(

@@ -3,6 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import vibrations
 
 
@@ -22,6 +23,13 @@ def solve(p):
             "X": vibrations.base_excitation_amplitude(p.Y, _eta(p), zeta),
             "omega_n": _omega_n(p), "eta": _eta(p), "zeta": zeta,
             "TR": vibrations.transmissibility(_eta(p), zeta)}
+
+
+def _by_impedance(p, solved):
+    """Steady state of m x'' + c (x' - y') + k (x - y) = 0 with y = Y e^(i Omega t),
+    Section 4.3.3: X = Y |k + i c Omega| / |k - m Omega^2 + i c Omega|, Omega = 2 pi v / lam."""
+    Omega = 2 * np.pi * p.v / p.lam
+    return p.Y * abs(p.k + 1j * p.c * Omega) / abs(p.k - p.m * Omega**2 + 1j * p.c * Omega)
 
 
 EXERCISE = Exercise(
@@ -74,6 +82,13 @@ $m\ddot x + c(\dot x - \dot y) + k(x - y) = 0$.
    the road's motion on, hence the $(2\zeta\eta)^2$ in the numerator.
 """,
     solve=solve,
+    checks=(
+        Recompute("X", _by_impedance, name="complex_amplitude"),
+        Recompute("TR", lambda p, s: _by_impedance(p, s) / p.Y, name="transmissibility"),
+        # the road's wavelength passed at v_res takes one natural period
+        Recompute("v_res", lambda p, s: np.sqrt(p.k / p.m) * p.lam / (2 * np.pi),
+                  name="resonant_speed"),
+    ),
     parts=(
         Numeric("Omega", "excitation frequency", question=1, unit="rad/s", points=1,
                 misconceptions=(Misconception("v / lambda", lambda p: p.v / p.lam,

@@ -7,6 +7,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Uniform,
                                 per_draw)
+from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import angle_arc, arrow, block, describe, ground, new_drawing, \
     spring, wall
 from dynagrade.mechanics import multi_dof
@@ -100,6 +101,16 @@ def _apart(p):
                for guess in (np.sqrt(p.k / p.M), np.sqrt(p.g / p.L)) for wi in w)
 
 
+def _frequencies(p):
+    """T = M x'^2 / 2 + m ((x' + L phi' cos(phi))^2 + (L phi' sin(phi))^2) / 2 and
+    V = k x^2 / 2 - m g L cos(phi), linearized by hand (Section 4.4.1):
+    M = [[M + m, m L], [m L, m L^2]], K = diag(k, m g L); det(K - w^2 M) = 0 is
+    M m L^2 w^4 - (k m L^2 + (M + m) m g L) w^2 + k m g L = 0."""
+    squares = np.roots([p.M * p.m * p.L**2, -(p.k * p.m * p.L**2 + (p.M + p.m) * p.m * p.g * p.L),
+                        p.k * p.m * p.g * p.L])
+    return np.sqrt(np.sort(squares.real))
+
+
 EXERCISE = Exercise(
     id="cart-pendulum-matrices",
     title="Pendulum on a sprung cart: mass and stiffness matrices",
@@ -156,6 +167,13 @@ linearise the Lagrange equations about the rest position and solve the eigenvalu
    coupling moves both.
 """,
     solve=solve,
+    checks=(
+        Recompute("M11", lambda p, s: p.M + p.m, name="mass_by_hand"),
+        Recompute("M12", lambda p, s: p.m * p.L, name="coupling_by_hand"),
+        Recompute("K22", lambda p, s: p.m * p.g * p.L, name="gravity_stiffness"),
+        Recompute("omega1", lambda p, s: _frequencies(p)[0], name="lower_root"),
+        Recompute("omega2", lambda p, s: _frequencies(p)[1], name="upper_root"),
+    ),
     figure=figure,
     parts=(
         Numeric("M11", "mass matrix entry M11", question=1, unit="kg", points=1,

@@ -4,6 +4,7 @@ and the damping regime (Section 4.3.2)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Options, Uniform
+from dynagrade.exercise.checks import Integrated, Limit, Recompute
 from dynagrade.exercise.figure import arrow, block, damper, ground, new_drawing, spring, wall
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import vibrations
@@ -48,6 +49,25 @@ def solve(p):
             "c_cr": vibrations.critical_damping(p.k, p.m)}
 
 
+def _oscillator(t, y, p):
+    """m x'' + c x' + k x = 0 (Section 4.3.2)."""
+    return (y[1], -(p.c * y[1] + p.k * y[0]) / p.m)
+
+
+def _horizon(p, solved):
+    return 3 * 2 * np.pi * np.sqrt(p.m / p.k) / np.sqrt(max(1e-12, 1 - p.c**2 / (4 * p.k * p.m)))
+
+
+def _peak(t, y, p):
+    """The velocity crosses zero downward at each peak."""
+    return y[1]
+
+
+def _at_a_peak(p):
+    """Released from rest at x = 1: a peak."""
+    return (1.0, 0.0)
+
+
 EXERCISE = Exercise(
     id="damped-free-vibration",
     title="Mass-spring-damper: free damped vibration",
@@ -88,8 +108,21 @@ $\ddot x + 2 \zeta \omega_n \dot x + \omega_n^2 x = 0$ (Section 4.3.2).
 4. Successive peaks are one period $T_d$ apart, so their ratio is
    $e^{\zeta \omega_n T_d}$ and the logarithmic decrement is
    $\delta = \zeta \omega_n T_d = 2\pi\zeta/\sqrt{1 - \zeta^2}$ = {{ answers.delta }}.
+5. **Check.** Without damping ($c \to 0$) the oscillator would swing at
+   $\omega_d = \omega_n$ = {{ checks.undamped }} rad/s; damping only slows it.
 """,
     solve=solve,
+    checks=(
+        # released at a peak, the next peak comes one damped period later, e^delta lower
+        Integrated("T_d", _oscillator, _at_a_peak, _horizon, lambda t, y, p: t,
+                   name="integrated_period", event=_peak, direction=-1),
+        Integrated("delta", _oscillator, _at_a_peak, _horizon,
+                   lambda t, y, p: -np.log(y[0]), name="integrated_decay", event=_peak,
+                   direction=-1),
+        Recompute("zeta", lambda p, s: p.c / (2 * np.sqrt(p.k * p.m)), name="c_over_c_critical"),
+        # c -> 0: the damped frequency is the natural one
+        Limit("omega_d", {"c": 0.0}, lambda p: np.sqrt(p.k / p.m), name="undamped"),
+    ),
     figure=figure,
     parts=(
         Numeric("omega_n", "natural angular frequency", question=1, unit="rad/s", points=1,

@@ -4,6 +4,7 @@ overdamped (Section 4.3.2)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.checks import Integrated, Recompute
 from dynagrade.mechanics import vibrations
 
 
@@ -20,6 +21,14 @@ def solve(p):
         "theta_over": vibrations.free_response(p.t1, p.theta0, 0.0, w, p.ratio),
         "omega_n": w,
     }
+
+
+def _door(ratio):
+    """J theta'' + c theta' + k_t theta = 0 with c = ratio * 2 sqrt(k_t J) (Section 4.3.2)."""
+    def rhs(t, y, p):
+        c = ratio(p) * 2 * np.sqrt(p.kt * p.J)
+        return (y[1], -(c * y[1] + p.kt * y[0]) / p.J)
+    return rhs
 
 
 EXERCISE = Exercise(
@@ -72,6 +81,13 @@ with $J$ = {{ J }} and $k_t$ = {{ kt }}.
    because the slow root $\lambda_1$ moves toward zero.
 """,
     solve=solve,
+    checks=(
+        Integrated("theta_crit", _door(lambda p: 1.0), lambda p: (p.theta0, 0.0),
+                   lambda p, s: p.t1, lambda t, y, p: y[0], name="integrated_critical"),
+        Integrated("theta_over", _door(lambda p: p.ratio), lambda p: (p.theta0, 0.0),
+                   lambda p, s: p.t1, lambda t, y, p: y[0], name="integrated_overdamped"),
+        Recompute("c_cr", lambda p, s: 2 * np.sqrt(p.kt * p.J), name="critical_damping"),
+    ),
     parts=(
         Numeric("c_cr", "critical damping coefficient", question=1, unit="N*m*s", points=1,
                 misconceptions=(Misconception("sqrt(k J)", lambda p: np.sqrt(p.kt * p.J),

@@ -8,6 +8,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
                                 Uniform, Variable, per_draw)
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import multi_dof
 
 
@@ -119,6 +120,15 @@ it (Section 4.1; equilibrium and linearisation, Section 4.2).
    — a pendulum of the stretched length $r_s$, not of $L_0$.
 """,
     solve=solve,
+    checks=(
+        # at rest the spring carries the weight: k (r - L0) = m g (Section 4.1)
+        Recompute("r_static", lambda p, s: p.L0 + p.m * p.g / p.k, name="static_stretch"),
+        # about the rest position the two motions decouple: a spring-mass oscillator and a
+        # pendulum of length r_static
+        Recompute("omega_r", lambda p, s: np.sqrt(p.k / p.m), name="spring_mode"),
+        Recompute("omega_phi", lambda p, s: np.sqrt(p.g / (p.L0 + p.m * p.g / p.k)),
+                  name="pendulum_mode"),
+    ),
     parts=(
         Symbolic("r_ddot", "radial acceleration", question=1, points=2,
                  expected="r*phidot^2 - k/m*(r - L0) + g*cos(phi)", variables=_VARS,

@@ -3,6 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.mechanics import vibrations
 
 
@@ -21,6 +22,12 @@ def solve(p):
             "X_max": p.F0 / p.k * vibrations.peak_amplification(zeta),
             "omega_n": w, "eta": eta, "zeta": zeta,
             "V": vibrations.amplification_factor(eta, zeta)}
+
+
+def _receptance(p, Omega):
+    """m x'' + c x' + k x = F0 e^(i Omega t): x = F0 e^(i Omega t) / (k - m Omega^2
+    + i c Omega) (Section 4.3.3)."""
+    return p.F0 / (p.k - p.m * Omega**2 + 1j * p.c * Omega)
 
 
 EXERCISE = Exercise(
@@ -75,6 +82,13 @@ and $\Omega$ = {{ Omega }}.
    $X_{\max}$ = {{ answers.X_max }}.
 """,
     solve=solve,
+    checks=(
+        Recompute("X", lambda p, s: abs(_receptance(p, p.Omega)), name="complex_amplitude"),
+        Recompute("phi", lambda p, s: -np.angle(_receptance(p, p.Omega)), name="complex_phase"),
+        # the peak amplitude is the amplitude at the resonance frequency
+        Balance("amplitude at resonance", lambda p, s: s["X_max"],
+                lambda p, s: abs(_receptance(p, s["Omega_res"])), name="peak_at_resonance"),
+    ),
     parts=(
         Numeric("X", "steady-state amplitude", question=1, unit="mm", points=2,
                 misconceptions=(

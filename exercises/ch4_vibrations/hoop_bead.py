@@ -4,6 +4,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Options, Uniform)
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import equilibrium
 from dynagrade.mechanics.examples import hoop
 
@@ -18,6 +19,16 @@ def solve(p):
         "omega": hoop.hoop_oscillation_frequency(p.R, p.Omega, p.g),
         "curvature_bottom": hoop.hoop_potential_curvature(0.0, p.m, p.R, p.Omega, p.g),
     }
+
+
+def _oscillation(p, solved):
+    """V(theta) = -m g R cos(theta) - m R^2 Omega^2 sin^2(theta) / 2 and T = m R^2 theta'^2 / 2
+    (Section 4.2): about the off-centre equilibrium cos(theta*) = g / (R Omega^2),
+    V'' = m R^2 Omega^2 sin^2(theta*); about the bottom (slow spin) V'' = m R (g - R Omega^2)."""
+    cosine = p.g / (p.R * p.Omega**2)
+    if cosine < 1:
+        return p.Omega * np.sqrt(1 - cosine**2)
+    return np.sqrt(p.g / p.R - p.Omega**2)
 
 
 EXERCISE = Exercise(
@@ -76,6 +87,12 @@ Here $m$ = {{ m }}, $R$ = {{ R }}, $g$ = {{ g }} and $\Omega$ = {{ Omega }} = {{
    that is $\omega$ = {{ answers.omega }}.
 """,
     solve=solve,
+    checks=(
+        Recompute("Omega_c", lambda p, s: np.sqrt(p.g / p.R), name="critical_spin"),
+        Recompute("omega", _oscillation, name="curvature_of_v"),
+        Recompute("curvature_bottom", lambda p, s: p.m * p.R * (p.g - p.R * p.Omega**2),
+                  name="curvature_at_the_bottom"),
+    ),
     parts=(
         Numeric("Omega_c", "critical spin rate", question=1, unit="rad/s", points=1,
                 misconceptions=(Misconception("sqrt(R/g)", lambda p: np.sqrt(p.R / p.g),

@@ -7,6 +7,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform, Variable)
+from dynagrade.exercise.checks import Recompute
 
 
 @cache
@@ -40,6 +41,13 @@ def solve(p):
     k_min = _upright()[0]
     return {"k_min": k_min(p.m, p.L, p.a_frac * p.L, p.g), "omega": omega(p),
             "a": p.a_frac * p.L}
+
+
+def _curvature(p):
+    """V = m g (L/2) cos(theta) + 2 k (a sin(theta))^2 / 2, so V''(0) = 2 k a^2 - m g L / 2
+    (Section 4.2)."""
+    a = p.a_frac * p.L
+    return 2 * p.k * a**2 - p.m * p.g * p.L / 2
 
 
 EXERCISE = Exercise(
@@ -94,6 +102,13 @@ $J\ddot\theta + V''(0)\,\theta = 0$ (equilibrium and stability, Section 4.2).
    that is $\omega$ = {{ answers.omega }}.
 """,
     solve=solve,
+    checks=(
+        Recompute("k_min", lambda p, s: p.m * p.g * p.L / (4 * (p.a_frac * p.L) ** 2),
+                  name="zero_curvature"),
+        # about the pin the rod's moment of inertia is m L^2 / 3
+        Recompute("omega", lambda p, s: np.sqrt(_curvature(p) / (p.m * p.L**2 / 3)),
+                  name="curvature_over_inertia"),
+    ),
     parts=(
         Symbolic("V", "potential energy", question=1, points=1, up_to_constant=("theta",),
                  expected="m*g*L/2*cos(theta) + k*a^2*sin(theta)^2",

@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Choice, Constraint, Exercise, Misconception, Numeric, Uniform,
                                 per_draw)
+from dynagrade.exercise.checks import Integrated, Limit, Recompute
 from dynagrade.mechanics import vibrations
 
 
@@ -26,6 +27,27 @@ def solve(p):
 @per_draw
 def _zeta(p):
     return _identified(p)[1]
+
+
+def _identified_oscillator(t, y, p):
+    """The damped oscillator the identified keys describe, m x'' + c x' + k x = 0
+    (Section 4.3.2), with the solver's k and c."""
+    return (y[1], -(p.c * y[1] + p.k * y[0]) / p.m)
+
+
+def _decay_horizon(p, solved):
+    """Longer than one damped period."""
+    return 3 * p.Td
+
+
+def _next_peak(t, y, p):
+    """The velocity, which crosses zero downward at each peak."""
+    return y[1]
+
+
+def _at_a_peak(p):
+    """Released from rest at x = 1: a peak."""
+    return (1.0, 0.0)
 
 
 EXERCISE = Exercise(
@@ -74,8 +96,24 @@ $e^{\delta}$; from $\delta$ and the measured period we recover $\zeta$, $\omega_
    that is $\omega_n$ = {{ answers.omega_n }}.
 4. **Stiffness and damping.** With $m$ = {{ m }}: $k = m\,\omega_n^2$, so $k$ = {{ answers.k }},
    and $c = 2\zeta\sqrt{k m}$, so $c$ = {{ answers.c }}.
+5. **Check.** Without decay ($x_n = x_0$, so $\zeta = 0$) the measured frequency would be
+   the natural one, $2\pi/T_d$ = {{ checks.undamped }} rad/s, below the $\omega_n$ found.
 """,
     solve=solve,
+    checks=(
+        # released at a peak (x = 1, x' = 0), the identified oscillator must peak again
+        # after the measured period T_d and have shrunk by e^delta
+        Integrated("omega_d", _identified_oscillator, _at_a_peak, _decay_horizon,
+                   lambda t, y, p: 2 * np.pi / t, name="identified_period",
+                   event=_next_peak, direction=-1, from_keys=("k", "c")),
+        Integrated("delta", _identified_oscillator, _at_a_peak, _decay_horizon,
+                   lambda t, y, p: -np.log(y[0]), name="identified_decay",
+                   event=_next_peak, direction=-1, from_keys=("k", "c")),
+        # no decay (x_n -> x_0): no damping, and omega_n is the measured 2 pi / T_d
+        Limit("omega_n", {"xn": 1.0, "x0": 1.0}, lambda p: 2 * np.pi / p.Td, name="undamped"),
+        # the identified oscillator must shrink by the measured x_n / x_0 after n periods
+        Recompute("delta", lambda p, s: np.log(p.x0 / p.xn) / p.n, name="measured_decay"),
+    ),
     parts=(
         Numeric("delta", "logarithmic decrement", question=1, points=1,
                 misconceptions=(Misconception("not divided by n", lambda p: np.log(p.x0 / p.xn),

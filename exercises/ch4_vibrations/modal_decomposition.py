@@ -4,6 +4,7 @@
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.checks import Integrated, Recompute
 from dynagrade.mechanics import multi_dof
 
 
@@ -31,6 +32,21 @@ def solve(p):
 def _first_mode_only(p):
     w = multi_dof.natural_frequencies(*_system(p))
     return p.a * np.cos(w[0] * p.t1)
+
+
+def _two_masses(t, y, p):
+    """m x1'' = -k x1 - kc (x1 - x2), m x2'' = -k x2 - kc (x2 - x1) (Section 4.4.4)."""
+    x1, x2 = y[0], y[1]
+    return (y[2], y[3], (-p.k * x1 - p.kc * (x1 - x2)) / p.m, (-p.k * x2 - p.kc * (x2 - x1)) / p.m)
+
+
+def _first_pulled_aside(p):
+    """Mass 1 held at a, mass 2 at rest in place, both released."""
+    return (p.a, 0.0, 0.0, 0.0)
+
+
+def _until_t1(p, solved):
+    return p.t1
 
 
 EXERCISE = Exercise(
@@ -87,6 +103,16 @@ an amplitude fixed by the initial state (modal decomposition, Section 4.4.4).
    passes back and forth between the masses (beats when $k_c \ll k$).
 """,
     solve=solve,
+    checks=(
+        Integrated("x1", _two_masses, _first_pulled_aside, _until_t1,
+                   lambda t, y, p: y[0], name="integrated_x1", atol=1e-9),
+        Integrated("x2", _two_masses, _first_pulled_aside, _until_t1,
+                   lambda t, y, p: y[1], name="integrated_x2", atol=1e-9),
+        # in phase the coupling spring is idle; in antiphase it is stretched twice
+        Recompute("omega1", lambda p, s: np.sqrt(p.k / p.m), name="in_phase"),
+        Recompute("omega2", lambda p, s: np.sqrt((p.k + 2 * p.kc) / p.m), name="antiphase"),
+        Recompute("A1", lambda p, s: p.a / 2, name="half_in_each_mode"),
+    ),
     parts=(
         Numeric("omega1", "lower natural frequency", question=1, unit="rad/s", points=1,
                 misconceptions=(Misconception("f for omega", lambda p: np.sqrt(p.k / p.m) / (2 * np.pi),

@@ -7,6 +7,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Symbolic, Uniform, Variable)
+from dynagrade.exercise.checks import Integrated, Recompute
 from dynagrade.mechanics import vibrations
 
 
@@ -54,6 +55,11 @@ def solve(p):
 
 # theta is no parameter; the parameters take their own units and (widened) ranges
 _VARS = {"theta": Variable(-3, 3, "rad"), "m": None, "L": None, "g": None, "kt": None}
+
+def _swing(t, y, p):
+    """m L^2 theta'' = -k_t theta - m g L sin(theta) (Section 4.1)."""
+    return (y[1], -(p.kt * y[0] + p.m * p.g * p.L * np.sin(y[0])) / (p.m * p.L**2))
+
 
 EXERCISE = Exercise(
     id="pendulum-torsion-spring-lagrange",
@@ -108,6 +114,16 @@ hanging position.
 4. **Formula.** $\omega = \sqrt{g/L + k_t/(mL^2)}$, written as `{{ answers.omega_formula }}`.
 """,
     solve=solve,
+    checks=(
+        # released from rest at 0.01 rad: back at rest one period later (the amplitude
+        # changes the period by less than 1e-5)
+        Integrated("T_period", _swing, lambda p: (0.01, 0.0),
+                   lambda p, s: 3 * s["T_period"], lambda t, y, p: t,
+                   name="integrated_small_swing", event=lambda t, y, p: y[1], direction=-1,
+                   rtol=1e-4),
+        Recompute("omega", lambda p, s: np.sqrt((p.kt + p.m * p.g * p.L) / (p.m * p.L**2)),
+                  name="linearized_by_hand"),
+    ),
     parts=(
         Symbolic("theta_ddot", "angular acceleration", question=1, points=2,
                  expected="-g/L*sin(theta) - kt*theta/(m*L^2)", variables=_VARS,

@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
                                 per_draw)
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import inertia, vibrations
 
 
@@ -77,6 +78,12 @@ $\omega = \sqrt{k_{eq}/m_{eq} }$ (equivalent mass and stiffness, Section 4.3.1).
    `{{ answers.omega_formula }}`.
 """,
     solve=solve,
+    checks=(
+        # T = (m + (m r^2 / 2) / r^2) x'^2 / 2, V = k ((r + a) x / r)^2 / 2 (Section 4.3.1)
+        Recompute("omega", lambda p, s: np.sqrt(p.k * ((p.r + p.a) / p.r) ** 2 / (1.5 * p.m)),
+                  name="energy_route"),
+        Recompute("m_eq", lambda p, s: 1.5 * p.m, name="rolling_mass"),
+    ),
     parts=(
         Numeric("m_eq", "equivalent mass", question=1, unit="kg", points=1,
                 misconceptions=(

@@ -4,6 +4,7 @@ operating speed and the force passed to the floor (Section 4.3.3)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import (block, damper, describe, dimension,
                                        ground, new_drawing, spring)
 from dynagrade.exercise.numbers import format_number
@@ -78,6 +79,12 @@ def solve(p):
             "eta": eta, "V": vibrations.amplification_factor(eta, p.zeta), "c": c}
 
 
+def _receptance(p):
+    """M x'' + c x' + k x = m_u e n^2 e^(i n t) (Section 4.3.3), c = 2 zeta sqrt(k M)."""
+    c = 2 * p.zeta * np.sqrt(p.k * p.M)
+    return 1 / (p.k - p.M * p.n**2 + 1j * c * p.n), c
+
+
 EXERCISE = Exercise(
     id="machine-rotating-unbalance",
     title="Machine with a rotating unbalance on an elastic mounting",
@@ -131,6 +138,14 @@ $n$ = {{ n }}, i.e. $\Omega$ = {{ si.n }} rad/s (one revolution is $2\pi$).
    that is $F_T$ = {{ answers.F_T }}.
 """,
     solve=solve,
+    checks=(
+        Recompute("X", lambda p, s: abs(p.m_u * p.e * p.n**2 * _receptance(p)[0]),
+                  name="complex_amplitude"),
+        # the force through spring and damper: |k + i c n| X
+        Recompute("F_T", lambda p, s: abs(p.m_u * p.e * p.n**2 * _receptance(p)[0])
+                  * abs(p.k + 1j * _receptance(p)[1] * p.n), name="transmitted_force"),
+        Recompute("n_crit", lambda p, s: np.sqrt(p.k / p.M), name="natural_frequency"),
+    ),
     figure=figure,
     parts=(
         Numeric("n_crit", "critical speed", question=1, unit="rpm", points=1,

@@ -4,6 +4,7 @@ mode shapes (Section 4.4.2, with the column stiffness of Section 5.1)."""
 import numpy as np
 
 from dynagrade.exercise import Choice, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import arrow, block, dimension, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import multi_dof, stiffness, vibrations
@@ -65,6 +66,17 @@ def _f1(p, per_column=None):
     return vibrations.frequency_in_hertz(multi_dof.natural_frequencies(*matrices(p, per_column))[0])
 
 
+def _storey(p):
+    """n columns clamped at both ends, each 12 E I / h^3 (Section 4.4.2)."""
+    return p.n_col * 12 * p.E * p.I / p.h**3
+
+
+def _squares(p):
+    """K = k [[2, -1], [-1, 1]], M = diag(m1, m2): m1 m2 w^4 - k (m1 + 2 m2) w^2 + k^2 = 0."""
+    k = _storey(p)
+    return np.sort(np.roots([p.m1 * p.m2, -k * (p.m1 + 2 * p.m2), k**2]).real)
+
+
 EXERCISE = Exercise(
     id="two-storey-shear-frame",
     title="Two-storey shear frame: natural frequencies and mode shapes",
@@ -117,6 +129,16 @@ in parallel (column stiffness, Section 5.1).
    in mode 2, $x_2/x_1$ = {{ answers.r2 }} (the floors move against each other).
 """,
     solve=solve,
+    checks=(
+        Recompute("k", lambda p, s: _storey(p), name="clamped_columns"),
+        Recompute("f1", lambda p, s: np.sqrt(_squares(p)[0]) / (2 * np.pi), name="lower_root"),
+        Recompute("f2", lambda p, s: np.sqrt(_squares(p)[1]) / (2 * np.pi), name="upper_root"),
+        # the first row of (K - w^2 M) x = 0: x2 / x1 = (2 k - m1 w^2) / k
+        Recompute("r1", lambda p, s: (2 * _storey(p) - p.m1 * _squares(p)[0]) / _storey(p),
+                  name="first_mode_shape"),
+        Recompute("r2", lambda p, s: (2 * _storey(p) - p.m1 * _squares(p)[1]) / _storey(p),
+                  name="second_mode_shape"),
+    ),
     figure=figure,
     parts=(
         Numeric("k", "storey stiffness", question=1, unit="N/m", points=1,

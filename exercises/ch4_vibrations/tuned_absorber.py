@@ -3,6 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import multi_dof, vibrations
 
 
@@ -19,6 +20,13 @@ def solve(p):
             "k_a": k_a, "X_a": abs(multi_dof.absorber_amplitude(p.F0, k_a)),
             "f_low": vibrations.frequency_in_hertz(w[0]), "f_high": vibrations.frequency_in_hertz(w[1]),
             "Omega": _Omega(p), "omega_n": vibrations.natural_frequency(p.k, p.m)}
+
+
+def _squares(p):
+    """K = [[k + k_a, -k_a], [-k_a, k_a]], M = diag(m, m_a) with k_a = m_a Omega^2
+    (Section 4.4.3): m m_a w^4 - (m k_a + m_a (k + k_a)) w^2 + k k_a = 0."""
+    k_a = p.m_a * (2 * np.pi * p.f) ** 2
+    return np.sort(np.roots([p.m * p.m_a, -(p.m * k_a + p.m_a * (p.k + k_a)), p.k * k_a]).real)
 
 
 EXERCISE = Exercise(
@@ -75,6 +83,15 @@ force; a second mass tuned to $\Omega$ can take up the force and keep the machin
    so it works only near the tuned speed.
 """,
     solve=solve,
+    checks=(
+        Recompute("k_a", lambda p, s: p.m_a * (2 * np.pi * p.f) ** 2, name="tuned_to_the_forcing"),
+        # tuned, the main mass stands still and the absorber's spring balances F0
+        Recompute("X_a", lambda p, s: p.F0 / (p.m_a * (2 * np.pi * p.f) ** 2), name="absorber_balances_f0"),
+        Recompute("f_low", lambda p, s: np.sqrt(_squares(p)[0]) / (2 * np.pi), name="lower_root"),
+        Recompute("f_high", lambda p, s: np.sqrt(_squares(p)[1]) / (2 * np.pi), name="upper_root"),
+        Recompute("X0", lambda p, s: p.F0 / abs(p.k - p.m * (2 * np.pi * p.f) ** 2),
+                  name="without_absorber"),
+    ),
     parts=(
         Numeric("X0", "amplitude without absorber", question=1, unit="mm", points=1,
                 misconceptions=(Misconception("static deflection", lambda p: p.F0 / p.k,

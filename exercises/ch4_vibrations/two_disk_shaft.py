@@ -4,6 +4,7 @@ the node of the mode (Section 4.4.2)."""
 import numpy as np
 
 from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import inertia, multi_dof, stiffness, vibrations
 
 
@@ -26,6 +27,11 @@ def solve(p):
     node = p.L * shape[0] / (shape[0] - shape[1])
     return {"kt": K[1, 1], "f": vibrations.frequency_in_hertz(w), "node": node,
             "I_p": stiffness.circle_polar_moment(p.d), "J1": M[0, 0], "J2": M[1, 1], "omega": w}
+
+
+def _moments(p):
+    """Disks about their axes m R^2 / 2; the shaft's stiffness G (pi d^4 / 32) / L."""
+    return p.m1 * p.R1**2 / 2, p.m2 * p.R2**2 / 2, p.G * np.pi * p.d**4 / 32 / p.L
 
 
 EXERCISE = Exercise(
@@ -80,6 +86,16 @@ mode ($\omega = 0$) and one torsional mode, in which the total angular momentum 
    from disk 1, that is $x_{\mathrm{node} }$ = {{ answers.node }} — closer to the disk with the larger moment of inertia.
 """,
     solve=solve,
+    checks=(
+        # the disks twist against each other about a node that keeps the momentum zero
+        # (Section 4.4.2): omega^2 = k_t (J1 + J2) / (J1 J2), node at L J2 / (J1 + J2)
+        Recompute("f", lambda p, s: np.sqrt(_moments(p)[2] * (_moments(p)[0] + _moments(p)[1])
+                                             / (_moments(p)[0] * _moments(p)[1])) / (2 * np.pi),
+                  name="two_disk_frequency"),
+        Recompute("node", lambda p, s: p.L * _moments(p)[1] / (_moments(p)[0] + _moments(p)[1]),
+                  name="node_position"),
+        Recompute("kt", lambda p, s: _moments(p)[2], name="shaft_stiffness"),
+    ),
     parts=(
         Numeric("kt", "torsional stiffness", question=1, unit="N*m", points=1,
                 misconceptions=(Misconception("second moment I instead of I_p",

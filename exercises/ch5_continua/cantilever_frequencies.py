@@ -3,6 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import Exercise, Misconception, Numeric, Constraint, Uniform
+from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.mechanics import beams, stiffness, vibrations
 
 
@@ -23,6 +24,19 @@ def solve(p):
     roots = beams.beam_eigenvalues("cantilever", 2)
     return {"beta1L": roots[0], "f1": f[0], "f2": f[1],
             "beta2L": roots[1], "EI": _EI(p), "rhoA": _rhoA(p)}
+
+
+def _root(n):
+    """The n-th root of the clamped-free frequency equation cos(x) cosh(x) = -1
+    (Section 5.3.3), found here near (n - 1/2) pi, where cos(x) vanishes."""
+    from scipy.optimize import brentq
+
+    return brentq(lambda x: np.cos(x) + 1 / np.cosh(x), (n - 0.5) * np.pi - 1, (n - 0.5) * np.pi + 0.5)
+
+
+def _frequency(n):
+    """f_n = (beta_n L)^2 / (2 pi L^2) sqrt(E I / (rho A)), I = b h^3 / 12, A = b h."""
+    return lambda p, s: _root(n) ** 2 / (2 * np.pi * p.L**2) * np.sqrt(p.E * p.h**2 / (12 * p.rho))
 
 
 EXERCISE = Exercise(
@@ -69,6 +83,13 @@ the admissible $\beta$ (flexural vibration, Section 5.3.3).
    $f_2$ = {{ answers.f2 }}, not an integer multiple of $f_1$.
 """,
     solve=solve,
+    checks=(
+        Balance("cos(beta1 L) + 1 / cosh(beta1 L)", lambda p, s: 0.0,
+                lambda p, s: np.cos(s["beta1L"]) + 1 / np.cosh(s["beta1L"]),
+                name="frequency_equation", atol=1e-9),
+        Recompute("f1", _frequency(1), name="first_root"),
+        Recompute("f2", _frequency(2), name="second_root"),
+    ),
     parts=(
         Numeric("beta1L", "first root beta_1 L", question=1, points=1, rtol=1e-3,
                 misconceptions=(Misconception("pi/2", lambda p: np.pi / 2, "pi/2 is the root of cos alone; cosh shifts it to 1.875."),)),

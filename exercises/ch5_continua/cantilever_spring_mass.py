@@ -3,6 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import stiffness, vibrations
 
 
@@ -21,6 +22,11 @@ def solve(p):
             "I": stiffness.rectangle_second_moment(p.b, p.h),
             "k_series": stiffness.series_stiffness(k_beam(p), p.k),
             "k_parallel": stiffness.parallel_stiffness(k_beam(p), p.k)}
+
+
+def _beam(p):
+    """A cantilever's tip stiffness 3 E I / L^3 with I = b h^3 / 12 (Section 5.1)."""
+    return 3 * p.E * p.b * p.h**3 / 12 / p.L**3
 
 
 EXERCISE = Exercise(
@@ -71,6 +77,14 @@ the spring carry the same force (series) or deform by the same amount (parallel)
    {{ si.k_parallel }} N/m, and $f = \frac{1}{2\pi}\sqrt{k_p/m}$ = {{ answers.f_parallel }}.
 """,
     solve=solve,
+    checks=(
+        Recompute("k_b", lambda p, s: _beam(p), name="tip_stiffness"),
+        # in series the compliances add, in parallel the stiffnesses
+        Recompute("f_series", lambda p, s: np.sqrt(1 / (1 / _beam(p) + 1 / p.k) / p.m) / (2 * np.pi),
+                  name="compliances_add"),
+        Recompute("f_parallel", lambda p, s: np.sqrt((_beam(p) + p.k) / p.m) / (2 * np.pi),
+                  name="stiffnesses_add"),
+    ),
     parts=(
         Numeric("k_b", "beam tip stiffness", question=1, unit="N/m", points=1,
                 misconceptions=(

@@ -3,6 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.checks import Limit, Recompute
 from dynagrade.mechanics import continua, stiffness, vibrations
 
 
@@ -24,6 +25,11 @@ def solve(p):
             "f": _f(continua.cantilever_effective_mass(_m_b(p)), p),
             "m_b": _m_b(p), "I": stiffness.circle_second_moment(p.d), "k": _k(p),
             "omega": continua.rayleigh_frequency(_k(p), p.m, continua.cantilever_effective_mass(_m_b(p)))}
+
+
+def _tip_stiffness(p):
+    """3 E I / L^3 with I = pi d^4 / 64 (Section 5.2)."""
+    return 3 * p.E * np.pi * p.d**4 / 64 / p.L**3
 
 
 EXERCISE = Exercise(
@@ -67,8 +73,18 @@ system is one mass on the tip spring (effective mass and Rayleigh's estimate, Se
    $k$ = {{ si.k }} N/m. With the tip mass $m$ = {{ m }},
    $$\omega \approx \sqrt{\frac{k}{m + m_{\mathrm{eff} } } },$$
    here $\omega$ = {{ si.omega }} rad/s, and $f = \omega/(2\pi)$ = {{ answers.f }}.
+3. **Check.** Were the beam massless ($\rho \to 0$), the tip mass alone would give
+   $\sqrt{k/m}/(2\pi)$ = {{ checks.massless_beam }} Hz: the beam's own mass lowers the frequency.
 """,
     solve=solve,
+    checks=(
+        # Rayleigh's static deflection shape gives the beam 33/140 of its mass at the tip
+        Recompute("f", lambda p, s: np.sqrt(_tip_stiffness(p) / (p.m + 33 / 140 * p.rho * np.pi * p.d**2 / 4 * p.L))
+                  / (2 * np.pi), name="rayleigh_by_hand"),
+        # a massless beam: the spring-mass frequency
+        Limit("f", {"rho": 0.0}, lambda p: np.sqrt(_tip_stiffness(p) / p.m) / (2 * np.pi),
+              name="massless_beam"),
+    ),
     parts=(
         Numeric("m_eff", "effective beam mass", question=1, unit="kg", points=2,
                 misconceptions=(

@@ -3,6 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import beams, rods, stiffness
 
 
@@ -16,6 +17,11 @@ def solve(p):
     return {"lam": beams.wavelength(k), "c_p": beams.flexural_phase_speed(w, EI, rhoA),
             "c_g": beams.flexural_group_speed(w, EI, rhoA),
             "omega": w, "EI": EI, "rhoA": rhoA, "k": k}
+
+
+def _wavenumber(p):
+    """EI k^4 = rho A omega^2 (Section 5.3.3), I = b h^3 / 12, A = b h."""
+    return (p.rho * 12 * (2 * np.pi * p.f) ** 2 / (p.E * p.h**2)) ** 0.25
 
 
 EXERCISE = Exercise(
@@ -59,6 +65,12 @@ $E$ = {{ E }}, $\rho$ = {{ rho }}).
    so a wave packet's energy travels at $c_g$ = {{ answers.c_g }}.
 """,
     solve=solve,
+    checks=(
+        Recompute("lam", lambda p, s: 2 * np.pi / _wavenumber(p), name="wavelength"),
+        Recompute("c_p", lambda p, s: 2 * np.pi * p.f / _wavenumber(p), name="phase_speed"),
+        # omega grows as k^2, so d omega / d k = 2 omega / k
+        Recompute("c_g", lambda p, s: 2 * s["c_p"], name="group_twice_phase"),
+    ),
     parts=(
         Numeric("lam", "wavelength", question=1, unit="m", points=2,
                 misconceptions=(

@@ -3,6 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform
+from dynagrade.exercise.checks import Limit, Recompute
 from dynagrade.mechanics import continua, rods, vibrations
 
 
@@ -15,6 +16,15 @@ def solve(p):
     exact = rods.tip_mass_fundamental_frequency(np.sqrt(p.k / p.m_s), 1.0, p.m_s, p.m)
     return {"m_eff": continua.spring_effective_mass(p.m_s), "f": vibrations.frequency_in_hertz(omega(p)),
             "error": omega(p) / exact - 1, "omega": omega(p), "omega_exact": exact}
+
+
+def _exact(p, solved):
+    """The spring as a bar with the mass at its end (Section 5.2): x tan(x) = m_s / m,
+    omega = x sqrt(k / m_s)."""
+    from scipy.optimize import brentq
+
+    x = brentq(lambda x: x * np.tan(x) - p.m_s / p.m, 1e-12, np.pi / 2 - 1e-12)
+    return x * np.sqrt(p.k / p.m_s)
 
 
 EXERCISE = Exercise(
@@ -64,6 +74,12 @@ that of an effective mass moving with $m$ (effective mass, Section 5.2).
 4. **As a formula.** `{{ answers.omega_formula }}`.
 """,
     solve=solve,
+    checks=(
+        Recompute("omega_exact", _exact, name="frequency_equation"),
+        Recompute("omega", lambda p, s: np.sqrt(p.k / (p.m + p.m_s / 3)), name="a_third_of_the_spring"),
+        # a light spring: the error of the third vanishes
+        Limit("error", {"m_s": 1e-6}, lambda p: 0.0, name="light_spring", atol=1e-9),
+    ),
     parts=(
         Numeric("m_eff", "effective spring mass", question=1, unit="kg", points=1,
                 misconceptions=(Misconception("half the spring", lambda p: p.m_s / 2,

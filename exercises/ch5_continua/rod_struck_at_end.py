@@ -1,7 +1,10 @@
 """A free rod struck at one end: wave speed, arrival time, impact stress and the first
 natural frequencies (Section 5.3.1)."""
 
+import numpy as np
+
 from dynagrade.exercise import Exercise, Misconception, Numeric, Uniform, Vector
+from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import arrow, block, dimension, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import rods, vibrations
@@ -84,6 +87,15 @@ natural modes (longitudinal waves, Section 5.3.1).
    $[f_1, f_2]$ = {{ answers.f }}.
 """,
     solve=solve,
+    checks=(
+        # longitudinal waves at c = sqrt(E / rho) (Section 5.3.1)
+        Recompute("t_arrival", lambda p, s: p.L / np.sqrt(p.E / p.rho), name="travel_time"),
+        # the struck end moves at v: the stress is rho c v
+        Recompute("sigma", lambda p, s: p.rho * np.sqrt(p.E / p.rho) * p.v, name="momentum_of_the_wave"),
+        # free-free: half a wavelength fits the rod, f_n = n c / (2 L)
+        Recompute("f", lambda p, s: tuple(n * np.sqrt(p.E / p.rho) / (2 * p.L) for n in (1, 2)),
+                  name="half_wavelengths"),
+    ),
     figure=figure,
     parts=(
         Numeric("c", "wave speed", question=1, unit="m/s", points=1),

@@ -3,6 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import rods, stiffness, vibrations
 
 
@@ -17,6 +18,11 @@ def _f(p, c, ends="fixed-free", n=2):
 def solve(p):
     f = _f(p, c_T(p))
     return {"c_T": c_T(p), "f1": f[0], "f2": f[1], "G": stiffness.shear_modulus(p.E, p.nu)}
+
+
+def _speed(p):
+    """c_T = sqrt(G / rho), G = E / (2 (1 + nu)) (Section 5.3.2)."""
+    return np.sqrt(p.E / (2 * (1 + p.nu)) / p.rho)
 
 
 EXERCISE = Exercise(
@@ -54,6 +60,11 @@ with $c_T = \sqrt{G/\rho}$; the clamped and the free end fix the natural modes
    with $L$ = {{ L }}: $f_1$ = {{ answers.f1 }} and $f_2 = 3 f_1$ = {{ answers.f2 }}.
 """,
     solve=solve,
+    checks=(
+        # fixed-free: a quarter wavelength, then three quarters, fit the shaft
+        Recompute("f1", lambda p, s: _speed(p) / (4 * p.L), name="quarter_wavelength"),
+        Recompute("f2", lambda p, s: 3 * _speed(p) / (4 * p.L), name="three_quarters"),
+    ),
     parts=(
         Numeric("c_T", "torsional wave speed", question=1, unit="m/s", points=2,
                 misconceptions=(Misconception("longitudinal speed sqrt(E/rho)", lambda p: np.sqrt(p.E / p.rho),

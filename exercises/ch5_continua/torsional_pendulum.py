@@ -1,6 +1,9 @@
 """A disk on a wire or shaft: torsional stiffness and the torsional pendulum (Section 5.1)."""
 
+import numpy as np
+
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import inertia, stiffness, vibrations
 
 
@@ -65,6 +68,12 @@ axis: $J\ddot\varphi + k_t\varphi = 0$ (torsional stiffness, Section 5.1).
    that is $T$ = {{ answers.T }}.
 """,
     solve=solve,
+    checks=(
+        # k_t = G (pi d^4 / 32) / L with G = E / (2 (1 + nu)), J = m R^2 / 2 (Section 5.1)
+        Recompute("T", lambda p, s: 2 * np.pi * np.sqrt(
+            p.m * p.R**2 / 2 / (p.E / (2 * (1 + p.nu)) * np.pi * p.d**4 / 32 / p.L)),
+                  name="period_by_hand"),
+    ),
     parts=(
         Numeric("kt", "torsional stiffness", question=1, unit="N*m", points=2,
                 misconceptions=(

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Mapping
 
 from ..errors import DefinitionError, DynagradeError, UnknownParameter, UnknownPart
+from .checks.base import Check
 from .listing import chapter_of, summary
 from .params import (Constraint, DrawTally, Parameter, ParamValues, symbol_domain,
                      to_si_values)
@@ -91,7 +92,8 @@ class Exercise:
     worked ``solution``, never graded). ``solution`` is a jinja2 template of Markdown
     (:mod:`.solution`). ``figure(p)`` draws the variant; ``figure_to_scale`` says whether
     its lengths and angles are those of the variant (the caption says "drawn to scale"
-    only then) or it is a schematic.
+    only then) or it is a schematic. ``checks`` recompute keys by other routes than the
+    solver's (:mod:`.checks`); ``dynagrade verify`` runs them on every variant.
 
     The loader sets ``path`` (the file it came from) and ``fingerprint`` (the SHA-256 of
     that file's bytes): the exercise's identity, the key for anything cached about it.
@@ -110,6 +112,7 @@ class Exercise:
     figure: Callable[[ParamValues], Any] | None = None
     figure_to_scale: bool = False
     solution: str | None = None
+    checks: tuple[Check, ...] = ()
     path: str | None = field(default=None, compare=False)
     fingerprint: str | None = field(default=None, compare=False)
     _draw: list = field(default_factory=list, init=False, repr=False, compare=False)
@@ -134,6 +137,8 @@ class Exercise:
         if self.chapter is None:
             object.__setattr__(self, "chapter", chapter_of(self.source))
         object.__setattr__(self, "topics", tuple(self.topics))
+        object.__setattr__(self, "checks", tuple(self.checks))
+        _require_check_names(self.id, self.checks)
         if not _CALLER_CHECKS_TEMPLATES.get():
             self.check_templates()
 
@@ -308,6 +313,19 @@ def _require_unique(what: str, names: list[str], exercise_id: str) -> None:
             raise DefinitionError(f"exercise {exercise_id!r} declares the {what} {name!r} "
                                   "twice")
         seen.add(name)
+
+
+def _require_check_names(exercise_id: str, checks: tuple[Check, ...]) -> None:
+    """Every check has a name a worked solution can print it by (``{{ checks.name }}``),
+    and no two share one."""
+    for check in checks:
+        if not isinstance(check, Check):
+            raise DefinitionError(f"exercise {exercise_id!r}: {check!r} in checks= is no "
+                                  "check (dynagrade.exercise.checks)")
+        if not check.name.isidentifier():
+            raise DefinitionError(f"exercise {exercise_id!r}: the check name "
+                                  f"{check.name!r} is no identifier (letters, digits, _)")
+    _require_unique("check", [c.name for c in checks], exercise_id)
 
 
 def _with_parameter_domains(exercise_id: str, part: Part,

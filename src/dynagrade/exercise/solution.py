@@ -12,7 +12,11 @@ The template's context (docs/authoring.md, "Worked solutions"):
   with the project's number formatter and without a unit; ``{{ si.alpha }}`` is also every
   parameter in SI (a value the solver returns under the same name wins);
   ``{{ si.alpha | deg }}`` prints an angle in degrees, ``{{ si.a | abs }}`` a magnitude,
-  ``{{ si.r[0] }}`` a vector's component.
+  ``{{ si.r[0] }}`` a vector's component;
+- ``{{ checks.frictionless }}``: what the exercise's check of that name recomputed by its
+  own route (:mod:`.checks`), in SI like ``si``: the number a closing sanity line
+  ("with mu -> 0 this is the frictionless ...") prints, which ``verify`` has compared with
+  the key. The checks run only when the template names ``checks``.
 
 The solution is rendered from the parameter values alone (the solver runs again), so an
 exam manifest, which stores each variant's parameters, is all a later rendering needs.
@@ -22,6 +26,7 @@ imported when a solution is first checked or rendered, as for statements.
 
 from __future__ import annotations
 
+import re
 from typing import Any, Iterator, Mapping
 
 from .model import Exercise, Variant
@@ -89,7 +94,51 @@ def solution_context(exercise: Exercise, variant: Variant) -> dict[str, Any]:
                for part in exercise.parts}
     si = {name: SiValue(value) for name, value in solver_values(exercise, variant).items()}
     shown = {p.name: ShownValue(p, variant.params[p.name]) for p in exercise.params}
-    return {**shown, "answers": _Named("answers", answers), "si": _Named("si", si)}
+    return {**shown, "answers": _Named("answers", answers), "si": _Named("si", si),
+            "checks": _Checks(exercise, variant)}
+
+
+class _Checks(_Named):
+    """``checks`` in the template: each check's recomputed value, computed when the
+    template first reads one (most solutions print none)."""
+
+    def __init__(self, exercise: Exercise, variant: Variant):
+        super().__init__("checks", {})
+        self._source: tuple[Exercise, Variant] | None = (exercise, variant)
+
+    def __getitem__(self, name: str):
+        if self._source is not None:
+            exercise, variant = self._source
+            self._source = None
+            self._values = {name: SiValue(value) for name, value
+                            in check_values(exercise, variant).items()}
+        return super().__getitem__(name)
+
+
+_CHECKS_IN_TEMPLATE = re.compile(r"\{\{[^}]*\bchecks\b")
+
+
+def prints_checks(exercise: Exercise) -> bool:
+    """Whether the exercise's worked solution prints a check's value (``{{ checks.x }}``)."""
+    return exercise.solution is not None and bool(_CHECKS_IN_TEMPLATE.search(exercise.solution))
+
+
+#: the latest variant's check values, as (exercise, its parameters, values): rendering a
+#: solution and checking its numbers ask for the same variant's, which run integrations
+_LATEST_CHECKS: list = []
+
+
+def check_values(exercise: Exercise, variant: Variant) -> dict[str, Any]:
+    """Each of the exercise's checks' recomputed value for ``variant``, in SI, by the
+    check's name (the latest variant's are kept)."""
+    from .checks.run import recomputed_values
+
+    params = dict(variant.params)
+    if _LATEST_CHECKS and _LATEST_CHECKS[0] is exercise and _LATEST_CHECKS[1] == params:
+        return dict(_LATEST_CHECKS[2])
+    values = recomputed_values(exercise, exercise.si(variant.params))
+    _LATEST_CHECKS[:] = [exercise, params, values]
+    return dict(values)
 
 
 def solver_values(exercise: Exercise, variant: Variant) -> dict[str, Any]:

@@ -4,7 +4,8 @@
 - every part's reference answer appears in it as the key prints it;
 - every number it prints is a value of the variant: a parameter (as the statement shows
   it or in SI), a value the solver returned (in SI, its magnitude, in degrees), or a
-  part's answer -- or a small integer of a formula (2 in ``v^2/(2g)``). References to the
+  part's answer, or what one of the exercise's checks recomputed (a closing sanity line
+  prints it) -- or a small integer of a formula (2 in ``v^2/(2g)``). References to the
   notes ("eq. (1.80)", "Example 1.9", "Section 4.3.2") are not numbers of the variant.
 
 So a number retyped into the template, which would hold for one variant only, is found.
@@ -19,7 +20,8 @@ from typing import Any, Iterable, Iterator
 
 from .loader import builtin_bank, exercise_files, load_file
 from .model import Exercise, Variant
-from .solution import SolutionError, render_solution, solver_values
+from .solution import (SolutionError, check_values, prints_checks, render_solution,
+                       solver_values)
 
 #: integers up to this are the formulas' own numbers (2, 1/2, 4 pi^2, ...)
 SMALL_INTEGER = 12
@@ -90,7 +92,10 @@ def _variant_numbers(exercise: Exercise, variant: Variant) -> Iterator[float]:
     """Every value a solution may print for ``variant`` (see the module docstring)."""
     yield from _floats(variant.params.values())
     yield from _floats(variant.answers.values())
-    for value in solver_values(exercise, variant).values():
+    printed = list(solver_values(exercise, variant).values())
+    if prints_checks(exercise):
+        printed += check_values(exercise, variant).values()
+    for value in printed:
         for number in _floats([value]):
             yield number
             yield math.degrees(number)

@@ -21,7 +21,7 @@ if TYPE_CHECKING:
 
 
 #: the names a solution template may use besides the exercise's parameters
-CONTEXT_NAMES = ("answers", "si")
+CONTEXT_NAMES = ("answers", "si", "checks")
 
 
 class SolutionError(DefinitionError):
@@ -67,7 +67,7 @@ def check_solution(exercise_id: str, source: str | None, params: Iterable[str],
                    parts: Iterable[str]) -> None:
     """Refuse the solution template ``source`` of exercise ``exercise_id`` if it does not
     compile or names context it cannot have: a top-level name that is no parameter,
-    ``answers`` or ``si``, or ``answers.X`` for an ``X`` that is no part. (``si.X`` depends
+    ``answers``, ``si`` or ``checks``, or ``answers.X`` for an ``X`` that is no part. (``si.X`` depends
     on what the solver returns; rendering checks it, and ``dynagrade verify`` renders every
     variant.)"""
     from jinja2 import meta

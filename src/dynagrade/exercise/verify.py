@@ -8,8 +8,11 @@ formula against mechanics core). A misconception is tried only where it ``applie
 report counts the variants an exam would redraw and the draws the constraints reject
 (:mod:`.redraws`). Once per exercise: every part answers a numbered question of the
 statement and every question has a part, and every variable of a formula is shown in the
-statement under a name the grader accepts (:mod:`.asked`). What each kind tries is its own
-(:mod:`dynagrade.exercise.parts`). The worked solution of every variant is checked too
+statement under a name the grader accepts (:mod:`.asked`), and every formula has the
+dimension of the part it ``equals`` (:mod:`.checks.dimensions`). The exercise's
+independent checks (:mod:`.checks`) run on every variant: a failing one is named with the
+seed, the key's number, the recomputed one and the tolerance. What each kind tries is its
+own (:mod:`dynagrade.exercise.parts`). The worked solution of every variant is checked too
 (:mod:`.solution_check`), its math once per exercise by ``math_check`` (the render
 layer's, handed in by the command); an exercise without a solution is a finding when
 ``require_solution`` is set (the command sets it once the shipped bank is complete, or
@@ -26,6 +29,8 @@ from typing import Any, Callable, Iterable
 
 from ..grading.dispatch import accepts
 from .asked import question_problems, unshown_variables
+from .checks.dimensions import formula_dimension_problems
+from .checks.run import check_problems
 from .figure_checks import figure_problems
 from .model import ConstraintError, Exercise, SolverError, Variant
 from .params import ParamValues
@@ -79,6 +84,8 @@ def verify_exercise(exercise: Exercise, seeds: Iterable[int], require_solution: 
         problems = variant_problems(exercise, variant)
         report.redraws.record(problems)
         report.failures += [f"seed {seed}: {p}" for p in problems]
+        report.failures += [f"seed {seed}: {p}"
+                            for p in check_problems(exercise, exercise.si(variant.params))]
         report.failures += [f"seed {seed}: {p}" for p in solution_problems(exercise, variant)]
         if render_figure is not None:
             report.failures += figure_problems(exercise, variant, render_figure)
@@ -104,7 +111,8 @@ def static_problems(exercise: Exercise) -> list[str]:
     shown = referenced_names(exercise.statement)
     return [f"the statement never shows the parameter {p.name!r}"
             for p in exercise.params if p.varies and p.name not in shown] + \
-        question_problems(exercise) + unshown_variables(exercise)
+        question_problems(exercise) + unshown_variables(exercise) + \
+        list(formula_dimension_problems(exercise))
 
 
 #: the signature of :func:`part_own_problems`, which a cache of it shares
