@@ -1,7 +1,7 @@
 """Tests that pin what mutation testing of the grader showed unpinned (issue 29): how a
 misconception's credit combines with unit credit, symmetry under a sign, which generic
 mistakes are tried for which units, the angle-exponent rule of unit conversion, the
-sign in the formula tolerance and the feedback of vector parts with ``reveal``. Each
+sign in the formula tolerance and the feedback of vector and choice parts with ``reveal``. Each
 expected verdict and feedback line is written from docs/grading.md's rules by hand."""
 import math
 
@@ -12,7 +12,7 @@ from hypothesis import given, settings, strategies as st
 from dynagrade.grading import grade
 from dynagrade.grading import units
 from dynagrade.grading.quantity import unit_info
-from dynagrade.grading.spec import KnownWrong, NumericSpec, VectorSpec
+from dynagrade.grading.spec import ChoiceSpec, KnownWrong, NumericSpec, VectorSpec
 from dynagrade.grading.tolerance import point_tolerance
 
 SETTINGS = settings(max_examples=150, deadline=None)
@@ -163,3 +163,33 @@ def test_vector_feedback_with_reveal_reads_as_written_by_hand(answer, correct, s
     verdict = grade(VectorSpec(3, unit="m", reveal=True), (1.0, -2.0, 0.5), answer)
     assert (verdict.correct, verdict.misconception, verdict.feedback) == (correct, misconception, feedback)
     assert verdict.score == pytest.approx(score, abs=1e-12)
+
+
+# --- golden feedback of choice parts with reveal ------------------------------------------
+# Options a, b, c, d; right: a and c. Score (hits - wrong) / 2, never below 0.
+
+CHOICE_FEEDBACK = [
+    ("a, c", True, 1.0, "Correct."),
+    ("a", False, 0.5, "Not correct: 1 of your 1 choices are right, and 1 right option is missing."
+     " The right options are a, c."),
+    ("a, b", False, 0.0, "Not correct: 1 of your 2 choices are right, and 1 right option is missing."
+     " The right options are a, c."),
+    ("a, c, d", False, 0.5, "Not correct: 2 of your 3 choices are right. The right options are a, c."),
+    ("b, d", False, 0.0, "Not correct: 0 of your 2 choices are right, and 2 right options are missing."
+     " The right options are a, c."),
+]
+
+
+@pytest.mark.parametrize("answer, correct, score, feedback", CHOICE_FEEDBACK,
+                         ids=[row[0] for row in CHOICE_FEEDBACK])
+def test_choice_feedback_with_reveal_reads_as_written_by_hand(answer, correct, score, feedback):
+    spec = ChoiceSpec(("a", "b", "c", "d"), multiple=True, reveal=True)
+    verdict = grade(spec, ("a", "c"), answer)
+    assert (verdict.correct, verdict.feedback) == (correct, feedback)
+    assert verdict.score == pytest.approx(score, abs=1e-12)
+
+
+def test_a_single_choice_reveals_the_one_right_option():
+    spec = ChoiceSpec(("up", "down"), reveal=True)
+    assert grade(spec, "up", "down").feedback == "Not correct. The right option is up."
+    assert grade(spec, "up", "up, down").feedback == "Choose only one option. The right option is up."
