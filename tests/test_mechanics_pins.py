@@ -12,7 +12,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from dynagrade.mechanics import frames, kinematics, multi_dof, rigid_kinematics, systems, vibrations
-from dynagrade.mechanics._common import as_vectors
+from dynagrade.mechanics._common import as_vectors, spatial_cross, spatial_vector
 from deferred import deferred
 
 sp = deferred("sympy")
@@ -184,3 +184,11 @@ def test_the_centre_of_mass_of_flat_and_nested_positions_agree_by_hand():
     # masses 1 and 3 at (0, 0) and (4, 8): r_C = (0 + 12, 0 + 24) / 4 = (3, 6), Section 2.1
     assert systems.centre_of_mass([1.0, 3.0], [0.0, 0.0, 4.0, 8.0]) == pytest.approx([3.0, 6.0])
     assert systems.centre_of_mass([1.0, 3.0], [[0.0, 0.0], [4.0, 8.0]]) == pytest.approx([3.0, 6.0])
+
+
+def test_a_stack_of_planar_vectors_is_taken_in_the_e1_e2_plane_row_by_row():
+    # eqs. (1.52), (1.129): (x1, x2) is (x1, x2, 0); a stack of them, one per particle or time
+    assert spatial_vector([[1.0, 2.0], [3.0, 4.0]]).tolist() == [[1.0, 2.0, 0.0], [3.0, 4.0, 0.0]]
+    # e1 x e2 = e3 and e2 x e1 = -e3, row by row
+    assert spatial_cross([[1.0, 0.0], [0.0, 1.0]], [[0.0, 1.0], [1.0, 0.0]]).tolist() == \
+        [[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]]
