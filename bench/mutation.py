@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import argparse
 import ast
+import dataclasses
 import json
 import os
 import hashlib
@@ -80,11 +81,14 @@ class Mutant:
     before: str
     after: str
     source: str
+    occurrence: int = 1
 
     @property
     def key(self) -> str:
-        """Stable across edits elsewhere in the module: the place's function and text."""
-        return f"{self.module}:{self.function}:{self.kind}:{self.before} -> {self.after}"
+        """Stable across edits elsewhere in the module: the place's function and text (and
+        which occurrence of that text in the function, from the second on)."""
+        key = f"{self.module}:{self.function}:{self.kind}:{self.before} -> {self.after}"
+        return key if self.occurrence == 1 else f"{key} #{self.occurrence}"
 
 
 #: Calls whose two first arguments are no physics' operands (a swap is a type error or
@@ -201,6 +205,11 @@ def mutants_of(path: Path, root: Path) -> list[Mutant]:
                 kind_text = kind if mutated_dump != original_dump else "equivalent:" + kind
                 found.append(Mutant(module, func.name, node.lineno, kind_text,
                                     " ".join(before.split()), " ".join(after.split()), source))
+    seen: dict[str, int] = {}
+    for i, mutant in enumerate(found):
+        seen[mutant.key] = seen.get(mutant.key, 0) + 1
+        if seen[mutant.key] > 1:
+            found[i] = dataclasses.replace(mutant, occurrence=seen[mutant.key])
     return found
 
 
