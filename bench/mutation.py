@@ -23,8 +23,9 @@ too. A run longer than ``--timeout-factor`` times the unmutated run counts as ki
 The tests of a module are data, read from the test files' imports: a test file covers
 module M when it imports M (``import``, ``from ... import``, ``deferred("...")`` or a
 dotted name in a string, and the dotted names of the notes' results in ``reference/``
-for the tests that read them), or imports a module of M's own package that imports M
-(transitively). A mechanics module is also covered by its docstring examples
+for the tests that read them), or, for the tests of M's own layer (``test_grading_*``
+for a module of ``grading/``, tests/README.md), imports a module of M's package that
+imports M (transitively). A mechanics module is also covered by its docstring examples
 (tests/test_mechanics_doctests.py). The tests marked slow (tests/conftest.py) are left
 out unless ``--slow``: they take most of a surviving mutant's time.
 
@@ -254,12 +255,28 @@ def _module_names(root: Path) -> dict[str, Path]:
             for p in src.rglob("*.py")}
 
 
+def _reexports(names: dict) -> dict[str, str]:
+    """``package.name`` -> the module that defines it, for the names a package's
+    ``__init__`` imports from its own modules (``dynagrade.grading.grade`` -> ``.dispatch``)."""
+    out = {}
+    for package, path in names.items():
+        if path.name != "__init__.py":
+            continue
+        for node in ast.parse(path.read_text(encoding="utf-8")).body:
+            if isinstance(node, ast.ImportFrom) and node.level == 1 and node.module:
+                for alias in node.names:
+                    out[f"{package}.{alias.asname or alias.name}"] = f"{package}.{node.module}"
+    return out
+
+
 def _imported_names(tree: ast.AST, here: str | None, names: dict) -> set[str]:
     """Modules of dynagrade that ``tree`` imports, resolved to the defining module where a
     name is imported from a package (``from dynagrade.grading import grade``)."""
     found: set[str] = set()
+    reexports = _reexports(names)
 
     def add(dotted: str):
+        dotted = reexports.get(dotted, dotted)
         while dotted and dotted not in names:
             dotted = dotted.rpartition(".")[0]
         if dotted:
@@ -321,6 +338,11 @@ def tests_of_modules(root: Path) -> dict[str, list[str]]:
         for start in direct:
             direct_of[start].add(rel)
             package = start if names[start].name == "__init__.py" else start.rpartition(".")[0]
+            if not test.name.startswith(f"test_{package.split('.')[-1]}_"):
+                # another layer's tests (tests/README.md: one layer per prefix) cover what
+                # they import, not all it reaches
+                covered[start].add(rel)
+                continue
             seen, todo = set(), [start]
             while todo:
                 name = todo.pop()
