@@ -192,3 +192,12 @@ def test_a_stack_of_planar_vectors_is_taken_in_the_e1_e2_plane_row_by_row():
     # e1 x e2 = e3 and e2 x e1 = -e3, row by row
     assert spatial_cross([[1.0, 0.0], [0.0, 1.0]], [[0.0, 1.0], [1.0, 0.0]]).tolist() == \
         [[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]]
+
+
+def test_a_damped_single_mass_has_the_textbook_steady_state_amplitude_and_lag():
+    # One coordinate, Section 4.3.3: X = F0 / (k - m Omega^2 + i c Omega). k = 100, m = 1,
+    # c = 4, Omega = 5: X = 10 / (75 + 20 i); |X| = 10 / sqrt(5625 + 400) = 0.128831,
+    # lag = atan(20 / 75) = 0.260602 rad (the slow integration test is the second route).
+    X = multi_dof.steady_state_amplitudes([[100.0]], [[1.0]], [[4.0]], [10.0], 5.0)
+    assert abs(X[0]) == pytest.approx(10 / math.sqrt(6025), rel=1e-12)
+    assert -np.angle(X[0]) == pytest.approx(math.atan2(20, 75), rel=1e-12)
