@@ -12,7 +12,8 @@ from hypothesis import given, settings, strategies as st
 from dynagrade.grading import grade
 from dynagrade.grading import units
 from dynagrade.grading.quantity import unit_info
-from dynagrade.grading.spec import ChoiceSpec, KnownWrong, NumericSpec, VectorSpec
+from dynagrade.grading.readability import readability
+from dynagrade.grading.spec import ChoiceSpec, KnownWrong, NumericSpec, SymbolicSpec, Variable, VectorSpec
 from dynagrade.grading.tolerance import point_tolerance
 
 SETTINGS = settings(max_examples=150, deadline=None)
@@ -193,3 +194,30 @@ def test_a_single_choice_reveals_the_one_right_option():
     spec = ChoiceSpec(("up", "down"), reveal=True)
     assert grade(spec, "up", "down").feedback == "Not correct. The right option is up."
     assert grade(spec, "up", "up, down").feedback == "Choose only one option. The right option is up."
+
+
+# --- survivors of the grader's mutation run, each pinned by its documented rule -----------
+
+def test_with_a_unit_of_the_wrong_kind_the_number_is_compared_as_typed():
+    # docs/grading.md, "Separate credit for value and unit": 5 ms for 5 m is the right number
+    # in the wrong kind of unit, so it earns 1 - unit_credit = 0.8.
+    verdict = grade(NumericSpec(unit="m", unit_credit=0.2), 5.0, "5 ms")
+    assert not verdict.correct and verdict.misconception == "unit"
+    assert verdict.score == pytest.approx(0.8, abs=1e-12)
+    assert verdict.feedback.endswith("The number is right.")
+
+
+@pytest.mark.parametrize("answer", ["1.2*10^3", "1.2e3", "1.2 × 10^3"])
+def test_a_coarsely_rounded_reference_in_powers_of_ten_gets_the_digits_hint(answer):
+    # 1234 at 1 %: 3 figures always land within 1 % (log10(5 / 0.01) = 2.7); 1.2 × 10³ is
+    # 1234 correctly rounded to the 2 figures given.
+    verdict = grade(NumericSpec(), 1234.0, answer)
+    assert verdict.feedback == ("Not correct: 1200 is not within the tolerance (1 %). "
+                                "You gave 2 significant figures; give at least 3.")
+
+
+def test_a_formula_that_leaves_out_an_allowed_name_is_readable():
+    spec = SymbolicSpec({"x": Variable(0.5, 2.0), "m": Variable(1.0, 2.0)})
+    assert readability(spec, "2*x").readable
+    unknown = readability(spec, "2*x*q")
+    assert not unknown.readable and "'q'" in unknown.message
