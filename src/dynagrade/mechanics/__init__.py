@@ -27,6 +27,11 @@ Argument convention
     (``force``, ``acceleration``, ``path``).  tests/test_mechanics_structure.py checks
     every public signature against this list.
 
+Sign conventions
+    Where a result has a free sign, the function fixes it and says so: a mode shape of
+    :func:`multi_dof.mode_shapes` has its first non-zero entry positive (and
+    Phi^T M Phi = I); tests/test_mechanics_pins.py holds the convention.
+
 Types
     Every public function carries type hints.  A quantity a function computes with is a
     ``Quantity`` of :mod:`dynagrade.mechanics._common` (a float or a numpy array, so one

@@ -90,7 +90,13 @@ def friction_work_on_floor(mu: Quantity, m: Quantity, g: Quantity,
 
 def sliding_stopping_distance(v0: Quantity, mu: Quantity, g: Quantity) -> Quantity:
     """Distance a particle sliding on a horizontal floor travels before friction stops it,
-    dx = v0^2 / (2 mu g), eq. (1.91): eq. (1.128) with alpha = 0, as the notes remark."""
+    dx = v0^2 / (2 mu g), eq. (1.91): eq. (1.128) with alpha = 0, as the notes remark.
+
+    Example 1.11 at v0 = 10 m/s, mu = 0.5, g = 10 m/s^2: 100 / (2 * 0.5 * 10) = 10 m.
+
+    >>> float(sliding_stopping_distance(10.0, 0.5, 10.0))
+    10.0
+    """
     return v0**2 / (2.0 * (g * mu))
 
 
@@ -103,7 +109,14 @@ def height_gain(v1: Quantity, v2: Quantity, g: Quantity) -> Quantity:
 def spring_launch_height(k: Quantity, compression: Quantity, m: Quantity,
                          g: Quantity) -> Quantity:
     """Greatest height of a particle launched upward from rest by a spring compressed by
-    dx, x_2,max = k dx^2 / (2 m g), eq. (1.108)."""
+    dx, x_2,max = k dx^2 / (2 m g), eq. (1.108).
+
+    Example 1.12 at k = 1000 N/m, dx = 0.1 m, m = 0.5 kg, g = 10 m/s^2:
+    1000 * 0.01 / (2 * 0.5 * 10) = 1 m.
+
+    >>> round(float(spring_launch_height(1000.0, 0.1, 0.5, 10.0)), 12)
+    1.0
+    """
     return spring_potential_of_stretch(k, compression) / (m * g)
 
 

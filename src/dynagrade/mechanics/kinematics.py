@@ -93,7 +93,13 @@ def linear_drag_distance_to_speed(v0: Quantity, v: Quantity, k: Quantity) -> Qua
 
 def half_life(decay_rate: Quantity) -> Quantity:
     """Half-life ln(2) / k of a quantity decaying as exp(-k t), eq. (1.14): the time for
-    linear drag to halve the speed."""
+    linear drag to halve the speed.
+
+    A decay rate of ln 2 per second halves the speed in one second.
+
+    >>> round(float(half_life(np.log(2.0))), 12)
+    1.0
+    """
     return linear_drag_time_to_speed(1.0, 0.5, decay_rate)
 
 
@@ -155,7 +161,13 @@ def rocket_speed_at_height(x: ArrayLike, v0: Quantity, g: Quantity, R: Quantity)
 
 def rocket_peak_height(v0: Quantity, g: Quantity, R: Quantity) -> Quantity:
     """Greatest height reached under g(x) = g R^2/(R+x)^2, where v of eq. (1.17) vanishes:
-    h = R v0^2 / (2 g R - v0^2); infinite at or above the escape speed."""
+    h = R v0^2 / (2 g R - v0^2); infinite at or above the escape speed.
+
+    Launched at half the escape speed (v0^2 = g R / 2) it climbs R/3: h = R (gR/2) / (2gR - gR/2).
+
+    >>> round(float(rocket_peak_height(np.sqrt(9.81 * 6.371e6 / 2), 9.81, 6.371e6) / 6.371e6), 12)
+    0.333333333333
+    """
     denominator = np.asarray(2.0 * g * R - v0**2, dtype=float)
     safe = np.where(denominator > 0.0, denominator, 1.0)
     return np.where(denominator > 0.0, R * v0**2 / safe, np.inf)
@@ -163,7 +175,14 @@ def rocket_peak_height(v0: Quantity, g: Quantity, R: Quantity) -> Quantity:
 
 def escape_speed(g: Quantity, R: Quantity) -> Quantity:
     """Launch speed above which eq. (1.17) with g(x) = g R^2/(R+x)^2 never gives v = 0:
-    sqrt(2 g R)."""
+    sqrt(2 g R).
+
+    The notes' Example 1.2 with the Earth's g = 9.81 m/s^2 and R = 6371 km: about
+    11.2 km/s.
+
+    >>> round(float(escape_speed(9.81, 6.371e6)))
+    11180
+    """
     return np.sqrt(2.0 * g * R)
 
 

@@ -97,7 +97,9 @@ def effective_potential(T: sp.Expr, V: sp.Expr, q: Coordinates, t: sp.Symbol) ->
 def state_symbols(q: Coordinates) -> tuple[list[sp.Symbol], list[sp.Symbol], list[sp.Symbol]]:
     """Plain sympy symbols (q_i, q_i', q_i'') standing for the coordinates, their rates and
     accelerations, named e.g. theta, theta_dot, theta_ddot (for lambdify), Section 4.1."""
-    names = [qi.func.__name__ if hasattr(qi, "func") else str(qi) for qi in q]
+    # A plain Symbol has a ``func`` too (the class Symbol): name it by itself, and a
+    # coordinate q(t) by its function's name.
+    names = [qi.name if isinstance(qi, sp.Symbol) else qi.func.__name__ for qi in q]
     pos = [sp.Symbol(n, real=True) for n in names]
     vel = [sp.Symbol(n + "_dot", real=True) for n in names]
     acc = [sp.Symbol(n + "_ddot", real=True) for n in names]

@@ -33,7 +33,16 @@ def deceleration_up_slope(alpha: Quantity, mu: Quantity, g: Quantity) -> Quantit
 
 
 def distance_up_slope(v0: Quantity, alpha: Quantity, mu: Quantity, g: Quantity) -> Quantity:
-    """Distance travelled up the slope until rest, v0^2 / (2 g (sin a + mu cos a)), eq. (1.128)."""
+    """Distance travelled up the slope until rest, v0^2 / (2 g (sin a + mu cos a)), eq. (1.128).
+
+    Example 1.15 and its remark: at alpha = 0 it is Example 1.11's v0^2/(2 mu g) (10 m at
+    v0 = 10 m/s, mu = 0.5, g = 10 m/s^2); up a vertical wall the vertical throw's v0^2/(2g) = 5 m.
+
+    >>> round(float(distance_up_slope(10.0, 0.0, 0.5, 10.0)), 12)
+    10.0
+    >>> round(float(distance_up_slope(10.0, np.pi / 2, 0.5, 10.0)), 12)
+    5.0
+    """
     return v0**2 / (2.0 * deceleration_up_slope(alpha, mu, g))
 
 

@@ -27,7 +27,13 @@ def minimum_speed(v0: Quantity, R: Quantity, g: Quantity) -> Quantity:
 
 
 def speed_to_reach_top(R: Quantity, g: Quantity) -> Quantity:
-    """Necessary entry speed for reaching the top, 2 sqrt(g R), eq. (1.112)."""
+    """Necessary entry speed for reaching the top, 2 sqrt(g R), eq. (1.112).
+
+    Example 1.13: 2 sqrt(g R) = 4 m/s for g = 10 m/s^2, R = 0.4 m.
+
+    >>> round(float(speed_to_reach_top(0.4, 10.0)), 12)
+    4.0
+    """
     return 2.0 * np.sqrt(g * R)
 
 
@@ -40,12 +46,25 @@ def looping_normal_force(phi: Quantity, m: Quantity, v0: Quantity, R: Quantity,
 
 
 def minimum_entry_speed(R: Quantity, g: Quantity) -> Quantity:
-    """Smallest entry speed that keeps the car on the track, sqrt(5 g R), eq. (1.118)."""
+    """Smallest entry speed that keeps the car on the track, sqrt(5 g R), eq. (1.118).
+
+    Example 1.13: sqrt(5 g R) = 10 m/s for g = 10 m/s^2, R = 2 m.
+
+    >>> round(float(minimum_entry_speed(2.0, 10.0)), 12)
+    10.0
+    """
     return np.sqrt(5.0 * g * R)
 
 
 def maximum_normal_force(m: Quantity, v0: Quantity, R: Quantity, g: Quantity) -> Quantity:
-    """Largest normal force, at the bottom (phi = 0 or 2 pi): m v0^2/R + m g, eq. (1.116)/(1.119)."""
+    """Largest normal force, at the bottom (phi = 0 or 2 pi): m v0^2/R + m g, eq. (1.116)/(1.119).
+
+    Example 1.13, eq. (1.119): entering at the smallest speed sqrt(5 g R) the largest normal
+    force is 6 m g (60 N for m = 1 kg, g = 10 m/s^2).
+
+    >>> round(float(maximum_normal_force(1.0, np.sqrt(5 * 10.0 * 2.0), 2.0, 10.0)), 9)
+    60.0
+    """
     return looping_normal_force(0.0, m, v0, R, g)
 
 

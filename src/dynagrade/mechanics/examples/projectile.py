@@ -30,12 +30,27 @@ def velocity(t: ArrayLike, v0: Quantity, alpha: Quantity,
 
 
 def flight_time(v0: Quantity, alpha: Quantity, g: Quantity) -> Quantity:
-    """Time at which the particle lands on level ground again, t_1,max of eq. (1.79)."""
+    """Time at which the particle lands on level ground again, t_1,max of eq. (1.79).
+
+    Example 1.9: straight up at 10 m/s with g = 10 m/s^2, 2 s in the air.
+
+    >>> round(float(flight_time(10.0, np.pi / 2, 10.0)), 12)
+    2.0
+    """
     return 2.0 * v0 * np.sin(alpha) / g
 
 
 def horizontal_range(v0: Quantity, alpha: Quantity, g: Quantity) -> Quantity:
-    """Horizontal distance to the landing point, x_1,max = v0^2 sin(2 alpha)/g, eq. (1.80)."""
+    """Horizontal distance to the landing point, x_1,max = v0^2 sin(2 alpha)/g, eq. (1.80).
+
+    Example 1.9: the largest range, at 45 degrees, is v0^2/g (10 m at v0 = 10 m/s, g = 10 m/s^2);
+    30 and 60 degrees reach the same point.
+
+    >>> round(float(horizontal_range(10.0, np.pi / 4, 10.0)), 12)
+    10.0
+    >>> bool(np.isclose(horizontal_range(10.0, np.pi / 6, 10.0), horizontal_range(10.0, np.pi / 3, 10.0)))
+    True
+    """
     return 2.0 * v0**2 * np.sin(alpha) * np.cos(alpha) / g
 
 
@@ -45,7 +60,13 @@ def peak_time(v0: Quantity, alpha: Quantity, g: Quantity) -> Quantity:
 
 
 def peak_height(v0: Quantity, alpha: Quantity, g: Quantity) -> Quantity:
-    """Maximum height of the flight parabola, x_2,max = v0^2 sin^2(alpha)/(2g), eq. (1.82)."""
+    """Maximum height of the flight parabola, x_2,max = v0^2 sin^2(alpha)/(2g), eq. (1.82).
+
+    Example 1.9: thrown straight up at 10 m/s (g = 10 m/s^2) it rises v0^2/(2g) = 5 m.
+
+    >>> round(float(peak_height(10.0, np.pi / 2, 10.0)), 12)
+    5.0
+    """
     return v0**2 * np.sin(alpha) ** 2 / (2.0 * g)
 
 
