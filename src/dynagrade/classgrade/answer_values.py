@@ -16,45 +16,28 @@ from typing import Any, Union
 import numpy as np
 
 from ..exam.manifest import PartEntry
-from ..grading.errors import AnswerError
-from ..grading.reading import read_number
-from ..grading.spec import VectorSpec
+from ..exercise.parts import PART_KINDS
 from ..grading.tolerance import DEFAULT_RTOL, allowed_error
-from ..grading.vector import answer_components
 
 Value = Union[float, tuple[float, ...]]
-#: the part kinds whose answers are numbers that can be compared
-NUMBER_KINDS = ("numeric", "vector")
 
 
 def compared(entry: PartEntry) -> bool:
-    """Whether the part's answers are numbers (numeric or vector parts)."""
-    return entry.kind in NUMBER_KINDS
+    """Whether the part's answers are numbers (its kind's ``compares_numbers``)."""
+    return PART_KINDS[entry.kind].compares_numbers
 
 
 def answer_value(entry: PartEntry, text: str | None) -> Value | None:
-    """The value of the answer ``text`` in the part's unit (None: unreadable or empty)."""
+    """The value of the answer ``text`` in the part's unit (None: unreadable or empty),
+    as the part's kind reads it."""
     if not text or not text.strip():
         return None
-    if entry.kind == "vector":
-        spec = VectorSpec(size=entry.size or 2, unit=entry.unit, rtol=_rtol(entry),
-                          atol=entry.atol)
-        values = answer_components(spec, text)
-        return None if values is None else tuple(float(v) for v in values)
-    try:
-        return read_number(text, entry.unit)
-    except (AnswerError, ValueError):
-        return None
+    return PART_KINDS[entry.kind].answer_number(entry, text)
 
 
 def key_value(entry: PartEntry, key: Any) -> Value | None:
     """The manifest's reference answer as a value (None: not a number)."""
-    try:
-        if entry.kind == "vector":
-            return tuple(float(v) for v in key)
-        return float(key)
-    except (TypeError, ValueError):
-        return None
+    return PART_KINDS[entry.kind].key_number(key)
 
 
 def as_rows(values: list[Value]) -> np.ndarray:
@@ -65,8 +48,9 @@ def as_rows(values: list[Value]) -> np.ndarray:
 
 def window(entry: PartEntry, targets: np.ndarray) -> np.ndarray:
     """Per target row and component, the largest distance at which a value is still
-    close to it: the part's tolerance, as the grader allows it."""
-    if entry.kind == "vector":
+    close to it: the part's tolerance, as the grader allows it (a value of several
+    components, a vector's, component by component against ``max(|e_i|, 0.01·|e|)``)."""
+    if targets.shape[1] > 1:
         scale = np.maximum(np.abs(targets),
                            0.01 * np.linalg.norm(targets, axis=1, keepdims=True))
         return np.asarray(allowed_error(targets, _rtol(entry), entry.atol, scale))

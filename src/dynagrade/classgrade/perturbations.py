@@ -30,6 +30,7 @@ from dataclasses import dataclass, replace
 from itertools import combinations
 from typing import Any, Callable, Iterator, Mapping, Sequence
 
+from ..exercise.kinds import MoodleForm
 from ..exercise.model import Exercise
 from ..exercise.params import Constant, ParamValues
 from ..exercise.parts import Part
@@ -151,7 +152,7 @@ def _through_solver(exercise: Exercise, part: Part, reruns: Sequence[Rerun]
         yield Perturbation(rerun.name, rerun.family,
                            f'{solver}(ParamValues({{**p, {rerun.shown}}}))["{name}"]',
                            _answer_of(rerun.run, name), (_PARAMS, *rerun.imports))
-    if part.kind == "numeric":
+    if part.moodle is MoodleForm.NUMBER:  # the answer is one number (exercise.kinds)
         result = f'{solver}(p)["{name}"]'
         reference = _answer_of(exercise.solve, name)
         yield Perturbation("result squared (a missing root)", "a missing square or root",

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from enum import Enum
-from typing import ClassVar, Protocol
+from typing import Any, ClassVar, Protocol
 
 from ..errors import DefinitionError
 from ..grading.kinds import GRADING_KINDS, GradingKind
@@ -62,6 +62,13 @@ class PartKind(Protocol):
     manifest_fields: ClassVar[tuple[str, ...]]
     answer_varies: ClassVar[bool]
     moodle: ClassVar[MoodleForm | NotExported | None]
+    compares_numbers: ClassVar[bool]
+
+    @classmethod
+    def answer_number(cls, entry: Any, text: str) -> float | tuple[float, ...] | None: ...
+
+    @classmethod
+    def key_number(cls, key: Any) -> float | tuple[float, ...] | None: ...
 
 
 #: every part kind by its name (the ``kind`` of a part and of a manifest's part entry)

@@ -118,6 +118,9 @@ class Part(ABC):
     grading: ClassVar[object] = None
     #: how the kind goes into Moodle (a :class:`MoodleForm`, or :class:`NotExported`)
     moodle: ClassVar[MoodleForm | NotExported | None] = None
+    #: whether answers of this kind are numbers that a class's answers can be compared by
+    #: (:mod:`dynagrade.classgrade.answer_values`: copies, discovered misconceptions)
+    compares_numbers: ClassVar[bool] = False
 
     def __init_subclass__(cls, **kwargs):
         """A class that declares its own ``kind`` is a part kind: checked and registered
@@ -126,6 +129,18 @@ class Part(ABC):
         super().__init_subclass__(**kwargs)
         if "kind" in cls.__dict__:
             register_part_kind(cls)
+
+    @classmethod
+    def answer_number(cls, entry: Any, text: str) -> float | tuple[float, ...] | None:
+        """The number (or components) an answer gives in the part's unit, read by the
+        grader (never evaluated); ``entry`` is the manifest's part entry (its ``unit``,
+        ``rtol``, ``atol``, ``size``). None: unreadable, or not a kind of numbers."""
+        return None
+
+    @classmethod
+    def key_number(cls, key: Any) -> float | tuple[float, ...] | None:
+        """The manifest's reference answer as a number (or components); None: not one."""
+        return None
 
     def __post_init__(self):
         if not self.name.isidentifier():
@@ -275,6 +290,24 @@ class Numeric(Part):
     grading = GRADING_KINDS["numeric"]
     moodle = MoodleForm.NUMBER
     manifest_fields = ("rtol", "atol")
+    compares_numbers = True
+
+    @classmethod
+    def answer_number(cls, entry, text):
+        from ..grading.errors import AnswerError
+        from ..grading.reading import read_number
+
+        try:
+            return read_number(text, entry.unit)
+        except (AnswerError, ValueError):
+            return None
+
+    @classmethod
+    def key_number(cls, key):
+        try:
+            return float(key)
+        except (TypeError, ValueError):
+            return None
 
     def in_part_unit(self, value):
         return from_si(float(value), self.unit)
@@ -323,6 +356,24 @@ class Vector(Part):
     grading = GRADING_KINDS["vector"]
     moodle = MoodleForm.COMPONENTS
     manifest_fields = ("rtol", "atol", "size")
+    compares_numbers = True
+
+    @classmethod
+    def answer_number(cls, entry, text):
+        from ..grading.vector import answer_components
+
+        spec = VectorSpec(size=entry.size or 2, unit=entry.unit,
+                          rtol=DEFAULT_RTOL if entry.rtol is None else entry.rtol,
+                          atol=entry.atol)
+        values = answer_components(spec, text)
+        return None if values is None else tuple(float(v) for v in values)
+
+    @classmethod
+    def key_number(cls, key):
+        try:
+            return tuple(float(v) for v in key)
+        except (TypeError, ValueError):
+            return None
 
     def in_part_unit(self, value):
         values = tuple(from_si(float(v), self.unit) for v in value)
