@@ -352,7 +352,9 @@ def test_a_grading_killed_at_any_moment_leaves_one_complete_run(exam, tmp_path, 
     reference = tmp_path / "reference"
     grade_class(manifest, [responses], reference, bank=bank, jobs=1)
     expected = _snapshot(reference)
-    assert len(expected) == 3 + 2 * 150
+    # grades.csv, problems.csv, report.html, answers.csv, copies.csv; two feedback files
+    # per student
+    assert len(expected) == 5 + 2 * 150
     out = tmp_path / "grading"
     command = [sys.executable, "-m", "dynagrade.cli", "grade", "--manifest", str(manifest),
                str(responses), "-o", str(out), "--jobs", "1"]
