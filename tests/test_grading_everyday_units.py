@@ -111,6 +111,16 @@ def test_omegas_number_labelled_Hz_is_wrong_and_the_feedback_names_the_confusion
     assert "f = ω/(2π)" in verdict.feedback
 
 
+def test_omegas_number_labelled_Hz_is_named_in_a_part_whose_unit_is_not_si():
+    """100 rpm is ω = 100·2π/60 = 10.472 rad/s: a student who writes ω's number with Hz,
+    10.47 Hz, made the same confusion in an rpm part, and it is named there too (the
+    number is compared in the part's unit: 10.47 rad/s = 99.98 rpm; a mutation run found
+    the conversion untested in a unit whose factor is not 1)."""
+    verdict = grade(NumericSpec(unit="rpm"), 100.0, "10.47 Hz")
+    assert not verdict.correct and verdict.misconception == "Hz for rad/s", verdict
+    assert grade(NumericSpec(unit="rpm"), 100.0, "1.667 Hz").correct  # 1.667·60 = 100.0
+
+
 def test_the_mirror_rule_holds_for_a_part_in_Hz():
     assert grade(NumericSpec(unit="Hz"), 1.667, "10.47 rad/s").correct      # 10.47/(2π) = 1.6664
     assert grade(NumericSpec(unit="Hz"), 1.667, "100 rpm").correct          # 100/60 = 1.6667
