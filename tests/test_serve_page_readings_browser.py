@@ -7,7 +7,8 @@ from __future__ import annotations
 import pytest
 
 from serve_support import exam_copy, exam_dir, serving_process  # noqa: F401
-from test_serve_browser import ARGS, CHROMIUM
+from test_serve_browser import CHROMIUM
+from test_serve_student_browser import chromium
 
 pytestmark = pytest.mark.skipif(not CHROMIUM.exists(),
                                 reason="needs Chromium (apt-get install chromium)")
@@ -15,7 +16,7 @@ pytestmark = pytest.mark.skipif(not CHROMIUM.exists(),
 
 def test_a_page_load_sends_no_preview_and_shows_the_reading(exam_dir, tmp_path):
     import httpx
-    from playwright.sync_api import expect, sync_playwright
+    from playwright.sync_api import expect
 
     manifest = exam_copy(exam_dir, tmp_path / "exam", mode="homework")
     with serving_process(manifest, tmp_path / "links.csv", instructor=False) as (
@@ -28,28 +29,24 @@ def test_a_page_load_sends_no_preview_and_shows_the_reading(exam_dir, tmp_path):
         assert httpx.put(f"{base}/api/v1/drafts", headers=bearer, json={
             "exercise": "sliding-up-a-slope", "answers": {"delta_x": "3 kg"}}
             ).status_code == 200
-        with sync_playwright() as playwright:
-            browser = playwright.chromium.launch(executable_path=str(CHROMIUM), args=ARGS)
-            try:
-                page = browser.new_page()
-                previews: list[str] = []
-                page.on("request", lambda request: previews.append(request.url)
-                        if request.url.endswith("/api/v1/preview") else None)
-                page.goto(url)
-                page.wait_for_load_state("networkidle")
-                counted = page.locator("#projectile-range--x_max--preview")
-                expect(counted).to_have_text("reads as 45 km = 4.5e4 m")
-                draft = page.locator("#sliding-up-a-slope--delta_x--preview")
-                expect(draft).to_contain_text("expected a length")
-                expect(page.locator("#sliding-up-a-slope--delta_x")).to_have_attribute(
-                    "aria-invalid", "true")
-                assert previews == []  # the load asked for nothing
-                page.reload()
-                page.wait_for_load_state("networkidle")
-                assert previews == []
-                # typing still asks, and the answer replaces the page's reading
-                page.locator("#projectile-range--x_max").fill("2 km")
-                expect(counted).to_contain_text("reads as 2 km =")
-                assert len(previews) == 1
-            finally:
-                browser.close()
+        with chromium() as browser:
+            page = browser.new_page()
+            previews: list[str] = []
+            page.on("request", lambda request: previews.append(request.url)
+                    if request.url.endswith("/api/v1/preview") else None)
+            page.goto(url)
+            page.wait_for_load_state("networkidle")
+            counted = page.locator("#projectile-range--x_max--preview")
+            expect(counted).to_have_text("reads as 45 km = 4.5e4 m")
+            draft = page.locator("#sliding-up-a-slope--delta_x--preview")
+            expect(draft).to_contain_text("expected a length")
+            expect(page.locator("#sliding-up-a-slope--delta_x")).to_have_attribute(
+                "aria-invalid", "true")
+            assert previews == []  # the load asked for nothing
+            page.reload()
+            page.wait_for_load_state("networkidle")
+            assert previews == []
+            # typing still asks, and the answer replaces the page's reading
+            page.locator("#projectile-range--x_max").fill("2 km")
+            expect(counted).to_contain_text("reads as 2 km =")
+            assert len(previews) == 1
