@@ -51,10 +51,9 @@ def build_app(settings: Settings, clock: Callable[[], dt.datetime] | None = None
     @asynccontextmanager
     async def lifespan(app: FastAPI):
         pool = server.start_pool()
-        await run_in_threadpool(pool.warm_up)
-        # pages read the answers they show (ExamData.reading): load the readers now, not
-        # in the first student's page
-        await run_in_threadpool(prepare)
+        # pages read the answers they show (ExamData.reading): load the readers here too,
+        # while the pool loads the exam, not in the first student's page
+        await asyncio.gather(run_in_threadpool(pool.warm_up), run_in_threadpool(prepare))
         reloader = await run_in_threadpool(ExamReloader, server)
         server.catch_up = reloader.catch_up
         watching = asyncio.create_task(reloader.watch())
