@@ -331,7 +331,7 @@ async def run(url: str, tokens: dict[str, str], work: dict[str, list[Work]],
         values = record.latencies.get(kind, [])
         fives = sum(n for status, n in record.statuses[kind].items() if status >= 500)
         # a preview refused while the graders are busy (503) is shed by design, no error
-        errors += fives - (record.statuses[kind][503] if kind == "preview" else 0)
+        errors += fives - (record.statuses[kind].get(503, 0) if kind == "preview" else 0)
         errors += record.failed[kind]
         shown = " ".join(f"{status}:{n}" for status, n in sorted(record.statuses[kind].items()))
         if values:

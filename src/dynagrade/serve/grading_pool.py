@@ -176,20 +176,26 @@ class GradingPool:
         for tries in (1, 2):
             try:
                 job = self._executor.submit(function, *args)
+                # the slot is free when the process is, not when the wait below gives up
+                job.add_done_callback(lambda _job: _on_loop(loop, self._lanes.leave))
+            except BrokenProcessPool:  # found broken before the job went in
+                self._lanes.leave()
+                if tries == 2:
+                    raise
             except BaseException:
                 self._lanes.leave()
                 raise
-            # the slot is free when the process is, not when the wait below gives up
-            job.add_done_callback(lambda _job: _on_loop(loop, self._lanes.leave))
-            try:
-                return await asyncio.wait_for(asyncio.wrap_future(job), seconds)
-            except asyncio.TimeoutError:
-                return None
-            except BrokenProcessPool:  # a process died (e.g. out of memory): restart
-                if tries == 2:
-                    raise
-                self._executor = self._start()
-                await self._lanes.enter(lane)
+            else:
+                try:
+                    return await asyncio.wait_for(asyncio.wrap_future(job), seconds)
+                except asyncio.TimeoutError:
+                    return None
+                except BrokenProcessPool:
+                    if tries == 2:
+                        raise
+            # a process died (e.g. out of memory): a new pool, and the job queues again
+            self._executor = self._start()
+            await self._lanes.enter(lane)
 
     def retire(self, successor: GradingPool) -> None:
         """Hand new jobs to ``successor`` and stop once the jobs already running here are
