@@ -20,7 +20,8 @@ def test_previews_filling_the_pool_never_make_a_submit_fail(exam_dir):
     variant = student.variant("projectile-range")
     right = {name: repr(value) for name, value in variant.answers.items()
              if isinstance(value, float)}
-    pool = GradingPool(str(manifest), workers=1, queue=8, preview_queue=8)
+    # previews may wait long here: a loaded machine must not shed them by time
+    pool = GradingPool(str(manifest), workers=1, queue=8, preview_queue=8, preview_wait=120)
     try:
         pool.warm_up()
 
