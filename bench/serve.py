@@ -65,6 +65,28 @@ def build_exam(folder: Path, students: int) -> Path:
     return path
 
 
+def class_with_links(folder: Path, students: int, db_url: str | None
+                     ) -> tuple[Path, dict[str, str]]:
+    """The example exam for ``students`` students (:func:`build_exam`) and each student's
+    token (``dynagrade links``)."""
+    manifest = build_exam(folder, students)
+    subprocess.run([sys.executable, "-m", "dynagrade.cli", "links", str(manifest), "-o",
+                    str(folder / "links.csv")] + (["--db", db_url] if db_url else []),
+                   check=True, stdout=subprocess.DEVNULL)
+    with open(folder / "links.csv", encoding="utf-8") as handle:
+        return manifest, {r["student_id"]: r["url"].rsplit("/", 1)[1]
+                          for r in csv.DictReader(handle)}
+
+
+def server_arguments(parser: argparse.ArgumentParser, students: int) -> None:
+    """The options of the class and its server, shared by the serve benchmarks."""
+    parser.add_argument("--students", type=int, default=students)
+    parser.add_argument("--workers", type=int, default=2)
+    parser.add_argument("--grading-workers", type=int, default=1,
+                        help="grading processes per server worker")
+    parser.add_argument("--db", help="database URL (default: SQLite beside the manifest)")
+
+
 def _answer_text(value, factor: float) -> str:
     if isinstance(value, tuple):
         return "(" + ", ".join(repr(v * factor) for v in value) + ")"
@@ -173,13 +195,9 @@ def percentile(values: list[float], q: float) -> float:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--students", type=int, default=20)
-    parser.add_argument("--workers", type=int, default=2)
-    parser.add_argument("--grading-workers", type=int, default=1,
-                        help="grading processes per server worker")
+    server_arguments(parser, students=20)
     parser.add_argument("--concurrency", type=int, default=8,
                         help="requests in flight at once (the server is saturated at about 8 on 2 cores)")
-    parser.add_argument("--db", help="database URL (default: SQLite beside the manifest)")
     parser.add_argument("--port", type=int, default=0)
     args = parser.parse_args(argv)
 
@@ -188,13 +206,8 @@ def main(argv=None) -> int:
 
     folder = Path(tempfile.mkdtemp(prefix="dynagrade-bench-serve-"))
     started = time.perf_counter()
-    manifest = build_exam(folder, args.students)
+    manifest, tokens = class_with_links(folder, args.students, args.db)
     print(f"exam for {args.students} students built in {time.perf_counter() - started:.1f} s")
-    subprocess.run([sys.executable, "-m", "dynagrade.cli", "links", str(manifest), "-o",
-                    str(folder / "links.csv")] + (["--db", args.db] if args.db else []),
-                   check=True, stdout=subprocess.DEVNULL)
-    with open(folder / "links.csv", encoding="utf-8") as handle:
-        tokens = {r["student_id"]: r["url"].rsplit("/", 1)[1] for r in csv.DictReader(handle)}
     port = args.port or _free_port()
     server = Server(manifest, port, args.db, args.workers, args.grading_workers)
     log = open(folder / "server.log", "w")

@@ -41,6 +41,7 @@ def create_app(manifest: str | os.PathLike, db_url: str | None = None,
 def build_app(settings: Settings, clock: Callable[[], dt.datetime] | None = None) -> FastAPI:
     """The app of ``settings``: the exam and the database opened, the routers included."""
     from ..exercise.loader import open_bank
+    from ..grading import prepare
 
     data = ExamData(settings.manifest, open_bank(settings.folders))
     engine = db.connect(settings.db_url or db.sqlite_url_beside(settings.manifest))
@@ -50,7 +51,9 @@ def build_app(settings: Settings, clock: Callable[[], dt.datetime] | None = None
     @asynccontextmanager
     async def lifespan(app: FastAPI):
         pool = server.start_pool()
-        await run_in_threadpool(pool.warm_up)
+        # pages read the answers they show (ExamData.reading): load the readers here too,
+        # while the pool loads the exam, not in the first student's page
+        await asyncio.gather(run_in_threadpool(pool.warm_up), run_in_threadpool(prepare))
         reloader = await run_in_threadpool(ExamReloader, server)
         server.catch_up = reloader.catch_up
         watching = asyncio.create_task(reloader.watch())

@@ -108,8 +108,12 @@ def _list_staff_links(engine, exam_id: str) -> None:
               help="Server processes (each with its own grading pool).")
 @click.option("--grading-workers", type=click.IntRange(1, 64), default=2, show_default=True,
               help="Grading processes per server process.")
+@click.option("--access-log", is_flag=True, help="Log every request on standard error "
+              "(tokens shown as the start of their hash). Off by default: at a class's "
+              "rate the log costs CPU that submits need; the proxy's log has the requests.")
 @click.pass_obj
-def serve(context, manifest, db_url, host, port, base_url, workers, grading_workers):
+def serve(context, manifest, db_url, host, port, base_url, workers, grading_workers,
+          access_log):
     """Serve the exam or homework that `dynagrade exam` generated."""
     import uvicorn
 
@@ -123,7 +127,8 @@ def serve(context, manifest, db_url, host, port, base_url, workers, grading_work
     click.echo(f"serving {data.title!r} ({data.policy.mode}) on http://{host}:{port}")
     with serving(Path(manifest).resolve().parent):  # `dynagrade exam` keeps off the folder
         uvicorn.run("dynagrade.serve.app:app_from_environment", factory=True, host=host,
-                    port=port, workers=workers, proxy_headers=True, log_level="info")
+                    port=port, workers=workers, proxy_headers=True, log_level="info",
+                    access_log=access_log)
 
 
 @click.command("policy")

@@ -32,6 +32,21 @@ from .verdicts import SubmittedPart
 #: Longest answer text accepted for one part (longer answers are refused, not graded).
 MAX_ANSWER_CHARS = 2000
 
+#: The most statements (or worked solutions) a server process keeps rendered: enough for
+#: every variant of a class of 3,000 students with 6 exercises, a bound on the memory of
+#: a larger one (a statement is a few kB of HTML).
+MAX_CACHED_VARIANTS = 20_000
+#: The most readings of answers shown on pages a process keeps (a reading is a sentence,
+#: a formula's MathML at most a few kB).
+MAX_CACHED_READINGS = 50_000
+
+
+def cache_size(students: int, exercises: int) -> int:
+    """Entries of a per-variant cache: one per student and exercise, so that no page of a
+    class evicts another's (a fixed 4,096 was smaller than 700 students x 6 exercises),
+    within :data:`MAX_CACHED_VARIANTS`."""
+    return max(64, min(MAX_CACHED_VARIANTS, students * exercises))
+
 
 @dataclass(frozen=True)
 class PartInfo:
@@ -80,6 +95,13 @@ class ExamData:
             except UnknownExercise as error:
                 raise ManifestError(f"{self.path}: {error} (needed to serve this "
                                     "exam; point --exercises at its folder)") from None
+        variants = cache_size(len(self.students), len(self.exercise_ids))
+        self._statement = lru_cache(maxsize=variants)(self._render_statement)
+        self._solution = lru_cache(maxsize=variants)(self._render_solution)
+        self._reading = lru_cache(maxsize=min(MAX_CACHED_READINGS, 8 * variants))(self.preview)
+        #: (student, exercise) whose figure is known to be absent: a page render tries
+        #: no file for them again (the folder is written before the server starts)
+        self._no_figure: set[tuple[str, str]] = set()
 
     @property
     def policy(self) -> Policy:
@@ -112,18 +134,35 @@ class ExamData:
     def statement_html(self, student_id: str, exercise_id: str,
                        seed: int | None = None) -> str:
         entry = self.entry(student_id, exercise_id, seed)
-        return _statement_html(self, exercise_id, entry.seed,
-                               tuple(sorted(entry.params.items())))
+        return self._statement(exercise_id, entry.seed, tuple(sorted(entry.params.items())))
+
+    def _render_statement(self, exercise_id: str, seed: int, params: tuple) -> str:
+        from ..render.markup import markdown_to_html
+
+        variant = self.exercises[exercise_id].variant_from_params(seed, dict(params))
+        return markdown_to_html(variant.statement, heading_offset=2)
 
     def solution_html(self, student_id: str, exercise_id: str) -> str | None:
         """The worked solution of the student's variant as HTML (MathML), from the
         variant the manifest stores; ``None`` when the exercise has none."""
-        return _solution_html(self, exercise_id, student_id)
+        return self._solution(exercise_id, student_id)
+
+    def _render_solution(self, exercise_id: str, student_id: str) -> str | None:
+        from ..exercise.solution import render_solution
+        from ..render.markup import markdown_to_html
+
+        exercise = self.exercises[exercise_id]
+        solution = render_solution(exercise, stored_variant(
+            exercise, self.entry(student_id, exercise_id)))
+        return None if solution is None else markdown_to_html(solution, heading_offset=3)
 
     def figure_svg(self, student_id: str, exercise_id: str) -> str | None:
-        """The figure ``dynagrade exam`` drew for the student's variant, inline."""
+        """The figure ``dynagrade exam`` drew for the student's variant, inline; ``None``
+        when there is none (remembered: the next page looks for no file)."""
         from ..render.figures import inline_svg
 
+        if (student_id, exercise_id) in self._no_figure:
+            return None
         folder = self.path.parent / "students" / student_id
         # beside the fill-in file; exams generated before kept figures in figures/
         for path in (folder / f"{exercise_id}.svg", folder / "figures" / f"{exercise_id}.svg"):
@@ -131,6 +170,7 @@ class ExamData:
                 return inline_svg(path.read_text(encoding="utf-8"), f"figure-{exercise_id}-")
             except (OSError, UnicodeDecodeError):
                 continue
+        self._no_figure.add((student_id, exercise_id))
         return None
 
     # -- reading and grading --------------------------------------------------------------
@@ -160,6 +200,14 @@ class ExamData:
         if readable and variables:  # a formula: typeset it as it was read
             shown = formula_mathml(text, variables, asked.spellings())
         return {"readable": readable, "message": message, "formula": shown}
+
+    def reading(self, student_id: str, exercise_id: str, part: str, text: str,
+                seed: int | None = None) -> dict:
+        """:meth:`preview` of an answer a page shows in its box (a counted answer or a
+        draft), kept: a page shows the same texts again at every load. About 0.2 ms of
+        CPU the first time, read here rather than stored with the answer: drafts, saved
+        at every pause in typing, far outnumber page loads."""
+        return self._reading(student_id, exercise_id, part, text, seed)
 
     def grade(self, student_id: str, exercise_id: str, answers: dict[str, str],
               seed: int | None = None, check: bool = True) -> list[SubmittedPart]:
@@ -233,25 +281,6 @@ def _failed(parts: tuple[PartEntry, ...], name: str, text: str,
     return GradedPart(name, part.label, Status.ERROR, 0.0, float(part.points), text,
                       _("this answer could not be graded ({error}); the staff will look at "
                         "it").format(error=type(error).__name__), unit=part.unit)
-
-
-@lru_cache(maxsize=4096)
-def _statement_html(data: ExamData, exercise_id: str, seed: int, params: tuple) -> str:
-    from ..render.markup import markdown_to_html
-
-    variant = data.exercises[exercise_id].variant_from_params(seed, dict(params))
-    return markdown_to_html(variant.statement, heading_offset=2)
-
-
-@lru_cache(maxsize=4096)
-def _solution_html(data: ExamData, exercise_id: str, student_id: str) -> str | None:
-    from ..exercise.solution import render_solution
-    from ..render.markup import markdown_to_html
-
-    exercise = data.exercises[exercise_id]
-    solution = render_solution(exercise, stored_variant(exercise, data.entry(student_id,
-                                                                             exercise_id)))
-    return None if solution is None else markdown_to_html(solution, heading_offset=3)
 
 
 @lru_cache(maxsize=1024)

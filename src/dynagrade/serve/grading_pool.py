@@ -7,8 +7,16 @@ stored with each answer reads as the page around it. The grader's budget is CPU 
 its verdicts do not depend on the load; the server's own wait, :func:`budget`, is
 wall-clock seconds: a job that takes longer gets "not graded in time" (status error, for
 the staff to grade), never a wrong verdict, and the other students' jobs go on in the
-other processes. At most ``queue`` jobs wait per server process; beyond that a request gets
-503 with ``Retry-After`` instead of piling up.
+other processes.
+
+Jobs wait in two lanes (:class:`Lanes`), one for submits and one for previews, and a
+process that comes free takes the oldest submit before any preview, so that a class
+typing (a preview at every pause) never delays a submit by more than the job each process
+is on. Each lane has its own bound per server process: at most ``queue`` submits wait,
+and at most ``preview_queue`` previews, each for at most ``preview_wait`` seconds (a
+preview that waited longer is stale: the student typed on). Beyond that a request gets
+503 with ``Retry-After`` (:class:`Busy`) instead of piling up; previews are therefore
+refused first, and previews filling their lane never refuse a submit.
 """
 
 from __future__ import annotations
@@ -16,6 +24,7 @@ from __future__ import annotations
 import asyncio
 import multiprocessing
 import time
+from collections import deque
 from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 
@@ -74,16 +83,72 @@ def _process_context():
     context.set_forkserver_preload(["dynagrade.serve.grading_preload"])
     return context
 
+#: the lanes, in the order a free process takes from them
+SUBMIT, PREVIEW = "submit", "preview"
+
+
+class Lanes:
+    """``slots`` jobs running at once (one per grading process, so that no job waits
+    inside the executor, where it could not be overtaken); the others wait in their lane,
+    submits served before previews. Runs on one event loop."""
+
+    def __init__(self, slots: int, bounds: dict[str, int]):
+        self.free = slots
+        self.bounds = bounds
+        self.waiting: dict[str, deque[asyncio.Future]] = {lane: deque() for lane in bounds}
+
+    async def enter(self, lane: str, seconds: float | None = None) -> None:
+        """Take a slot, after the jobs ahead (every waiting submit is ahead of a preview);
+        :class:`Busy` when ``lane`` is full or the slot did not come within ``seconds``."""
+        if self.free > 0 and not any(self.waiting.values()):
+            self.free -= 1
+            return
+        queue = self.waiting[lane]
+        if len(queue) >= self.bounds[lane]:
+            raise Busy()
+        turn = asyncio.get_running_loop().create_future()
+        queue.append(turn)
+        try:
+            await asyncio.wait_for(asyncio.shield(turn), seconds)
+        except (asyncio.TimeoutError, asyncio.CancelledError) as error:
+            if turn.done() and not turn.cancelled():  # the slot came as it gave up: pass it on
+                self.leave()
+            else:
+                turn.cancel()
+                queue.remove(turn)
+            if isinstance(error, asyncio.TimeoutError):
+                raise Busy() from None
+            raise
+
+    def leave(self) -> None:
+        """Give the slot to the oldest waiting submit, else the oldest preview."""
+        for queue in self.waiting.values():
+            while queue:
+                turn = queue.popleft()
+                if not turn.done():
+                    turn.set_result(None)
+                    return
+        self.free += 1
+
+
+def _on_loop(loop: asyncio.AbstractEventLoop, call) -> None:
+    """Run ``call`` on ``loop`` from another thread (nothing once the loop is closed: the
+    server is stopping and no job waits any more)."""
+    try:
+        loop.call_soon_threadsafe(call)
+    except RuntimeError:
+        pass
+
 
 class GradingPool:
     """``workers`` processes grading answers for one exam."""
 
     def __init__(self, manifest_path: str, folders: tuple[str, ...] = (), workers: int = 2,
-                 queue: int = 256):
+                 queue: int = 256, preview_queue: int = 64, preview_wait: float = 2.0):
         self._args = (str(manifest_path), tuple(folders))
         self._workers = workers
-        self._waiting = 0
-        self._queue = queue
+        self._lanes = Lanes(workers, {SUBMIT: queue, PREVIEW: preview_queue})
+        self._preview_wait = preview_wait
         self._executor = self._start()
         #: the pool that took over after a reload (:meth:`retire`)
         self._successor: GradingPool | None = None
@@ -101,34 +166,47 @@ class GradingPool:
 
     async def grade(self, student_id, exercise_id, answers: dict, seed) -> list[dict] | None:
         """The graded parts, or ``None`` when grading took longer than its budget."""
-        return await self._run(budget(len(answers)), _grade, student_id, exercise_id,
-                               answers, seed)
+        return await self._run(SUBMIT, budget(len(answers)), _grade, student_id,
+                               exercise_id, answers, seed)
 
     async def read(self, student_id, exercise_id, part, text, seed) -> dict | None:
         """How an answer reads (``ExamData.preview``), or ``None`` when reading took too
-        long."""
-        return await self._run(budget(1), _read, student_id, exercise_id, part, text, seed)
+        long; :class:`Busy` when the previews' lane is full or the preview waited too
+        long for a process."""
+        return await self._run(PREVIEW, budget(1), _read, student_id, exercise_id, part,
+                               text, seed)
 
-    async def _run(self, seconds, function, *args):
+    async def _run(self, lane, seconds, function, *args):
         if self._successor is not None:  # a request that held this pool across a reload
-            return await self._successor._run(seconds, function, *args)
-        if self._waiting >= self._queue:
-            raise Busy()
-        self._waiting += 1
-        try:
-            loop = asyncio.get_running_loop()
-            for tries in (1, 2):
+            return await self._successor._run(lane, seconds, function, *args)
+        await self._lanes.enter(lane, self._preview_wait if lane == PREVIEW else None)
+        if self._successor is not None:  # retired while this job waited
+            self._lanes.leave()
+            return await self._successor._run(lane, seconds, function, *args)
+        loop = asyncio.get_running_loop()
+        for tries in (1, 2):
+            try:
+                job = self._executor.submit(function, *args)
+                # the slot is free when the process is, not when the wait below gives up
+                job.add_done_callback(lambda _job: _on_loop(loop, self._lanes.leave))
+            except BrokenProcessPool:  # found broken before the job went in
+                self._lanes.leave()
+                if tries == 2:
+                    raise
+            except BaseException:
+                self._lanes.leave()
+                raise
+            else:
                 try:
-                    future = loop.run_in_executor(self._executor, function, *args)
-                    return await asyncio.wait_for(future, seconds)
+                    return await asyncio.wait_for(asyncio.wrap_future(job), seconds)
                 except asyncio.TimeoutError:
                     return None
-                except BrokenProcessPool:  # a process died (e.g. out of memory): restart
+                except BrokenProcessPool:
                     if tries == 2:
                         raise
-                    self._executor = self._start()
-        finally:
-            self._waiting -= 1
+            # a process died (e.g. out of memory): a new pool, and the job queues again
+            self._executor = self._start()
+            await self._lanes.enter(lane)
 
     def retire(self, successor: GradingPool) -> None:
         """Hand new jobs to ``successor`` and stop once the jobs already running here are

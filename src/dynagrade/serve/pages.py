@@ -151,10 +151,13 @@ def _exercise(server: Server, rules: Rules, student_id: str, exercise_id: str,
         allowed = rules.attempts(exercise_id, info.name)
         left = max(0, allowed - used[info.name]) if allowed and seed is None else None
         verdict = result.part(info.name) if result is not None and seed is None else None
+        reason = here.reasons.get(info.name)
         parts.append({
             "info": info, "text": text, "left": left, "exhausted": left == 0,
+            "reading": _reading(data, student_id, exercise_id, info, text, seed)
+            if not reason else None,
             "chosen": {c.strip() for c in text.split(",")} if info.options else set(),
-            "reason": here.reasons.get(info.name), "verdict": verdict,
+            "reason": reason, "verdict": verdict,
             "staff_note": verdict.override_note(data.rounding) if verdict else "",
             "history": [{"attempt": a.attempt, "counted": a.counted,
                          "time": moments.moment(a.created_at, zone), "raw": a.raw,
@@ -174,6 +177,18 @@ def _exercise(server: Server, rules: Rules, student_id: str, exercise_id: str,
         "answered": any(p["history"] for p in parts),
         "locked": not rules.is_open(now) and seed is None,
         "solution": Markup(solution) if solution else None}
+
+
+def _reading(data: ExamData, student_id: str, exercise_id: str, info, text: str,
+             seed: int | None) -> dict | None:
+    """How the text a box shows reads, as the preview under it says it (the page carries
+    it, so that its script asks for no preview on load): ``{"readable", "message",
+    "formula"}`` with the formula as MathML markup; ``None`` for an empty box or a choice
+    (whose ticks need no reading)."""
+    if info.options or not text.strip():
+        return None
+    read = data.reading(student_id, exercise_id, info.name, text, seed)
+    return {**read, "formula": Markup(read["formula"]) if read["formula"] else None}
 
 
 def _status(data: ExamData, typed: Typed | None, error: str | None,

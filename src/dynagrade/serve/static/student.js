@@ -1,4 +1,5 @@
-/* The student page, enhanced: a live preview of how each answer reads, drafts saved as
+/* The student page, enhanced: a live preview of how each answer reads as it is typed (the
+   page itself says how the answers it shows read, so nothing is asked on load), drafts saved as
    the student types (and a warning before leaving while one is not saved yet), times in
    the reader's own zone, a countdown to the close or to the end of a timed exam's time,
    the submit button disabled while saving and the focus on the summary a submit ends
@@ -80,9 +81,15 @@
         if (!input.value.trim()) { out.textContent = ""; input.removeAttribute("aria-invalid"); return; }
         post("preview", "POST", {exercise: exercise, part: name, answer: input.value,
                                  practice: practice})
-          .then(function (r) { return r.json(); })
+          .then(function (r) { return r.json().then(function (j) { j.busy = r.status === 503; return j; }); })
           .then(function (j) {
             if (mine !== asked) return;
+            if (j.busy) {  /* previews are shed first when the server is busy: no verdict on the box */
+              out.textContent = j.detail || "";
+              out.classList.remove("bad");
+              input.removeAttribute("aria-invalid");
+              return;
+            }
             out.textContent = j.message || j.detail || "";
             out.classList.toggle("bad", !j.readable);
             if (j.readable) input.removeAttribute("aria-invalid");
@@ -101,7 +108,7 @@
         timer = setTimeout(preview, 250);
         if (!input.readOnly) changed(name);
       });
-      if (input.value && !input.readOnly) preview();
+      /* no preview on load: the page carries how each filled box reads */
     });
 
     form.querySelectorAll("fieldset[data-choice]").forEach(function (set) {
