@@ -83,6 +83,7 @@ def _process_context():
     context.set_forkserver_preload(["dynagrade.serve.grading_preload"])
     return context
 
+
 #: the lanes, in the order a free process takes from them
 SUBMIT, PREVIEW = "submit", "preview"
 
