@@ -110,7 +110,8 @@ def test_a_balance_compares_its_two_sides():
 def test_a_check_that_raises_is_reported_with_its_error():
     broken = Recompute("missing", lambda p, s: 1.0, name="typo")
     [problem] = _problems(_oscillator(checks=(broken,)))
-    assert problem.startswith("check 'typo' fails: KeyError: ") and "'T'" in problem
+    assert problem.startswith("check 'typo' fails: DefinitionError: the solver returns "
+                              "no 'missing'") and "'T'" in problem
 
 
 @pytest.mark.parametrize("name", ["two words", "", "1st"])

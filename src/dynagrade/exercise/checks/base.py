@@ -13,6 +13,7 @@ from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
+from ...errors import DefinitionError
 from ..numbers import answer_text
 from ..params import ParamValues
 
@@ -42,11 +43,10 @@ class CheckCase:
     def value(self, key: str) -> Any:
         """The solver's value of ``key``; a key the solver does not return is the check's
         error, said with the keys there are."""
-        try:
-            return self.solved[key]
-        except KeyError:
-            raise KeyError(f"the solver returns no {key!r}; it returns "
-                           f"{sorted(self.solved)}") from None
+        if key not in self.solved:
+            raise DefinitionError(f"the solver returns no {key!r}; it returns "
+                                  f"{sorted(self.solved)}")
+        return self.solved[key]
 
 
 @dataclass(frozen=True)
