@@ -8,10 +8,11 @@ import pytest
 
 from serve_support import exam_copy, exam_dir, serving_process  # noqa: F401
 from test_serve_browser import CHROMIUM
-from test_serve_student_browser import chromium
+from test_serve_student_browser import AXE, assert_accessible, chromium
 
-pytestmark = pytest.mark.skipif(not CHROMIUM.exists(),
-                                reason="needs Chromium (apt-get install chromium)")
+pytestmark = pytest.mark.skipif(not (CHROMIUM.exists() and AXE.exists()),
+                                reason="needs Chromium (apt-get install chromium) and axe-core "
+                                       "(npm install --prefix .cache/axe axe-core)")
 
 
 def test_a_page_load_sends_no_preview_and_shows_the_reading(exam_dir, tmp_path):
@@ -43,6 +44,7 @@ def test_a_page_load_sends_no_preview_and_shows_the_reading(exam_dir, tmp_path):
             expect(page.locator("#sliding-up-a-slope--delta_x")).to_have_attribute(
                 "aria-invalid", "true")
             assert previews == []  # the load asked for nothing
+            assert_accessible(page, "readings on load, one answer unreadable")
             page.reload()
             page.wait_for_load_state("networkidle")
             assert previews == []
