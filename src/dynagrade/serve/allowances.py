@@ -199,7 +199,14 @@ class Rules:
 
 def rules_for(engine: sa.Engine, exam_id: str, policy: Policy, student_id: str) -> Rules:
     """The rules in force for ``student_id`` under ``policy`` (the one in force)."""
-    row, started = db.student_terms(engine, exam_id, student_id)
+    return rules_from(policy, *db.student_terms(engine, exam_id, student_id))
+
+
+def rules_from(policy: Policy, row: db.AllowanceRow | None,
+               started: dt.datetime | None) -> Rules:
+    """The rules under ``policy`` for a student whose exceptions are ``row`` (or none) and
+    who started a timed exam at ``started`` (or not), as :func:`db.student_terms` reads
+    them."""
     return Rules(policy, Allowance.from_row(row) if row else None, db.utc(started))
 
 

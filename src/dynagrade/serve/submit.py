@@ -106,27 +106,23 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
     data: ExamData = state.data
     policy = data.policy
     given = check_request(data, exercise_id, answers)
-    rules = await run_in_threadpool(allowances.rules_for, state.engine, data.exam_id, policy,
-                                    student_id)
     counted = practice_seed is None
     if not counted and policy.mode != "practice":
         raise Refused(422, _("new variants are offered in practice mode only"))
     if key is not None and not _KEY.match(key):
         raise Refused(422, _("the idempotency key must be 8-100 letters, digits or ._:-"))
-    if key is not None:
-        stored = await run_in_threadpool(db.find_submission, state.engine, data.exam_id, key)
-        if stored is not None:
-            return _replay(data, rules, student_id, stored, now, key)
+    reads = await run_in_threadpool(db.submit_reads, state.engine, data.exam_id, student_id,
+                                    exercise_id, key, counted, counted and only_changed)
+    rules = allowances.rules_from(policy, reads.terms, reads.started)
+    if reads.stored is not None:
+        return _replay(data, rules, student_id, reads.stored, now, key)
     key = key or uuid.uuid4().hex
     if counted:
         check_open(rules, now)
-    if counted and only_changed:
-        given = changed(given, await run_in_threadpool(
-            db.last_texts, state.engine, data.exam_id, student_id, exercise_id))
+    if reads.last_texts is not None:
+        given = changed(given, reads.last_texts)
     if counted and policy.attempts:  # refuse before grading; checked again when storing
-        _last, per_part = await run_in_threadpool(db.part_attempts, state.engine, data.exam_id,
-                                              student_id, exercise_id)
-        _check_attempts(rules, exercise_id, per_part, given)
+        _check_attempts(rules, exercise_id, reads.per_part, given)
     graded = await state.pool.grade(student_id, exercise_id, given, practice_seed)
     if graded is None:
         graded = [_not_in_time(data, exercise_id, name, text) for name, text in given.items()]
@@ -140,9 +136,12 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
             reasons)
     seed = practice_seed if practice_seed is not None else \
         data.entry(student_id, exercise_id).seed
-    for _retry in range(20):
-        last, per_part = await run_in_threadpool(
-            db.part_attempts, state.engine, data.exam_id, student_id, exercise_id, counted)
+    last, per_part = reads.last_attempt, reads.per_part
+    for retry in range(20):
+        if retry:  # another submit took the attempt number meanwhile: read them again
+            last, per_part = await run_in_threadpool(
+                db.part_attempts, state.engine, data.exam_id, student_id, exercise_id,
+                counted)
         if counted:
             _check_attempts(rules, exercise_id, per_part, given)
         rows = [_with_penalty(policy, part, per_part.get(part.name, 0) + 1, counted)
