@@ -1,0 +1,186 @@
+"""The bank's new exercises for Sections 2.2.1-2.2.3 and 3.5.1-3.5.2 (issue 31), and the
+core relations they added: each key against numbers worked out by hand (written in the
+comments) and each new relation against an independent route (integration, a limit or a
+second derivation)."""
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from dynagrade.exercise import open_bank
+from dynagrade.mechanics import systems
+
+BANK = open_bank()
+
+
+def _keys(exercise_id, **values):
+    """The exercise's reference answers, in its parts' units, at the given parameters
+    (declared units)."""
+    return BANK.get(exercise_id).solve_in_part_units(values)
+
+
+# -- Section 2.2.1: walking on a boat --------------------------------------------------
+
+def test_walking_on_a_boat_keys_match_the_hand_calculation():
+    keys = _keys("walking-on-a-boat", m=80, M=240, d=3.0, u=1.0)
+    # x_B = m d / (m + M) = 80 * 3 / 320 = 0.75 m
+    assert keys["x_B"] == pytest.approx(0.75, rel=1e-9)
+    # x_P = d - x_B = 3 - 0.75 = 2.25 m
+    assert keys["x_P"] == pytest.approx(2.25, rel=1e-9)
+    # v_B = m u / (m + M) = 80 * 1 / 320 = 0.25 m/s
+    assert keys["v_B"] == pytest.approx(0.25, rel=1e-9)
+
+
+def test_the_recoil_displacement_matches_two_bodies_pushed_apart_by_an_internal_force():
+    """Integrate a person (m) and a boat (M) pushed apart by an arbitrary internal force
+    F(t) = sin(t)^2 on the person and -F(t) on the boat; read the boat's displacement when
+    the person has moved d = 1.5 m relative to the boat."""
+    m, M, d = 70.0, 210.0, 1.5
+
+    def rhs(t, y):
+        force = 50.0 * np.sin(t) ** 2
+        return [y[2], y[3], force / m, -force / M]
+
+    def walked(t, y):
+        return (y[0] - y[1]) - d
+    walked.terminal = True
+    run = solve_ivp(rhs, (0.0, 30.0), [0.0, 0.0, 0.0, 0.0], events=walked,
+                    rtol=1e-10, atol=1e-12)
+    boat = -run.y_events[0][0][1]
+    # by hand: m d / (m + M) = 70 * 1.5 / 280 = 0.375 m
+    assert boat == pytest.approx(0.375, rel=1e-6)
+    assert systems.recoil_displacement(m, M, d) == pytest.approx(boat, rel=1e-6)
+
+
+# -- Section 2.2.1: Atwood machine on a hook ---------------------------------------------
+
+def test_atwood_hook_force_keys_match_the_hand_calculation():
+    keys = _keys("atwood-hook-force", m1=6.0, m2=2.0, g=9.81)
+    # a = (6 - 2)/(6 + 2) * 9.81 = 4.905 m/s^2
+    assert keys["a"] == pytest.approx(4.905, rel=1e-9)
+    # a_C = (6 a - 2 a)/8 = 0.5 * 4.905 = 2.4525 m/s^2 downward
+    assert keys["a_C"] == pytest.approx(2.4525, rel=1e-9)
+    # F = 4 * 6 * 2 / 8 * 9.81 = 58.86 N = 8 * (9.81 - 2.4525)
+    assert keys["F"] == pytest.approx(58.86, rel=1e-9)
+
+
+def test_the_atwood_acceleration_matches_the_energy_balance_integrated_in_time():
+    """Energy route: (m1 + m2) v dv/dt = (m1 - m2) g v, i.e. the potential energy the
+    blocks lose becomes kinetic energy; integrate the two blocks as particles held by a
+    very stiff string and compare the mean acceleration over 0.5 s."""
+    m1, m2, g, k = 3.0, 1.0, 9.81, 1e7
+
+    def rhs(t, y):  # y = (x1 down, x2 up, v1, v2); the string stretch is x1 - x2
+        tension = k * (y[0] - y[1])
+        return [y[2], y[3], g - tension / m1, tension / m2 - g]
+    # start with the static stretch of the accelerating state, so no string wave rings
+    x0 = 2 * m1 * m2 * g / (m1 + m2) / k
+    run = solve_ivp(rhs, (0.0, 0.5), [x0, 0.0, 0.0, 0.0], rtol=1e-10, atol=1e-12,
+                    method="LSODA")
+    # by hand: a = 2/4 * 9.81 = 4.905 m/s^2, so x1(0.5) = a t^2 / 2 = 0.613 m
+    a_numeric = 2 * run.y[0][-1] / 0.5**2
+    assert a_numeric == pytest.approx(4.905, rel=1e-3)
+    assert systems.atwood_acceleration(m1, m2, g) == pytest.approx(a_numeric, rel=1e-3)
+
+
+def test_the_total_external_force_undoes_the_centre_of_mass_acceleration():
+    # a_C = F / M with F = (3, -4) N and M = 2 kg is (1.5, -2) m/s^2, and back
+    a_c = systems.centre_of_mass_acceleration([3.0, -4.0], 2.0)
+    assert np.allclose(systems.total_external_force(2.0, a_c), [3.0, -4.0])
+
+
+# -- Section 2.2.2: a hanging block pulls a block across a rough table -------------------
+
+def test_block_pulled_over_a_table_edge_keys_match_the_hand_calculation():
+    keys = _keys("block-pulled-over-a-table-edge", m1=4.0, m2=3.0, mu=0.25, s=1.0, g=9.81)
+    # 1/2 (4 + 3) v^2 = (3 - 0.25 * 4) * 9.81 * 1 = 19.62 J, v = sqrt(2 * 19.62 / 7) = 2.3676 m/s
+    assert keys["v"] == pytest.approx(2.36763, rel=1e-5)
+    # D = 0.25 * 4 * 9.81 * 1 = 9.81 J
+    assert keys["D"] == pytest.approx(9.81, rel=1e-9)
+    # a = v^2/(2 s) = 2.80286 m/s^2, T = 3 (9.81 - 2.80286) = 21.0214 N, W_T = T s = 21.0214 J
+    assert keys["W_T"] == pytest.approx(21.0214, rel=1e-5)
+
+
+# -- Section 2.2.2: a cart runs into a spring bumper ---------------------------------------
+
+def test_cart_hits_spring_bumper_keys_match_the_hand_calculation():
+    keys = _keys("cart-hits-spring-bumper", m1=2.0, m2=3.0, v0=2.0, k=1200)
+    # v_C = 2 * 2 / 5 = 0.8 m/s
+    assert keys["v_C"] == pytest.approx(0.8, rel=1e-9)
+    # mu = 2 * 3 / 5 = 1.2 kg; x_max = 2 * sqrt(1.2 / 1200) = 0.0632456 m = 6.32456 cm
+    assert keys["x_max"] == pytest.approx(6.32456, rel=1e-5)
+    # V_max = 1/2 * 1.2 * 2^2 = 2.4 J
+    assert keys["V_max"] == pytest.approx(2.4, rel=1e-9)
+
+
+def test_the_largest_compression_matches_the_integrated_collision():
+    m1, m2, k, v0 = 1.0, 4.0, 500.0, 3.0
+
+    def rhs(t, y):
+        force = k * max(y[0] - y[1], 0.0)
+        return [y[2], y[3], -force / m1, force / m2]
+
+    def closest(t, y):
+        return y[2] - y[3]
+    closest.terminal, closest.direction = True, -1
+    run = solve_ivp(rhs, (0.0, 1.0), [0.0, 0.0, v0, 0.0], events=closest, rtol=1e-10,
+                    atol=1e-12)
+    x1, x2 = run.y_events[0][0][:2]
+    # by hand: mu = 4/5 = 0.8 kg, x_max = 3 sqrt(0.8/500) = 0.12 m
+    assert x1 - x2 == pytest.approx(0.12, rel=1e-6)
+    assert systems.maximum_spring_compression_between_particles(m1, m2, k, v0) == \
+        pytest.approx(x1 - x2, rel=1e-6)
+
+
+# -- Section 2.2.3: two skaters on a rope ------------------------------------------------
+
+def test_skaters_pulling_a_rope_keys_match_the_hand_calculation():
+    keys = _keys("skaters-pulling-a-rope", m1=80, m2=60, L1=6.0, L2=2.0, omega1=0.5)
+    # omega2 = 0.5 * (6/2)^2 = 4.5 rad/s
+    assert keys["omega2"] == pytest.approx(4.5, rel=1e-9)
+    # r1 = 60/140 * 2 = 0.857143 m, v1 = 0.857143 * 4.5 = 3.857143 m/s
+    assert keys["v1"] == pytest.approx(3.857143, rel=1e-6)
+    # mu = 80 * 60 / 140 = 34.2857 kg; T1 = 1/2 mu 6^2 0.5^2 = 154.2857 J,
+    # T2 = 1/2 mu 2^2 4.5^2 = 1388.5714 J, W = 1234.2857 J
+    assert keys["W"] == pytest.approx(1234.2857, rel=1e-6)
+
+
+# -- Section 2.2.3: a puck tied through a hole to a hanging weight -----------------------
+
+def test_string_through_a_table_hole_keys_match_the_hand_calculation():
+    keys = _keys("string-through-a-table-hole", m1=0.5, m2=1.0, r0=0.3, v0=4.0, l=2.0,
+                 g=9.81)
+    # H = 0.5 * 0.3 * 4 = 0.6; r_s = (0.36 / (0.5 * 1 * 9.81))^(1/3) = 0.0733945^(1/3) = 0.41870 m
+    assert keys["r_s"] == pytest.approx(0.41870, rel=1e-4)
+    # a = 2 * 0.5 * 9.81 * 0.09 = 0.8829; r1 = (0.36 + sqrt(0.1296 + 4 * 0.8829 * 0.36 * 0.3))
+    #   / (2 * 0.8829) = 1.074852 / 1.7658 = 0.608705 m
+    assert keys["r_1"] == pytest.approx(0.608705, rel=1e-5)
+    # v1 = 4 * 0.3 / 0.608705 = 1.971396 m/s; energy 4 + 2.943 = 0.971601 + 5.971396 = 6.943 J
+    assert keys["v_1"] == pytest.approx(1.971396, rel=1e-5)
+
+
+def _effective_energy(m1, m2, g, H):
+    """Energy of puck and block at rest radially: H^2/(2 m1 r^2) + m2 g r."""
+    return lambda r: H**2 / (2 * m1 * r**2) + m2 * g * r
+
+
+def test_the_steady_radius_is_the_minimum_of_the_effective_energy():
+    from scipy.optimize import minimize_scalar
+
+    m1, m2, g, H = 0.8, 0.5, 9.81, 0.9
+    found = minimize_scalar(_effective_energy(m1, m2, g, H), bounds=(0.05, 5.0),
+                            method="bounded", options={"xatol": 1e-10}).x
+    assert systems.steady_radius_through_hole(m1, m2, g, H) == pytest.approx(found, rel=1e-6)
+
+
+def test_the_turning_radius_has_the_starting_radius_energy():
+    from scipy.optimize import brentq
+
+    m1, m2, g, H = 0.8, 0.5, 9.81, 0.9
+    energy = _effective_energy(m1, m2, g, H)
+    for r0 in (0.3, 1.5):            # inside and outside the steady radius (0.81/3.924)^(1/3) = 0.591 m
+        r_s = systems.steady_radius_through_hole(m1, m2, g, H)
+        bracket = (r_s, 20.0) if r0 < r_s else (1e-3, r_s)
+        other = brentq(lambda r: energy(r) - energy(r0), *bracket, xtol=1e-14)
+        assert systems.turning_radius_through_hole(m1, m2, g, H, r0) == \
+            pytest.approx(other, rel=1e-9)
