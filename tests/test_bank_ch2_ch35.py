@@ -184,3 +184,28 @@ def test_the_turning_radius_has_the_starting_radius_energy():
         other = brentq(lambda r: energy(r) - energy(r0), *bracket, xtol=1e-14)
         assert systems.turning_radius_through_hole(m1, m2, g, H, r0) == \
             pytest.approx(other, rel=1e-9)
+
+
+# -- Section 3.5.1: kinetic energy and angular momentum of an unsymmetric top ------------
+
+def test_top_energy_and_momentum_keys_match_the_hand_calculation():
+    keys = _keys("top-energy-and-momentum", I1=1e-3, I2=5e-4, I3=4e-4, theta=40, phi=90,
+                 psi_dot=4.0, theta_dot=2.0, phi_dot=20.0)
+    # sin 40° = 0.642788, cos 40° = 0.766044, phi = 90°:
+    # omega = (4 * 0.642788, -2, 4 * 0.766044 + 20) = (2.571150, -2, 23.064178) rad/s
+    # T = 1/2 (1e-3 * 6.610812 + 5e-4 * 4 + 4e-4 * 531.95628) = 0.1106967 J
+    assert keys["T"] == pytest.approx(0.1106967, rel=1e-5)
+    # H = (2.571150e-3, -1e-3, 9.225671e-3); e3 in the body frame = (0.642788, 0, 0.766044)
+    # H . e3 = 1.652714e-3 + 7.067271e-3 = 8.719985e-3 kg m^2/s
+    assert keys["H_v"] == pytest.approx(8.719985e-3, rel=1e-5)
+    # |H| = sqrt(6.610813e-6 + 1e-6 + 8.511300e-5) = 9.629320e-3 kg m^2/s
+    assert keys["H_abs"] == pytest.approx(9.629320e-3, rel=1e-5)
+
+
+def test_the_body_components_of_the_vertical_are_the_rotations_third_row():
+    from dynagrade.mechanics import gyro, rotations
+
+    for psi, theta, phi in ((0.3, 0.7, 2.1), (-1.2, 1.4, -0.4)):
+        rotation = rotations.euler_angle_rotation(psi, theta, phi)
+        # the body components of e3 are R^T e3, the third row of R, for every psi
+        assert np.allclose(gyro.body_components_of_vertical(theta, phi), rotation[2, :])

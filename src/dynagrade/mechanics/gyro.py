@@ -72,3 +72,14 @@ def fast_top_precession_rate(m: Quantity, g: Quantity, l: Quantity, axial_moment
     """Slow precession rate of a fast top, psi' = m g l / (I3 omega3), independent of the
     tilt (fast-top approximation, Section 3.5.2)."""
     return gyroscopic_precession_rate(m * g * l, axial_moment * axial_rate)
+
+
+# --- Sections 3.5.1-3.5.2: relations added for the exercise bank (issue 31, ch3 tops) ---
+
+def body_components_of_vertical(theta: Quantity, phi: Quantity) -> Quantity:
+    """Components of the space-fixed vertical e3 in the body frame of a top with nutation
+    theta and spin angle phi, (sin(theta) sin(phi), sin(theta) cos(phi), cos(theta)): the
+    third row of R = R3(psi) R1(theta) R3(phi), independent of psi (Section 3.5.1). A body
+    vector's vertical component is its dot product with these."""
+    return np.array([np.sin(theta) * np.sin(phi), np.sin(theta) * np.cos(phi),
+                     np.cos(theta)])
