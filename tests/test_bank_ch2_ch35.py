@@ -209,3 +209,42 @@ def test_the_body_components_of_the_vertical_are_the_rotations_third_row():
         rotation = rotations.euler_angle_rotation(psi, theta, phi)
         # the body components of e3 are R^T e3, the third row of R, for every psi
         assert np.allclose(gyro.body_components_of_vertical(theta, phi), rotation[2, :])
+
+
+# -- Section 3.5.1: Euler's equations for a heavy unsymmetric top ------------------------
+
+def test_top_angular_acceleration_keys_match_the_hand_calculation():
+    keys = _keys("top-angular-acceleration", m=0.2, l=4.0, I1=1e-3, I2=6e-4, I3=4e-4,
+                 theta=30, phi=90, psi_dot=4.0, theta_dot=2.0, phi_dot=20.0, g=9.81)
+    # omega = (4 * 0.5, -2, 4 * 0.866025 + 20) = (2, -2, 23.464102) rad/s
+    # m g l = 0.2 * 9.81 * 0.04 = 0.07848 N m; M = 0.07848 (0.5 * 0, -0.5 * 1, 0) = (0, -0.03924, 0)
+    assert keys["M_O"] == pytest.approx(0.03924, rel=1e-9)
+    # alpha1 = (0 + 2e-4 * (-2) * 23.464102) / 1e-3 = -9.385641
+    # alpha2 = (-0.03924 + (-6e-4) * 23.464102 * 2) / 6e-4 = -112.32820
+    # alpha3 = (0 + 4e-4 * 2 * (-2)) / 4e-4 = -4.0   (rad/s^2)
+    assert keys["alpha"] == pytest.approx([-9.385641, -112.32820, -4.0], rel=1e-6)
+    # P = m g l sin(theta) theta' = 0.07848 * 0.5 * 2 = 0.07848 W = M . omega = (-0.03924)(-2)
+    assert keys["P"] == pytest.approx(0.07848, rel=1e-9)
+
+
+def test_the_top_gravity_moment_is_the_weights_moment_seen_from_the_body():
+    from dynagrade.mechanics import angular_momentum, gyro, rotations
+
+    m, g, l = 0.3, 9.81, 0.05
+    for psi, theta, phi in ((0.4, 0.6, 1.9), (2.0, 1.1, -0.7)):
+        rotation = rotations.euler_angle_rotation(psi, theta, phi)
+        r_oc = l * rotation[:, 2]                      # C on the body axis, in space axes
+        moment_space = angular_momentum.torque(r_oc, [0.0, 0.0, -m * g])
+        assert np.allclose(gyro.top_gravity_moment(m, g, l, theta, phi),
+                           rotation.T @ moment_space)
+
+
+def test_the_top_kinetic_energy_rate_is_the_power_of_the_weights_moment():
+    from dynagrade.mechanics import gyro
+
+    m, g, l, theta, phi = 0.3, 9.81, 0.05, 0.8, 2.3
+    omega = gyro.body_angular_velocity_from_euler_rates(theta, phi, 3.0, -1.5, 40.0)
+    power = gyro.top_gravity_moment(m, g, l, theta, phi) @ omega
+    # by hand: 0.14715 * sin(0.8) * (-1.5) = 0.14715 * 0.717356 * (-1.5) = -0.158338 W
+    assert power == pytest.approx(-0.158338, rel=1e-5)
+    assert gyro.top_kinetic_energy_rate(m, g, l, theta, -1.5) == pytest.approx(power, rel=1e-12)

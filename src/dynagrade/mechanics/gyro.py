@@ -83,3 +83,22 @@ def body_components_of_vertical(theta: Quantity, phi: Quantity) -> Quantity:
     vector's vertical component is its dot product with these."""
     return np.array([np.sin(theta) * np.sin(phi), np.sin(theta) * np.cos(phi),
                      np.cos(theta)])
+
+
+def top_gravity_moment(m: Quantity, g: Quantity, l: Quantity, theta: Quantity,
+                       phi: Quantity) -> Quantity:
+    """Body-frame components of the weight's moment about the fixed tip O of a top whose
+    centre of mass lies on the body axis e3^B at l from O:
+    M_O = l e3^B x (-m g e3) = m g l (sin(theta) cos(phi), -sin(theta) sin(phi), 0),
+    with e3's body components of :func:`body_components_of_vertical`; horizontal, of
+    magnitude m g l sin(theta) (Section 3.5.1)."""
+    return m * g * l * np.array([np.sin(theta) * np.cos(phi), -np.sin(theta) * np.sin(phi),
+                                 0.0])
+
+
+def top_kinetic_energy_rate(m: Quantity, g: Quantity, l: Quantity, theta: Quantity,
+                            theta_rate: Quantity) -> Quantity:
+    """Rate of change of a top's kinetic energy, dT/dt = m g l sin(theta) theta': the tip
+    force does no work and the potential m g l cos(theta) is all the weight's work
+    (work-energy balance, Sections 3.2.5 and 3.5.1)."""
+    return m * g * l * np.sin(theta) * theta_rate
