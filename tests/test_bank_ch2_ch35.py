@@ -248,3 +248,48 @@ def test_the_top_kinetic_energy_rate_is_the_power_of_the_weights_moment():
     # by hand: 0.14715 * sin(0.8) * (-1.5) = 0.14715 * 0.717356 * (-1.5) = -0.158338 W
     assert power == pytest.approx(-0.158338, rel=1e-5)
     assert gyro.top_kinetic_energy_rate(m, g, l, theta, -1.5) == pytest.approx(power, rel=1e-12)
+
+
+# -- Section 3.5.2: a top released without precession -------------------------------------
+
+def test_released_top_nutation_keys_match_the_hand_calculation():
+    keys = _keys("released-top-nutation", m=0.5, l=4.0, I1=1.5e-3, I3=5e-4, w3=120,
+                 theta0=30, g=9.81)
+    # m g l = 0.1962 N m, I3 w3 = 0.06; beta = 2 * 1.5e-3 * 0.1962 / 0.06^2 = 0.1635
+    # u0 = 0.866025; u = (1 - sqrt(1 - 4 * 0.1635 * (0.866025 - 0.1635))) / (2 * 0.1635)
+    #   = (1 - sqrt(0.540548)) / 0.327 = 0.264780 / 0.327 = 0.809725 -> theta_max = 35.931°
+    assert keys["theta_max"] == pytest.approx(35.931, rel=1e-4)
+    # psi' = 2 m g l / (I3 w3) = 2 * 0.1962 / 0.06 = 6.54 rad/s
+    assert keys["psi_dot"] == pytest.approx(6.54, rel=1e-9)
+    # dT = m g l (u0 - u) = 0.1962 * (0.866025 - 0.809725) = 0.011046 J
+    assert keys["dT"] == pytest.approx(0.011046, rel=1e-4)
+
+
+def _released_top_turning_point(m, g, l, I1, I3, w3, theta0):
+    """Integrate the Lagrange equation of the symmetric top (theta; psi' from the
+    conserved vertical angular momentum) from the release to the next theta' = 0."""
+    def rhs(t, y):
+        psi_dot = I3 * w3 * (np.cos(theta0) - np.cos(y[0])) / (I1 * np.sin(y[0]) ** 2)
+        return [y[1], (I1 * psi_dot**2 * np.sin(y[0]) * np.cos(y[0])
+                       - I3 * w3 * psi_dot * np.sin(y[0]) + m * g * l * np.sin(y[0])) / I1]
+
+    def turns(t, y):
+        return y[1]
+    turns.terminal, turns.direction = True, -1
+    run = solve_ivp(rhs, (0.0, 5.0), [theta0, 0.0], events=turns, method="DOP853",
+                    rtol=1e-11, atol=1e-12)
+    theta = run.y_events[0][0][0]
+    return theta, I3 * w3 * (np.cos(theta0) - np.cos(theta)) / (I1 * np.sin(theta) ** 2)
+
+
+def test_the_largest_tilt_and_its_precession_rate_match_the_integrated_top():
+    from dynagrade.mechanics import gyro
+
+    m, g, l, I1, I3, w3, theta0 = 0.3, 9.81, 0.05, 1e-3, 4e-4, 60.0, 0.5
+    theta, psi_dot = _released_top_turning_point(m, g, l, I1, I3, w3, theta0)
+    assert gyro.largest_tilt_of_released_top(m, g, l, I1, I3, w3, theta0) == \
+        pytest.approx(theta, rel=1e-7)
+    # 2 m g l / (I3 w3) = 2 * 0.14715 / 0.024 = 12.2625 rad/s
+    assert psi_dot == pytest.approx(12.2625, rel=1e-6)
+    assert gyro.precession_rate_at_largest_tilt(m, g, l, I3, w3) == pytest.approx(psi_dot,
+                                                                                  rel=1e-6)

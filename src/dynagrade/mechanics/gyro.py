@@ -102,3 +102,27 @@ def top_kinetic_energy_rate(m: Quantity, g: Quantity, l: Quantity, theta: Quanti
     force does no work and the potential m g l cos(theta) is all the weight's work
     (work-energy balance, Sections 3.2.5 and 3.5.1)."""
     return m * g * l * np.sin(theta) * theta_rate
+
+
+def largest_tilt_of_released_top(m: Quantity, g: Quantity, l: Quantity,
+                                 transverse_moment: Quantity, axial_moment: Quantity,
+                                 axial_rate: Quantity, theta: Quantity) -> Quantity:
+    """Largest tilt theta_max of a heavy symmetric top released at the tilt theta with the
+    axial rate omega3 and no precession or nutation rate. H3 = I3 omega3 and the vertical
+    H_v = I1 psi' sin^2(theta) + I3 omega3 cos(theta) stay (gravity's moment about O is
+    horizontal and normal to the axis), and so does the energy; at the turning tilt
+    (theta' = 0) they give, with u = cos(theta_max), u0 = cos(theta) and
+    beta = 2 I1 m g l / (I3 omega3)^2: u0 - u = beta (1 - u^2) (Section 3.5.2)."""
+    beta = 2.0 * transverse_moment * m * g * l / (axial_moment * axial_rate) ** 2
+    u0 = np.cos(theta)
+    u = (1.0 - np.sqrt(1.0 - 4.0 * beta * (u0 - beta))) / (2.0 * beta)
+    return np.arccos(u)
+
+
+def precession_rate_at_largest_tilt(m: Quantity, g: Quantity, l: Quantity,
+                                    axial_moment: Quantity, axial_rate: Quantity) -> Quantity:
+    """Precession rate of the released top of :func:`largest_tilt_of_released_top` at its
+    largest tilt: psi' = I3 omega3 (u0 - u) / (I1 (1 - u^2)) = 2 m g l / (I3 omega3),
+    twice the fast-top rate, at any tilt; the precession rate swings between 0 and this
+    (Section 3.5.2)."""
+    return 2.0 * fast_top_precession_rate(m, g, l, axial_moment, axial_rate)
