@@ -5,7 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.exercise.checks import Balance, Recompute
-from dynagrade.exercise.figure import angle_arc, describe, dimension, new_drawing
+from dynagrade.exercise.figure import describe, dimension, new_drawing
 from dynagrade.mechanics import angular_momentum, systems
 
 
@@ -61,7 +61,10 @@ def draw(p):
         axes.text(x, 0.45, label, ha="center", va="bottom", fontsize=11)
     axes.add_patch(Circle((x_c, 0.0), 0.07, facecolor="white", edgecolor="0.1", zorder=4))
     axes.text(x_c, -0.25, "C", ha="center", va="top", fontsize=10)
-    angle_arc(axes, (x_c, 0.0), 0.6, 0.3, 2.0, "ω₁", label_radius=0.85)
+    axes.annotate("", xy=(x_c - 0.35, 0.55), xytext=(x_c + 0.35, 0.55),
+                  arrowprops={"arrowstyle": "-|>", "connectionstyle": "arc3,rad=0.5",
+                              "color": "#23802a"})
+    axes.text(x_c, 0.95, "ω₁", color="#23802a", ha="center", va="bottom", fontsize=11)
     dimension(axes, (0.0, -0.7), (4.0, -0.7), "L₁", tick=0.08, side=-1.0)
     describe(axes, "Top view: the skaters m₁ (left) and m₂ (right) hold the ends of the rope "
              "and spin counter-clockwise about their centre of mass C.")

@@ -24,7 +24,7 @@ def draw(p):
     from dynagrade.exercise.figure import Circle, Polygon, Rectangle
 
     figure, axes = new_drawing(5.0, 2.6)
-    axes.plot([-1.0, 6.0], [0.0, 0.0], color="C0", lw=1.0)            # water line
+    axes.plot([-1.0, 6.0], [0.0, 0.0], color="C0", lw=1.0, zorder=0)  # water line
     axes.add_patch(Polygon([(0.0, 0.5), (5.0, 0.5), (4.6, -0.3), (0.4, -0.3)], closed=True,
                            facecolor="0.85", edgecolor="0.1", lw=1.2))
     axes.add_patch(Rectangle((-1.0, -0.6), 0.5, 1.4, facecolor="0.6", edgecolor="0.1"))

@@ -65,7 +65,7 @@ def draw(p):
     axes.text(*(centre - across * 0.2), "C", ha="right", va="center", fontsize=10)
     arrow(axes, tuple(centre), tuple(centre + [0.0, -0.8]), "mg", offset=(0.2, 0.0),
           color="C3")
-    axes.text(*(axis * 0.55 + across * 0.35), "l", ha="center", va="center", fontsize=10)
+    axes.text(*(axis * 0.8 - across * 0.5), "l", ha="center", va="center", fontsize=10)
     angle_arc(axes, (0.0, 0.0), 0.5, np.pi / 2 - p.theta, np.pi / 2, "θ", label_radius=0.7)
     axes.text(0.0, -0.05, "O", ha="center", va="top", fontsize=10)
     describe(axes, "The top stands on its fixed tip O, its body axis e₃ᴮ tilted by θ from "
