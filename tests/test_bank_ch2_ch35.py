@@ -90,8 +90,13 @@ def test_the_atwood_acceleration_matches_the_energy_balance_integrated_in_time()
     assert systems.atwood_acceleration(m1, m2, g) == pytest.approx(a_numeric, rel=1e-3)
 
 
-def test_the_total_external_force_undoes_the_centre_of_mass_acceleration():
-    # a_C = F / M with F = (3, -4) N and M = 2 kg is (1.5, -2) m/s^2, and back
+def test_the_total_external_force_is_the_sum_of_the_forces_on_each_block():
+    """Atwood machine, m1 = 6 kg, m2 = 2 kg (up positive): the free bodies give the string
+    force T = 2 m1 m2 g/(m1 + m2) = 29.43 N, so the external forces on the two blocks (two
+    strands of T at the pulley, the weights) add up to 2T - M g = 58.86 - 78.48 = -19.62 N;
+    the centre of mass accelerates with a_C = (-6 * 4.905 + 2 * 4.905)/8 = -2.4525 m/s^2."""
+    assert systems.total_external_force(8.0, -2.4525) == pytest.approx(-19.62, rel=1e-12)
+    # and it undoes centre_of_mass_acceleration, component by component
     a_c = systems.centre_of_mass_acceleration([3.0, -4.0], 2.0)
     assert np.allclose(systems.total_external_force(2.0, a_c), [3.0, -4.0])
 
