@@ -72,3 +72,57 @@ def fast_top_precession_rate(m: Quantity, g: Quantity, l: Quantity, axial_moment
     """Slow precession rate of a fast top, psi' = m g l / (I3 omega3), independent of the
     tilt (fast-top approximation, Section 3.5.2)."""
     return gyroscopic_precession_rate(m * g * l, axial_moment * axial_rate)
+
+
+# --- Sections 3.5.1-3.5.2: relations added for the exercise bank (issue 31, ch3 tops) ---
+
+def body_components_of_vertical(theta: Quantity, phi: Quantity) -> Quantity:
+    """Components of the space-fixed vertical e3 in the body frame of a top with nutation
+    theta and spin angle phi, (sin(theta) sin(phi), sin(theta) cos(phi), cos(theta)): the
+    third row of R = R3(psi) R1(theta) R3(phi), independent of psi (Section 3.5.1). A body
+    vector's vertical component is its dot product with these."""
+    return np.array([np.sin(theta) * np.sin(phi), np.sin(theta) * np.cos(phi),
+                     np.cos(theta)])
+
+
+def top_gravity_moment(m: Quantity, g: Quantity, l: Quantity, theta: Quantity,
+                       phi: Quantity) -> Quantity:
+    """Body-frame components of the weight's moment about the fixed tip O of a top whose
+    centre of mass lies on the body axis e3^B at l from O:
+    M_O = l e3^B x (-m g e3) = m g l (sin(theta) cos(phi), -sin(theta) sin(phi), 0),
+    with e3's body components of :func:`body_components_of_vertical`; horizontal, of
+    magnitude m g l sin(theta) (Section 3.5.1)."""
+    return m * g * l * np.array([np.sin(theta) * np.cos(phi), -np.sin(theta) * np.sin(phi),
+                                 0.0])
+
+
+def top_kinetic_energy_rate(m: Quantity, g: Quantity, l: Quantity, theta: Quantity,
+                            theta_rate: Quantity) -> Quantity:
+    """Rate of change of a top's kinetic energy, dT/dt = m g l sin(theta) theta': the tip
+    force does no work and the potential m g l cos(theta) is all the weight's work
+    (work-energy balance, Sections 3.2.5 and 3.5.1)."""
+    return m * g * l * np.sin(theta) * theta_rate
+
+
+def largest_tilt_of_released_top(m: Quantity, g: Quantity, l: Quantity,
+                                 transverse_moment: Quantity, axial_moment: Quantity,
+                                 axial_rate: Quantity, theta: Quantity) -> Quantity:
+    """Largest tilt theta_max of a heavy symmetric top released at the tilt theta with the
+    axial rate omega3 and no precession or nutation rate. H3 = I3 omega3 and the vertical
+    H_v = I1 psi' sin^2(theta) + I3 omega3 cos(theta) stay (gravity's moment about O is
+    horizontal and normal to the axis), and so does the energy; at the turning tilt
+    (theta' = 0) they give, with u = cos(theta_max), u0 = cos(theta) and
+    beta = 2 I1 m g l / (I3 omega3)^2: u0 - u = beta (1 - u^2) (Section 3.5.2)."""
+    beta = 2.0 * transverse_moment * m * g * l / (axial_moment * axial_rate) ** 2
+    u0 = np.cos(theta)
+    u = (1.0 - np.sqrt(1.0 - 4.0 * beta * (u0 - beta))) / (2.0 * beta)
+    return np.arccos(u)
+
+
+def precession_rate_at_largest_tilt(m: Quantity, g: Quantity, l: Quantity,
+                                    axial_moment: Quantity, axial_rate: Quantity) -> Quantity:
+    """Precession rate of the released top of :func:`largest_tilt_of_released_top` at its
+    largest tilt: psi' = I3 omega3 (u0 - u) / (I1 (1 - u^2)) = 2 m g l / (I3 omega3),
+    twice the fast-top rate, at any tilt; the precession rate swings between 0 and this
+    (Section 3.5.2)."""
+    return 2.0 * fast_top_precession_rate(m, g, l, axial_moment, axial_rate)

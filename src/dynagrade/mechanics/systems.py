@@ -134,3 +134,56 @@ def angular_momentum_transfer(h_c: ArrayLike, M: Quantity, r_bc: ArrayLike,
     """Angular momentum about a point B from that about the centre of mass,
     H_B = H_C + r_BC x M v_C (Section 2.2.3; for rigid bodies Section 3.2.4)."""
     return np.asarray(h_c, dtype=float) + M * spatial_cross(r_bc, v_c)
+
+
+# --- Sections 2.2.1-2.2.3: relations added for the exercise bank (issue 31, ch2 systems) ---
+
+def recoil_displacement(m: Quantity, M: Quantity, relative_displacement: Quantity) -> Quantity:
+    """Distance a body of mass M moves back while a body of mass m on it moves by d
+    relative to it, the two starting at rest with no external force along the motion
+    (a person walking on a floating boat): the centre of mass stays put, so
+    m (d - x) = M x and x = m d / (m + M) (balance of linear momentum, Section 2.2.1)."""
+    return m * relative_displacement / (m + M)
+
+
+def atwood_acceleration(m1: Quantity, m2: Quantity, g: Quantity) -> Quantity:
+    """Acceleration of the blocks of an Atwood machine (two masses on an inextensible
+    string over a light, frictionless pulley), positive when m1 descends:
+    a = (m1 - m2) g / (m1 + m2), from the momentum balance along the string of the two
+    blocks together, whose string forces are internal (Section 2.2.1)."""
+    return (m1 - m2) * g / (m1 + m2)
+
+
+def total_external_force(M: Quantity, a_c: ArrayLike) -> Quantity:
+    """Total external force on a system of total mass M whose centre of mass accelerates
+    with a_C: F_ext = dP/dt = M a_C (balance of linear momentum of a system,
+    Section 2.2.1; the inverse of :func:`centre_of_mass_acceleration`)."""
+    return M * np.asarray(a_c, dtype=float)
+
+
+def maximum_spring_compression_between_particles(m1: Quantity, m2: Quantity, k: Quantity,
+                                                 relative_speed: Quantity) -> Quantity:
+    """Largest compression of a light spring (stiffness k) between two particles that
+    approach with the relative speed v_rel: at the largest compression both move with the
+    centre-of-mass velocity, so all of the relative kinetic energy 1/2 mu v_rel^2 is
+    stored, x_max = v_rel sqrt(mu / k) (work-energy balance, Section 2.2.2)."""
+    return relative_speed * np.sqrt(reduced_mass(m1, m2) / k)
+
+
+def steady_radius_through_hole(m1: Quantity, m2: Quantity, g: Quantity, H: Quantity) -> Quantity:
+    """Radius of steady circling of a particle m1 on a smooth table, tied by a string
+    through a hole to a hanging particle m2, with the system's angular momentum H about
+    the hole: m2 g = m1 r phidot^2 with phidot = H/(m1 r^2) gives
+    r = (H^2 / (m1 m2 g))^(1/3) (balance of angular momentum of a system, Section 2.2.3)."""
+    return np.cbrt(H**2 / (m1 * m2 * g))
+
+
+def turning_radius_through_hole(m1: Quantity, m2: Quantity, g: Quantity, H: Quantity,
+                                r0: Quantity) -> Quantity:
+    """The other turning radius of the particle m1 of :func:`steady_radius_through_hole`
+    that starts at r0 with no radial velocity: H stays (the string and the weights have
+    no moment about the hole's vertical), and the energy
+    H^2/(2 m1 r^2) + m2 g r takes the same value at both turning radii, which gives
+    2 m1 m2 g r0^2 r^2 - H^2 r - H^2 r0 = 0 (Sections 2.2.2 and 2.2.3)."""
+    a = 2.0 * m1 * m2 * g * r0**2
+    return (H**2 + np.sqrt(H**4 + 4.0 * a * H**2 * r0)) / (2.0 * a)
