@@ -1,0 +1,117 @@
+"""The bank's exercises of Sections 3.3 and 3.4 (rigid impact, rotations, rotating frames,
+Euler's equations) against variants worked by hand, and the core relations they added
+against a second route."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from dynagrade.exercise import open_bank
+from dynagrade.exercise.scoring import grade_variant
+from dynagrade.mechanics import rigid_impact
+
+BANK = open_bank()
+
+
+def _answers(exercise_id, values):
+    exercise = BANK.get(exercise_id)
+    return exercise, exercise.variant(0, values)
+
+
+# -- core relations -----------------------------------------------------------------------
+
+
+def test_the_edge_impact_agrees_with_the_impulse_balances_solved_as_a_linear_system():
+    # box m = 3 kg, b = 0.5 m, h = 0.8 m moving at v_C = (2, -0.5) m/s; E at the front bottom
+    m, b, h = 3.0, 0.5, 0.8
+    v_c = np.array([2.0, -0.5])
+    r = np.array([-b / 2, h / 2])                     # from E to C
+    i_c = m * (b**2 + h**2) / 12
+    # unknowns omega, Fx, Fy: m (v_C' - v_C) = F, I_C omega = (r_CE x F)_z, v_C' = omega e3 x r
+    system = np.array([[-m * r[1], -1.0, 0.0],
+                       [m * r[0], 0.0, -1.0],
+                       [i_c, -r[1], r[0]]])           # r_CE = -r: (r_CE x F)_z = -r0 Fy + r1 Fx
+    rhs = np.array([m * v_c[0], m * v_c[1], 0.0])
+    omega, fx, fy = np.linalg.solve(system, rhs)
+    i_e = i_c + m * (r @ r)
+    assert rigid_impact.angular_velocity_after_edge_impact(m, v_c, r, i_e) == pytest.approx(omega)
+    assert rigid_impact.impulse_at_edge(m, v_c, omega, r) == pytest.approx([fx, fy])
+
+
+@pytest.mark.parametrize("factor, tips", [(1.01, True), (0.99, False)])
+def test_a_body_turning_about_its_edge_tips_over_just_above_the_least_angular_speed(factor, tips):
+    # box b = 0.4 m, h = 0.6 m about its edge: I_E = m (b^2 + h^2)/3, C rises by
+    # sqrt(b^2 + h^2)/2 - h/2 = 0.0606 m; integrate I_E phi'' = m g rho sin(phi - phi0),
+    # phi the turn from rest position, C above E when phi = atan(b/h)
+    m, b, h, g = 2.0, 0.4, 0.6, 9.81
+    rho, i_e = np.hypot(b, h) / 2, m * (b**2 + h**2) / 3
+    top = np.arctan2(b, h)
+    omega = factor * rigid_impact.angular_speed_to_tip_over(m, g, rho - h / 2, i_e)
+
+    def turn(t, y):
+        return (y[1], -m * g * rho * np.sin(top - y[0]) / i_e)
+
+    def over(t, y):
+        return y[0] - top
+    over.terminal = True
+
+    def back(t, y):
+        return y[1]
+    back.terminal = True
+    run = solve_ivp(turn, (0.0, 5.0), (0.0, omega), events=(over, back), rtol=1e-9, atol=1e-12)
+    assert (run.t_events[0].size == 1) is tips
+
+
+# -- 3.3: rod on ice struck by a puck -------------------------------------------------------
+
+
+# M = 2 kg, L = 1.2 m, m = 0.5 kg, v = 6 m/s, d = 0.4 m, e = 0.5
+# I_C = 2 * 1.44 / 12 = 0.24 kg m^2; d^2/I_C = 0.16/0.24 = 0.666667 1/kg
+# F = 1.5 * 6 / (2 + 0.5 + 0.666667) = 9 / 3.166667 = 2.842105 N s
+# v_C = F/M = 1.421053 m/s; omega = F d / I_C = 2.842105 * 0.4 / 0.24 = 4.736842 rad/s
+# v' = 6 - 2.842105/0.5 = 0.315789 m/s; dT = 0.5 * 0.75 * 36 / 3.166667 = 4.263158 J
+ROD = {"M": 2.0, "L": 1.2, "m": 0.5, "v": 6.0, "d": 0.4, "e": 0.5}
+
+
+def test_the_rod_on_ice_matches_the_hand_calculation():
+    _, variant = _answers("rod-on-ice-struck-by-puck", ROD)
+    assert variant.answers["v_C"] == pytest.approx(1.421053, rel=1e-6)
+    assert variant.answers["omega"] == pytest.approx(4.736842, rel=1e-6)
+    assert variant.answers["v_after"] == pytest.approx(0.315789, rel=1e-5)
+    assert variant.answers["dT"] == pytest.approx(4.263158, rel=1e-6)
+
+
+def test_the_rod_treated_as_a_particle_is_named():
+    # particle: F = 9 / (2 + 0.5) = 3.6 N s, v_C = 1.8 m/s
+    exercise, variant = _answers("rod-on-ice-struck-by-puck", ROD)
+    (result,) = [r for r in grade_variant(exercise, variant, {"v_C": "1.8"}).parts
+                 if r.name == "v_C"]
+    assert not result.correct and result.misconception == "rod treated as a particle"
+
+
+# -- 3.3: crate tipping at a kerb -------------------------------------------------------------
+
+
+# m = 10 kg, b = 0.4 m, h = 0.6 m, v = 2 m/s: I_E = 10 * 0.52 / 3 = 1.733333 kg m^2
+# omega = m v h/2 / I_E = 6 / 1.733333 = 3.461538 rad/s
+# v_C' = omega (h/2, b/2) = (1.038462, 0.692308); F = 10 (-0.961538, 0.692308),
+# |F| = sqrt(9.615385^2 + 6.923077^2) = 11.848401 N s
+# rise = sqrt(0.13)/2 - 0.3 = 0.060555 m; omega_tip = sqrt(2*10*9.81*0.060555/1.733333)
+# = 2.618093 rad/s; v_min = omega_tip * I_E / (m h/2) = 2.618093 * 1.733333 / 3 = 1.512672
+CRATE = {"m": 10.0, "b": 0.4, "h": 0.6, "v": 2.0}
+
+
+def test_the_crate_matches_the_hand_calculation():
+    _, variant = _answers("crate-tipping-at-kerb", CRATE)
+    assert variant.answers["omega"] == pytest.approx(3.461538, rel=1e-6)
+    assert variant.answers["J"] == pytest.approx(11.848401, rel=1e-6)
+    assert variant.answers["v_min"] == pytest.approx(1.512672, rel=1e-5)
+    assert variant.answers["tips"] == "yes"
+
+
+def test_a_slower_crate_does_not_tip_over():
+    # v = 1.3 m/s < v_min = 1.5127 m/s (v_min does not depend on v)
+    _, variant = _answers("crate-tipping-at-kerb", {**CRATE, "v": 1.3})
+    assert variant.answers["tips"] == "no"
