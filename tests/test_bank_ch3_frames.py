@@ -115,3 +115,44 @@ def test_a_slower_crate_does_not_tip_over():
     # v = 1.3 m/s < v_min = 1.5127 m/s (v_min does not depend on v)
     _, variant = _answers("crate-tipping-at-kerb", {**CRATE, "v": 1.3})
     assert variant.answers["tips"] == "no"
+
+
+# -- 3.4.1: camera on a gimbal ----------------------------------------------------------------
+
+
+def test_yaw_pitch_roll_about_the_body_axes_is_scipys_intrinsic_zyx_rotation():
+    from scipy.spatial.transform import Rotation
+
+    from dynagrade.mechanics import rotations
+    angles = np.radians([70.0, -25.0, 40.0])
+    expected = Rotation.from_euler("ZYX", angles).as_matrix()   # upper case: intrinsic
+    assert rotations.yaw_pitch_roll_rotation(*angles) == pytest.approx(expected, abs=1e-12)
+
+
+def test_a_vector_along_the_diagonal_of_a_vertical_square_is_45_degrees_above_horizontal():
+    from dynagrade.mechanics import rotations
+    assert np.degrees(rotations.angle_above_horizontal([1.0, 1.0, np.sqrt(2)])) == \
+        pytest.approx(45.0)
+    assert np.degrees(rotations.angle_above_horizontal([0.0, 3.0, -3.0])) == pytest.approx(-45.0)
+
+
+# psi = 90, theta = 30, phi = 45 deg, g = 9.81 m/s^2
+# b1 = (cos 90 cos 30, sin 90 cos 30, -sin 30) = (0, 0.866025, -0.5)
+# R^T g e3 = 9.81 (-sin 30, cos 30 sin 45, cos 30 cos 45) = (-4.905, 6.007374, 6.007374), 0.6123724 * 9.81 = 6.0073736
+# tilt = arcsin(cos 30 sin 45) = arcsin(0.612372) = 37.7612 deg
+GIMBAL = {"psi": 90.0, "theta": 30.0, "phi": 45.0}
+
+
+def test_the_camera_gimbal_matches_the_hand_calculation():
+    _, variant = _answers("camera-gimbal-yaw-pitch-roll", GIMBAL)
+    assert variant.answers["n"] == pytest.approx((0.0, 0.866025, -0.5), abs=1e-6)
+    assert variant.answers["f"] == pytest.approx((-4.905, 6.007374, 6.007374), abs=1e-5)
+    assert variant.answers["tilt"] == pytest.approx(37.7612, abs=1e-4)
+
+
+def test_the_camera_turned_about_the_fixed_axes_is_named():
+    # R1(45) R2(30) R3(90) e1 = R1(45) R2(30) e2 = R1(45) e2 = (0, 0.707107, 0.707107)
+    exercise, variant = _answers("camera-gimbal-yaw-pitch-roll", GIMBAL)
+    (result,) = [r for r in grade_variant(exercise, variant, {"n": "[0, 0.7071, 0.7071]"}).parts
+                 if r.name == "n"]
+    assert not result.correct and result.misconception == "turns about the fixed axes"
