@@ -156,3 +156,38 @@ def test_the_camera_turned_about_the_fixed_axes_is_named():
     (result,) = [r for r in grade_variant(exercise, variant, {"n": "[0, 0.7071, 0.7071]"}).parts
                  if r.name == "n"]
     assert not result.correct and result.misconception == "turns about the fixed axes"
+
+
+# -- 3.4.1: inertia tensor of a turned plate --------------------------------------------------
+
+
+def test_the_angle_between_two_vectors_in_a_plane_is_the_difference_of_their_directions():
+    from dynagrade.mechanics import rotations
+    u = [np.cos(0.3), np.sin(0.3), 0.0]
+    w = [2 * np.cos(1.9), 2 * np.sin(1.9), 0.0]
+    assert rotations.angle_between(u, w) == pytest.approx(1.6)
+    assert rotations.angle_between([1.0, 0.0, 0.0], [-3.0, 0.0, 0.0]) == pytest.approx(np.pi)
+
+
+# m = 1.2 kg, a = 1.0 m, b = 0.4 m, alpha = 60 deg, omega = 5 rad/s
+# A = 1.2 * 0.16 / 12 = 0.016, B = 1.2 * 1 / 12 = 0.1 kg m^2
+# I11 = 0.016 * 0.25 + 0.1 * 0.75 = 0.079; I12 = (0.016 - 0.1) * sin 60 cos 60 = -0.0363731
+# |H| = 5 sqrt(0.079^2 + 0.0363731^2) = 5 sqrt(0.007564) = 0.434857 kg m^2/s
+# delta = atan(0.0363731 / 0.079) = atan(0.460419) = 24.723 deg
+PLATE = {"m": 1.2, "a": 1.0, "b": 0.4, "alpha": 60.0, "omega": 5.0}
+
+
+def test_the_turned_plate_matches_the_hand_calculation():
+    _, variant = _answers("turned-plate-inertia-tensor", PLATE)
+    assert variant.answers["I11"] == pytest.approx(0.079, rel=1e-9)
+    assert variant.answers["I12"] == pytest.approx(-0.0363731, rel=1e-5)
+    assert variant.answers["H"] == pytest.approx(0.434857, rel=1e-5)
+    assert variant.answers["delta"] == pytest.approx(24.723, abs=0.01)
+
+
+def test_the_frame_turned_instead_of_the_plate_is_named():
+    # R^T I R flips the sign of I12: +0.0363731
+    exercise, variant = _answers("turned-plate-inertia-tensor", PLATE)
+    (result,) = [r for r in grade_variant(exercise, variant, {"I12": "0.0363731"}).parts
+                 if r.name == "I12"]
+    assert not result.correct and result.misconception == "passive instead of active"

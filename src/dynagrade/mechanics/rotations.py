@@ -78,3 +78,9 @@ def angle_above_horizontal(vector: ArrayLike) -> float:
     upward (along e3): arcsin(v3 / |v|) (Section 3.4.1)."""
     v = np.asarray(vector, dtype=float)
     return float(np.arcsin(v[2] / np.linalg.norm(v)))
+
+
+def angle_between(u: ArrayLike, w: ArrayLike) -> float:
+    """Angle in [0, pi] between two vectors, arccos(u.w / (|u| |w|)) (Section 3.4.1)."""
+    u, w = np.asarray(u, dtype=float), np.asarray(w, dtype=float)
+    return float(np.arccos(np.clip(u @ w / (np.linalg.norm(u) * np.linalg.norm(w)), -1.0, 1.0)))
