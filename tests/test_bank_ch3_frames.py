@@ -191,3 +191,35 @@ def test_the_frame_turned_instead_of_the_plate_is_named():
     (result,) = [r for r in grade_variant(exercise, variant, {"I12": "0.0363731"}).parts
                  if r.name == "I12"]
     assert not result.correct and result.misconception == "passive instead of active"
+
+
+# -- 3.4.2: rail car on a turning platform ----------------------------------------------------
+
+
+# m = 50 kg, r = 2 m, Omega = 1 rad/s, u = -0.5 m/s (against the turn)
+# v = |Omega r + u| = |2 - 0.5| = 1.5 m/s; Coriolis -2 Omega u e_r = +1.0 e_r: 1 m/s^2 outward
+# F = m (Omega r + u)^2 / r = 50 * 2.25 / 2 = 56.25 N
+# Coriolis left out: m (Omega^2 r + u^2 / r) = 50 * (2 + 0.125) = 106.25 N
+CAR = {"m": 50.0, "r": 2.0, "Omega": 1.0, "u": -0.5}
+
+
+def test_the_car_on_the_platform_matches_the_hand_calculation():
+    _, variant = _answers("car-on-turntable-track", CAR)
+    assert variant.answers["v"] == pytest.approx(1.5)
+    assert variant.answers["a_C"] == pytest.approx(1.0)
+    assert variant.answers["coriolis_points"] == "outward"
+    assert variant.answers["F"] == pytest.approx(56.25)
+
+
+def test_a_car_running_with_the_platform_has_its_coriolis_term_inward():
+    # u = +0.5: -2 Omega u e_r = -1.0 e_r; F = 50 * 2.5^2 / 2 = 156.25 N
+    _, variant = _answers("car-on-turntable-track", {**CAR, "u": 0.5})
+    assert variant.answers["coriolis_points"] == "inward"
+    assert variant.answers["F"] == pytest.approx(156.25)
+
+
+def test_the_coriolis_term_left_out_is_named():
+    exercise, variant = _answers("car-on-turntable-track", CAR)
+    (result,) = [r for r in grade_variant(exercise, variant, {"F": "106.25"}).parts
+                 if r.name == "F"]
+    assert not result.correct and result.misconception == "Coriolis term left out"
