@@ -223,3 +223,48 @@ def test_the_coriolis_term_left_out_is_named():
     (result,) = [r for r in grade_variant(exercise, variant, {"F": "106.25"}).parts
                  if r.name == "F"]
     assert not result.correct and result.misconception == "Coriolis term left out"
+
+
+# -- 3.4.3: spring-held mass in a turning slot --------------------------------------------------
+
+
+def test_the_slot_mass_rests_at_r_e_and_swings_about_it_with_omega_rel():
+    # integrate m r'' = -k (r - l0) + m Omega^2 r with m = 0.8, k = 60, l0 = 0.25, Omega = 5
+    from dynagrade.mechanics import frames
+    m, k, l0, omega = 0.8, 60.0, 0.25, 5.0
+    r_e = frames.spring_slot_equilibrium_radius(k, m, l0, omega)
+    w = frames.spring_slot_relative_frequency(k, m, omega)
+
+    def radial(t, y):
+        return (y[1], -k / m * (y[0] - l0) + omega**2 * y[0])
+    at_rest = solve_ivp(radial, (0.0, 1.0), (r_e, 0.0), rtol=1e-10, atol=1e-12)
+    assert at_rest.y[0, -1] == pytest.approx(r_e, rel=1e-8)
+
+    def turning_back(t, y):   # the radial speed changes sign from + to -: once per period
+        return y[1]
+    turning_back.direction = -1
+    swing = solve_ivp(radial, (0.0, 3.0), (r_e, 0.01), events=turning_back, rtol=1e-10,
+                      atol=1e-12)
+    assert np.diff(swing.t_events[0])[0] == pytest.approx(2 * np.pi / w, rel=1e-6)
+
+
+# m = 0.5 kg, k = 50 N/m, l0 = 0.2 m, Omega = 6 rad/s: m Omega^2 = 18 N/m
+# r_e = 50 * 0.2 / (50 - 18) = 0.3125 m; omega_rel = sqrt(100 - 36) = 8 rad/s
+# amplitude 0.3125 - 0.2 = 0.1125 m, fastest r' = 0.1125 * 8 = 0.9 m/s
+# N_max = 2 m Omega r'_max = 2 * 0.5 * 6 * 0.9 = 5.4 N
+SLOT = {"m": 0.5, "k": 50.0, "l0": 0.2, "Omega": 6.0}
+
+
+def test_the_slot_mass_matches_the_hand_calculation():
+    _, variant = _answers("spring-mass-in-turning-slot", SLOT)
+    assert variant.answers["r_e"] == pytest.approx(0.3125)
+    assert variant.answers["omega_rel"] == pytest.approx(8.0)
+    assert variant.answers["N_max"] == pytest.approx(5.4)
+
+
+def test_the_rotation_ignored_frequency_is_named():
+    # sqrt(k/m) = sqrt(100) = 10 rad/s
+    exercise, variant = _answers("spring-mass-in-turning-slot", SLOT)
+    (result,) = [r for r in grade_variant(exercise, variant, {"omega_rel": "10"}).parts
+                 if r.name == "omega_rel"]
+    assert not result.correct and result.misconception == "rotation ignored"
