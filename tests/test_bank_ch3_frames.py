@@ -268,3 +268,40 @@ def test_the_rotation_ignored_frequency_is_named():
     (result,) = [r for r in grade_variant(exercise, variant, {"omega_rel": "10"}).parts
                  if r.name == "omega_rel"]
     assert not result.correct and result.misconception == "rotation ignored"
+
+
+# -- 3.4.4: rotor mounted askew -----------------------------------------------------------------
+
+
+def test_a_bearing_pair_makes_its_couple_with_forces_of_moment_over_span():
+    from dynagrade.mechanics import euler_equations
+    # 30 N m over 0.6 m: two opposite forces of 50 N
+    assert euler_equations.bearing_force_of_couple(30.0, 0.6) == pytest.approx(50.0)
+
+
+# m = 10 kg, R = 0.1 m, h = 0.05 m, beta = 10 deg, omega = 100 rad/s, l = 0.5 m
+# I1 = 10 (0.03 + 0.0025)/12 = 0.0270833, I3 = 10 * 0.01 / 2 = 0.05 kg m^2
+# |M| = 100^2 (0.05 - 0.0270833) sin 10 cos 10 = 229.1667 * 0.1710101 = 39.1898 N m
+# F = 39.1898 / 0.5 = 78.3796 N
+# H from b3: atan(0.541667 tan 10) = atan(0.0955104) = 5.4558 deg < beta: same side
+# delta = 10 - 5.4558 = 4.5442 deg
+ROTOR = {"m": 10.0, "R": 0.1, "h": 0.05, "beta": 10.0, "omega": 100.0, "l": 0.5}
+
+
+def test_the_askew_rotor_matches_the_hand_calculation():
+    _, variant = _answers("tilted-rotor-bearing-forces", ROTOR)
+    assert variant.answers["delta"] == pytest.approx(4.5442, abs=2e-4)
+    assert variant.answers["side"] == "same"
+    assert variant.answers["M"] == pytest.approx(39.1898, rel=1e-5)
+    assert variant.answers["F"] == pytest.approx(78.3796, rel=1e-5)
+
+
+def test_a_long_rotor_has_its_angular_momentum_beyond_the_shaft():
+    # h = 0.3 m: I1 = 10 (0.03 + 0.09)/12 = 0.1 > I3 = 0.05, H tilts atan(2 tan 10) = 19.43
+    # deg from b3, beyond the shaft at 10 deg: delta = 9.43 deg
+    # |M| = 10^4 * 0.05 * 0.1710101 = 85.505 N m; bearings l = 0.6 m apart: F = 142.51 N
+    _, variant = _answers("tilted-rotor-bearing-forces", {**ROTOR, "h": 0.3, "l": 0.6})
+    assert variant.answers["side"] == "opposite"
+    assert variant.answers["delta"] == pytest.approx(9.43, abs=0.01)
+    assert variant.answers["M"] == pytest.approx(85.505, rel=1e-4)
+    assert variant.answers["F"] == pytest.approx(142.51, rel=1e-4)
