@@ -305,3 +305,37 @@ def test_a_long_rotor_has_its_angular_momentum_beyond_the_shaft():
     assert variant.answers["delta"] == pytest.approx(9.43, abs=0.01)
     assert variant.answers["M"] == pytest.approx(85.505, rel=1e-4)
     assert variant.answers["F"] == pytest.approx(142.51, rel=1e-4)
+
+
+def test_the_angular_speed_rate_is_the_component_of_the_acceleration_along_omega():
+    # |omega(t)| differentiated numerically: omega(t) = (3, 4, 0) + t (1, -2, 5)
+    from dynagrade.mechanics import euler_equations
+    w, wd, dt = np.array([3.0, 4.0, 0.0]), np.array([1.0, -2.0, 5.0]), 1e-6
+    numeric = (np.linalg.norm(w + dt * wd) - np.linalg.norm(w - dt * wd)) / (2 * dt)
+    assert euler_equations.angular_speed_rate(w, wd) == pytest.approx(numeric, rel=1e-6)
+    assert euler_equations.angular_speed_rate(w, wd) == pytest.approx((3 - 8) / 5)
+
+
+# m = 1.2 kg, a = 0.1, b = 0.3, c = 0.5 m; omega = (2, -3, 4) rad/s
+# I1 = 0.1 (0.09 + 0.25) = 0.034, I2 = 0.1 (0.01 + 0.25) = 0.026, I3 = 0.1 (0.01 + 0.09) = 0.01
+# w1' = 0.016 * (-12) / 0.034 = -5.647059; w2' = -0.024 * 8 / 0.026 = -7.384615;
+# w3' = 0.008 * (-6) / 0.01 = -4.8 rad/s^2
+# T = 0.5 (0.034 * 4 + 0.026 * 9 + 0.01 * 16) = 0.265 J
+# omega . omega' = -11.2941176 + 22.1538462 - 19.2 = -8.3402714; |omega| = sqrt(29) = 5.3851648
+# d|omega|/dt = -8.3402714 / 5.3851648 = -1.548750 rad/s^2
+BOX = {"m": 1.2, "a": 0.1, "b": 0.3, "c": 0.5, "w1": 2.0, "w2": -3.0, "w3": 4.0}
+
+
+def test_the_tossed_box_matches_the_hand_calculation():
+    _, variant = _answers("box-tossed-with-skew-spin", BOX)
+    assert variant.answers["omega_dot"] == pytest.approx((-5.647059, -7.384615, -4.8), abs=1e-6)
+    assert variant.answers["T"] == pytest.approx(0.265)
+    assert variant.answers["speed_rate"] == pytest.approx(-1.548750, rel=1e-6)
+
+
+def test_no_angular_acceleration_without_a_moment_is_named():
+    exercise, variant = _answers("box-tossed-with-skew-spin", BOX)
+    (result,) = [r for r in grade_variant(exercise, variant, {"omega_dot": "[0, 0, 0]"}).parts
+                 if r.name == "omega_dot"]
+    assert not result.correct
+    assert result.misconception == "no moment, so no angular acceleration"

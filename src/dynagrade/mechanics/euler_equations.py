@@ -73,3 +73,11 @@ def bearing_force_of_couple(moment: Quantity, span: Quantity) -> Quantity:
     M that Euler's equations ask of a steadily spinning rotor with no net force (its
     centre on the axis): two equal and opposite forces, F = M / l (Section 3.4.4)."""
     return moment / span
+
+
+def angular_speed_rate(omega: ArrayLike, omega_dot: ArrayLike) -> float:
+    """Rate of change of the angular speed |omega|, d|omega|/dt = omega . omega_dot / |omega|
+    (body-frame components serve: the frame turns with omega, so omega_dot is the same in
+    both frames; Section 3.4.4)."""
+    w = np.asarray(omega, dtype=float)
+    return float(w @ np.asarray(omega_dot, dtype=float) / np.linalg.norm(w))
