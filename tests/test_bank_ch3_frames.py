@@ -339,3 +339,37 @@ def test_no_angular_acceleration_without_a_moment_is_named():
                  if r.name == "omega_dot"]
     assert not result.correct
     assert result.misconception == "no moment, so no angular acceleration"
+
+
+# -- 3.4.2: cyclist seen from a carousel ------------------------------------------------------
+
+
+def test_the_relative_velocity_undoes_the_velocity_transfer():
+    from dynagrade.mechanics import frames
+    v, v_o, omega, r = [1.0, -2.0, 0.5], [0.3, 0.0, -0.1], [0.2, -0.4, 1.1], [2.0, 1.0, -1.0]
+    v_rel = frames.relative_velocity(v, v_o, omega, r)
+    assert frames.absolute_velocity(v_o, omega, r, v_rel) == pytest.approx(v)
+    # by hand: Omega x r = (-0.4*-1 - 1.1*1, 1.1*2 - 0.2*-1, 0.2*1 - -0.4*2) = (-0.7, 2.4, 1.0)
+    assert v_rel == pytest.approx([1.0 - 0.3 + 0.7, -2.0 - 2.4, 0.5 + 0.1 - 1.0])
+
+
+# Omega = 0.5 rad/s, Omega_dot = 0.1 rad/s^2, d = 8 m, u = 6 m/s
+# v_rel = (0, u - Omega d) = (0, 6 - 4) = (0, 2) m/s
+# a_rel = (2 Omega u - Omega^2 d, -Omega_dot d) = (6 - 2, -0.8) = (4, -0.8) m/s^2
+# rho = |v_rel|^2 / |a_rel,r| = 4 / 4 = 1 m
+CYCLIST = {"Omega": 0.5, "Omega_dot": 0.1, "d": 8.0, "u": 6.0}
+
+
+def test_the_cyclist_seen_from_the_carousel_matches_the_hand_calculation():
+    _, variant = _answers("cyclist-seen-from-carousel", CYCLIST)
+    assert variant.answers["v_rel"] == pytest.approx((0.0, 2.0), abs=1e-12)
+    assert variant.answers["a_rel"] == pytest.approx((4.0, -0.8), abs=1e-12)
+    assert variant.answers["rho"] == pytest.approx(1.0)
+
+
+def test_the_coriolis_term_left_out_of_the_seen_acceleration_is_named():
+    # only the centrifugal and Euler terms: (Omega^2 d, -Omega_dot d) = (2, -0.8)
+    exercise, variant = _answers("cyclist-seen-from-carousel", CYCLIST)
+    (result,) = [r for r in grade_variant(exercise, variant, {"a_rel": "[2, -0.8]"}).parts
+                 if r.name == "a_rel"]
+    assert not result.correct and result.misconception == "Coriolis term left out"

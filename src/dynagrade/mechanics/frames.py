@@ -97,3 +97,11 @@ def spring_slot_relative_frequency(k: Quantity, m: Quantity, omega: Quantity) ->
     spring-held mass about r_e: m r'' = -k (r - l0) + m Omega^2 r, so
     omega_rel = sqrt(k/m - Omega^2) (Section 3.4.3)."""
     return np.sqrt(k / m - omega**2)
+
+
+def relative_velocity(v: ArrayLike, v_origin: ArrayLike, omega: ArrayLike,
+                      r: ArrayLike) -> Quantity:
+    """Velocity seen in a rotating frame of a point with absolute velocity v at r from the
+    frame's origin O': v_rel = v - v_O' - Omega x r (the velocity transfer of
+    Section 3.4.2 solved for v_rel)."""
+    return np.asarray(v, dtype=float) - np.asarray(v_origin, dtype=float) - cross(omega, r)
