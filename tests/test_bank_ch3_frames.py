@@ -373,3 +373,17 @@ def test_the_coriolis_term_left_out_of_the_seen_acceleration_is_named():
     (result,) = [r for r in grade_variant(exercise, variant, {"a_rel": "[2, -0.8]"}).parts
                  if r.name == "a_rel"]
     assert not result.correct and result.misconception == "Coriolis term left out"
+
+
+# -- the constraint helper --------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("values, apart", [
+    ((1.0, 2.0, 3.0), True),
+    ((1.0, 1.04, 3.0), False),         # 1 and 1.04 differ by 3.8 % of 1.04
+    ((1.0, -1.1, 3.0), True),          # magnitudes: 1 and 1.1 differ by 9.1 %
+    ((2.0, -2.02), False),
+])
+def test_numbers_apart_holds_when_every_two_magnitudes_differ_by_over_five_percent(values, apart):
+    from dynagrade.exercise.apart import numbers_apart
+    assert numbers_apart(values) is apart

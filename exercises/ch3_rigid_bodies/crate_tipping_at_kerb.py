@@ -58,7 +58,7 @@ def figure(p):
     b, h = p.b, p.h
     size = max(b, h)
     drawing, axes = new_drawing(4.4, 3.2)
-    ground(axes, -1.6 * b - 0.2 * size, 0.6 * size, hatch=0.05 * size)
+    ground(axes, -b - 0.7 * size, 0.7 * size, hatch=0.05 * size)
     block(axes, (-b / 2, h / 2), b, h, color="#c8a26a")
     axes.add_patch(Rectangle((0.0, 0.0), 0.12 * size, 0.05 * size, facecolor="0.45",
                              edgecolor="0.1", lw=1.0))
@@ -66,18 +66,18 @@ def figure(p):
     axes.plot([-b / 2], [h / 2], "o", color="0.1", ms=4)
     axes.text(-b / 2 + 0.03 * size, h / 2 + 0.03 * size, "C", ha="left", va="bottom",
               fontsize=10)
-    arrow(axes, (-b - 0.5 * size, h / 2), (-b - 0.1 * size, h / 2), color="C3")
-    axes.text(-b - 0.3 * size, h / 2 + 0.04 * size, f"v = {format_number(p.v)} m/s",
+    arrow(axes, (-b - 0.5 * size, 0.85 * h), (-b - 0.05 * size, 0.85 * h), color="C3")
+    axes.text(-b - 0.3 * size, 0.85 * h + 0.04 * size, f"v = {format_number(p.v)} m/s",
               color="C3", ha="center", va="bottom", fontsize=10)
     dimension(axes, (-b, 0.0), (0.0, 0.0), f"b = {format_number(b)} m", offset=-0.14 * size,
               tick=0.03 * size, side=-1.0)
-    dimension(axes, (-b, 0.0), (-b, h), f"h = {format_number(h)} m", offset=0.12 * size,
-              tick=0.03 * size, side=1.0)
+    dimension(axes, (0.0, 0.0), (0.0, h), f"h = {format_number(h)} m", offset=-0.22 * size,
+              tick=0.03 * size, side=-1.0)
     axes.text(-b / 2, h + 0.04 * size, f"m = {format_number(p.m)} kg", ha="center",
               va="bottom", fontsize=10)
     describe(axes, "The crate slides to the right on the smooth floor; the low kerb stands "
                    "just in front of its front bottom edge E.")
-    axes.set_xlim(-b - 0.75 * size, 0.6 * size)
+    axes.set_xlim(-b - 0.75 * size, 0.75 * size)
     axes.set_ylim(-0.3 * size, h + 0.2 * size)
     return drawing
 

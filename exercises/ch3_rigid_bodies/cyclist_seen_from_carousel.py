@@ -67,7 +67,7 @@ def figure(p):
     axes.plot([d], [0.0], "o", color="C3", ms=6)
     sense = 1.0 if p.u > 0 else -1.0
     arrow(axes, (d, 0.0), (d, sense * 0.4 * d), "u", offset=(0.06 * d, 0.0), color="C3")
-    arrow(axes, (d, 0.0), (d + 0.3 * d, 0.0), "e_r", offset=(0.0, -0.06 * d), color="0.2")
+    arrow(axes, (d, 0.0), (d + 0.3 * d, 0.0), "$e_r$", offset=(0.0, -0.06 * d), color="0.2")
     dimension(axes, (0.0, 0.0), (d, 0.0), f"d = {format_number(d)} m", offset=-0.15 * d,
               tick=0.02 * d, side=-1.0)
     describe(axes, "Seen from above: the carousel turns counter-clockwise about O; the "

@@ -73,10 +73,10 @@ def figure(p):
     block(axes, (0.0, 0.0), p.h, 2 * p.R, angle=p.beta, color="#9fb7d4")
     tip = 0.45 * span * np.array([np.cos(p.beta), np.sin(p.beta)])
     axes.plot([-tip[0], tip[0]], [-tip[1], tip[1]], ls="--", color="C3", lw=1.0)
-    angle_arc(axes, (0.0, 0.0), 0.38 * span, 0.0, p.beta,
-              f"β = {format_number(np.degrees(p.beta))}°", label_radius=0.46 * span)
+    angle_arc(axes, (0.0, 0.0), 0.3 * span, 0.0, p.beta,
+              f"β = {format_number(np.degrees(p.beta))}°", label_radius=0.36 * span)
     arrow(axes, (0.6 * span, 0.0), (0.75 * span, 0.0),
-          f"ω = {format_number(p.omega)} rad/s", offset=(0.0, 0.06 * span))
+          f"ω = {format_number(p.omega)} rad/s", offset=(0.0, -0.08 * span))
     dimension(axes, (-span / 2, 0.0), (span / 2, 0.0), f"l = {format_number(span)} m",
               offset=-max(0.12 * span, 1.3 * p.R), tick=0.02 * span, side=-1.0)
     describe(axes, "The rotor, a solid cylinder, sits on the shaft at the middle between "
