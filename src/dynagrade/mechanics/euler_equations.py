@@ -63,3 +63,21 @@ def body_precession_rate(axial_moment: Quantity, transverse_moment: Quantity,
     """Rate at which omega circles the symmetry axis of a torque-free axisymmetric body,
     seen in the body frame, Omega_p = (I3 - I1) omega3 / I1 (Section 3.4.4)."""
     return (axial_moment - transverse_moment) * axial_rate / transverse_moment
+
+
+# --- Issue 31: a rotor spinning on its shaft (bank exercises of Section 3.4.4) -------------
+
+
+def bearing_force_of_couple(moment: Quantity, span: Quantity) -> Quantity:
+    """Force each of two bearings a span l apart exerts when together they supply the couple
+    M that Euler's equations ask of a steadily spinning rotor with no net force (its
+    centre on the axis): two equal and opposite forces, F = M / l (Section 3.4.4)."""
+    return moment / span
+
+
+def angular_speed_rate(omega: ArrayLike, omega_dot: ArrayLike) -> float:
+    """Rate of change of the angular speed |omega|, d|omega|/dt = omega . omega_dot / |omega|
+    (body-frame components serve: the frame turns with omega, so omega_dot is the same in
+    both frames; Section 3.4.4)."""
+    w = np.asarray(omega, dtype=float)
+    return float(w @ np.asarray(omega_dot, dtype=float) / np.linalg.norm(w))

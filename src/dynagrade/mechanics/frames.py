@@ -78,3 +78,30 @@ def eastward_deflection_of_falling_body(h: Quantity, latitude: Quantity, earth_r
     fall time t = sqrt(2 h / g) (Coriolis term, Section 3.4.3)."""
     fall_time = np.sqrt(2.0 * h / g)
     return earth_rate * g * np.cos(latitude) * fall_time**3 / 3.0
+
+
+# --- Issue 31: a spring-held mass in a turning slot (bank exercises of Section 3.4.3) -------
+
+
+def spring_slot_equilibrium_radius(k: Quantity, m: Quantity, l0: Quantity,
+                                   omega: Quantity) -> Quantity:
+    """Radius at which a mass m, held by a spring (stiffness k, unstretched length l0) from
+    the axis, rests relative to a slot turning at the constant rate Omega < sqrt(k/m):
+    the spring balances the centrifugal term, k (r - l0) = m Omega^2 r, so
+    r_e = k l0 / (k - m Omega^2) (Section 3.4.3)."""
+    return k * l0 / (k - m * omega**2)
+
+
+def spring_slot_relative_frequency(k: Quantity, m: Quantity, omega: Quantity) -> Quantity:
+    """Angular frequency of the radial oscillation, seen in the turning slot, of the
+    spring-held mass about r_e: m r'' = -k (r - l0) + m Omega^2 r, so
+    omega_rel = sqrt(k/m - Omega^2) (Section 3.4.3)."""
+    return np.sqrt(k / m - omega**2)
+
+
+def relative_velocity(v: ArrayLike, v_origin: ArrayLike, omega: ArrayLike,
+                      r: ArrayLike) -> Quantity:
+    """Velocity seen in a rotating frame of a point with absolute velocity v at r from the
+    frame's origin O': v_rel = v - v_O' - Omega x r (the velocity transfer of
+    Section 3.4.2 solved for v_rel)."""
+    return np.asarray(v, dtype=float) - np.asarray(v_origin, dtype=float) - cross(omega, r)

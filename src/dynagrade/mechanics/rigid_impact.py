@@ -9,7 +9,9 @@ the normal velocities of the two contact points.
 """
 from __future__ import annotations
 
-from dynagrade.mechanics._common import Quantity
+import numpy as np
+
+from dynagrade.mechanics._common import ArrayLike, Quantity
 from dynagrade.mechanics.collisions import impact_impulse
 
 
@@ -69,3 +71,35 @@ def centre_of_percussion_distance(moment_pivot: Quantity, m: Quantity,
     """Distance from the pivot at which a blow causes no impulsive pivot reaction,
     d = I_O / (m d_C) (Section 3.3)."""
     return moment_pivot / (m * pivot_to_centre)
+
+
+# --- Issue 31: impacts about a stopped edge (bank exercises of Sections 3.3-3.4) -------------
+
+
+def angular_velocity_after_edge_impact(m: Quantity, v_c: ArrayLike, edge_to_centre: ArrayLike,
+                                       moment_edge: Quantity) -> float:
+    """Angular velocity (about e3, counter-clockwise positive) of a plane body translating
+    with v_C whose edge E strikes an obstacle, sticks to it without rebound and becomes a
+    pivot: the impulse at E has no moment about E, so the angular momentum about E is
+    kept, m (r_EC x v_C) = I_E omega' (Section 3.3)."""
+    r = np.asarray(edge_to_centre, dtype=float)
+    v = np.asarray(v_c, dtype=float)
+    return float(m * (r[0] * v[1] - r[1] * v[0]) / moment_edge)
+
+
+def impulse_at_edge(m: Quantity, v_c: ArrayLike, omega: Quantity,
+                    edge_to_centre: ArrayLike) -> np.ndarray:
+    """Impulse (2 components) the obstacle gives a plane body whose centre moved with v_C
+    before and turns about the stopped edge E with omega' after, the centre's velocity then
+    being omega' e3 x r_EC: linear impulse balance F_hat = m (v_C' - v_C) (Section 3.3)."""
+    r = np.asarray(edge_to_centre, dtype=float)
+    v_after = omega * np.array([-r[1], r[0]])
+    return m * (v_after - np.asarray(v_c, dtype=float))
+
+
+def angular_speed_to_tip_over(m: Quantity, g: Quantity, centre_rise: Quantity,
+                              moment_edge: Quantity) -> Quantity:
+    """Least angular speed about the edge E with which a body turning about E lifts its
+    centre of mass by Delta h, to above E, and tips over: (1/2) I_E omega^2 = m g Delta h
+    (energy balance after the impact, Sections 3.2 and 3.3)."""
+    return np.sqrt(2.0 * m * g * centre_rise / moment_edge)

@@ -59,3 +59,28 @@ def euler_angle_rotation(psi: float, theta: float, phi: float) -> np.ndarray:
     R = R3(psi) R1(theta) R3(phi) (Sections 3.4.1 and 3.5.1)."""
     e1, e3 = np.array([1.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0])
     return rotation_matrix(e3, psi) @ rotation_matrix(e1, theta) @ rotation_matrix(e3, phi)
+
+
+# --- Issue 31: turns about the body's own axes (bank exercises of Section 3.4.1) ---------
+
+
+def yaw_pitch_roll_rotation(psi: float, theta: float, phi: float) -> np.ndarray:
+    """Rotation matrix of a body turned by yaw psi about e3, then pitch theta about its own
+    (already turned) second axis, then roll phi about its own first axis. Turns about the
+    body's axes multiply from the right: R = R3(psi) R2(theta) R1(phi), the same as the
+    turns about the fixed axes taken in the opposite order (Section 3.4.1)."""
+    e1, e2, e3 = np.eye(3)
+    return rotation_matrix(e3, psi) @ rotation_matrix(e2, theta) @ rotation_matrix(e1, phi)
+
+
+def angle_above_horizontal(vector: ArrayLike) -> float:
+    """Angle between a vector and the horizontal plane e1-e2, positive when it points
+    upward (along e3): arcsin(v3 / |v|) (Section 3.4.1)."""
+    v = np.asarray(vector, dtype=float)
+    return float(np.arcsin(v[2] / np.linalg.norm(v)))
+
+
+def angle_between(u: ArrayLike, w: ArrayLike) -> float:
+    """Angle in [0, pi] between two vectors, arccos(u.w / (|u| |w|)) (Section 3.4.1)."""
+    u, w = np.asarray(u, dtype=float), np.asarray(w, dtype=float)
+    return float(np.arccos(np.clip(u @ w / (np.linalg.norm(u) * np.linalg.norm(w)), -1.0, 1.0)))
