@@ -334,3 +334,29 @@ def path_acceleration(v: ArrayLike, a: ArrayLike) -> PathAcceleration:
     """Split a known (v, a) into the space-curve components of eq. (1.51)."""
     return PathAcceleration(tangential=tangential_acceleration(v, a),
                             normal=normal_acceleration(v, a), rho=radius_of_curvature(v, a))
+
+
+# --- Bank exercises of issue 31, chapter 1: constrained, polar and space-curve relations ----
+
+def hauled_speed(x: Quantity, h: Quantity, u: Quantity) -> Quantity:
+    """Speed of a body on a horizontal surface hauled by a rope that runs to a fixed point
+    at the height h above the surface and is pulled in at the constant rate u, when the body
+    is at the horizontal distance x from that point: the rope is a kinematic constraint
+    (Section 1.1.2, Example 1.4(d)), sqrt(x^2 + h^2) = l(t) with l' = -u, and differentiating
+    it once, x x' = l l', gives |x'| = u sqrt(x^2 + h^2) / x."""
+    return u * np.hypot(x, h) / x
+
+
+def hauled_acceleration(x: Quantity, h: Quantity, u: Quantity) -> Quantity:
+    """Magnitude of the acceleration of the hauled body of :func:`hauled_speed`: the
+    constraint differentiated twice, x x'' + x'^2 = l'^2 = u^2 (l'' = 0), so
+    |x''| = u^2 h^2 / x^3, directed toward the point below the rope's end: the body speeds
+    up although the rope runs at a constant rate (Section 1.1.2)."""
+    return u**2 * h**2 / x**3
+
+
+def hauling_time(x0: Quantity, x1: Quantity, h: Quantity, u: Quantity) -> Quantity:
+    """Time for the rope of :func:`hauled_speed` to bring the body from the horizontal
+    distance x0 to x1 < x0: the rope shortens by sqrt(x0^2 + h^2) - sqrt(x1^2 + h^2) at the
+    rate u (the constraint of Section 1.1.2 read as l(t) = l(0) - u t)."""
+    return (np.hypot(x0, h) - np.hypot(x1, h)) / u

@@ -1,0 +1,67 @@
+"""The new bank exercises of issue 31 for Sections 1.1.2-1.1.4, 1.2.4 and 2.1, each at one
+variant worked by hand, and the core relations they added, each against a second route
+(numerical integration or differentiation, a limit)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from dynagrade.exercise import open_bank
+from dynagrade.mechanics import kinematics
+
+
+@pytest.fixture(scope="module")
+def bank():
+    return open_bank()
+
+
+def _answers(bank, exercise_id, params):
+    """The key of the variant with the given parameters (in their declared units), in SI."""
+    exercise = bank.get(exercise_id)
+    return exercise.solve(exercise.si(exercise.variant(0, params).params))
+
+
+# --- Section 1.1.2: the boat hauled by a winch ----------------------------------------------
+
+def _haul(h, u, x0, until):
+    """x(t) of the hauled boat, integrated from x' = -u sqrt(x^2 + h^2)/x (the rope's
+    length shrinking at u), with a dense output."""
+    return solve_ivp(lambda t, y: [-u * math.hypot(y[0], h) / y[0]], (0.0, until), [x0],
+                     dense_output=True, rtol=1e-10, atol=1e-12)
+
+
+def test_the_hauled_speed_and_acceleration_are_the_integrated_motions_derivatives():
+    h, u, x0 = 2.0, 0.7, 5.0
+    motion = _haul(h, u, x0, 1.0)
+    x = lambda t: float(motion.sol(t)[0])  # noqa: E731
+    dt = 1e-3
+    speed = (x(0.5 - dt) - x(0.5 + dt)) / (2 * dt)
+    acceleration = (x(0.5 + dt) - 2 * x(0.5) + x(0.5 - dt)) / dt**2
+    assert kinematics.hauled_speed(x(0.5), h, u) == pytest.approx(speed, rel=1e-5)
+    assert kinematics.hauled_acceleration(x(0.5), h, u) == pytest.approx(-acceleration, rel=1e-4)
+
+
+def test_the_hauling_time_is_when_the_integrated_boat_reaches_the_distance():
+    h, u, x0, x1 = 2.0, 0.7, 5.0, 1.5
+    t = kinematics.hauling_time(x0, x1, h, u)
+    assert float(_haul(h, u, x0, t).sol(t)[0]) == pytest.approx(x1, rel=1e-7)
+
+
+def test_a_hauled_body_far_away_moves_as_fast_as_the_rope_and_does_not_accelerate():
+    assert kinematics.hauled_speed(1e6, 1.0, 0.8) == pytest.approx(0.8)
+    assert kinematics.hauled_acceleration(1e6, 1.0, 0.8) == pytest.approx(0.0, abs=1e-12)
+
+
+def test_boat_hauled_to_quay_at_a_variant_worked_by_hand(bank):
+    # h = 3 m, u = 0.4 m/s, x = 4 m: the rope is l = sqrt(16 + 9) = 5 m long
+    # v = u l / x = 0.4 * 5 / 4 = 0.5 m/s
+    # a = u^2 h^2 / x^3 = 0.16 * 9 / 64 = 0.0225 m/s^2
+    # at x/2 = 2 m the rope is sqrt(4 + 9) = 3.605551 m: t = (5 - 3.605551)/0.4 = 3.486122 s
+    key = _answers(bank, "boat-hauled-to-quay", {"h": 3.0, "u": 0.4, "x": 4.0})
+    assert key["v"] == pytest.approx(0.5, rel=1e-9)
+    assert key["a"] == pytest.approx(0.0225, rel=1e-9)
+    assert key["t_half"] == pytest.approx(3.486122, rel=1e-6)
