@@ -65,3 +65,30 @@ def test_boat_hauled_to_quay_at_a_variant_worked_by_hand(bank):
     assert key["v"] == pytest.approx(0.5, rel=1e-9)
     assert key["a"] == pytest.approx(0.0225, rel=1e-9)
     assert key["t_half"] == pytest.approx(3.486122, rel=1e-6)
+
+
+# --- Section 1.1.2: the puck on a tilted plane ----------------------------------------------
+
+def test_a_point_of_the_tilted_plane_has_the_height_its_uphill_distance_times_sin_alpha():
+    # the plane spanned by uphill u = (cos a cos b, cos a sin b, sin a) and level
+    # l = (-sin b, cos b, 0): the point 1.5 u - 0.7 l lies in it at the height 1.5 sin a
+    alpha, beta = math.radians(25.0), math.radians(-40.0)
+    u = np.array([math.cos(alpha) * math.cos(beta), math.cos(alpha) * math.sin(beta), math.sin(alpha)])
+    level = np.array([-math.sin(beta), math.cos(beta), 0.0])
+    point = 1.5 * u - 0.7 * level
+    n = kinematics.inclined_plane_normal(alpha, beta)
+    assert np.linalg.norm(n) == pytest.approx(1.0)
+    assert float(n @ u) == pytest.approx(0.0, abs=1e-15) and float(n @ level) == pytest.approx(0.0, abs=1e-15)
+    assert kinematics.vertical_component_in_plane(n, point[:2]) == pytest.approx(1.5 * math.sin(alpha))
+
+
+def test_puck_on_tilted_plane_at_a_variant_worked_by_hand(bank):
+    # alpha = 30 deg (tan = 0.577350), beta = 60 deg (cos = 0.5, sin = 0.866025)
+    # x3 = tan(a) (x1 cos b + x2 sin b) = 0.577350 * (0.5 + 0.866025) = 0.788675 m
+    # v3 = tan(a) (v1 cos b + v2 sin b) = 0.577350 * (1.0 + 0.866025) = 1.077350 m/s
+    # |v| = sqrt(2^2 + 1^2 + 1.077350^2) = sqrt(6.160684) = 2.482072 m/s
+    key = _answers(bank, "puck-on-tilted-plane",
+                   {"alpha": 30, "beta": 60, "x1": 1.0, "x2": 1.0, "v1": 2.0, "v2": 1.0})
+    assert key["x3"] == pytest.approx(0.788675, rel=1e-6)
+    assert key["v3"] == pytest.approx(1.077350, rel=1e-6)
+    assert key["speed"] == pytest.approx(2.482072, rel=1e-6)

@@ -360,3 +360,22 @@ def hauling_time(x0: Quantity, x1: Quantity, h: Quantity, u: Quantity) -> Quanti
     distance x0 to x1 < x0: the rope shortens by sqrt(x0^2 + h^2) - sqrt(x1^2 + h^2) at the
     rate u (the constraint of Section 1.1.2 read as l(t) = l(0) - u t)."""
     return (np.hypot(x0, h) - np.hypot(x1, h)) / u
+
+
+def inclined_plane_normal(alpha: Quantity, beta: Quantity) -> Quantity:
+    """Unit normal n of a plane through the origin inclined at alpha to the horizontal
+    (e1, e2 horizontal, e3 up), its steepest ascent pointing at the azimuth beta from e1:
+    n = (-sin alpha cos beta, -sin alpha sin beta, cos alpha), the n of the constraint
+    r . n = 0 of Example 1.4(c)."""
+    return np.array([-np.sin(alpha) * np.cos(beta), -np.sin(alpha) * np.sin(beta),
+                     np.cos(alpha)])
+
+
+def vertical_component_in_plane(normal: ArrayLike, horizontal: ArrayLike) -> Quantity:
+    """Vertical (e3) component of a vector that lies in the plane r . n = 0 through the
+    origin, from its two horizontal components: -(n1 x1 + n2 x2)/n3 (Example 1.4(c), the
+    one kinematic constraint of eq. (1.21)). The constraint differentiated in time,
+    v . n = 0 and a . n = 0, makes it hold for the velocity and the acceleration too."""
+    n = np.asarray(normal, dtype=float)
+    x = np.asarray(horizontal, dtype=float)
+    return -(n[0] * x[..., 0] + n[1] * x[..., 1]) / n[2]
