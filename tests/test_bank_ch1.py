@@ -92,3 +92,39 @@ def test_puck_on_tilted_plane_at_a_variant_worked_by_hand(bank):
     assert key["x3"] == pytest.approx(0.788675, rel=1e-6)
     assert key["v3"] == pytest.approx(1.077350, rel=1e-6)
     assert key["speed"] == pytest.approx(2.482072, rel=1e-6)
+
+
+# --- Section 1.1.3: the radar tracking an aircraft ------------------------------------------
+
+def _polar_readings(t):
+    """r(t) and phi(t) of the accelerating Cartesian path x = (2 + t + cos 2t, 1 + t^2)."""
+    x1, x2 = 2.0 + t + math.cos(2 * t), 1.0 + t**2
+    return math.hypot(x1, x2), math.atan2(x2, x1)
+
+
+def test_the_polar_rates_are_the_differenced_polar_readings_of_a_cartesian_path():
+    t, dt = 0.7, 1e-4
+    # v = (1 - 2 sin 2t, 2 t), a = (-4 cos 2t, 2) at t = 0.7
+    v = (1 - 2 * math.sin(1.4), 1.4)
+    a = (-4 * math.cos(1.4), 2.0)
+    r, phi = _polar_readings(t)
+    before, after = _polar_readings(t - dt), _polar_readings(t + dt)
+    rdot, phidot = kinematics.polar_coordinate_rates(r, phi, v)
+    assert rdot == pytest.approx((after[0] - before[0]) / (2 * dt), rel=1e-6)
+    assert phidot == pytest.approx((after[1] - before[1]) / (2 * dt), rel=1e-6)
+    rddot, phiddot = kinematics.polar_coordinate_accelerations(r, phi, rdot, phidot, a)
+    assert rddot == pytest.approx((after[0] - 2 * r + before[0]) / dt**2, rel=1e-4)
+    assert phiddot == pytest.approx((after[1] - 2 * phi + before[1]) / dt**2, rel=1e-4)
+
+
+def test_radar_tracking_level_flight_at_a_variant_worked_by_hand(bank):
+    # h = 1000 m, v = 100 m/s, phi = 30 deg: r = h / sin(phi) = 2000 m
+    # rdot = -v cos(phi) = -86.602540 m/s;  phidot = v sin(phi) / r = 50/2000 = 0.025 rad/s
+    # a = 0: rddot = r phidot^2 = 2000 * 0.025^2 = 1.25 m/s^2
+    #        phiddot = -2 rdot phidot / r = 2 * 86.602540 * 0.025 / 2000 = 0.00216506 rad/s^2
+    key = _answers(bank, "radar-tracking-level-flight", {"h": 1000, "v": 100, "phi": 30})
+    assert key["r"] == pytest.approx(2000.0, rel=1e-9)
+    assert key["rdot"] == pytest.approx(-86.602540, rel=1e-7)
+    assert key["phidot"] == pytest.approx(0.025, rel=1e-9)
+    assert key["rddot"] == pytest.approx(1.25, rel=1e-9)
+    assert key["phiddot"] == pytest.approx(0.00216506, rel=1e-5)

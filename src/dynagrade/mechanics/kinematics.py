@@ -379,3 +379,22 @@ def vertical_component_in_plane(normal: ArrayLike, horizontal: ArrayLike) -> Qua
     n = np.asarray(normal, dtype=float)
     x = np.asarray(horizontal, dtype=float)
     return -(n[0] * x[..., 0] + n[1] * x[..., 1]) / n[2]
+
+
+def polar_coordinate_rates(r: Quantity, phi: Quantity, v: ArrayLike) -> tuple[Quantity, Quantity]:
+    """Rates (r', phi') of the polar coordinates of a particle at (r, phi) whose velocity v
+    is known in Cartesian components: eq. (1.31) projected on the co-rotating basis (1.27),
+    r' = v . e_r and phi' = (v . e_phi) / r (eq. (1.30))."""
+    e_r, e_phi = polar_basis(phi)
+    v = np.asarray(v, dtype=float)
+    return float(v @ e_r), float(v @ e_phi) / r
+
+
+def polar_coordinate_accelerations(r: Quantity, phi: Quantity, rdot: Quantity, phidot: Quantity,
+                                   a: ArrayLike) -> tuple[Quantity, Quantity]:
+    """Second rates (r'', phi'') of the polar coordinates of a particle whose acceleration a
+    is known in Cartesian components: eq. (1.33) solved for them, r'' = a . e_r + r phi'^2
+    and phi'' = (a . e_phi - 2 r' phi') / r (eq. (1.32))."""
+    e_r, e_phi = polar_basis(phi)
+    a = np.asarray(a, dtype=float)
+    return float(a @ e_r) + r * phidot**2, (float(a @ e_phi) - 2 * rdot * phidot) / r
