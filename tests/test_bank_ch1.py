@@ -128,3 +128,17 @@ def test_radar_tracking_level_flight_at_a_variant_worked_by_hand(bank):
     assert key["phidot"] == pytest.approx(0.025, rel=1e-9)
     assert key["rddot"] == pytest.approx(1.25, rel=1e-9)
     assert key["phiddot"] == pytest.approx(0.00216506, rel=1e-5)
+
+
+# --- Section 1.1.3: the telescoping arm (core relations of eqs. (1.31), (1.33) exist) -------
+
+def test_telescoping_arm_at_a_variant_worked_by_hand(bank):
+    # r0 = 0.5 m, r'' = 0.2 m/s^2, phi'' = 1 rad/s^2, t = 2 s, both from rest:
+    # r' = 0.4 m/s, r = 0.5 + 0.2 * 4 / 2 = 0.9 m, phi' = 2 rad/s
+    # v = (r', r phi') = (0.4, 1.8) m/s
+    # a_r = r'' - r phi'^2 = 0.2 - 0.9 * 4 = -3.4 m/s^2
+    # a_phi = 2 r' phi' + r phi'' = 1.6 + 0.9 = 2.5 m/s^2;  |a| = sqrt(11.56 + 6.25) = 4.220190
+    key = _answers(bank, "telescoping-arm", {"r0": 0.5, "b": 0.2, "eps": 1.0, "t": 2.0})
+    assert key["v"] == pytest.approx((0.4, 1.8), rel=1e-9)
+    assert key["a"] == pytest.approx((-3.4, 2.5), rel=1e-9)
+    assert key["a_abs"] == pytest.approx(4.220190, rel=1e-6)
