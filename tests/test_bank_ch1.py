@@ -142,3 +142,33 @@ def test_telescoping_arm_at_a_variant_worked_by_hand(bank):
     assert key["v"] == pytest.approx((0.4, 1.8), rel=1e-9)
     assert key["a"] == pytest.approx((-3.4, 2.5), rel=1e-9)
     assert key["a_abs"] == pytest.approx(4.220190, rel=1e-6)
+
+
+# --- Section 1.1.4: the helical slide --------------------------------------------------------
+
+def test_the_helix_relations_agree_with_the_curvature_of_its_differenced_path():
+    # r(phi) = (R cos phi, R sin phi, c phi) run at phi' = 1: v and a by central differences,
+    # then rho = |v|^3 / |v x a| (eq. (1.51)) and the speed |v| = phi' sqrt(R^2 + c^2)
+    R, H, dt = 2.0, 5.0, 1e-4
+    c = H / (2 * math.pi)
+    path = lambda t: np.array([R * math.cos(t), R * math.sin(t), c * t])  # noqa: E731
+    v = (path(0.3 + dt) - path(0.3 - dt)) / (2 * dt)
+    a = (path(0.3 + dt) - 2 * path(0.3) + path(0.3 - dt)) / dt**2
+    rho = np.linalg.norm(v)**3 / np.linalg.norm(np.cross(v, a))
+    assert kinematics.helix_radius_of_curvature(R, H) == pytest.approx(rho, rel=1e-6)
+    assert kinematics.helix_angular_rate(R, H, np.linalg.norm(v)) == pytest.approx(1.0, rel=1e-7)
+    assert kinematics.helix_radius_of_curvature(R, 0.0) == R          # a flat circle
+
+
+def test_helical_slide_at_a_variant_worked_by_hand(bank):
+    # R = 2 m, H = 6 m:
+    # c = 6 / (2 pi) = 0.954930 m, c^2 = 0.911891, R^2 + c^2 = 4.911891
+    # rho = 4.911891 / 2 = 2.455945 m
+    # v = 4 m/s: a_n = 16 / 2.455945 = 6.514803 m/s^2
+    # s'' = 3 m/s^2: |a| = sqrt(9 + 42.442658) = 7.172354 m/s^2
+    # phi' = 4 / sqrt(4.911891) = 4 / 2.216279 = 1.804827 rad/s
+    key = _answers(bank, "helical-slide", {"R": 2.0, "H": 6.0, "v": 4.0, "at": 3.0})
+    assert key["rho"] == pytest.approx(2.455945, rel=1e-6)
+    assert key["a_n"] == pytest.approx(6.514803, rel=1e-6)
+    assert key["a_abs"] == pytest.approx(7.172354, rel=1e-6)
+    assert key["phidot"] == pytest.approx(1.804827, rel=1e-6)

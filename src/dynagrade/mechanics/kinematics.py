@@ -398,3 +398,19 @@ def polar_coordinate_accelerations(r: Quantity, phi: Quantity, rdot: Quantity, p
     e_r, e_phi = polar_basis(phi)
     a = np.asarray(a, dtype=float)
     return float(a @ e_r) + r * phidot**2, (float(a @ e_phi) - 2 * rdot * phidot) / r
+
+
+def helix_radius_of_curvature(R: Quantity, H: Quantity) -> Quantity:
+    """Radius of curvature of a helix of radius R that rises by H per turn,
+    r(phi) = (R cos phi, R sin phi, H phi / (2 pi)): rho = (R^2 + c^2)/R with c = H/(2 pi),
+    from rho = |v|^3 / |v x a| of eq. (1.51) (the same at every point; a flat circle,
+    H = 0, has rho = R as in Example 1.6)."""
+    c = H / (2.0 * np.pi)
+    return (R**2 + c**2) / R
+
+
+def helix_angular_rate(R: Quantity, H: Quantity, v: Quantity) -> Quantity:
+    """Rate phi' at which a particle moving at the speed v along the helix of
+    :func:`helix_radius_of_curvature` goes round its axis: ds = sqrt(R^2 + c^2) dphi, so
+    phi' = v / sqrt(R^2 + c^2) with c = H/(2 pi) (eq. (1.40), v = s')."""
+    return v / np.hypot(R, H / (2.0 * np.pi))
