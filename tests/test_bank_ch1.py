@@ -172,3 +172,18 @@ def test_helical_slide_at_a_variant_worked_by_hand(bank):
     assert key["a_n"] == pytest.approx(6.514803, rel=1e-6)
     assert key["a_abs"] == pytest.approx(7.172354, rel=1e-6)
     assert key["phidot"] == pytest.approx(1.804827, rel=1e-6)
+
+
+# --- Section 1.2.4: the ball rolling off a table (keys from existing impact relations) -------
+
+def test_ball_rolling_off_table_at_a_variant_worked_by_hand(bank):
+    # h = 1 m, u = 2 m/s, e = 0.6, g = 9.81 m/s^2
+    # fall time sqrt(2/9.81) = 0.451524 s, so x1 = 2 * 0.451524 = 0.903047 m
+    # vertical speed at the floor sqrt(19.62) = 4.429447 m/s, after it 0.6 * that = 2.657668 m/s
+    # beta = atan(2.657668 / 2) = 53.0371 deg;  h1 = 0.36 * 1 = 0.36 m
+    # the bounce lasts 2 * 2.657668 / 9.81 = 0.541828 s: d12 = 2 * 0.541828 = 1.083657 m
+    key = _answers(bank, "ball-rolling-off-table", {"h": 1.0, "u": 2.0, "e": 0.6, "g": 9.81})
+    assert key["x1"] == pytest.approx(0.903047, rel=1e-6)
+    assert math.degrees(key["beta"]) == pytest.approx(53.0371, rel=1e-6)
+    assert key["h1"] == pytest.approx(0.36, rel=1e-9)
+    assert key["d12"] == pytest.approx(1.083657, rel=1e-6)
