@@ -187,3 +187,24 @@ def test_ball_rolling_off_table_at_a_variant_worked_by_hand(bank):
     assert math.degrees(key["beta"]) == pytest.approx(53.0371, rel=1e-6)
     assert key["h1"] == pytest.approx(0.36, rel=1e-9)
     assert key["d12"] == pytest.approx(1.083657, rel=1e-6)
+
+
+# --- Section 2.1: planet and moon (keys from existing relative-coordinate relations) --------
+
+def test_planet_moon_barycentre_at_a_variant_worked_by_hand(bank):
+    # q = 0.05, d = 60000 km, w = 1.05 km/s, R = 4000 km: M = 1.05 planet masses
+    # |r1 - rC| = q d / (1 + q) = 0.05 * 60000 / 1.05 = 2857.142857 km < R: inside
+    # planet relative to C: q w / (1 + q) = 0.05 * 1050 / 1.05 = 50 m/s
+    # moon relative to C: w / (1 + q) = 1050 / 1.05 = 1000 m/s
+    key = _answers(bank, "planet-moon-barycentre", {"q": 0.05, "R": 4000, "d": 60000, "w": 1.05})
+    assert key["x_C"] == pytest.approx(2857142.857, rel=1e-9)
+    assert key["inside"] == "inside"
+    assert key["v_planet"] == pytest.approx(50.0, rel=1e-9)
+    assert key["v_moon"] == pytest.approx(1000.0, rel=1e-9)
+
+
+def test_a_heavier_moon_farther_out_pulls_the_centre_of_mass_outside_the_planet(bank):
+    # q = 0.1, d = 110000 km: q d / (1 + q) = 11000 / 1.1 = 10000 km > R = 5000 km
+    key = _answers(bank, "planet-moon-barycentre", {"q": 0.1, "R": 5000, "d": 110000, "w": 1.0})
+    assert key["x_C"] == pytest.approx(1.0e7, rel=1e-9)
+    assert key["inside"] == "outside"
