@@ -11,7 +11,7 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from dynagrade.exercise import open_bank
-from dynagrade.mechanics import kinematics
+from dynagrade.mechanics import kinematics, systems
 
 
 @pytest.fixture(scope="module")
@@ -208,3 +208,30 @@ def test_a_heavier_moon_farther_out_pulls_the_centre_of_mass_outside_the_planet(
     key = _answers(bank, "planet-moon-barycentre", {"q": 0.1, "R": 5000, "d": 110000, "w": 1.0})
     assert key["x_C"] == pytest.approx(1.0e7, rel=1e-9)
     assert key["inside"] == "outside"
+
+
+# --- Section 2.1: two pucks joined by a rigid rod --------------------------------------------
+
+def test_the_rigid_link_relations_recover_a_turning_rods_differenced_motion():
+    # A moves at vA, the rod (length L) turns at omega from theta: rB(t) = vA t +
+    # L (cos(theta + omega t), sin(theta + omega t)); vB by a central difference
+    vA, L, theta, omega, dt = np.array([0.4, -0.3]), 0.8, math.radians(35.0), -1.7, 1e-6
+    rB = lambda t: vA * t + L * np.array([math.cos(theta + omega * t), math.sin(theta + omega * t)])  # noqa: E731
+    vB = (rB(dt) - rB(-dt)) / (2 * dt)
+    assert systems.rigid_link_second_velocity(theta, vA, vB[0]) == pytest.approx(vB[1], rel=1e-8)
+    assert systems.rigid_link_angular_velocity(theta, L, vA, vB) == pytest.approx(omega, rel=1e-8)
+
+
+def test_linked_pucks_at_a_variant_worked_by_hand(bank):
+    # mA = 1 kg, mB = 3 kg, L = 0.5 m, theta = 60 deg (cot = 0.577350), vA = (1, 0), x_B' = 0
+    # y_B' = y_A' - (x_B' - x_A') cot(theta) = 0 + 1 * 0.577350 = 0.577350 m/s
+    # v_C = (1 * (1, 0) + 3 * (0, 0.577350)) / 4 = (0.25, 0.433013) m/s
+    # omega = (cos(theta) (y_B' - y_A') - sin(theta) (x_B' - x_A')) / L
+    #       = (0.5 * 0.577350 + 0.866025) / 0.5 = 2.309401 rad/s
+    # |vB - vA| = sqrt(1 + 0.333333) = 1.154701 m/s, B's share mA/M = 1/4: 0.288675 m/s
+    key = _answers(bank, "linked-pucks", {"mA": 1.0, "mB": 3.0, "L": 0.5, "theta": 60,
+                                          "aA": 1.0, "bA": 0.0, "uB": 0.0})
+    assert key["yB"] == pytest.approx(0.577350, rel=1e-6)
+    assert key["v_C"] == pytest.approx((0.25, 0.433013), rel=1e-6)
+    assert key["omega"] == pytest.approx(2.309401, rel=1e-6)
+    assert key["rel_B"] == pytest.approx(0.288675, rel=1e-6)

@@ -134,3 +134,25 @@ def angular_momentum_transfer(h_c: ArrayLike, M: Quantity, r_bc: ArrayLike,
     """Angular momentum about a point B from that about the centre of mass,
     H_B = H_C + r_BC x M v_C (Section 2.2.3; for rigid bodies Section 3.2.4)."""
     return np.asarray(h_c, dtype=float) + M * spatial_cross(r_bc, v_c)
+
+
+# --- Bank exercises of issue 31, Section 2.1: two particles on a rigid link -----------------
+
+def rigid_link_second_velocity(theta: Quantity, v1: ArrayLike, u2: Quantity) -> Quantity:
+    """Second (e2) velocity component of particle 2 joined to particle 1 by a rigid link
+    that points from 1 to 2 at the angle theta from e1, given particle 1's velocity v1
+    and particle 2's e1 component u2: the link keeps |r2 - r1| constant, one kinematic
+    constraint (eq. (1.21) applied to the system), whose rate is (r2 - r1) . (v2 - v1) = 0,
+    so v2_2 = v1_2 - (u2 - v1_1) cot(theta) (Section 2.1)."""
+    v1 = np.asarray(v1, dtype=float)
+    return v1[1] - (u2 - v1[0]) * np.cos(theta) / np.sin(theta)
+
+
+def rigid_link_angular_velocity(theta: Quantity, L: Quantity, v1: ArrayLike,
+                                v2: ArrayLike) -> Quantity:
+    """Angular velocity (about e3, counter-clockwise positive) of a rigid link of length L
+    from particle 1 to particle 2 at the angle theta from e1: the relative velocity is
+    perpendicular to the link, v2 - v1 = omega L e_phi, so omega = e3 . (r2 - r1) x (v2 - v1)
+    / L^2 (polar coordinates of particle 2 about particle 1, eqs. (1.31), (1.36))."""
+    relative = np.asarray(v2, dtype=float) - np.asarray(v1, dtype=float)
+    return (np.cos(theta) * relative[1] - np.sin(theta) * relative[0]) / L
