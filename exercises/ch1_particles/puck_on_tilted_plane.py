@@ -48,6 +48,24 @@ def _horizontal_speed(p):
     return float(np.hypot(p.v1, p.v2))
 
 
+def _slope_along_e1(first, second):
+    """The wrong route "slope taken along e1" for the horizontal pair (first, second) of
+    parameters: tan(alpha) times the e1 component alone; and where it is a mistake (the e2
+    part and the turn beta change the rise by over 3 %)."""
+    def value(p):
+        return np.tan(p.alpha) * getattr(p, first)
+
+    def applies(p):
+        x1, x2 = getattr(p, first), getattr(p, second)
+        uphill = x1 * np.cos(p.beta) + x2 * np.sin(p.beta)
+        return abs(uphill - x1) > 0.03 * abs(uphill)
+    return value, applies
+
+
+HEIGHT_ALONG_E1 = _slope_along_e1("x1", "x2")
+CLIMB_ALONG_E1 = _slope_along_e1("v1", "v2")
+
+
 def _keys_apart(p) -> bool:
     """The answers differ pairwise by over 5 % in magnitude, and are clear of zero."""
     s = solve(p)
@@ -158,19 +176,17 @@ It holds at every instant, so its time derivative $v\cdot n = 0$ holds as well.
                                   "x₁cos β + x₂sin β is a horizontal distance: the rise over it "
                                   "is the distance times tan α (r·n = 0, Example 1.4(c)).",
                                   applies=lambda p: np.cos(p.alpha) < 0.97),
-                    Misconception("slope taken along e1", lambda p: np.tan(p.alpha) * p.x1,
+                    Misconception("slope taken along e1", HEIGHT_ALONG_E1[0],
                                   "The plane rises along the direction at β, not along e₁: "
                                   "use r·n = 0 with the whole normal.",
-                                  applies=lambda p: abs(p.x2 * np.sin(p.beta) + p.x1 * (np.cos(p.beta) - 1))
-                                  > 0.03 * abs(p.x1 * np.cos(p.beta) + p.x2 * np.sin(p.beta))),
+                                  applies=HEIGHT_ALONG_E1[1]),
                 )),
         Numeric("v3", "vertical velocity", question=2, unit="m/s", points=2,
                 misconceptions=(
-                    Misconception("slope taken along e1", lambda p: np.tan(p.alpha) * p.v1,
+                    Misconception("slope taken along e1", CLIMB_ALONG_E1[0],
                                   "Differentiate the whole constraint: v·n = 0 with "
                                   "n = (−sin α cos β, −sin α sin β, cos α).",
-                                  applies=lambda p: abs(p.v2 * np.sin(p.beta) + p.v1 * (np.cos(p.beta) - 1))
-                                  > 0.03 * abs(p.v1 * np.cos(p.beta) + p.v2 * np.sin(p.beta))),
+                                  applies=CLIMB_ALONG_E1[1]),
                 )),
         Numeric("speed", "speed", question=3, unit="m/s", points=1,
                 misconceptions=(
