@@ -60,6 +60,14 @@ def _both_components_matter(p) -> bool:
     return min(abs(c) for c in s["a"]) >= 0.35 * s["a_abs"]
 
 
+def _numbers_apart(p) -> bool:
+    """The components of v and a and |a| (in SI, magnitudes) differ pairwise by over 5 %:
+    no answer can be given for another."""
+    s = solve(p)
+    values = [abs(c) for c in (*s["v"], *s["a"], s["a_abs"])]
+    return all(abs(a - b) > 0.05 * max(a, b) for i, a in enumerate(values) for b in values[i + 1:])
+
+
 def figure(p):
     """Top view (schematic): the arm turning about its vertical axis at O, the gripper at
     the distance r and the angle phi from the fixed e1 direction, and the co-rotating basis
@@ -104,6 +112,8 @@ EXERCISE = Exercise(
     constraints=(
         Constraint("both components of the acceleration are at least 35 % of its magnitude",
                    _both_components_matter),
+        Constraint("the components of v and a and |a| differ pairwise by over 5 %",
+                   _numbers_apart),
         Constraint("the arm turns less than one turn", lambda p: p.eps * p.t**2 / 2 < 2 * np.pi),
     ),
     statement=r"""

@@ -40,10 +40,10 @@ def _speed_of_A_relative_to_C(p, s):
 
 
 def _keys_apart(p) -> bool:
-    """The three numbers asked for and the speed of C differ pairwise by over 5 %, and
-    none is close to zero (0.1 in SI)."""
+    """The numbers asked for (the components of v_C among them, in SI) differ pairwise by
+    over 5 % in magnitude, and none is close to zero (0.1 in SI)."""
     s = solve(p)
-    values = (abs(s["yB"]), abs(s["omega"]), s["rel_B"], float(np.hypot(*s["v_C"])))
+    values = (abs(s["yB"]), abs(s["omega"]), s["rel_B"], *(abs(c) for c in s["v_C"]))
     return min(values) >= 0.1 and all(abs(a - b) > 0.05 * max(a, b)
                                        for i, a in enumerate(values) for b in values[i + 1:])
 
