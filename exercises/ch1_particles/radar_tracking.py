@@ -128,7 +128,13 @@ constant speed).
     figure=figure,
     figure_to_scale=True,
     parts=(
-        Numeric("r", "distance", question=1, unit="m", points=1),
+        Numeric("r", "distance", question=1, unit="m", points=1,
+                misconceptions=(
+                    Misconception("cos for sin", lambda p: p.h / np.cos(p.phi),
+                                  "The height is the side opposite the elevation angle: "
+                                  "h = r sin φ.",
+                                  applies=lambda p: abs(np.tan(p.phi) - 1) > 0.03),
+                )),
         Numeric("rdot", "rate of the distance", question=2, unit="m/s", points=1,
                 misconceptions=(
                     Misconception("the whole speed", lambda p: -p.v,
