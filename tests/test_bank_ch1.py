@@ -8,9 +8,9 @@ import math
 
 import numpy as np
 import pytest
-from scipy.integrate import solve_ivp
 
 from dynagrade.exercise import open_bank
+from dynagrade.exercise.apart import clearly_apart
 from dynagrade.mechanics import kinematics, systems
 
 
@@ -25,11 +25,21 @@ def _answers(bank, exercise_id, params):
     return exercise.solve(exercise.si(exercise.variant(0, params).params))
 
 
+def test_numbers_are_clearly_apart_only_when_every_pair_differs_by_more_than_the_share():
+    # 1.0 and 1.04 differ by 0.04, under 5 % of 1.04 (0.052); 1.0 and 1.06 by 0.06 > 0.053
+    assert not clearly_apart([3.0, 1.0, 1.04])
+    assert clearly_apart([3.0, 1.0, 1.06])
+    # magnitudes are the caller's: -1 and 1 differ by 2, far over 5 %
+    assert clearly_apart([-1.0, 1.0]) and not clearly_apart([abs(-1.0), 1.0])
+    assert not clearly_apart([2.0, 2.0]) and clearly_apart([2.0])
+
+
 # --- Section 1.1.2: the boat hauled by a winch ----------------------------------------------
 
 def _haul(h, u, x0, until):
     """x(t) of the hauled boat, integrated from x' = -u sqrt(x^2 + h^2)/x (the rope's
     length shrinking at u), with a dense output."""
+    from scipy.integrate import solve_ivp   # here: collecting the suite imports no scipy
     return solve_ivp(lambda t, y: [-u * math.hypot(y[0], h) / y[0]], (0.0, until), [x0],
                      dense_output=True, rtol=1e-10, atol=1e-12)
 

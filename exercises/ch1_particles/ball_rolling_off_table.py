@@ -5,6 +5,7 @@ impact, Section 1.2.4, with the throw of Example 1.9)."""
 import numpy as np
 
 from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import clearly_apart
 from dynagrade.exercise.checks import Balance, Integrated, Limit
 from dynagrade.exercise.checks.motions import height, thrown
 from dynagrade.exercise.figure import arrow, block, describe, dimension, ground, new_drawing
@@ -34,7 +35,7 @@ def _keys_apart(p) -> bool:
     """The three lengths (first impact, bounce height, bounce length) differ by over 5 %."""
     s = solve(p)
     values = (s["x1"], s["h1"], s["d12"])
-    return all(abs(a - b) > 0.05 * max(a, b) for i, a in enumerate(values) for b in values[i + 1:])
+    return clearly_apart(values)
 
 
 def figure(p):

@@ -5,6 +5,7 @@ and differentiating it gives the boat's speed and acceleration."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import clearly_apart
 from dynagrade.exercise.checks import Integrated, Limit, Recompute
 from dynagrade.exercise.figure import arrow, block, describe, dimension, new_drawing, wall
 from dynagrade.mechanics import kinematics
@@ -31,8 +32,7 @@ def _keys_apart(p) -> bool:
     """The three answers (speed, acceleration, time, in SI) differ pairwise by over 5 %."""
     s = solve(p)
     values = (s["v"], s["a"], s["t_half"])
-    return all(abs(a - b) > 0.05 * max(a, b)
-               for i, a in enumerate(values) for b in values[i + 1:])
+    return clearly_apart(values)
 
 
 def figure(p):

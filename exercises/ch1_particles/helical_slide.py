@@ -4,6 +4,7 @@ the space-curve frame (kinematics of space curves, Section 1.1.4, eqs. (1.40), (
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import clearly_apart
 from dynagrade.exercise.checks import Limit, Recompute
 from dynagrade.exercise.figure import arrow, describe, dimension, new_drawing
 from dynagrade.mechanics import kinematics
@@ -43,7 +44,7 @@ def _rho_from_motion(p, s):
 def _keys_apart(p) -> bool:
     """The four answers differ pairwise by over 5 %."""
     values = [solve(p)[name] for name in ("rho", "a_n", "a_abs", "phidot")]
-    return all(abs(a - b) > 0.05 * max(a, b) for i, a in enumerate(values) for b in values[i + 1:])
+    return clearly_apart(values)
 
 
 def figure(p):

@@ -4,6 +4,7 @@ the components the camera cannot see (constrained motion, Section 1.1.2, Example
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import clearly_apart
 from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import Circle, angle_arc, arrow, describe, new_drawing
 from dynagrade.mechanics import kinematics
@@ -70,9 +71,7 @@ def _keys_apart(p) -> bool:
     """The answers differ pairwise by over 5 % in magnitude, and are clear of zero."""
     s = solve(p)
     values = (abs(s["x3"]), abs(s["v3"]), s["speed"])
-    return (min(values[:2]) >= 0.1
-            and all(abs(a - b) > 0.05 * max(a, b)
-                    for i, a in enumerate(values) for b in values[i + 1:]))
+    return min(values[:2]) >= 0.1 and clearly_apart(values)
 
 
 def figure(p):

@@ -5,6 +5,7 @@ eqs. (1.31)-(1.33))."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import clearly_apart
 from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import angle_arc, arrow, describe, dimension, ground, new_drawing
 from dynagrade.mechanics import kinematics
@@ -39,7 +40,7 @@ def _derivative(p, which, order):
 def _keys_apart(p) -> bool:
     """The five answers differ pairwise by over 5 % in magnitude."""
     values = [abs(value) for value in solve(p).values()]
-    return all(abs(a - b) > 0.05 * max(a, b) for i, a in enumerate(values) for b in values[i + 1:])
+    return clearly_apart(values)
 
 
 def figure(p):

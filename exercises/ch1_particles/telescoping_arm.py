@@ -5,6 +5,7 @@ gripper in the co-rotating polar basis, with the centripetal and Coriolis terms
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, Vector, per_draw
+from dynagrade.exercise.apart import clearly_apart
 from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import Circle, angle_arc, arrow, describe, new_drawing
 from dynagrade.mechanics import kinematics
@@ -65,7 +66,7 @@ def _numbers_apart(p) -> bool:
     no answer can be given for another."""
     s = solve(p)
     values = [abs(c) for c in (*s["v"], *s["a"], s["a_abs"])]
-    return all(abs(a - b) > 0.05 * max(a, b) for i, a in enumerate(values) for b in values[i + 1:])
+    return clearly_apart(values)
 
 
 def figure(p):

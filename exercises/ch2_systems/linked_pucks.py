@@ -6,6 +6,7 @@ with the constraint count of eq. (1.21))."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, Vector, per_draw
+from dynagrade.exercise.apart import clearly_apart
 from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.exercise.figure import Circle, angle_arc, arrow, describe, new_drawing
 from dynagrade.mechanics import systems
@@ -44,8 +45,7 @@ def _keys_apart(p) -> bool:
     over 5 % in magnitude, and none is close to zero (0.1 in SI)."""
     s = solve(p)
     values = (abs(s["yB"]), abs(s["omega"]), s["rel_B"], *(abs(c) for c in s["v_C"]))
-    return min(values) >= 0.1 and all(abs(a - b) > 0.05 * max(a, b)
-                                       for i, a in enumerate(values) for b in values[i + 1:])
+    return min(values) >= 0.1 and clearly_apart(values)
 
 
 def figure(p):
