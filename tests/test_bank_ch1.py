@@ -14,6 +14,19 @@ from dynagrade.exercise.apart import clearly_apart
 from dynagrade.mechanics import kinematics, systems
 
 
+#: the variants worked by hand below, in the parameters' declared units
+HAND = {
+    "boat-hauled-to-quay": {"h": 3.0, "u": 0.4, "x": 4.0},
+    "puck-on-tilted-plane": {"alpha": 30, "beta": 60, "x1": 1.0, "x2": 1.0, "v1": 2.0, "v2": 1.0},
+    "radar-tracking-level-flight": {"h": 1000, "v": 100, "phi": 30},
+    "telescoping-arm": {"r0": 0.5, "b": 0.2, "eps": 1.0, "t": 2.0},
+    "helical-slide": {"R": 2.0, "H": 6.0, "v": 4.0, "at": 3.0},
+    "ball-rolling-off-table": {"h": 1.0, "u": 2.0, "e": 0.6, "g": 9.81},
+    "planet-moon-barycentre": {"q": 0.05, "R": 4000, "d": 60000, "w": 1.05},
+    "linked-pucks": {"mA": 1.0, "mB": 3.0, "L": 0.5, "theta": 60, "aA": 1.0, "bA": 0.0, "uB": 0.0},
+}
+
+
 @pytest.fixture(scope="module")
 def bank():
     return open_bank()
@@ -71,7 +84,7 @@ def test_boat_hauled_to_quay_at_a_variant_worked_by_hand(bank):
     # v = u l / x = 0.4 * 5 / 4 = 0.5 m/s
     # a = u^2 h^2 / x^3 = 0.16 * 9 / 64 = 0.0225 m/s^2
     # at x/2 = 2 m the rope is sqrt(4 + 9) = 3.605551 m: t = (5 - 3.605551)/0.4 = 3.486122 s
-    key = _answers(bank, "boat-hauled-to-quay", {"h": 3.0, "u": 0.4, "x": 4.0})
+    key = _answers(bank, "boat-hauled-to-quay", HAND["boat-hauled-to-quay"])
     assert key["v"] == pytest.approx(0.5, rel=1e-9)
     assert key["a"] == pytest.approx(0.0225, rel=1e-9)
     assert key["t_half"] == pytest.approx(3.486122, rel=1e-6)
@@ -97,8 +110,7 @@ def test_puck_on_tilted_plane_at_a_variant_worked_by_hand(bank):
     # x3 = tan(a) (x1 cos b + x2 sin b) = 0.577350 * (0.5 + 0.866025) = 0.788675 m
     # v3 = tan(a) (v1 cos b + v2 sin b) = 0.577350 * (1.0 + 0.866025) = 1.077350 m/s
     # |v| = sqrt(2^2 + 1^2 + 1.077350^2) = sqrt(6.160684) = 2.482072 m/s
-    key = _answers(bank, "puck-on-tilted-plane",
-                   {"alpha": 30, "beta": 60, "x1": 1.0, "x2": 1.0, "v1": 2.0, "v2": 1.0})
+    key = _answers(bank, "puck-on-tilted-plane", HAND["puck-on-tilted-plane"])
     assert key["x3"] == pytest.approx(0.788675, rel=1e-6)
     assert key["v3"] == pytest.approx(1.077350, rel=1e-6)
     assert key["speed"] == pytest.approx(2.482072, rel=1e-6)
@@ -132,7 +144,7 @@ def test_radar_tracking_level_flight_at_a_variant_worked_by_hand(bank):
     # rdot = -v cos(phi) = -86.602540 m/s;  phidot = v sin(phi) / r = 50/2000 = 0.025 rad/s
     # a = 0: rddot = r phidot^2 = 2000 * 0.025^2 = 1.25 m/s^2
     #        phiddot = -2 rdot phidot / r = 2 * 86.602540 * 0.025 / 2000 = 0.00216506 rad/s^2
-    key = _answers(bank, "radar-tracking-level-flight", {"h": 1000, "v": 100, "phi": 30})
+    key = _answers(bank, "radar-tracking-level-flight", HAND["radar-tracking-level-flight"])
     assert key["r"] == pytest.approx(2000.0, rel=1e-9)
     assert key["rdot"] == pytest.approx(-86.602540, rel=1e-7)
     assert key["phidot"] == pytest.approx(0.025, rel=1e-9)
@@ -148,7 +160,7 @@ def test_telescoping_arm_at_a_variant_worked_by_hand(bank):
     # v = (r', r phi') = (0.4, 1.8) m/s
     # a_r = r'' - r phi'^2 = 0.2 - 0.9 * 4 = -3.4 m/s^2
     # a_phi = 2 r' phi' + r phi'' = 1.6 + 0.9 = 2.5 m/s^2;  |a| = sqrt(11.56 + 6.25) = 4.220190
-    key = _answers(bank, "telescoping-arm", {"r0": 0.5, "b": 0.2, "eps": 1.0, "t": 2.0})
+    key = _answers(bank, "telescoping-arm", HAND["telescoping-arm"])
     assert key["v"] == pytest.approx((0.4, 1.8), rel=1e-9)
     assert key["a"] == pytest.approx((-3.4, 2.5), rel=1e-9)
     assert key["a_abs"] == pytest.approx(4.220190, rel=1e-6)
@@ -177,7 +189,7 @@ def test_helical_slide_at_a_variant_worked_by_hand(bank):
     # v = 4 m/s: a_n = 16 / 2.455945 = 6.514803 m/s^2
     # s'' = 3 m/s^2: |a| = sqrt(9 + 42.442658) = 7.172354 m/s^2
     # phi' = 4 / sqrt(4.911891) = 4 / 2.216279 = 1.804827 rad/s
-    key = _answers(bank, "helical-slide", {"R": 2.0, "H": 6.0, "v": 4.0, "at": 3.0})
+    key = _answers(bank, "helical-slide", HAND["helical-slide"])
     assert key["rho"] == pytest.approx(2.455945, rel=1e-6)
     assert key["a_n"] == pytest.approx(6.514803, rel=1e-6)
     assert key["a_abs"] == pytest.approx(7.172354, rel=1e-6)
@@ -192,7 +204,7 @@ def test_ball_rolling_off_table_at_a_variant_worked_by_hand(bank):
     # vertical speed at the floor sqrt(19.62) = 4.429447 m/s, after it 0.6 * that = 2.657668 m/s
     # beta = atan(2.657668 / 2) = 53.0371 deg;  h1 = 0.36 * 1 = 0.36 m
     # the bounce lasts 2 * 2.657668 / 9.81 = 0.541828 s: d12 = 2 * 0.541828 = 1.083657 m
-    key = _answers(bank, "ball-rolling-off-table", {"h": 1.0, "u": 2.0, "e": 0.6, "g": 9.81})
+    key = _answers(bank, "ball-rolling-off-table", HAND["ball-rolling-off-table"])
     assert key["x1"] == pytest.approx(0.903047, rel=1e-6)
     assert math.degrees(key["beta"]) == pytest.approx(53.0371, rel=1e-6)
     assert key["h1"] == pytest.approx(0.36, rel=1e-9)
@@ -206,7 +218,7 @@ def test_planet_moon_barycentre_at_a_variant_worked_by_hand(bank):
     # |r1 - rC| = q d / (1 + q) = 0.05 * 60000 / 1.05 = 2857.142857 km < R: inside
     # planet relative to C: q w / (1 + q) = 0.05 * 1050 / 1.05 = 50 m/s
     # moon relative to C: w / (1 + q) = 1050 / 1.05 = 1000 m/s
-    key = _answers(bank, "planet-moon-barycentre", {"q": 0.05, "R": 4000, "d": 60000, "w": 1.05})
+    key = _answers(bank, "planet-moon-barycentre", HAND["planet-moon-barycentre"])
     assert key["x_C"] == pytest.approx(2857142.857, rel=1e-9)
     assert key["inside"] == "inside"
     assert key["v_planet"] == pytest.approx(50.0, rel=1e-9)
@@ -239,9 +251,38 @@ def test_linked_pucks_at_a_variant_worked_by_hand(bank):
     # omega = (cos(theta) (y_B' - y_A') - sin(theta) (x_B' - x_A')) / L
     #       = (0.5 * 0.577350 + 0.866025) / 0.5 = 2.309401 rad/s
     # |vB - vA| = sqrt(1 + 0.333333) = 1.154701 m/s, B's share mA/M = 1/4: 0.288675 m/s
-    key = _answers(bank, "linked-pucks", {"mA": 1.0, "mB": 3.0, "L": 0.5, "theta": 60,
-                                          "aA": 1.0, "bA": 0.0, "uB": 0.0})
+    key = _answers(bank, "linked-pucks", HAND["linked-pucks"])
     assert key["yB"] == pytest.approx(0.577350, rel=1e-6)
     assert key["v_C"] == pytest.approx((0.25, 0.433013), rel=1e-6)
     assert key["omega"] == pytest.approx(2.309401, rel=1e-6)
     assert key["rel_B"] == pytest.approx(0.288675, rel=1e-6)
+
+
+# --- the misconceptions, at the hand-worked variants above ------------------------------------
+
+
+@pytest.mark.parametrize("exercise_id, part, answer, misconception", [
+    # the boat taken as fast as the rope: u = 0.4 m/s
+    ("boat-hauled-to-quay", "v", "0.4", "boat as fast as the rope"),
+    # the camera's horizontal speed sqrt(2^2 + 1^2) = 2.236068 m/s
+    ("puck-on-tilted-plane", "speed", "2.236068", "the camera's speed"),
+    # v sin(phi) / h = 100 * 0.5 / 1000 = 0.05 rad/s instead of / r
+    ("radar-tracking-level-flight", "phidot", "0.05", "whole speed over r"),
+    # a_r without -r phi'^2: (0.2, 2.5)
+    ("telescoping-arm", "a", "[0.2, 2.5]", "centripetal term missing"),
+    # rho = R = 2 m
+    ("helical-slide", "rho", "2", "the helix's radius"),
+    # e h = 0.6 m instead of e^2 h
+    ("ball-rolling-off-table", "h1", "0.6", "e applied to the height"),
+    # the midpoint d/2 = 30000 km
+    ("planet-moon-barycentre", "x_C", "30000", "the midpoint"),
+    # the plain mean ((1 + 0)/2, (0 + 0.577350)/2) = (0.5, 0.288675) m/s
+    ("linked-pucks", "v_C", "[0.5, 0.288675]", "plain mean of the velocities"),
+])
+def test_a_named_mistake_worked_by_hand_gets_its_feedback(bank, exercise_id, part, answer, misconception):
+    from dynagrade.exercise.scoring import grade_variant
+
+    exercise = bank.get(exercise_id)
+    variant = exercise.variant(0, HAND[exercise_id])
+    (result,) = [r for r in grade_variant(exercise, variant, {part: answer}).parts if r.name == part]
+    assert not result.correct and result.misconception == misconception

@@ -99,8 +99,9 @@ def figure(p):
     axes.text(*(puck + 1.05 * heading), "v₁e₁ + v₂e₂", ha="center", va="center", fontsize=10,
               color="C3")
     describe(axes, "Seen from above: grey level lines of the tilted plane run across the "
-             "green arrow from O, which points uphill at the angle beta from e1; the puck is at its measured position, its "
-             "red arrow is the horizontal velocity the camera sees.")
+             "green arrow from O, which points uphill at the angle beta from e1; the puck is "
+             "at its measured position, its red arrow is the horizontal velocity the camera "
+             "sees.")
     axes.set_xlim(-3.0, 3.0)
     axes.set_ylim(-3.0, 3.0)
     return drawing
