@@ -334,3 +334,83 @@ def path_acceleration(v: ArrayLike, a: ArrayLike) -> PathAcceleration:
     """Split a known (v, a) into the space-curve components of eq. (1.51)."""
     return PathAcceleration(tangential=tangential_acceleration(v, a),
                             normal=normal_acceleration(v, a), rho=radius_of_curvature(v, a))
+
+
+# --- Bank exercises of issue 31, chapter 1: constrained, polar and space-curve relations ----
+
+def hauled_speed(x: Quantity, h: Quantity, u: Quantity) -> Quantity:
+    """Speed of a body on a horizontal surface hauled by a rope that runs to a fixed point
+    at the height h above the surface and is pulled in at the constant rate u, when the body
+    is at the horizontal distance x from that point: the rope is a kinematic constraint
+    (Section 1.1.2, Example 1.4(d)), sqrt(x^2 + h^2) = l(t) with l' = -u, and differentiating
+    it once, x x' = l l', gives |x'| = u sqrt(x^2 + h^2) / x."""
+    return u * np.hypot(x, h) / x
+
+
+def hauled_acceleration(x: Quantity, h: Quantity, u: Quantity) -> Quantity:
+    """Magnitude of the acceleration of the hauled body of :func:`hauled_speed`: the
+    constraint differentiated twice, x x'' + x'^2 = l'^2 = u^2 (l'' = 0), so
+    |x''| = u^2 h^2 / x^3, directed toward the point below the rope's end: the body speeds
+    up although the rope runs at a constant rate (Section 1.1.2)."""
+    return u**2 * h**2 / x**3
+
+
+def hauling_time(x0: Quantity, x1: Quantity, h: Quantity, u: Quantity) -> Quantity:
+    """Time for the rope of :func:`hauled_speed` to bring the body from the horizontal
+    distance x0 to x1 < x0: the rope shortens by sqrt(x0^2 + h^2) - sqrt(x1^2 + h^2) at the
+    rate u (the constraint of Section 1.1.2 read as l(t) = l(0) - u t)."""
+    return (np.hypot(x0, h) - np.hypot(x1, h)) / u
+
+
+def inclined_plane_normal(alpha: Quantity, beta: Quantity) -> Quantity:
+    """Unit normal n of a plane through the origin inclined at alpha to the horizontal
+    (e1, e2 horizontal, e3 up), its steepest ascent pointing at the azimuth beta from e1:
+    n = (-sin alpha cos beta, -sin alpha sin beta, cos alpha), the n of the constraint
+    r . n = 0 of Example 1.4(c)."""
+    return np.array([-np.sin(alpha) * np.cos(beta), -np.sin(alpha) * np.sin(beta),
+                     np.cos(alpha)])
+
+
+def vertical_component_in_plane(normal: ArrayLike, horizontal: ArrayLike) -> Quantity:
+    """Vertical (e3) component of a vector that lies in the plane r . n = 0 through the
+    origin, from its two horizontal components: -(n1 x1 + n2 x2)/n3 (Example 1.4(c), the
+    one kinematic constraint of eq. (1.21)). The constraint differentiated in time,
+    v . n = 0 and a . n = 0, makes it hold for the velocity and the acceleration too."""
+    n = np.asarray(normal, dtype=float)
+    x = np.asarray(horizontal, dtype=float)
+    return -(n[0] * x[..., 0] + n[1] * x[..., 1]) / n[2]
+
+
+def polar_coordinate_rates(r: Quantity, phi: Quantity, v: ArrayLike) -> tuple[Quantity, Quantity]:
+    """Rates (r', phi') of the polar coordinates of a particle at (r, phi) whose velocity v
+    is known in Cartesian components: eq. (1.31) projected on the co-rotating basis (1.27),
+    r' = v . e_r and phi' = (v . e_phi) / r (eq. (1.30))."""
+    e_r, e_phi = polar_basis(phi)
+    v = np.asarray(v, dtype=float)
+    return float(v @ e_r), float(v @ e_phi) / r
+
+
+def polar_coordinate_accelerations(r: Quantity, phi: Quantity, rdot: Quantity, phidot: Quantity,
+                                   a: ArrayLike) -> tuple[Quantity, Quantity]:
+    """Second rates (r'', phi'') of the polar coordinates of a particle whose acceleration a
+    is known in Cartesian components: eq. (1.33) solved for them, r'' = a . e_r + r phi'^2
+    and phi'' = (a . e_phi - 2 r' phi') / r (eq. (1.32))."""
+    e_r, e_phi = polar_basis(phi)
+    a = np.asarray(a, dtype=float)
+    return float(a @ e_r) + r * phidot**2, (float(a @ e_phi) - 2 * rdot * phidot) / r
+
+
+def helix_radius_of_curvature(R: Quantity, H: Quantity) -> Quantity:
+    """Radius of curvature of a helix of radius R that rises by H per turn,
+    r(phi) = (R cos phi, R sin phi, H phi / (2 pi)): rho = (R^2 + c^2)/R with c = H/(2 pi),
+    from rho = |v|^3 / |v x a| of eq. (1.51) (the same at every point; a flat circle,
+    H = 0, has rho = R as in Example 1.6)."""
+    c = H / (2.0 * np.pi)
+    return (R**2 + c**2) / R
+
+
+def helix_angular_rate(R: Quantity, H: Quantity, v: Quantity) -> Quantity:
+    """Rate phi' at which a particle moving at the speed v along the helix of
+    :func:`helix_radius_of_curvature` goes round its axis: ds = sqrt(R^2 + c^2) dphi, so
+    phi' = v / sqrt(R^2 + c^2) with c = H/(2 pi) (eq. (1.40), v = s')."""
+    return v / np.hypot(R, H / (2.0 * np.pi))

@@ -187,3 +187,24 @@ def turning_radius_through_hole(m1: Quantity, m2: Quantity, g: Quantity, H: Quan
     2 m1 m2 g r0^2 r^2 - H^2 r - H^2 r0 = 0 (Sections 2.2.2 and 2.2.3)."""
     a = 2.0 * m1 * m2 * g * r0**2
     return (H**2 + np.sqrt(H**4 + 4.0 * a * H**2 * r0)) / (2.0 * a)
+
+# --- Bank exercises of issue 31, Section 2.1: two particles on a rigid link -----------------
+
+def rigid_link_second_velocity(theta: Quantity, v1: ArrayLike, u2: Quantity) -> Quantity:
+    """Second (e2) velocity component of particle 2 joined to particle 1 by a rigid link
+    that points from 1 to 2 at the angle theta from e1, given particle 1's velocity v1
+    and particle 2's e1 component u2: the link keeps |r2 - r1| constant, one kinematic
+    constraint (eq. (1.21) applied to the system), whose rate is (r2 - r1) . (v2 - v1) = 0,
+    so v2_2 = v1_2 - (u2 - v1_1) cot(theta) (Section 2.1)."""
+    v1 = np.asarray(v1, dtype=float)
+    return v1[1] - (u2 - v1[0]) * np.cos(theta) / np.sin(theta)
+
+
+def rigid_link_angular_velocity(theta: Quantity, L: Quantity, v1: ArrayLike,
+                                v2: ArrayLike) -> Quantity:
+    """Angular velocity (about e3, counter-clockwise positive) of a rigid link of length L
+    from particle 1 to particle 2 at the angle theta from e1: the relative velocity is
+    perpendicular to the link, v2 - v1 = omega L e_phi, so omega = e3 . (r2 - r1) x (v2 - v1)
+    / L^2 (polar coordinates of particle 2 about particle 1, eqs. (1.31), (1.36))."""
+    relative = np.asarray(v2, dtype=float) - np.asarray(v1, dtype=float)
+    return (np.cos(theta) * relative[1] - np.sin(theta) * relative[0]) / L
