@@ -103,3 +103,25 @@ def angular_speed_of_pendulum_from_energy(phi1: Quantity, phi2: Quantity, g: Qua
     energy = 0.5 * moment_pivot * phidot1**2 + m * g * pivot_to_centre * (
         np.cos(phi2) - np.cos(phi1))
     return np.sqrt(2.0 * energy / moment_pivot)
+
+
+# -- issue 31, chapter 3 kinetics bank (Sections 3.2.1-3.2.5) ------------------------------
+
+
+def front_axle_load_when_braking(m: Quantity, g: Quantity, mu: Quantity, l_f: Quantity,
+                                 l_r: Quantity, h: Quantity) -> Quantity:
+    """Normal force on the front wheels of a car braking with all wheels locked (sliding
+    friction mu at both axles), its centre of mass l_f behind the front axle, l_r ahead of
+    the rear one and h above the road: N_f = m g (l_r + mu h) / (l_f + l_r). The car
+    translates, so the balance of linear momentum (Section 3.2.1) gives m a = -mu m g and
+    the balance of angular momentum about the centre of mass has no rate: the moments of
+    N_f, N_r and the friction about C cancel (Section 3.2.2)."""
+    return m * g * (l_r + mu * h) / (l_f + l_r)
+
+
+def rear_axle_load_when_braking(m: Quantity, g: Quantity, mu: Quantity, l_f: Quantity,
+                                l_r: Quantity, h: Quantity) -> Quantity:
+    """Normal force on the rear wheels of the same braking car,
+    N_r = m g (l_f - mu h) / (l_f + l_r) (Sections 3.2.1-3.2.2); it vanishes when the
+    rear wheels lift off, mu h = l_f."""
+    return m * g * (l_f - mu * h) / (l_f + l_r)

@@ -1,0 +1,48 @@
+"""The chapter 3 kinetics exercises of issue 31 (Sections 3.2.1-3.2.5) and the core
+relations they added: every key at fixed parameters against numbers worked out by hand
+(written beside each assertion), every new relation against a second route."""
+
+import numpy as np
+import pytest
+
+from dynagrade.exercise import open_bank
+from dynagrade.mechanics import rigid_kinetics
+
+BANK = open_bank()
+
+
+def _answers(exercise_id, **values):
+    """The keys in the parts' units at the given parameters (declared units)."""
+    return BANK.get(exercise_id).solve_in_part_units(values)
+
+
+# -- core relations ------------------------------------------------------------------------
+
+
+def test_the_axle_loads_of_a_braking_car_balance_moments_about_both_contact_points():
+    # m = 1000 kg, g = 10, mu = 0.5, l_f = 1, l_r = 1.5, h = 0.5: the moments about the rear
+    # contact point, N_f (l_f + l_r) = m g l_r + m (mu g) h = 15000 + 2500, give 7000 N;
+    # about the front contact point N_r 2.5 = 10000 - 2500, so 3000 N
+    front = rigid_kinetics.front_axle_load_when_braking(1000.0, 10.0, 0.5, 1.0, 1.5, 0.5)
+    rear = rigid_kinetics.rear_axle_load_when_braking(1000.0, 10.0, 0.5, 1.0, 1.5, 0.5)
+    assert front == pytest.approx(7000.0)
+    assert rear == pytest.approx(3000.0)
+
+
+def test_the_rear_axle_lifts_off_when_mu_h_reaches_l_f():
+    assert rigid_kinetics.rear_axle_load_when_braking(1200.0, 9.81, 0.8, 1.0, 1.4, 1.25) == (
+        pytest.approx(0.0, abs=1e-9))
+
+
+# -- exercises -----------------------------------------------------------------------------
+
+
+def test_braking_car_keys_match_the_hand_calculation():
+    keys = _answers("braking-car-axle-loads", m=1500, l_f=1.1, l_r=1.75, h=0.69, mu=0.4,
+                    g=9.81)
+    # a = mu g = 0.4 * 9.81 = 3.924 m/s^2
+    assert keys["a"] == pytest.approx(3.924, rel=1e-9)
+    # N_f = 1500 * 9.81 * (1.75 + 0.4 * 0.69) / 2.85 = 14715 * 2.026 / 2.85 = 10460.6 N
+    assert keys["N_f"] == pytest.approx(10460.6, rel=1e-5)
+    # N_r = 14715 * (1.1 - 0.276) / 2.85 = 14715 * 0.824 / 2.85 = 4254.4 N
+    assert keys["N_r"] == pytest.approx(4254.4, rel=1e-5)
