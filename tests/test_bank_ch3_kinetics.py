@@ -46,3 +46,32 @@ def test_braking_car_keys_match_the_hand_calculation():
     assert keys["N_f"] == pytest.approx(10460.6, rel=1e-5)
     # N_r = 14715 * (1.1 - 0.276) / 2.85 = 14715 * 0.824 / 2.85 = 4254.4 N
     assert keys["N_r"] == pytest.approx(4254.4, rel=1e-5)
+
+
+def test_a_pulled_rolling_body_solves_both_momentum_balances():
+    # unknowns a and f from m a - f = F and (I_C / R) a + R f = F e (e the lever arm), solved
+    # as a linear system by numpy: m = 2, R = 0.2, I_C = 0.05, F = 10, e = 0.14 and -0.14
+    for lever_arm in (0.14, -0.14):
+        matrix = np.array([[2.0, -1.0], [0.05 / 0.2, 0.2]])
+        a, f = np.linalg.solve(matrix, [10.0, 10.0 * lever_arm])
+        assert rigid_kinetics.rolling_acceleration_under_horizontal_pull(
+            10.0, 2.0, 0.2, 0.05, lever_arm) == pytest.approx(a)
+        assert rigid_kinetics.friction_under_horizontal_pull(
+            10.0, 2.0, 0.2, 0.05, lever_arm) == pytest.approx(f)
+
+
+@pytest.mark.parametrize("r, k, a, f, direction", [
+    # k^2/R^2 = 0.0225/0.04 = 0.5625: a = 10 (1 + 0.7) / (2 * 1.5625) = 5.44 m/s^2,
+    # f = 10 (0.14 * 0.2 - 0.0225) / (0.04 + 0.0225) = 0.88 N forward
+    (0.14, 0.15, 5.44, 0.88, "forward"),
+    # k^2 = 0.0256: a = 10 (1.4) / (2 * 1.64) = 4.26829 m/s^2,
+    # f = 10 (0.016 - 0.0256) / 0.0656 = -1.46341 N, backward
+    (0.08, 0.16, 4.26829, 1.46341, "backward"),
+])
+def test_spool_keys_match_the_hand_calculation(r, k, a, f, direction):
+    keys = _answers("spool-pulled-by-thread", m=2.0, R=0.2, r=r, k=k, F=10.0, g=9.81)
+    assert keys["a"] == pytest.approx(a, rel=1e-5)
+    assert keys["f"] == pytest.approx(f, rel=1e-5)
+    assert keys["direction"] == direction
+    # mu_min = |f| / (2 * 9.81): 0.88 / 19.62 = 0.044852, 1.46341 / 19.62 = 0.074588
+    assert keys["mu_min"] == pytest.approx(f / 19.62, rel=1e-5)

@@ -125,3 +125,24 @@ def rear_axle_load_when_braking(m: Quantity, g: Quantity, mu: Quantity, l_f: Qua
     N_r = m g (l_f - mu h) / (l_f + l_r) (Sections 3.2.1-3.2.2); it vanishes when the
     rear wheels lift off, mu h = l_f."""
     return m * g * (l_f - mu * h) / (l_f + l_r)
+
+
+def rolling_acceleration_under_horizontal_pull(F: Quantity, m: Quantity, R: Quantity,
+                                               moment_centre: Quantity,
+                                               lever_arm: Quantity) -> Quantity:
+    """Acceleration of the centre of a round body (radius R, I_C about its axis) rolling
+    without slipping on level ground, pulled by a horizontal force F whose line of action
+    lies lever_arm above the centre (negative: below):
+    a = F (1 + lever_arm / R) / (m + I_C / R^2). From m a = F + f and
+    I_C a / R = F lever_arm - f R (balances of linear and angular momentum,
+    Sections 3.2.1-3.2.2) with the rolling condition a = R omega_dot."""
+    return F * (1.0 + lever_arm / R) / (m + moment_centre / R**2)
+
+
+def friction_under_horizontal_pull(F: Quantity, m: Quantity, R: Quantity,
+                                   moment_centre: Quantity, lever_arm: Quantity) -> Quantity:
+    """Static friction of the ground on the same pulled rolling body, positive along the
+    pull: f = m a - F = F (lever_arm / R - I_C / (m R^2)) / (1 + I_C / (m R^2))
+    (Sections 3.2.1-3.2.2); it vanishes when lever_arm = I_C / (m R)."""
+    return m * rolling_acceleration_under_horizontal_pull(F, m, R, moment_centre,
+                                                          lever_arm) - F
