@@ -75,3 +75,22 @@ def test_spool_keys_match_the_hand_calculation(r, k, a, f, direction):
     assert keys["direction"] == direction
     # mu_min = |f| / (2 * 9.81): 0.88 / 19.62 = 0.044852, 1.46341 / 19.62 = 0.074588
     assert keys["mu_min"] == pytest.approx(f / 19.62, rel=1e-5)
+
+
+def test_the_atwood_acceleration_follows_from_the_energy_of_the_drop():
+    # work-energy: (m1 - m2) g h = (m1 + m2 + I/R^2) v^2 / 2 and v^2 = 2 a h;
+    # m1 = 3, m2 = 1, I = 0.02, R = 0.1 (I/R^2 = 2), g = 10, h = 0.5: v^2 = 2*2*10*0.5/6
+    v_squared = 2 * 2.0 * 10.0 * 0.5 / 6.0
+    assert rigid_kinetics.atwood_acceleration(3.0, 1.0, 10.0, 0.1, 0.02) == pytest.approx(
+        v_squared / (2 * 0.5))
+    # a rope holding a body at rest carries its weight
+    assert rigid_kinetics.hanging_mass_rope_force(2.0, 9.81, 0.0) == pytest.approx(19.62)
+
+
+def test_atwood_keys_match_the_hand_calculation():
+    keys = _answers("atwood-massive-pulley", m1=5.0, m2=2.0, M=4.0, R=0.1, g=9.81)
+    # a = 3 * 9.81 / (5 + 2 + 4/2) = 29.43 / 9 = 3.27 m/s^2
+    assert keys["a"] == pytest.approx(3.27, rel=1e-9)
+    # S1 = 5 (9.81 - 3.27) = 32.7 N, S2 = 2 (9.81 + 3.27) = 26.16 N
+    assert keys["S1"] == pytest.approx(32.7, rel=1e-9)
+    assert keys["S2"] == pytest.approx(26.16, rel=1e-9)

@@ -146,3 +146,18 @@ def friction_under_horizontal_pull(F: Quantity, m: Quantity, R: Quantity,
     (Sections 3.2.1-3.2.2); it vanishes when lever_arm = I_C / (m R)."""
     return m * rolling_acceleration_under_horizontal_pull(F, m, R, moment_centre,
                                                           lever_arm) - F
+
+
+def atwood_acceleration(m1: Quantity, m2: Quantity, g: Quantity, R: Quantity,
+                        moment_centre: Quantity) -> Quantity:
+    """Acceleration of the masses of an Atwood machine whose pulley (radius R, I_C about
+    its frictionless axle) turns with the rope without slipping, m1 descending:
+    a = (m1 - m2) g / (m1 + m2 + I_C / R^2). The balance of angular momentum of the
+    pulley, I_C a / R = (S1 - S2) R (Section 3.2.2), couples the two rope forces."""
+    return (m1 - m2) * g / (m1 + m2 + moment_centre / R**2)
+
+
+def hanging_mass_rope_force(m: Quantity, g: Quantity, a: Quantity) -> Quantity:
+    """Force of a vertical rope on a hanging body of mass m accelerating upward with a
+    (negative: downward), S = m (g + a) (balance of linear momentum, Section 3.2.1)."""
+    return m * (g + a)
