@@ -94,3 +94,27 @@ def test_atwood_keys_match_the_hand_calculation():
     # S1 = 5 (9.81 - 3.27) = 32.7 N, S2 = 2 (9.81 + 3.27) = 26.16 N
     assert keys["S1"] == pytest.approx(32.7, rel=1e-9)
     assert keys["S2"] == pytest.approx(26.16, rel=1e-9)
+
+
+def test_a_spin_down_at_constant_deceleration_matches_its_integration():
+    from scipy.integrate import solve_ivp
+    # omega' = -alpha from omega0 = 30 rad/s, alpha = 4 rad/s^2: stops at t = 7.5 s after
+    # turning 30^2 / 8 = 112.5 rad
+    stop = solve_ivp(lambda t, y: (y[1], -4.0), (0.0, 20.0), (0.0, 30.0), rtol=1e-10,
+                     atol=1e-10, events=lambda t, y: y[1])
+    assert rigid_kinetics.spin_down_time(30.0, 4.0) == pytest.approx(stop.t_events[0][0])
+    assert rigid_kinetics.spin_down_angle(30.0, 4.0) == pytest.approx(stop.y_events[0][0][0])
+    # lever about its pivot: N * 0.25 = 100 * 1.0
+    assert rigid_kinetics.brake_lever_shoe_force(100.0, 1.0, 0.25) == pytest.approx(400.0)
+
+
+def test_flywheel_brake_keys_match_the_hand_calculation():
+    keys = _answers("flywheel-lever-brake", m=50, R=0.4, omega0=600, P=100, b=1.0, c=0.25,
+                    mu=0.4)
+    # N = 100 * 1.0 / 0.25 = 400 N; alpha = 2 * 0.4 * 400 / (50 * 0.4) = 16 rad/s^2
+    assert keys["N"] == pytest.approx(400.0)
+    assert keys["alpha"] == pytest.approx(16.0)
+    # omega0 = 600 * 2 pi / 60 = 62.8319 rad/s: t = 62.8319 / 16 = 3.92699 s
+    assert keys["t"] == pytest.approx(3.92699, rel=1e-5)
+    # phi = 62.8319^2 / 32 = 123.370 rad, n = 123.370 / (2 pi) = 19.635 revolutions
+    assert keys["n"] == pytest.approx(19.635, rel=1e-4)

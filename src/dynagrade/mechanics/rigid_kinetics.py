@@ -161,3 +161,23 @@ def hanging_mass_rope_force(m: Quantity, g: Quantity, a: Quantity) -> Quantity:
     """Force of a vertical rope on a hanging body of mass m accelerating upward with a
     (negative: downward), S = m (g + a) (balance of linear momentum, Section 3.2.1)."""
     return m * (g + a)
+
+
+def brake_lever_shoe_force(P: Quantity, arm_force: Quantity, arm_shoe: Quantity) -> Quantity:
+    """Normal force of a brake shoe on a wheel, pressed by a lever pivoted on the line of
+    the shoe's friction force (so friction has no moment about the pivot): the lever's
+    moment balance about its pivot, N arm_shoe = P arm_force (Section 3.2.2, statics)."""
+    return P * arm_force / arm_shoe
+
+
+def spin_down_time(omega0: Quantity, alpha: Quantity) -> Quantity:
+    """Time a body spinning at omega0 takes to stop under a constant angular deceleration
+    alpha > 0 (constant braking moment, balance of angular momentum about the fixed axis,
+    Section 3.2.2): t = omega0 / alpha."""
+    return omega0 / alpha
+
+
+def spin_down_angle(omega0: Quantity, alpha: Quantity) -> Quantity:
+    """Angle (rad) a body turns while it stops from omega0 under a constant angular
+    deceleration alpha > 0: phi = omega0^2 / (2 alpha) (Section 3.2.2)."""
+    return omega0**2 / (2.0 * alpha)
