@@ -118,3 +118,15 @@ def test_flywheel_brake_keys_match_the_hand_calculation():
     assert keys["t"] == pytest.approx(3.92699, rel=1e-5)
     # phi = 62.8319^2 / 32 = 123.370 rad, n = 123.370 / (2 pi) = 19.635 revolutions
     assert keys["n"] == pytest.approx(19.635, rel=1e-4)
+
+
+def test_skewed_disk_keys_match_the_hand_calculation():
+    keys = _answers("skewed-disk-on-shaft", m_d=4.0, R=0.2, m_s=0.5, L=0.6, beta=20.0)
+    # I_t = I_a - I_t = 4 * 0.04 / 4 = 0.04; cos^2 20 deg = 0.8830222:
+    # I33 = 0.04 (1 + 0.8830222) = 0.0753209 kg m^2
+    assert keys["I33"] == pytest.approx(0.0753209, rel=1e-6)
+    # I13 = 0.04 sin 20 cos 20 = 0.04 * 0.3213938 = 0.0128558 kg m^2
+    assert keys["I13"] == pytest.approx(0.0128558, rel=1e-5)
+    # I11 = 0.04 + 0.04 * 0.1169778 + 0.5 * 0.36 / 12 = 0.0596791;
+    # tan 2 gamma = 0.0257115 / (0.0753209 - 0.0596791) = 1.643769, gamma = 29.3427 deg
+    assert keys["gamma"] == pytest.approx(29.3427, rel=1e-5)
