@@ -130,3 +130,17 @@ def test_skewed_disk_keys_match_the_hand_calculation():
     # I11 = 0.04 + 0.04 * 0.1169778 + 0.5 * 0.36 / 12 = 0.0596791;
     # tan 2 gamma = 0.0257115 / (0.0753209 - 0.0596791) = 1.643769, gamma = 29.3427 deg
     assert keys["gamma"] == pytest.approx(29.3427, rel=1e-5)
+
+
+def test_plate_with_hole_keys_match_the_hand_calculation():
+    keys = _answers("plate-with-hole-inertia", a=0.8, b=0.5, rho=20.0, r=0.1, d=0.2)
+    # m_p = 20 * 0.8 * 0.5 = 8 kg, m_h = 20 pi 0.01 = 0.628319 kg, m = 7.371681 kg
+    # x_C = -0.628319 * 0.2 / 7.371681 = -0.0170468 m
+    assert keys["x_C"] == pytest.approx(-0.0170468, rel=1e-5)
+    # I22 = 8 * 0.64 / 12 - 0.628319 (0.01/4 + 0.04) = 0.426667 - 0.0267035 = 0.399963
+    assert keys["I22"] == pytest.approx(0.399963, rel=1e-5)
+    # I_O = 8 * 0.89 / 12 - 0.628319 (0.01/2 + 0.04) = 0.593333 - 0.0282743 = 0.565059
+    assert keys["I_O"] == pytest.approx(0.565059, rel=1e-5)
+    # about the corner A = (0.4, 0.25) directly: the plate 8 * 0.89 / 3 = 2.373333, minus the
+    # hole 0.628319 (0.005 + 0.2^2 + 0.25^2) = 0.0675442: I_A = 2.305789 kg m^2
+    assert keys["I_A"] == pytest.approx(2.305789, rel=1e-5)
