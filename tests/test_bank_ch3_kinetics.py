@@ -144,3 +144,21 @@ def test_plate_with_hole_keys_match_the_hand_calculation():
     # about the corner A = (0.4, 0.25) directly: the plate 8 * 0.89 / 3 = 2.373333, minus the
     # hole 0.628319 (0.005 + 0.2^2 + 0.25^2) = 0.0675442: I_A = 2.305789 kg m^2
     assert keys["I_A"] == pytest.approx(2.305789, rel=1e-5)
+
+
+def test_the_angular_momentum_vanishes_on_the_offset_line():
+    # about a point at y_0 off the path, H = I omega + m v y_0 = 0.004 * 20 + 0.4 * 2 * y_0
+    y_0 = rigid_kinetics.zero_angular_momentum_offset(0.004, 20.0, 0.4, 2.0)
+    assert y_0 == pytest.approx(-0.1)
+    assert 0.004 * 20.0 + 0.4 * 2.0 * y_0 == pytest.approx(0.0)
+
+
+def test_spinning_puck_keys_match_the_hand_calculation():
+    keys = _answers("spinning-puck-angular-momentum", m=0.4, R=0.1, v=2.0, omega=20.0,
+                    y_B=-0.25)
+    # H_C = 0.4 * 0.01 * 20 / 2 = 0.04 kg m^2/s
+    assert keys["H_C"] == pytest.approx(0.04)
+    # H_B = 0.04 + 0.4 * 2 * (-0.25) = 0.04 - 0.2 = -0.16 kg m^2/s (clockwise)
+    assert keys["H_B"] == pytest.approx(-0.16)
+    # y_0 = -0.01 * 20 / (2 * 2) = -0.05 m
+    assert keys["y_0"] == pytest.approx(-0.05)

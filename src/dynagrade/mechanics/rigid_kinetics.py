@@ -181,3 +181,12 @@ def spin_down_angle(omega0: Quantity, alpha: Quantity) -> Quantity:
     """Angle (rad) a body turns while it stops from omega0 under a constant angular
     deceleration alpha > 0: phi = omega0^2 / (2 alpha) (Section 3.2.2)."""
     return omega0**2 / (2.0 * alpha)
+
+
+def zero_angular_momentum_offset(moment_centre: Quantity, omega: Quantity, m: Quantity,
+                                 v: Quantity) -> Quantity:
+    """Signed distance, along e3 x e_v from the centre of mass, of the line of points about
+    which the angular momentum of a body in plane motion vanishes:
+    H_B = I_C omega + m v y_B = 0 gives y_B = -I_C omega / (m v) (angular momentum transfer
+    formula, Section 3.2.4; omega counter-clockwise positive, v > 0)."""
+    return -moment_centre * omega / (m * v)
