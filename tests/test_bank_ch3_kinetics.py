@@ -162,3 +162,23 @@ def test_spinning_puck_keys_match_the_hand_calculation():
     assert keys["H_B"] == pytest.approx(-0.16)
     # y_0 = -0.01 * 20 / (2 * 2) = -0.05 m
     assert keys["y_0"] == pytest.approx(-0.05)
+
+
+def test_the_moment_for_steady_rotation_is_the_rate_of_the_turning_angular_momentum():
+    # H_O fixed in a body turning at omega about e3: finite difference of R(t) H_O at t = 0
+    omega, h_o, dt = 5.0, np.array([0.3, -0.2, 1.0]), 1e-6
+    turned = np.array([[np.cos(omega * dt), -np.sin(omega * dt), 0.0],
+                       [np.sin(omega * dt), np.cos(omega * dt), 0.0], [0.0, 0.0, 1.0]]) @ h_o
+    assert rigid_kinetics.moment_for_steady_rotation([0.0, 0.0, omega], h_o) == pytest.approx(
+        (turned - h_o) / dt, rel=1e-5)
+
+
+def test_eccentric_disk_keys_match_the_hand_calculation():
+    keys = _answers("eccentric-disk-bearing-moment", m=4.0, R=0.1, e=0.02, h=0.3, Omega=600)
+    # Omega = 600 * 2 pi / 60 = 62.83185 rad/s
+    # H_axial = (4 * 0.01 / 2 + 4 * 0.02^2) * 62.83185 = 0.0216 * 62.83185 = 1.357168
+    assert keys["H_axial"] == pytest.approx(1.357168, rel=1e-6)
+    # H_perp = 4 * 0.02 * 0.3 * 62.83185 = 0.024 * 62.83185 = 1.507964
+    assert keys["H_perp"] == pytest.approx(1.507964, rel=1e-6)
+    # M_O = 1.507964 * 62.83185 = 94.7482 N m
+    assert keys["M_O"] == pytest.approx(94.7482, rel=1e-5)

@@ -190,3 +190,11 @@ def zero_angular_momentum_offset(moment_centre: Quantity, omega: Quantity, m: Qu
     H_B = I_C omega + m v y_B = 0 gives y_B = -I_C omega / (m v) (angular momentum transfer
     formula, Section 3.2.4; omega counter-clockwise positive, v > 0)."""
     return -moment_centre * omega / (m * v)
+
+
+def moment_for_steady_rotation(omega: ArrayLike, H_O: ArrayLike) -> Quantity:
+    """Moment about a fixed point O of the axis that keeps a body turning at the constant
+    angular velocity omega about that fixed axis: H_O keeps its components in the body, so
+    M_O = dH_O/dt = omega x H_O (balance of angular momentum, Section 3.2.2, with H_O from
+    the transfer formula, Section 3.2.4)."""
+    return np.cross(np.asarray(omega, dtype=float), np.asarray(H_O, dtype=float))
