@@ -182,3 +182,38 @@ def test_eccentric_disk_keys_match_the_hand_calculation():
     assert keys["H_perp"] == pytest.approx(1.507964, rel=1e-6)
     # M_O = 1.507964 * 62.83185 = 94.7482 N m
     assert keys["M_O"] == pytest.approx(94.7482, rel=1e-5)
+
+
+def _falling_rod(t, y, g=9.81, L=1.0):
+    """Lagrange's equation of the rod with its foot on a frictionless floor."""
+    s, c = np.sin(y[0]), np.cos(y[0])
+    return (y[1], (g / L * s / 2 - s * c / 4 * y[1] ** 2) / (s**2 / 4 + 1 / 12))
+
+
+def test_the_sliding_rod_angular_speed_matches_the_integrated_fall_and_the_foot_stays_down():
+    from scipy.integrate import solve_ivp
+    # from rest at 10 degrees until the rod leans at 60 degrees (L = 1, g = 9.81)
+    fall = solve_ivp(_falling_rod, (0.0, 5.0), (np.radians(10), 0.0), rtol=1e-10, atol=1e-10,
+                     events=lambda t, y: y[0] - np.radians(60), dense_output=True)
+    assert rigid_kinetics.sliding_rod_angular_speed(
+        np.radians(10), np.radians(60), 9.81, 1.0) == pytest.approx(fall.y_events[0][0][1],
+                                                                    rel=1e-7)
+    # the floor's push N = m (g + y_C''), y_C = cos(theta)/2, stays positive up to 85 deg
+    # (the statement says the foot stays on the floor)
+    times = np.linspace(0.0, fall.t_events[0][0], 50)
+    theta, rate = fall.sol(times)
+    accel = np.array([_falling_rod(0.0, (a, b))[1] for a, b in zip(theta, rate)])
+    assert np.all(9.81 - 0.5 * (np.sin(theta) * accel + np.cos(theta) * rate**2) > 0)
+
+
+def test_rod_on_frictionless_floor_keys_match_the_hand_calculation():
+    keys = _answers("rod-sliding-on-frictionless-floor", L=1.2, theta0=20, theta1=60, g=9.81)
+    # theta_dot^2 = 12 * 9.81 * (0.9396926 - 0.5) / (1.2 * (1 + 3 * 0.75))
+    #             = 51.7601 / 3.9 = 13.27182, theta_dot = 3.643050 rad/s
+    assert keys["omega"] == pytest.approx(3.64305, rel=1e-5)
+    # v_C = 0.6 * 0.8660254 * 3.64305 = 1.892994 m/s; v_A = 0.6 * 0.5 * 3.64305 = 1.092915
+    assert keys["v_C"] == pytest.approx(1.892994, rel=1e-5)
+    assert keys["v_A"] == pytest.approx(1.092915, rel=1e-5)
+    # v_land = sqrt(0.75 * 9.81 * 1.2 * 0.9396926) = sqrt(8.829 * 0.9396926) = sqrt(8.29655)
+    #        = 2.880373 m/s
+    assert keys["v_land"] == pytest.approx(2.880373, rel=1e-5)

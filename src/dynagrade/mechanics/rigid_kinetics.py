@@ -198,3 +198,15 @@ def moment_for_steady_rotation(omega: ArrayLike, H_O: ArrayLike) -> Quantity:
     M_O = dH_O/dt = omega x H_O (balance of angular momentum, Section 3.2.2, with H_O from
     the transfer formula, Section 3.2.4)."""
     return np.cross(np.asarray(omega, dtype=float), np.asarray(H_O, dtype=float))
+
+
+def sliding_rod_angular_speed(theta0: Quantity, theta: Quantity, g: Quantity,
+                              L: Quantity) -> Quantity:
+    """Angular speed of a slender rod of length L whose lower end slides on a frictionless
+    floor, released from rest at theta0 from the vertical, when it leans at theta: no
+    horizontal force, so C falls vertically with v_C = (L/2) sin(theta) theta_dot, and the
+    work-energy balance m g (L/2)(cos theta0 - cos theta) = 1/2 m v_C^2
+    + 1/2 (m L^2/12) theta_dot^2 gives
+    theta_dot^2 = 12 g (cos theta0 - cos theta) / (L (1 + 3 sin^2 theta)) (Section 3.2.5)."""
+    return np.sqrt(12.0 * g * (np.cos(theta0) - np.cos(theta))
+                   / (L * (1.0 + 3.0 * np.sin(theta) ** 2)))
