@@ -217,3 +217,26 @@ def test_rod_on_frictionless_floor_keys_match_the_hand_calculation():
     # v_land = sqrt(0.75 * 9.81 * 1.2 * 0.9396926) = sqrt(8.829 * 0.9396926) = sqrt(8.29655)
     #        = 2.880373 m/s
     assert keys["v_land"] == pytest.approx(2.880373, rel=1e-5)
+
+
+def test_the_drum_speed_after_a_drop_matches_the_integrated_spin_up():
+    from scipy.integrate import solve_ivp
+    # (m r^2 + J) phi'' = m g r - M_f with m = 2, r = 0.1, J = 0.08, M_f = 0.3, g = 9.81,
+    # until the string has paid out h = 0.8 m (phi = 8 rad)
+    spin = solve_ivp(lambda t, y: (y[1], (2 * 9.81 * 0.1 - 0.3) / (2 * 0.01 + 0.08)),
+                     (0.0, 10.0), (0.0, 0.0), rtol=1e-10, atol=1e-10,
+                     events=lambda t, y: y[0] - 8.0)
+    assert rigid_kinetics.drum_angular_speed_after_drop(2.0, 9.81, 0.8, 0.1, 0.08, 0.3) == (
+        pytest.approx(spin.y_events[0][0][1], rel=1e-8))
+
+
+def test_flywheel_spun_by_a_weight_keys_match_the_hand_calculation():
+    keys = _answers("flywheel-spun-by-falling-weight", J=0.2, r=0.05, m=4.0, h=1.0, M_f=0.5,
+                    g=9.81)
+    # work: 4 * 9.81 * 1 - 0.5 * 1 / 0.05 = 39.24 - 10 = 29.24 J into 1/2 (0.01 + 0.2) w^2:
+    # w^2 = 58.48 / 0.21 = 278.4762, w = 16.68761 rad/s
+    assert keys["omega1"] == pytest.approx(16.68761, rel=1e-6)
+    assert keys["W_f"] == pytest.approx(10.0)
+    # coasting: 0.2 * 278.4762 / 2 = 27.84762 J = 0.5 * phi2, phi2 = 55.69524 rad,
+    # n2 = 55.69524 / (2 pi) = 8.86417 revolutions
+    assert keys["n2"] == pytest.approx(8.86417, rel=1e-5)

@@ -210,3 +210,14 @@ def sliding_rod_angular_speed(theta0: Quantity, theta: Quantity, g: Quantity,
     theta_dot^2 = 12 g (cos theta0 - cos theta) / (L (1 + 3 sin^2 theta)) (Section 3.2.5)."""
     return np.sqrt(12.0 * g * (np.cos(theta0) - np.cos(theta))
                    / (L * (1.0 + 3.0 * np.sin(theta) ** 2)))
+
+
+def drum_angular_speed_after_drop(m: Quantity, g: Quantity, h: Quantity, r: Quantity,
+                                  moment_centre: Quantity,
+                                  friction_moment: Quantity) -> Quantity:
+    """Angular speed of a wheel (I_C about its axle) spun up from rest by a mass m on a
+    string unwinding from its drum of radius r, after the mass has dropped h against a
+    constant bearing friction moment: the work-energy balance
+    m g h - M_f h / r = 1/2 (m r^2 + I_C) omega^2 (Section 3.2.5)."""
+    work = m * g * h - friction_moment * h / r
+    return np.sqrt(2.0 * work / (m * r**2 + moment_centre))
