@@ -36,6 +36,8 @@ def solve(p):
 
 
 def _apart(p):
+    if p.m * p.g * p.r <= p.M_f:   # never starts: the other constraints reject the draw
+        return False
     s = solve(p)
     return all(max(x, y) > 1.05 * min(x, y)
                for x, y in combinations((s["omega1"], s["W_f"], s["n2"]), 2))
