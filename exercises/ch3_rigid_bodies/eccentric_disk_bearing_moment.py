@@ -1,11 +1,11 @@
 """A disk mounted off-centre on a spinning shaft: angular momentum about a bearing point
 from the transfer formula, and the moment the bearings must supply (Section 3.2.4)."""
 
-from itertools import combinations
 
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import angle_arc, describe, dimension, new_drawing
 from dynagrade.exercise.numbers import format_number
@@ -34,8 +34,7 @@ def solve(p):
 
 def _apart(p):
     s = solve(p)
-    return all(max(x, y) > 1.05 * min(x, y)
-               for x, y in combinations((s["H_axial"], s["H_perp"], s["M_O"]), 2))
+    return numbers_apart((s["H_axial"], s["H_perp"], s["M_O"]))
 
 
 def figure(p):

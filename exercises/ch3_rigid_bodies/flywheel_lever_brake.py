@@ -1,12 +1,12 @@
 """A flywheel stopped by a lever brake: shoe force, angular deceleration from the balance
 of angular momentum about the fixed axle, stopping time and turns (Section 3.2.2)."""
 
-from itertools import combinations
 
 import numpy as np
 
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform,
                                 per_draw)
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Integrated
 from dynagrade.exercise.figure import (Circle, angle_arc, arrow, describe, dimension,
                                        new_drawing, pivot)
@@ -36,8 +36,7 @@ def solve(p):
 def _apart(p):
     """No two answers (of different units) share their number: 5 % apart."""
     s = solve(p)
-    return all(max(x, y) > 1.05 * min(x, y)
-               for x, y in combinations((s["N"], s["alpha"], s["t"], s["n"]), 2))
+    return numbers_apart((s["N"], s["alpha"], s["t"], s["n"]))
 
 
 def figure(p):

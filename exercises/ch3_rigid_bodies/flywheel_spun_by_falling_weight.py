@@ -1,12 +1,12 @@
 """A flywheel spun up by a falling weight against bearing friction, then coasting to rest:
 the work-energy balance in two stages (Section 3.2.5)."""
 
-from itertools import combinations
 
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Uniform, per_draw)
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Balance, Integrated
 from dynagrade.exercise.figure import (Circle, block, describe, dimension, new_drawing, pivot)
 from dynagrade.exercise.numbers import format_number
@@ -39,8 +39,7 @@ def _apart(p):
     if p.m * p.g * p.r <= p.M_f:   # never starts: the other constraints reject the draw
         return False
     s = solve(p)
-    return all(max(x, y) > 1.05 * min(x, y)
-               for x, y in combinations((s["omega1"], s["W_f"], s["n2"]), 2))
+    return numbers_apart((s["omega1"], s["W_f"], s["n2"]))
 
 
 def figure(p):

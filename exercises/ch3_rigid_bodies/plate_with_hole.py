@@ -2,11 +2,11 @@
 centre of mass and the inertia tensor, and the shift to the centre of mass
 (Section 3.2.3)."""
 
-from itertools import combinations
 
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.exercise.figure import Circle, Rectangle, describe, dimension, new_drawing
 from dynagrade.exercise.numbers import format_number
@@ -70,8 +70,7 @@ def _differs(key, wrong):
 
 def _apart(p):
     s = solve(p)
-    values = [abs(s[key]) for key in ("x_C", "I22", "I_O", "I_A")]
-    return all(max(x, y) > 1.05 * min(x, y) for x, y in combinations(values, 2))
+    return numbers_apart(s[key] for key in ("x_C", "I22", "I_O", "I_A"))
 
 
 def figure(p):

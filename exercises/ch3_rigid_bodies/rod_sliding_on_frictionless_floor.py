@@ -1,12 +1,12 @@
 """A rod falling with its foot sliding on a frictionless floor: its centre falls straight
 down, and the work-energy balance gives its spin and speeds (Section 3.2.5)."""
 
-from itertools import combinations
 
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Uniform, per_draw)
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Balance, Integrated
 from dynagrade.exercise.figure import angle_arc, describe, dimension, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
@@ -30,8 +30,7 @@ def solve(p):
 
 def _apart(p):
     s = solve(p)
-    return all(max(x, y) > 1.05 * min(x, y)
-               for x, y in combinations((s["omega"], s["v_C"], s["v_A"], s["v_land"]), 2))
+    return numbers_apart((s["omega"], s["v_C"], s["v_A"], s["v_land"]))
 
 
 def _pivoted_rate(p):

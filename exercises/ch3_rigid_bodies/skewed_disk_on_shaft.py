@@ -4,6 +4,7 @@ product of inertia and the tilt of the principal axis nearest the shaft (Section
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Limit, Recompute
 from dynagrade.exercise.figure import angle_arc, arrow, describe, dimension, new_drawing
 from dynagrade.exercise.numbers import format_number
@@ -82,8 +83,7 @@ def _tilt_by_hand(p, s):
 def _apart(p):
     """I33, I13 and gamma (in degrees and in radians) never share their number."""
     s = solve(p)
-    values = (s["I33"], s["I13"], s["gamma"], np.degrees(s["gamma"]))
-    return all(max(x, y) > 1.05 * min(x, y) for i, x in enumerate(values) for y in values[:i])
+    return numbers_apart((s["I33"], s["I13"], s["gamma"], np.degrees(s["gamma"])))
 
 
 EXERCISE = Exercise(

@@ -1,11 +1,11 @@
 """A puck sliding and spinning on ice: its angular momentum about its centre and about a
 fixed point beside its path, and where it vanishes (Section 3.2.4)."""
 
-from itertools import combinations
 
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import Circle, angle_arc, arrow, describe, dimension, new_drawing
 from dynagrade.exercise.numbers import format_number
@@ -35,8 +35,7 @@ def solve(p):
 
 def _apart(p):
     s = solve(p)
-    return all(abs(x - y) > 0.05 * max(abs(x), abs(y))
-               for x, y in combinations((s["H_C"], s["H_B"], s["y_0"]), 2))
+    return numbers_apart((s["H_C"], s["H_B"], s["y_0"]))
 
 
 def _particles(p):

@@ -3,6 +3,7 @@ friction and its direction, the smallest friction coefficient (Section 3.2.1).""
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
                                 Options, Uniform, per_draw)
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.exercise.figure import Circle, arrow, describe, dimension, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
@@ -39,8 +40,7 @@ def _forward(p):
 def _apart(p):
     """a, f and mu_min, whose units differ, never share their number (5 % apart)."""
     s = solve(p)
-    values = sorted((s["a"], s["f"], s["mu_min"]))
-    return all(b > 1.05 * a for a, b in zip(values, values[1:]))
+    return numbers_apart((s["a"], s["f"], s["mu_min"]))
 
 
 def figure(p):
