@@ -300,3 +300,18 @@ def transmitted_force_amplitude(X: Quantity, k: Quantity, c: Quantity,
                                 Omega: Quantity) -> Quantity:
     """Amplitude F_T = X sqrt(k^2 + (c Omega)^2) of the force spring and damper pass to the ground, Section 4.3.3."""
     return X * np.sqrt(k**2 + (c * Omega) ** 2)
+
+
+# --- issue 31, chapter 4 exercises: relations the new exercises need ----------------------
+
+def equivalent_weight(masses: ArrayLike, ratios: ArrayLike, g: Quantity) -> float:
+    """Generalized gravity force W_eq = g sum_i m_i (d u_i / d q) of a 1-DOF system, Section 4.3.1.
+
+    ``ratios`` are the downward displacements of the bodies' centres of mass per unit
+    generalized coordinate (the same transmission ratios as in :func:`equivalent_mass`, but
+    not squared: gravity does the virtual work W_eq dq). The static deflection of the
+    coordinate on a spring of stiffness k_eq is W_eq / k_eq.
+    """
+    masses = np.asarray(masses, dtype=float)
+    ratios = np.asarray(ratios, dtype=float)
+    return float(g * np.sum(masses * ratios))

@@ -1,0 +1,113 @@
+"""The chapter-4 exercises added for issue 31, each at fixed parameters against values
+worked out by hand (the arithmetic is in the comments), and the core relations they
+added, each against a second route."""
+import numpy as np
+import pytest
+
+from dynagrade.mechanics import multi_dof, vibrations
+
+
+def answers(bank, exercise_id, **values):
+    """The keys in the parts' units at the given parameters (declared units)."""
+    exercise = bank.get(exercise_id)
+    given = {p.name: values.get(p.name, p.draw(np.random.default_rng(0))) for p in exercise.params}
+    assert not exercise.broken_constraints(given), exercise.broken_constraints(given)
+    return exercise.solve_in_part_units(given)
+
+
+# --- core relations ---------------------------------------------------------------------
+
+def test_equivalent_weight_of_a_hinged_bar_is_its_moment_about_the_hinge_over_the_tip_arm():
+    # bar 3 kg of length 1 m (centre at 0.5 m) and 2 kg at the tip: moment about the
+    # hinge (2*1 + 3*0.5)*9.81 = 34.335 N m over the tip arm 1 m = 34.335 N
+    assert vibrations.equivalent_weight([2.0, 3.0], [1.0, 0.5], 9.81) == pytest.approx(34.335)
+
+
+def test_bounce_pitch_matrices_are_the_hessians_of_the_energies_derived_by_sympy():
+    import sympy as sp
+
+    from dynagrade.mechanics import equilibrium, lagrange
+
+    t = sp.Symbol("t")
+    x, th = sp.Function("x")(t), sp.Function("theta")(t)
+    m, J, k1, k2, l1, l2 = 1200.0, 2000.0, 3.0e4, 2.5e4, 1.2, 1.6
+    # the spring ends move with the body's points l1 ahead and l2 behind the centre
+    V = k1 * (x + l1 * sp.sin(th)) ** 2 / 2 + k2 * (x - l2 * sp.sin(th)) ** 2 / 2
+    T = m * x.diff(t) ** 2 / 2 + J * th.diff(t) ** 2 / 2
+    rest = {x: 0, th: 0}
+    K_sympy = np.array(equilibrium.stiffness_matrix(V, [x, th], rest), dtype=float)
+    M_sympy = np.array(lagrange.mass_matrix(T, [x, th], t).subs(rest), dtype=float)
+    K, M = multi_dof.bounce_pitch_matrices(m, J, k1, k2, l1, l2)
+    assert K == pytest.approx(K_sympy) and M == pytest.approx(M_sympy)
+
+
+def test_the_node_a_mode_leaves_at_rest_does_not_move():
+    # x = 0.02, theta = 0.01: the point s = -2 m ahead moves 0.02 + (-2)(0.01) = 0
+    s = multi_dof.node_position(0.02, 0.01)
+    assert s == pytest.approx(-2.0) and 0.02 + s * 0.01 == pytest.approx(0.0)
+
+
+# --- the exercises at fixed parameters ----------------------------------------------------
+
+def test_trough_rolling_cylinder_at_R_1_r_quarter(bank):
+    a = answers(bank, "trough-rolling-cylinder-lagrange", m=2.0, R=1.0, r=0.25, theta0=30.0)
+    # R - r = 0.75 m: theta'' = -2 g sin 30 / (3 * 0.75) = -9.81 / 2.25 = -4.360 rad/s^2
+    assert a["alpha0"] == pytest.approx(-4.36, rel=1e-4)
+    # omega^2 = 2 * 9.81 / 2.25 = 8.72, omega = 2.9530 rad/s, T = 2 pi / omega = 2.1278 s
+    assert a["omega"] == pytest.approx(2.95296, rel=1e-5)
+    assert a["T_period"] == pytest.approx(2.12776, rel=1e-5)
+
+
+@pytest.mark.parametrize("R, K, stability", [(0.3, 1.962, "stable"), (0.1, -1.962, "unstable")])
+def test_block_on_cylinder_is_stable_exactly_when_R_exceeds_half_its_height(bank, R, K, stability):
+    a = answers(bank, "block-rocking-on-cylinder", m=2.0, R=R, w=0.2, h=0.4)
+    # K = m g (R - h/2) = 2 * 9.81 * (+-0.1) = +-1.962 N m
+    assert a["K"] == pytest.approx(K, rel=1e-9)
+    assert a["stability"] == stability
+    # J_P = m (w^2 + 4 h^2) / 12 = 2 * 0.68 / 12 = 0.11333 kg m^2; s = sqrt(1.962 / J_P) = 4.1607 1/s
+    assert a["s"] == pytest.approx(4.16073, rel=1e-5)
+
+
+def test_block_on_cylinder_draws_both_stable_and_unstable_blocks(bank):
+    exercise = bank.get("block-rocking-on-cylinder")
+    stable = sum(exercise.variant(seed, with_statement=False).answers["stability"] == "stable"
+                 for seed in range(100))
+    assert 25 <= stable <= 75
+
+
+def test_hinged_bar_with_tip_mass(bank):
+    a = answers(bank, "hinged-bar-tip-mass", m=2.0, m_b=3.0, L=1.0, a=0.5, k=8000.0)
+    # m_eq = m + m_b / 3 = 2 + 1 = 3 kg; k_eq = k (a/L)^2 = 8000 * 0.25 = 2000 N/m
+    assert a["m_eq"] == pytest.approx(3.0)
+    assert a["k_eq"] == pytest.approx(2000.0)
+    # f = sqrt(2000 / 3) / (2 pi) = 25.8199 / 6.28319 = 4.10936 Hz
+    assert a["f"] == pytest.approx(4.10936, rel=1e-5)
+    # delta = (m + m_b/2) g / k_eq = 3.5 * 9.81 / 2000 = 0.0171675 m = 17.1675 mm
+    assert a["delta"] == pytest.approx(17.1675, rel=1e-6)
+
+
+def test_bounce_pitch_matrices_of_a_car(bank):
+    a = answers(bank, "bounce-pitch-matrices", m=1200.0, J=2000.0, k1=30000.0, k2=25000.0,
+                l1=1.2, l2=1.6, x0=20.0)
+    # K12 = k1 l1 - k2 l2 = 36000 - 40000 = -4000 N
+    assert a["K12"] == pytest.approx(-4000.0)
+    # K22 = k1 l1^2 + k2 l2^2 = 30000 * 1.44 + 25000 * 2.56 = 43200 + 64000 = 107200 N m
+    assert a["K22"] == pytest.approx(107200.0)
+    # l1* = k2 (l1 + l2) / (k1 + k2) = 25000 * 2.8 / 55000 = 1.27273 m
+    assert a["l1_star"] == pytest.approx(1.272727, rel=1e-6)
+    # theta'' = -K12 x0 / J = 4000 * 0.02 / 2000 = 0.04 rad/s^2
+    assert a["theta_ddot0"] == pytest.approx(0.04)
+
+
+def test_bounce_pitch_modes_of_a_trailer(bank):
+    a = answers(bank, "bounce-pitch-modes", m=1000.0, J=1500.0, k1=40000.0, k2=20000.0,
+                l1=1.0, l2=1.5)
+    # K11 = 60000, K12 = 40000 - 30000 = 10000, K22 = 40000 + 45000 = 85000;
+    # 1.5e6 w^4 - (8.5e7 + 9e7) w^2 + (5.1e9 - 1e8) = 0, i.e. l^2 - 116.667 l + 3333.33 = 0:
+    # w^2 = 50 and 66.667, f = sqrt(50)/(2 pi) = 1.12540 Hz and sqrt(66.667)/(2 pi) = 1.29949 Hz
+    assert a["f1"] == pytest.approx(1.125395, rel=1e-5)
+    assert a["f2"] == pytest.approx(1.299494, rel=1e-5)
+    # s = K12 / (K11 - w^2 m): 10000 / (60000 - 50000) = 1 m (at the front spring) and
+    # 10000 / (60000 - 66667) = -1.5 m (at the rear spring)
+    assert a["s1"] == pytest.approx(1.0, rel=1e-6)
+    assert a["s2"] == pytest.approx(-1.5, rel=1e-6)
