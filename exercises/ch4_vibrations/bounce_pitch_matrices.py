@@ -56,13 +56,14 @@ def figure(p):
     drawing, axes = new_drawing(4.8, 2.6)
     l1, l2 = 1.3, 1.7
     height = 0.9
-    block(axes, (0.0, height + 0.15), 1.3 * (l1 + l2), 0.3, "m, J_G", color="0.75")
+    block(axes, (0.0, height + 0.15), 1.3 * (l1 + l2), 0.3, color="0.75")
+    axes.text(-0.6 * l2, height + 0.15, "$m$, $J_G$", ha="center", va="center", fontsize=10)
     for x, name in ((l1, "k₁"), (-l2, "k₂")):
         spring(axes, (x, 0.0), (x, height), coils=5, width=0.18)
         axes.text(x + 0.15, height / 2, name, ha="left", va="center", fontsize=10)
     ground(axes, -l2 - 0.5, l1 + 0.5, hatch=0.08)
     axes.plot([0.0], [height + 0.15], "o", color="0.1", ms=4)
-    axes.text(0.08, height + 0.05, "G", ha="left", va="top", fontsize=10)
+    axes.text(0.1, height + 0.1, "G", ha="left", va="top", fontsize=10)
     arrow(axes, (0.0, height + 0.35), (0.0, height + 0.85), "x", offset=(0.12, 0.0), color="C3")
     angle_arc(axes, (0.0, height + 0.15), 0.55, 0.35, 1.2, "θ", label_radius=0.75)
     dimension(axes, (0.0, 0.0), (l1, 0.0), "l₁", offset=-0.3, tick=0.05, side=-1.0)

@@ -65,7 +65,7 @@ def figure(p):
         axes.text(x + 0.05 * span, h / 2, name, ha="left", va="center", fontsize=10)
     ground(axes, -p.l2 - 0.2 * span, p.l1 + 0.2 * span, hatch=0.03 * span)
     axes.plot([0.0], [h], "o", color="C3", ms=5)
-    axes.text(0.0, h + 0.05 * span, "G (m, J_G)", ha="center", va="bottom", fontsize=10)
+    axes.text(0.0, h + 0.05 * span, "G ($m$, $J_G$)", ha="center", va="bottom", fontsize=10)
     dimension(axes, (0.0, h), (p.l1, h), "l₁", offset=0.2 * span, tick=0.02 * span)
     dimension(axes, (-p.l2, h), (0.0, h), "l₂", offset=0.2 * span, tick=0.02 * span)
     describe(axes, "The front spring k₁ is on the right, the rear spring k₂ on the left; "

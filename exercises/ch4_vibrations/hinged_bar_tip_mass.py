@@ -52,7 +52,7 @@ def figure(p):
     spring(axes, (p.a, floor), (p.a, 0.0), coils=6, width=0.05 * L)
     ground(axes, p.a - 0.12 * L, p.a + 0.12 * L, y=floor, hatch=0.03 * L)
     block(axes, (L, 0.05 * L), 0.1 * L, 0.1 * L, "m")
-    axes.text(0.5 * L, 0.03 * L, "m_b", ha="center", va="bottom", fontsize=10)
+    axes.text(0.5 * L, 0.03 * L, "$m_b$", ha="center", va="bottom", fontsize=10)
     axes.text(p.a + 0.05 * L, floor / 2, "k", ha="left", va="center", fontsize=10)
     dimension(axes, (0.0, 0.0), (p.a, 0.0), "a", offset=-0.45 * L, tick=0.02 * L, side=-1.0)
     dimension(axes, (0.0, 0.0), (L, 0.0), "L", offset=0.25 * L, tick=0.02 * L)
