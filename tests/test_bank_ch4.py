@@ -111,3 +111,15 @@ def test_bounce_pitch_modes_of_a_trailer(bank):
     # 10000 / (60000 - 66667) = -1.5 m (at the rear spring)
     assert a["s1"] == pytest.approx(1.0, rel=1e-6)
     assert a["s2"] == pytest.approx(-1.5, rel=1e-6)
+
+
+def test_two_mass_chain_forced_between_its_resonances(bank):
+    a = answers(bank, "two-mass-forced-chain", m1=100.0, m2=50.0, k1=1e5, k2=5e4, F0=500.0, f=4.0)
+    # resonances: 5000 w^4 - 1.25e7 w^2 + 5e9 = 0, w^2 = 500 and 2000 (22.36 and 44.72 rad/s);
+    # Omega^2 = (8 pi)^2 = 631.65: a = 150000 - 63165.5 = 86834.5, d = 50000 - 31582.7 = 18417.3,
+    # Delta = a d - k2^2 = 1.59926e9 - 2.5e9 = -9.0075e8
+    # X1 = k2 F0 / Delta = 2.5e7 / -9.0075e8 = -0.027755 m; X2 = a F0 / Delta = -0.048201 m
+    assert a["X1"] == pytest.approx(-27.755, rel=1e-4)
+    assert a["X2"] == pytest.approx(-48.201, rel=1e-4)
+    # f_a = sqrt((k1 + k2) / m1) / (2 pi) = sqrt(1500) / 6.28319 = 38.730 / 6.28319 = 6.1640 Hz
+    assert a["f_a"] == pytest.approx(6.16404, rel=1e-5)
