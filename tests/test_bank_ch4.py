@@ -123,3 +123,14 @@ def test_two_mass_chain_forced_between_its_resonances(bank):
     assert a["X2"] == pytest.approx(-48.201, rel=1e-4)
     # f_a = sqrt((k1 + k2) / m1) / (2 pi) = sqrt(1500) / 6.28319 = 38.730 / 6.28319 = 6.1640 Hz
     assert a["f_a"] == pytest.approx(6.16404, rel=1e-5)
+
+
+def test_struck_carts_split_into_rigid_and_vibration_modes(bank):
+    a = answers(bank, "struck-carts-modal-decomposition", m1=2.0, m2=3.0, k=1920.0, v0=1.0, t1=0.1)
+    # reduced mass 2*3/5 = 1.2 kg: omega = sqrt(1920/1.2) = sqrt(1600) = 40 rad/s
+    assert a["omega"] == pytest.approx(40.0)
+    # d_max = v0/omega = 1/40 m = 25 mm
+    assert a["d_max"] == pytest.approx(25.0)
+    # x2 = v_G t - m1/(m1+m2) v0/omega sin(omega t) = 0.4*0.1 - 0.4*0.025*sin(4)
+    #    = 0.04 - 0.01*(-0.756802) = 0.0475680 m
+    assert a["x2"] == pytest.approx(47.5680, rel=1e-5)
