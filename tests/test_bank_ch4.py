@@ -134,3 +134,15 @@ def test_struck_carts_split_into_rigid_and_vibration_modes(bank):
     # x2 = v_G t - m1/(m1+m2) v0/omega sin(omega t) = 0.4*0.1 - 0.4*0.025*sin(4)
     #    = 0.04 - 0.01*(-0.756802) = 0.0475680 m
     assert a["x2"] == pytest.approx(47.5680, rel=1e-5)
+
+
+def test_damped_two_mass_system_at_omega_20(bank):
+    a = answers(bank, "damped-two-mass-forced", m1=100.0, m2=20.0, k1=1e5, k2=2e4, c=1000.0,
+                F0=1000.0, f=20 / (2 * np.pi))
+    # Omega^2 = 400: k2 - Omega^2 m2 = 12000, k2^2/12000 = 33333.3, k1 + k2 - Omega^2 m1 = 80000;
+    # dynamic stiffness of m1: 46666.7 + 20000 i, modulus sqrt(2.57778e9) = 50771.8 N/m
+    # X1 = 1000 / 50771.8 = 0.019696 m; lag = atan(20000/46666.7) = atan(3/7) = 23.199 deg
+    assert a["X1"] == pytest.approx(19.696, rel=1e-4)
+    assert a["phi1"] == pytest.approx(23.1986, rel=1e-4)
+    # X2 = k2/(k2 - Omega^2 m2) X1 = (20000/12000) * 19.696 = 32.827 mm
+    assert a["X2"] == pytest.approx(32.827, rel=1e-4)
