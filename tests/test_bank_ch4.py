@@ -47,6 +47,29 @@ def test_the_node_a_mode_leaves_at_rest_does_not_move():
     assert s == pytest.approx(-2.0) and 0.02 + s * 0.01 == pytest.approx(0.0)
 
 
+def test_rayleigh_damping_is_diagonal_in_the_modes_with_alpha_plus_beta_omega_squared():
+    K = multi_dof.chain_stiffness_matrix([8e6, 4e6])
+    M = multi_dof.lumped_mass_matrix([4000.0, 2000.0])
+    C = multi_dof.rayleigh_damping_matrix(M, K, 1.0, 1e-3)
+    # C = diag(4000, 2000) + 1e-3 K: C11 = 4000 + 12000, C12 = -4000, C22 = 2000 + 4000
+    assert C == pytest.approx(np.array([[16000.0, -4000.0], [-4000.0, 6000.0]]))
+    # numpy's eigenvectors of M^-1 K, scaled to phi^T M phi = 1: phi^T C phi = 1 + 1e-3 w^2
+    w2, vectors = np.linalg.eig(np.linalg.solve(M, K))
+    for w2_i, v in zip(w2, vectors.T):
+        v = v / np.sqrt(v @ M @ v)
+        assert v @ C @ v == pytest.approx(1.0 + 1e-3 * w2_i)
+
+
+def test_envelope_decay_time_is_that_many_damped_periods_by_the_logarithmic_decrement():
+    # omega_n = 10, zeta = 0.05, to a tenth: t = ln 10 / 0.5 = 4.60517 s
+    t = vibrations.envelope_decay_time(10.0, 0.05, 0.1)
+    assert t == pytest.approx(4.605170, rel=1e-6)
+    # the same as n = ln 10 / delta damped periods T_d = 2 pi / omega_d
+    delta = vibrations.logarithmic_decrement(0.05)
+    periods = np.log(10) / delta
+    assert t == pytest.approx(periods * 2 * np.pi / vibrations.damped_frequency(10.0, 0.05))
+
+
 # --- the exercises at fixed parameters ----------------------------------------------------
 
 def test_trough_rolling_cylinder_at_R_1_r_quarter(bank):
@@ -146,3 +169,15 @@ def test_damped_two_mass_system_at_omega_20(bank):
     assert a["phi1"] == pytest.approx(23.1986, rel=1e-4)
     # X2 = k2/(k2 - Omega^2 m2) X1 = (20000/12000) * 19.696 = 32.827 mm
     assert a["X2"] == pytest.approx(32.827, rel=1e-4)
+
+
+def test_rayleigh_damped_two_storey_model(bank):
+    a = answers(bank, "rayleigh-damping-modes", m1=4000.0, m2=2000.0, k1=8e6, k2=4e6, alpha=1.0,
+                beta=1e-3)
+    # 8e6 w^4 - 4e10 w^2 + 3.2e13 = 0: w^2 = 1000 and 4000, w1 = 31.6228, w2 = 63.2456 rad/s
+    # zeta1 = 1/(2*31.6228) + 1e-3*31.6228/2 = 0.0158114 + 0.0158114 = 0.0316228
+    # zeta2 = 1/(2*63.2456) + 1e-3*63.2456/2 = 0.0079057 + 0.0316228 = 0.0395285
+    assert a["zeta1"] == pytest.approx(0.0316228, rel=1e-5)
+    assert a["zeta2"] == pytest.approx(0.0395285, rel=1e-5)
+    # zeta1 w1 = 0.0316228 * 31.6228 = 1.0 1/s: t = ln 10 / 1.0 = 2.302585 s
+    assert a["t_decay"] == pytest.approx(2.302585, rel=1e-5)

@@ -209,3 +209,12 @@ def node_position(x: Quantity, theta: Quantity) -> Quantity:
     The point at the distance s ahead moves x + s theta; negative s lies behind.
     """
     return -x / theta
+
+
+def rayleigh_damping_matrix(M: ArrayLike, K: ArrayLike, alpha: Quantity, beta: Quantity) -> np.ndarray:
+    """Proportional (Rayleigh) damping matrix C = alpha M + beta K, Section 4.4.4.
+
+    It is diagonal in the undamped modes, with the modal damping ratios
+    zeta_i = alpha / (2 omega_i) + beta omega_i / 2 (:func:`modal_damping_ratios`).
+    """
+    return alpha * as_floats(M) + beta * as_floats(K)

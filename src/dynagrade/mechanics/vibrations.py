@@ -315,3 +315,9 @@ def equivalent_weight(masses: ArrayLike, ratios: ArrayLike, g: Quantity) -> floa
     masses = np.asarray(masses, dtype=float)
     ratios = np.asarray(ratios, dtype=float)
     return float(g * np.sum(masses * ratios))
+
+
+def envelope_decay_time(omega_n: Quantity, zeta: Quantity, ratio: Quantity) -> Quantity:
+    """Time t = ln(1/ratio) / (zeta omega_n) in which the envelope e^{-zeta omega_n t} of an
+    underdamped free vibration falls to ``ratio`` of its start, Section 4.3.2."""
+    return np.log(1.0 / ratio) / (zeta * omega_n)
