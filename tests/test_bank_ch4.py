@@ -70,6 +70,22 @@ def test_envelope_decay_time_is_that_many_damped_periods_by_the_logarithmic_decr
     assert t == pytest.approx(periods * 2 * np.pi / vibrations.damped_frequency(10.0, 0.05))
 
 
+def test_u_tube_stiffness_is_the_curvature_of_the_liquids_potential_energy():
+    rho, A, g = 1000.0, 1e-4, 9.81
+
+    def V(x):
+        # the two legs' columns of heights h + x and h - x, centres at half height
+        h = 0.5
+        return rho * g * A * ((h + x) ** 2 / 2 + (h - x) ** 2 / 2)
+
+    d = 1e-3
+    curvature = (V(d) - 2 * V(0.0) + V(-d)) / d**2
+    assert vibrations.u_tube_stiffness(rho, A, g) == pytest.approx(curvature, rel=1e-6)
+    # 2 * 1000 * 9.81 * 1e-4 = 1.962 N/m; the column of 2 m weighs 1000 * 1e-4 * 2 = 0.2 kg
+    assert vibrations.u_tube_stiffness(rho, A, g) == pytest.approx(1.962)
+    assert vibrations.liquid_column_mass(rho, A, 2.0) == pytest.approx(0.2)
+
+
 # --- the exercises at fixed parameters ----------------------------------------------------
 
 def test_trough_rolling_cylinder_at_R_1_r_quarter(bank):
@@ -181,3 +197,15 @@ def test_rayleigh_damped_two_storey_model(bank):
     assert a["zeta2"] == pytest.approx(0.0395285, rel=1e-5)
     # zeta1 w1 = 0.0316228 * 31.6228 = 1.0 1/s: t = ln 10 / 1.0 = 2.302585 s
     assert a["t_decay"] == pytest.approx(2.302585, rel=1e-5)
+
+
+def test_u_tube_of_water_one_metre_long(bank):
+    a = answers(bank, "u-tube-liquid-column", rho=1000.0, d=10.0, L=1.0, h0=100.0)
+    # A = pi (0.01)^2 / 4 = 7.85398e-5 m^2: m_eq = 1000 * 7.85398e-5 * 1 = 0.0785398 kg = 78.5398 g
+    assert a["m_eq"] == pytest.approx(78.5398, rel=1e-5)
+    # k_eq = 2 * 1000 * 9.81 * 7.85398e-5 = 1.540951 N/m
+    assert a["k_eq"] == pytest.approx(1.540951, rel=1e-5)
+    # omega = sqrt(2 g / L) = sqrt(19.62) = 4.429447 rad/s, T = 2 pi / omega = 1.418512 s
+    assert a["T_period"] == pytest.approx(1.418512, rel=1e-5)
+    # v_max = omega h0 / 2 = 4.429447 * 0.05 = 0.221472 m/s
+    assert a["v_max"] == pytest.approx(0.221472, rel=1e-5)

@@ -321,3 +321,18 @@ def envelope_decay_time(omega_n: Quantity, zeta: Quantity, ratio: Quantity) -> Q
     """Time t = ln(1/ratio) / (zeta omega_n) in which the envelope e^{-zeta omega_n t} of an
     underdamped free vibration falls to ``ratio`` of its start, Section 4.3.2."""
     return np.log(1.0 / ratio) / (zeta * omega_n)
+
+
+def liquid_column_mass(rho: Quantity, A: Quantity, L: Quantity) -> Quantity:
+    """Equivalent mass m_eq = rho A L of a liquid column of length L (measured along a tube
+    of cross-section A) moving as one body, Section 4.3.1."""
+    return rho * A * L
+
+
+def u_tube_stiffness(rho: Quantity, A: Quantity, g: Quantity) -> Quantity:
+    """Equivalent stiffness k_eq = 2 rho g A of the liquid in a U-tube, Section 4.3.1.
+
+    Displacing the column by x along the tube raises one surface by x and lowers the other
+    by x: V = rho g A x^2 (a column x lifted by x), so V = k_eq x^2 / 2.
+    """
+    return 2.0 * rho * g * A
