@@ -209,3 +209,14 @@ def test_u_tube_of_water_one_metre_long(bank):
     assert a["T_period"] == pytest.approx(1.418512, rel=1e-5)
     # v_max = omega h0 / 2 = 4.429447 * 0.05 = 0.221472 m/s
     assert a["v_max"] == pytest.approx(0.221472, rel=1e-5)
+
+
+def test_spring_coupled_pendulums_released_from_four_degrees(bank):
+    a = answers(bank, "spring-coupled-pendulums", m1=1.0, m2=2.0, L=1.0, a=0.5, k=40.0, theta0=4.0)
+    # K11 = m1 g L + k a^2 = 9.81 + 40 * 0.25 = 19.81 N m; K12 = -k a^2 = -10 N m
+    assert a["K11"] == pytest.approx(19.81)
+    assert a["K12"] == pytest.approx(-10.0)
+    # theta0 = 4 deg = 0.0698132 rad: theta1'' = -19.81 * 0.0698132 / (1 * 1^2) = -1.383000 rad/s^2
+    assert a["theta1_ddot"] == pytest.approx(-1.383000, rel=1e-5)
+    # theta2'' = k a^2 theta0 / (m2 L^2) = 10 * 0.0698132 / 2 = 0.349066 rad/s^2
+    assert a["theta2_ddot"] == pytest.approx(0.349066, rel=1e-5)
