@@ -123,7 +123,8 @@ $K_{2 2}$ = {{ si.K22 }} N·m.
    $$s = \frac{K_{12}}{K_{11} - \omega^2 m}:$$
    $s_1$ = {{ answers.s1 }} and $s_2$ = {{ answers.s2 }}. **Check.** Where a node lies
    far outside the wheelbase, the mode is nearly a pure bounce; a node near $G$ marks a
-   nearly pure pitch. With $K_{12} = 0$ both nodes would move to infinity and to $G$.
+   nearly pure pitch. With $K_{12} = 0$ one node would move to infinity (pure bounce), the
+   other to $G$ (pure pitch).
 """,
     solve=solve,
     checks=(

@@ -118,8 +118,8 @@ equivalent mass and stiffness, $\omega = \sqrt{k_{eq}/m_{eq}}$ (Section 4.3.1).
    $$\delta = \frac{(m + m_b/2)\,g}{k_{eq}}$$
    = {{ answers.delta }}. **Check.** Unlike a single mass on a spring, here
    $\omega^2 \ne g/\delta$: the bar's weight counts with the factor $1/2$, its inertia with
-   $1/3$. The moment equation about the hinge, integrated over one swing, gives back the
-   period {{ checks.integrated_swing }} s $= 1/f$.
+   $1/3$. The moment equation about the hinge, integrated over one swing, gives back
+   $f$ = {{ checks.integrated_swing }} Hz.
 """,
     solve=solve,
     checks=(

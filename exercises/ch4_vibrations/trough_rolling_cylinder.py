@@ -134,10 +134,9 @@ the trough's axis to the cylinder's axis.
    period of small oscillations?
 """,
     solution=r"""
-One generalized coordinate, $\theta$, and Lagrange's equation
-$\frac{d}{dt}\frac{\partial T}{\partial\dot\theta} - \frac{\partial T}{\partial\theta}
-+ \frac{\partial V}{\partial\theta} = 0$ (Section 4.1); rolling without slipping is a
-constraint that ties the cylinder's spin to $\dot\theta$.
+One generalized coordinate, $\theta$, and Lagrange's equation (Section 4.1)
+$$\frac{d}{dt}\frac{\partial T}{\partial\dot\theta} - \frac{\partial T}{\partial\theta} + \frac{\partial V}{\partial\theta} = 0;$$
+rolling without slipping is a constraint that ties the cylinder's spin to $\dot\theta$.
 
 1. **Equation of motion.** The cylinder's axis moves on a circle of radius $R - r$ at the
    speed $(R - r)\dot\theta$. Its contact point is at rest, so it spins at

@@ -111,8 +111,9 @@ The undamped chain under harmonic forcing, $\mathbf M\ddot{\mathbf x} + \mathbf 
 $\mathbf M = \operatorname{diag}(m_1, m_2)$, $K_{11} = k_1 + k_2$, $K_{12} = K_{2 1} = -k_2$,
 $K_{2 2} = k_2$ and $\mathbf F = (0, F_0)$. The ansatz $\mathbf x = \mathbf X\cos\Omega t$
 turns it into $(\mathbf K - \Omega^2\mathbf M)\mathbf X = \mathbf F$. Here
-$\Omega = 2\pi f$ = {{ si.Omega }} rad/s, between or beside the natural frequencies
-{{ si.omega1 }} rad/s and {{ si.omega2 }} rad/s.
+$\Omega = 2\pi f$ = {{ si.Omega }} rad/s; the natural frequencies, where
+$\det(\mathbf K - \Omega^2\mathbf M)$ vanishes, are {{ si.omega1 }} rad/s and
+{{ si.omega2 }} rad/s.
 
 1. **Amplitudes.** With $\Delta = (k_1 + k_2 - \Omega^2 m_1)(k_2 - \Omega^2 m_2) - k_2^2$,
    Cramer's rule gives
