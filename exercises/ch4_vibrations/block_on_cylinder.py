@@ -102,7 +102,7 @@ EXERCISE = Exercise(
     topics=("equilibrium", "stability", "potential energy", "rolling", "linearization"),
     params=(
         Uniform("m", 0.5, 10.0, step=0.5, unit="kg", symbol="m"),
-        Uniform("R", 0.05, 0.4, step=0.01, unit="m", symbol="R"),
+        Uniform("R", 0.05, 0.3, step=0.01, unit="m", symbol="R"),
         Uniform("w", 0.05, 0.5, step=0.01, unit="m", symbol="w"),
         Uniform("h", 0.1, 0.6, step=0.01, unit="m", symbol="h"),
         Constant("g", 9.81, unit="m/s^2", symbol="g"),
