@@ -183,3 +183,38 @@ def modal_free_response(t: ArrayLike, K: ArrayLike, M: ArrayLike, x0: ArrayLike,
             eta = vibrations.free_response(t, eta0[i], deta0[i], w[i], zeta[i])
         x += np.outer(Phi[:, i], eta)
     return x
+
+
+# --- issue 31, chapter 4 exercises: relations the new exercises need ----------------------
+
+def bounce_pitch_matrices(m: float, J: float, k1: float, k2: float, l1: float,
+                          l2: float) -> tuple[np.ndarray, np.ndarray]:
+    """(K, M) of a rigid body on two springs in bounce and pitch, q = (x, theta), Section 4.4.1.
+
+    x is the upward displacement of the centre of mass, theta the pitch angle
+    (counter-clockwise, front up); spring k1 sits the distance l1 ahead of the centre,
+    k2 the distance l2 behind it, so they stretch by x + l1 theta and x - l2 theta and
+    V = k1 (x + l1 theta)^2 / 2 + k2 (x - l2 theta)^2 / 2, T = m x'^2 / 2 + J theta'^2 / 2.
+    The off-diagonal k1 l1 - k2 l2 couples bounce and pitch (static coupling).
+    """
+    c = k1 * l1 - k2 * l2
+    K = np.array([[k1 + k2, c], [c, k1 * l1**2 + k2 * l2**2]], dtype=float)
+    return K, lumped_mass_matrix([m, J])
+
+
+def node_position(x: Quantity, theta: Quantity) -> Quantity:
+    """Distance s = -x/theta ahead of the reference point of the point of a rigid body that a
+    mode (x, theta) of bounce and pitch leaves at rest, Section 4.4.2.
+
+    The point at the distance s ahead moves x + s theta; negative s lies behind.
+    """
+    return -x / theta
+
+
+def rayleigh_damping_matrix(M: ArrayLike, K: ArrayLike, alpha: Quantity, beta: Quantity) -> np.ndarray:
+    """Proportional (Rayleigh) damping matrix C = alpha M + beta K, Section 4.4.4.
+
+    It is diagonal in the undamped modes, with the modal damping ratios
+    zeta_i = alpha / (2 omega_i) + beta omega_i / 2 (:func:`modal_damping_ratios`).
+    """
+    return alpha * as_floats(M) + beta * as_floats(K)

@@ -300,3 +300,39 @@ def transmitted_force_amplitude(X: Quantity, k: Quantity, c: Quantity,
                                 Omega: Quantity) -> Quantity:
     """Amplitude F_T = X sqrt(k^2 + (c Omega)^2) of the force spring and damper pass to the ground, Section 4.3.3."""
     return X * np.sqrt(k**2 + (c * Omega) ** 2)
+
+
+# --- issue 31, chapter 4 exercises: relations the new exercises need ----------------------
+
+def equivalent_weight(masses: ArrayLike, ratios: ArrayLike, g: Quantity) -> float:
+    """Generalized gravity force W_eq = g sum_i m_i (d u_i / d q) of a 1-DOF system, Section 4.3.1.
+
+    ``ratios`` are the downward displacements of the bodies' centres of mass per unit
+    generalized coordinate (the same transmission ratios as in :func:`equivalent_mass`, but
+    not squared: gravity does the virtual work W_eq dq). The static deflection of the
+    coordinate on a spring of stiffness k_eq is W_eq / k_eq.
+    """
+    masses = np.asarray(masses, dtype=float)
+    ratios = np.asarray(ratios, dtype=float)
+    return float(g * np.sum(masses * ratios))
+
+
+def envelope_decay_time(omega_n: Quantity, zeta: Quantity, ratio: Quantity) -> Quantity:
+    """Time t = ln(1/ratio) / (zeta omega_n) in which the envelope e^{-zeta omega_n t} of an
+    underdamped free vibration falls to ``ratio`` of its start, Section 4.3.2."""
+    return np.log(1.0 / ratio) / (zeta * omega_n)
+
+
+def liquid_column_mass(rho: Quantity, A: Quantity, L: Quantity) -> Quantity:
+    """Equivalent mass m_eq = rho A L of a liquid column of length L (measured along a tube
+    of cross-section A) moving as one body, Section 4.3.1."""
+    return rho * A * L
+
+
+def u_tube_stiffness(rho: Quantity, A: Quantity, g: Quantity) -> Quantity:
+    """Equivalent stiffness k_eq = 2 rho g A of the liquid in a U-tube, Section 4.3.1.
+
+    Displacing the column by x along the tube raises one surface by x and lowers the other
+    by x: V = rho g A x^2 (a column x lifted by x), so V = k_eq x^2 / 2.
+    """
+    return 2.0 * rho * g * A
