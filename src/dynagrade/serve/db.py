@@ -420,6 +420,12 @@ class Draft:
     saved_at: dt.datetime
 
 
+_DELETE_DRAFTS = drafts.delete().where(
+    _bound(drafts.c.exam_id, drafts.c.student_id, drafts.c.exercise_id),
+    drafts.c.part.in_(sa.bindparam("parts", expanding=True)))
+_INSERT_DRAFTS = drafts.insert()
+
+
 def save_drafts(engine: sa.Engine, exam_id: str, student_id: str, exercise_id: str,
                 texts: dict[str, str]) -> None:
     """Keep ``texts`` (part -> text) as the student's drafts of an exercise, replacing
@@ -428,20 +434,21 @@ def save_drafts(engine: sa.Engine, exam_id: str, student_id: str, exercise_id: s
         return
     key = {"exam_id": exam_id, "student_id": student_id, "exercise_id": exercise_id}
     with _writing(engine), engine.begin() as connection:
-        connection.execute(drafts.delete().where(
-            drafts.c.exam_id == exam_id, drafts.c.student_id == student_id,
-            drafts.c.exercise_id == exercise_id, drafts.c.part.in_(list(texts))))
-        connection.execute(drafts.insert(), [
+        connection.execute(_DELETE_DRAFTS, {**key, "parts": list(texts)})
+        connection.execute(_INSERT_DRAFTS, [
             {**key, "part": part, "text": text, "saved_at": now()}
             for part, text in texts.items()])
+
+
+_DRAFTS_OF = sa.select(drafts.c.exercise_id, drafts.c.part, drafts.c.text,
+                       drafts.c.saved_at).where(_bound(drafts.c.exam_id, drafts.c.student_id))
 
 
 def student_drafts(engine: sa.Engine, exam_id: str, student_id: str) -> list[Draft]:
     """Every draft of a student."""
     with engine.connect() as connection:
-        rows = connection.execute(sa.select(
-            drafts.c.exercise_id, drafts.c.part, drafts.c.text, drafts.c.saved_at).where(
-            drafts.c.exam_id == exam_id, drafts.c.student_id == student_id)).all()
+        rows = connection.execute(_DRAFTS_OF, {"exam_id": exam_id,
+                                               "student_id": student_id}).all()
     return [Draft(*row) for row in rows]
 
 
@@ -604,8 +611,8 @@ def record_submission(engine: sa.Engine, exam_id: str, student_id: str, exercise
 def student_answers(engine: sa.Engine, exam_id: str, student_id: str) -> list[StoredAnswer]:
     """Every answer a student submitted, oldest first."""
     with engine.connect() as connection:
-        return _answers(connection, sa.and_(submissions.c.exam_id == exam_id,
-                                            submissions.c.student_id == student_id))
+        return [StoredAnswer(*row) for row in connection.execute(
+            _ANSWERS_OF_STUDENT, {"exam_id": exam_id, "student_id": student_id})]
 
 
 def all_answers(engine: sa.Engine, exam_id: str) -> list[StoredAnswer]:
@@ -642,6 +649,10 @@ def _answer_columns() -> tuple:
 _ANSWERS_OF_SUBMISSION = sa.select(*_answer_columns()).select_from(
     answers.join(submissions)).where(
     submissions.c.id == sa.bindparam("submission_id")).order_by(answers.c.id)
+_ANSWERS_OF_STUDENT = sa.select(*_answer_columns()).select_from(
+    answers.join(submissions)).where(
+    _bound(submissions.c.exam_id, submissions.c.student_id)
+).order_by(submissions.c.id, answers.c.id)
 
 
 def _answers(connection, condition) -> list[StoredAnswer]:

@@ -114,7 +114,7 @@ async def submit(state, student_id: str, exercise_id, answers, key: str | None,
     reads = await run_in_threadpool(db.submit_reads, state.engine, data.exam_id, student_id,
                                     exercise_id, key, counted, counted and only_changed)
     rules = allowances.rules_from(policy, reads.terms, reads.started)
-    if reads.stored is not None:
+    if key is not None and reads.stored is not None:  # a retry: the stored submit
         return _replay(data, rules, student_id, reads.stored, now, key)
     key = key or uuid.uuid4().hex
     if counted:
