@@ -5,6 +5,7 @@ coupling between them and where the centre of mass would have to sit to remove i
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import angle_arc, arrow, block, describe, dimension, ground, \
     new_drawing, spring
@@ -30,8 +31,7 @@ def solve(p):
 def _apart(p):
     """The magnitudes of the numeric answers differ by 5 % or more."""
     s = solve(p)
-    v = sorted(abs(s[k]) for k in ("K12", "K22", "l1_star", "theta_ddot0"))
-    return all(b >= 1.05 * a for a, b in zip(v, v[1:]))
+    return numbers_apart(abs(s[k]) for k in ("K12", "K22", "l1_star", "theta_ddot0"))
 
 
 def _potential(x, theta, p):

@@ -4,6 +4,7 @@ point of the body each mode leaves at rest (Section 4.4.2)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import describe, dimension, ground, new_drawing, spring
 from dynagrade.mechanics import multi_dof, vibrations
@@ -47,8 +48,7 @@ def _apart(p):
     if abs(p.k1 * p.l1 - p.k2 * p.l2) < 0.2 * p.k1 * p.l1:   # the coupling constraint rejects it
         return True
     s = solve(p)
-    v = sorted(abs(s[k]) for k in ("f1", "f2", "s1", "s2"))
-    return all(b >= 1.05 * a for a, b in zip(v, v[1:]))
+    return numbers_apart(abs(s[k]) for k in ("f1", "f2", "s1", "s2"))
 
 
 def _guess_off(guess, key):

@@ -4,6 +4,7 @@ the driven mass and the amplitude of the attached mass (Section 4.4.3)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import arrow, block, damper, describe, ground, new_drawing, \
     spring, wall
@@ -64,9 +65,8 @@ def _fair(p):
     """The lag is between 10 and 170 degrees (damping matters) and the answers (mm, rad,
     mm) differ by 5 % or more."""
     s = solve(p)
-    v = sorted((1e3 * s["X1"], s["phi1"], 1e3 * s["X2"]))
     return (np.radians(10) <= s["phi1"] <= np.radians(170)
-            and all(b >= 1.05 * a for a, b in zip(v, v[1:])))
+            and numbers_apart((1e3 * s["X1"], s["phi1"], 1e3 * s["X2"])))
 
 
 def figure(p):

@@ -6,6 +6,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Uniform,
                                 per_draw)
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Integrated, Recompute
 from dynagrade.exercise.figure import block, describe, dimension, ground, new_drawing, pivot, \
     spring
@@ -31,8 +32,7 @@ def solve(p):
 def _apart(p):
     """The answers in the parts' units (delta in mm) differ by 5 % or more."""
     s = solve(p)
-    v = sorted((s["m_eq"], s["k_eq"], s["f"], 1e3 * s["delta"]))
-    return all(b >= 1.05 * a for a, b in zip(v, v[1:]))
+    return numbers_apart((s["m_eq"], s["k_eq"], s["f"], 1e3 * s["delta"]))
 
 
 def _swing(t, y, p):

@@ -4,6 +4,7 @@ damping ratios and how fast the first mode dies out (Section 4.4.4)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import block, describe, ground, new_drawing, spring
 from dynagrade.mechanics import multi_dof, vibrations
@@ -70,8 +71,7 @@ def _fair(p):
     part is 10 % to 90 % of zeta1)."""
     s = solve(p)
     share = _mass_part(p) / s["zeta1"]
-    v = sorted((s["zeta1"], s["zeta2"], s["t_decay"]))
-    return all(b >= 1.05 * a for a, b in zip(v, v[1:])) and 0.1 <= share <= 0.9
+    return numbers_apart((s["zeta1"], s["zeta2"], s["t_decay"])) and 0.1 <= share <= 0.9
 
 
 def figure(p):

@@ -7,6 +7,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Uniform,
                                 per_draw)
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import angle_arc, ceiling, describe, new_drawing, spring
 
@@ -75,8 +76,7 @@ def _hessian_entry(p, i, j, d=1e-4):
 def _fair(p):
     """The magnitudes of the answers differ by 5 % or more."""
     s = solve(p)
-    v = sorted(abs(s[k]) for k in ("K11", "K12", "theta1_ddot", "theta2_ddot"))
-    return all(b >= 1.05 * a for a, b in zip(v, v[1:]))
+    return numbers_apart(abs(s[k]) for k in ("K11", "K12", "theta1_ddot", "theta2_ddot"))
 
 
 def figure(p):

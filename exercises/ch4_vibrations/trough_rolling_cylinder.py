@@ -8,6 +8,7 @@ import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
                                 Variable, per_draw)
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Integrated, Recompute
 from dynagrade.exercise.figure import angle_arc, describe, new_drawing
 from dynagrade.mechanics import vibrations
@@ -63,8 +64,7 @@ def _apart(p):
     """Any two numeric answers (their magnitudes in the parts' units) differ by 5 % or more."""
     if p.r > 0.5 * p.R:        # the first constraint rejects this draw
         return True
-    v = sorted(abs(x) for x in solve(p).values())
-    return all(b >= 1.05 * a for a, b in zip(v, v[1:]))
+    return numbers_apart(abs(x) for x in solve(p).values())
 
 
 def _roll(t, y, p):

@@ -5,6 +5,7 @@ stands still (Section 4.4.3)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import arrow, block, describe, ground, new_drawing, spring, wall
 from dynagrade.mechanics import multi_dof, vibrations
@@ -52,8 +53,7 @@ def _fair(p):
     s = solve(p)
     if any(abs(s["Omega"] / w - 1) < 0.1 for w in (s["omega1"], s["omega2"], 2 * np.pi * s["f_a"])):
         return False
-    v = sorted((abs(1e3 * s["X1"]), abs(1e3 * s["X2"]), s["f_a"]))
-    return all(b >= 1.05 * a for a, b in zip(v, v[1:]))
+    return numbers_apart((abs(1e3 * s["X1"]), abs(1e3 * s["X2"]), s["f_a"]))
 
 
 def figure(p):

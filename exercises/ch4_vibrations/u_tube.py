@@ -5,6 +5,7 @@ import numpy as np
 
 from dynagrade.exercise import (Choice, Constant, Constraint, Exercise, Misconception, Numeric,
                                 Uniform, per_draw)
+from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Balance, Integrated, Recompute
 from dynagrade.exercise.figure import describe, dimension, new_drawing
 from dynagrade.mechanics import stiffness, vibrations
@@ -29,8 +30,7 @@ def _slosh(t, y, p):
 def _fair(p):
     """The answers (g, N/m, s, m/s) differ by 5 % or more."""
     s = solve(p)
-    v = sorted((1e3 * s["m_eq"], s["k_eq"], s["T_period"], s["v_max"]))
-    return all(b >= 1.05 * a for a, b in zip(v, v[1:]))
+    return numbers_apart((1e3 * s["m_eq"], s["k_eq"], s["T_period"], s["v_max"]))
 
 
 def figure(p):
