@@ -1,0 +1,62 @@
+"""Chapter 5's new exercises (issue 31): each key at fixed parameters against a hand
+calculation, written out in the comments, and every exercise's draws able to tell its
+parts apart (no two answers of different meaning within 10 % of each other, every option
+of a choice part the answer of a fair share of students)."""
+
+import itertools
+import math
+
+import pytest
+
+from dynagrade.exercise import open_bank
+
+BANK = open_bank()
+NEW = ("motor-on-simply-supported-beam",)
+
+
+def _answers(exercise_id, **values):
+    """The exercise's answers, in its parts' units, at the given declared values."""
+    return BANK.get(exercise_id).variant_set(0, values).answers
+
+
+@pytest.mark.parametrize("exercise_id", NEW)
+def test_no_two_numeric_answers_of_a_variant_lie_within_ten_percent_of_each_other(exercise_id):
+    exercise = BANK.get(exercise_id)
+    for seed in range(60):
+        variant = exercise.variant(seed)
+        solved = exercise.solve(exercise.si(variant.params))
+        numbers = {}
+        for part in exercise.parts:
+            shown = variant.answers[part.name]
+            if isinstance(shown, str):
+                continue
+            si = solved[part.name]
+            pairs = zip(shown, si) if isinstance(shown, (tuple, list)) else [(shown, si)]
+            for i, (a, b) in enumerate(pairs):
+                numbers[(part.name, i)] = (abs(float(a)), abs(float(b)))
+        for (p1, (a1, s1)), (p2, (a2, s2)) in itertools.combinations(numbers.items(), 2):
+            assert abs(math.log(a1 / a2)) > math.log(1.1), (seed, p1, p2, a1, a2)
+            assert abs(math.log(s1 / s2)) > math.log(1.1), (seed, p1, p2, s1, s2)
+
+
+@pytest.mark.parametrize("exercise_id", NEW)
+def test_every_option_of_a_choice_part_is_the_answer_for_a_fifth_of_the_seeds_or_more(exercise_id):
+    exercise = BANK.get(exercise_id)
+    choices = [part for part in exercise.parts if hasattr(part, "options")]
+    answers = [exercise.variant(seed).answers for seed in range(100)]
+    for part in choices:
+        for option in part.options:
+            assert sum(a[part.name] == option for a in answers) >= 20, (part.name, option)
+
+
+def test_motor_on_beam_sags_and_vibrates_as_a_mass_on_48_E_I_over_L_cubed():
+    # I = 0.05 * 0.02^3 / 12 = 3.3333e-8 m^4; k = 48 * 200e9 * 3.3333e-8 / 2^3 = 40000 N/m
+    # delta = 10 * 9.81 / 40000 = 2.4525e-3 m = 2.4525 mm
+    # f = sqrt(40000 / 10) / (2 pi) = 63.2456 / 6.28319 = 10.0658 Hz
+    # 300 rpm = 31.416 rad/s < 63.246 rad/s: below; 1200 rpm = 125.66 rad/s: above
+    below = _answers("motor-on-simply-supported-beam", E=200, b=50, h=20, L=2.0, m=10, n=300)
+    assert below["delta"] == pytest.approx(2.4525, rel=1e-4)
+    assert below["f"] == pytest.approx(10.0658, rel=1e-4)
+    assert below["regime"] == "below resonance"
+    above = _answers("motor-on-simply-supported-beam", E=200, b=50, h=20, L=2.0, m=10, n=1200)
+    assert above["regime"] == "above resonance"
