@@ -11,7 +11,7 @@ import pytest
 from dynagrade.exercise import open_bank
 
 BANK = open_bank()
-NEW = ("motor-on-simply-supported-beam",)
+NEW = ("motor-on-simply-supported-beam", "heavy-beam-midspan-mass")
 
 
 def _answers(exercise_id, **values):
@@ -60,3 +60,13 @@ def test_motor_on_beam_sags_and_vibrates_as_a_mass_on_48_E_I_over_L_cubed():
     assert below["regime"] == "below resonance"
     above = _answers("motor-on-simply-supported-beam", E=200, b=50, h=20, L=2.0, m=10, n=1200)
     assert above["regime"] == "above resonance"
+
+
+def test_heavy_beam_adds_seventeen_thirty_fifths_of_its_mass_at_midspan():
+    # m_b = 7800 * 0.1 * 0.02 * 2 = 31.2 kg; m_eff = 17/35 * 31.2 = 15.1543 kg
+    # k = 48 * 200e9 * (0.1 * 0.02^3 / 12) / 2^3 = 80000 N/m
+    # f = sqrt(80000 / (30 + 15.1543)) / (2 pi) = 42.0916 / 6.28319 = 6.6991 Hz
+    # (the massless beam would give sqrt(80000 / 30) / (2 pi) = 8.2187 Hz)
+    answers = _answers("heavy-beam-midspan-mass", E=200, rho=7800, b=100, h=20, L=2.0, m=30)
+    assert answers["m_eff"] == pytest.approx(15.1543, rel=1e-4)
+    assert answers["f"] == pytest.approx(6.6991, rel=1e-4)
