@@ -12,7 +12,7 @@ from dynagrade.exercise import open_bank
 
 BANK = open_bank()
 NEW = ("motor-on-simply-supported-beam", "heavy-beam-midspan-mass",
-       "colliding-rods")
+       "colliding-rods", "suddenly-loaded-rod")
 
 
 def _answers(exercise_id, **values):
@@ -81,3 +81,14 @@ def test_colliding_rods_meet_at_half_speed_for_two_striker_transit_times():
     assert answers["sigma"] == pytest.approx(60.0, rel=1e-9)
     assert answers["t_c"] == pytest.approx(80.0, rel=1e-9)
     assert answers["v2"] == pytest.approx(1.2, rel=1e-9)
+
+
+def test_a_suddenly_pulled_rod_doubles_stress_at_the_clamp_and_overshoots_twice_static():
+    # A = pi 0.02^2 / 4 = 3.14159e-4 m^2; F/A = 20000 / 3.14159e-4 = 63.662 MPa; c = 5000 m/s
+    # v = 63.662e6 / (8000 * 5000) = 1.59155 m/s; sigma_max = 2 F/A = 127.324 MPa
+    # t = L / c = 2 / 5000 = 0.4 ms; u_max = 2 * 20000 * 2 / (200e9 * 3.14159e-4) = 1.27324 mm
+    answers = _answers("suddenly-loaded-rod", E=200, rho=8000, d=20, L=2.0, F=20)
+    assert answers["v_end"] == pytest.approx(1.59155, rel=1e-5)
+    assert answers["sigma_max"] == pytest.approx(127.324, rel=1e-5)
+    assert answers["t_max"] == pytest.approx(0.4, rel=1e-9)
+    assert answers["u_max"] == pytest.approx(1.27324, rel=1e-5)
