@@ -4,6 +4,7 @@ velocity (Section 5.3.1)."""
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import answers_apart
 from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.exercise.figure import arrow, block, describe, dimension, new_drawing
 from dynagrade.exercise.numbers import format_number
@@ -21,11 +22,6 @@ def solve(p):
     v_i = rods.interface_velocity(Z, Z, p.v)
     return {"sigma": rods.impact_stress(p.rho, c, v_i), "t_c": rods.contact_duration(p.L1, c),
             "v2": p.v * p.L1 / p.L2, "c": c, "v_i": v_i}
-
-
-def _apart(a, b):
-    """Two numbers more than 10 % apart."""
-    return abs(np.log(a / b)) > np.log(1.1)
 
 
 def _energy_of_the_pulse(p, s):
@@ -73,10 +69,8 @@ EXERCISE = Exercise(
     ),
     constraints=(
         Constraint("the struck rod is at least 30 % longer than the striker", lambda p: p.L2 >= 1.3 * p.L1),
-        Constraint("the stress in MPa, the contact time in µs and the velocity in m/s are over 10 % apart",
-                   lambda p: _apart(solve(p)["sigma"] / 1e6, solve(p)["t_c"] / 1e-6)
-                   and _apart(solve(p)["sigma"] / 1e6, solve(p)["v2"])
-                   and _apart(solve(p)["t_c"] / 1e-6, solve(p)["v2"])),
+        Constraint("the stress, the contact time and the velocity are over 10 % apart in SI and in MPa, µs, m/s",
+                   lambda p: answers_apart(solve(p), {"sigma": 1e6, "t_c": 1e-6, "v2": 1.0})),
     ),
     statement="""
 Two slender rods of the same material ($E$ = {{ E }}, $\\rho$ = {{ rho }}) and the same

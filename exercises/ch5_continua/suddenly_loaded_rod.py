@@ -1,11 +1,10 @@
 """A clamped rod whose free end is suddenly pulled by a constant force: the end's velocity,
 the doubled stress at the clamp and the end's largest displacement (Section 5.3.1)."""
 
-import itertools
-
 import numpy as np
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
+from dynagrade.exercise.apart import answers_apart
 from dynagrade.exercise.checks import Recompute
 from dynagrade.exercise.figure import arrow, block, describe, dimension, new_drawing, wall
 from dynagrade.exercise.numbers import format_number
@@ -31,16 +30,6 @@ def solve(p):
             "t_max": rods.travel_time(p.L, c),
             "u_max": rods.step_load_peak_displacement(p.F, p.E, A, p.L),
             "A": A, "c": c, "sigma": p.F / A, "u_static": p.F * p.L / (p.E * A)}
-
-
-def _answers_apart(p):
-    """Every two answers more than 10 % apart, in SI and in their parts' units."""
-    s = solve(p)
-    for a, b in itertools.combinations(_UNITS, 2):
-        for scale_a, scale_b in ((1.0, 1.0), (_UNITS[a], _UNITS[b])):
-            if abs(np.log(s[a] / scale_a / (s[b] / scale_b))) <= np.log(1.1):
-                return False
-    return True
 
 
 def _end_displacement_by_modes(p, solved, modes=40_000):
@@ -90,7 +79,7 @@ EXERCISE = Exercise(
         Constraint("the rod stays elastic: 2 F / A at most 200 MPa",
                    lambda p: solve(p)["sigma_max"] <= 200e6),
         Constraint("the four answers are over 10 % apart in SI and in their parts' units",
-                   _answers_apart),
+                   lambda p: answers_apart(solve(p), _UNITS)),
     ),
     statement="""
 A slender round rod (diameter $d$ = {{ d }}, length $L$ = {{ L }}, $E$ = {{ E }},
