@@ -89,3 +89,36 @@ def test_the_clamped_end_of_a_suddenly_loaded_rod_carries_twice_the_applied_stre
     c = np.sqrt(E / rho)
     _, sigma_root = _fixed_free_modal_sum(F, E, rho, A, L, 0.0, 2 * L / c)
     assert rods.clamped_end_peak_stress(F / A) == pytest.approx(sigma_root, rel=1e-4)
+
+
+def _shaft_with_disk_chain(G, rho, I_p, L, J_disk, N=200):
+    """Lowest two angular frequencies of the shaft cut into N twisting springs G I_p N / L
+    with the inertia rho I_p L / N lumped at the nodes and the disk at the free end, from
+    numpy's symmetric eigen-solver (Sections 4.4.2 and 5.3.2)."""
+    h = L / N
+    k = G * I_p / h
+    J = np.full(N, rho * I_p * h)
+    J[-1] = rho * I_p * h / 2 + J_disk
+    K = 2 * k * np.eye(N) - k * np.eye(N, k=1) - k * np.eye(N, k=-1)
+    K[-1, -1] = k
+    scale = 1 / np.sqrt(J)
+    return np.sqrt(np.linalg.eigvalsh(scale[:, None] * K * scale[None, :])[:2])
+
+
+def test_a_shaft_with_a_disk_has_the_lumped_chains_lowest_two_frequencies():
+    G, rho, d, L, J_disk = 80e9, 7800.0, 0.04, 1.2, 0.02
+    I_p = np.pi * d**4 / 32  # 2.513e-7 m^4; the shaft's own inertia rho I_p L = 2.352e-3 kg m^2
+    chain = _shaft_with_disk_chain(G, rho, I_p, L, J_disk)
+    exact = rods.tip_mass_natural_frequencies(np.sqrt(G / rho), L, rho * I_p * L, J_disk, 2)
+    assert exact == pytest.approx(chain, rel=1e-4)
+
+
+def test_a_heavy_tip_turns_the_free_end_into_a_clamped_one_and_a_light_tip_leaves_it_free():
+    c, L = 3000.0, 1.0
+    heavy = rods.tip_mass_natural_frequencies(c, L, 1.0, 1e9, 3)
+    light = rods.tip_mass_natural_frequencies(c, L, 1.0, 1e-9, 3)
+    # heavy: k_1 L -> sqrt(ratio) = omega of a massless spring c/L sqrt(m_rod/m_tip), then pi, 2 pi
+    assert heavy[0] == pytest.approx(c / L * np.sqrt(1e-9), rel=1e-6)
+    assert heavy[1:] == pytest.approx([np.pi * c / L, 2 * np.pi * c / L], rel=1e-6)
+    # light: the fixed-free rod's (2 j - 1) pi c / (2 L)
+    assert light == pytest.approx([np.pi / 2 * c / L, 3 * np.pi / 2 * c / L, 5 * np.pi / 2 * c / L], rel=1e-6)

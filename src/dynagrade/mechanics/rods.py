@@ -165,3 +165,20 @@ def clamped_end_peak_stress(sigma: Quantity) -> Quantity:
     """Stress 2 sigma at a clamped end when a wave of stress sigma reflects there (the
     reflected wave has the same sign and adds to the incident one), Section 5.3.1."""
     return 2.0 * sigma
+
+
+def tip_mass_natural_frequencies(c: Quantity, L: Quantity, m_rod: Quantity, m_tip: Quantity,
+                                 n: int) -> np.ndarray:
+    """First n natural angular frequencies omega_j = c k_j of a fixed-free rod carrying a
+    tip mass (or of a shaft carrying a disk: m_rod and m_tip its and the disk's mass moments
+    of inertia about the axis), Sections 5.3.1-5.3.2.
+
+    k_j L is the root of kL tan(kL) = m_rod / m_tip in ((j - 1) pi, (j - 1/2) pi): between
+    a clamped end (heavy tip, (j - 1) pi) and a free one (light tip, (j - 1/2) pi).
+    """
+    from scipy.optimize import brentq
+    ratio = m_rod / m_tip
+    roots = [brentq(lambda kL: float(tip_mass_wavenumber_equation(kL, ratio)),
+                    (j - 1) * np.pi + 1e-12, (j - 0.5) * np.pi, xtol=1e-14)
+             for j in range(1, n + 1)]
+    return c * np.array(roots) / L
