@@ -13,7 +13,7 @@ from dynagrade.exercise import open_bank
 BANK = open_bank()
 NEW = ("motor-on-simply-supported-beam", "heavy-beam-midspan-mass",
        "colliding-rods", "suddenly-loaded-rod",
-       "shaft-with-end-disk")
+       "shaft-with-end-disk", "shaft-suddenly-driven")
 
 
 def _answers(exercise_id, **values):
@@ -105,3 +105,15 @@ def test_a_disk_on_a_heavy_shaft_vibrates_at_the_roots_of_kl_tan_kl_equal_to_the
     assert answers["J_s"] == pytest.approx(2.01062e-3, rel=1e-5)
     assert answers["f1"] == pytest.approx(469.285, rel=1e-5)
     assert answers["f2"] == pytest.approx(1755.20, rel=1e-5)
+
+
+def test_a_suddenly_driven_shaft_needs_rho_c_ip_omega_and_its_free_end_turns_at_twice_omega():
+    # c_T = sqrt(80e9 / 8000) = 3162.28 m/s; I_p = pi 0.04^4 / 32 = 2.51327e-7 m^4
+    # Omega = 300 rpm = 31.4159 rad/s; T = 8000 * 3162.28 * 2.51327e-7 * 31.4159 = 199.746 N m
+    # tau = rho c Omega d/2 = 8000 * 3162.28 * 31.4159 * 0.02 = 15.8953 MPa
+    # t = 10 / 3162.28 = 3.16228 ms; the free end turns at 2 * 31.4159 = 62.8319 rad/s
+    answers = _answers("shaft-suddenly-driven", G=80, rho=8000, d=40, L=10.0, Omega=300)
+    assert answers["T"] == pytest.approx(199.746, rel=1e-5)
+    assert answers["tau"] == pytest.approx(15.8953, rel=1e-5)
+    assert answers["t_end"] == pytest.approx(3.16228, rel=1e-5)
+    assert answers["Omega_end"] == pytest.approx(62.8319, rel=1e-5)

@@ -122,3 +122,24 @@ def test_a_heavy_tip_turns_the_free_end_into_a_clamped_one_and_a_light_tip_leave
     assert heavy[1:] == pytest.approx([np.pi * c / L, 2 * np.pi * c / L], rel=1e-6)
     # light: the fixed-free rod's (2 j - 1) pi c / (2 L)
     assert light == pytest.approx([np.pi / 2 * c / L, 3 * np.pi / 2 * c / L, 5 * np.pi / 2 * c / L], rel=1e-6)
+
+
+def test_a_torsional_wave_carries_as_much_power_as_its_torque_puts_in():
+    # energy flux: c (kinetic + strain energy per length) = c (rho I_p W^2 / 2 + G I_p (W/c)^2 / 2)
+    G, rho, I_p, W = 80e9, 8000.0, 2.5e-7, 30.0
+    c = np.sqrt(G / rho)
+    T = rods.torsional_impedance(rho, c, I_p) * W  # the torque of the wave
+    assert T * W == pytest.approx(c * (rho * I_p * W**2 / 2 + G * I_p * (W / c) ** 2 / 2))
+    # shear strain at the surface r theta_x = r W / c: tau = G r W / c
+    r = 0.02
+    assert rods.torsion_shear_stress(T, r, I_p) == pytest.approx(G * r * W / c)
+
+
+def test_a_free_end_moves_at_twice_the_waves_velocity_by_the_dalembert_solution():
+    # an incoming step f(x - c t) and its mirror image g = -f(2L - ...) in displacement,
+    # u = f(x - c t) + f(2 L - x - c t) with f(s) = -v s / c for s < 0: at x = L, u_t = 2 v
+    c, L, v, t = 5000.0, 1.0, 0.7, 1.5 / 5000.0
+    f = lambda s: np.where(s < 0, -v * s / c, 0.0)  # noqa: E731
+    u = lambda time: rods.dalembert_displacement(L, time, c, f, lambda s: f(2 * L - s))  # noqa: E731
+    dt = 1e-9
+    assert (u(t + dt) - u(t - dt)) / (2 * dt) == pytest.approx(rods.free_end_velocity(v), rel=1e-6)

@@ -182,3 +182,21 @@ def tip_mass_natural_frequencies(c: Quantity, L: Quantity, m_rod: Quantity, m_ti
                     (j - 1) * np.pi + 1e-12, (j - 0.5) * np.pi, xtol=1e-14)
              for j in range(1, n + 1)]
     return c * np.array(roots) / L
+
+
+def torsional_impedance(rho: Quantity, c_T: Quantity, I_p: Quantity) -> Quantity:
+    """Torsional impedance rho c_T I_p of a round shaft: the torque T = rho c_T I_p Omega
+    that a torsional wave of angular velocity Omega carries, Section 5.3.2."""
+    return rho * c_T * I_p
+
+
+def torsion_shear_stress(T: Quantity, r: Quantity, I_p: Quantity) -> Quantity:
+    """Shear stress tau = T r / I_p at the radius r of a round shaft carrying the torque T,
+    Section 5.3.2."""
+    return T * r / I_p
+
+
+def free_end_velocity(v: Quantity) -> Quantity:
+    """Velocity 2 v of a free end while a wave of particle velocity v reflects there (the
+    reflected wave doubles the velocity and cancels the force), Sections 5.3.1-5.3.2."""
+    return 2.0 * v
