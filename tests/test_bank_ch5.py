@@ -13,7 +13,8 @@ from dynagrade.exercise import open_bank
 BANK = open_bank()
 NEW = ("motor-on-simply-supported-beam", "heavy-beam-midspan-mass",
        "colliding-rods", "suddenly-loaded-rod",
-       "shaft-with-end-disk", "shaft-suddenly-driven")
+       "shaft-with-end-disk", "shaft-suddenly-driven",
+       "tuned-free-free-bar")
 
 
 def _answers(exercise_id, **values):
@@ -117,3 +118,14 @@ def test_a_suddenly_driven_shaft_needs_rho_c_ip_omega_and_its_free_end_turns_at_
     assert answers["tau"] == pytest.approx(15.8953, rel=1e-5)
     assert answers["t_end"] == pytest.approx(3.16228, rel=1e-5)
     assert answers["Omega_end"] == pytest.approx(62.8319, rel=1e-5)
+
+
+def test_a_glockenspiel_bar_for_1000_hz_is_227_mm_long_with_nodes_at_0_224_of_it():
+    # E h^2 / (12 rho) = 200e9 * 0.01^2 / 96000 = 208.333 m^4/s^2, its fourth root 3.79918
+    # L = 4.730041 * 3.79918 / sqrt(2 pi 1000) = 4.730041 * 3.79918 / 79.2665 = 226.707 mm
+    # node of the first free-free mode at 0.22416 L = 50.819 mm
+    # f2 = 1000 * (7.853205 / 4.730041)^2 = 2756.54 Hz
+    answers = _answers("tuned-free-free-bar", E=200, rho=8000, h=10, f1=1000)
+    assert answers["L"] == pytest.approx(226.707, rel=1e-5)
+    assert answers["x_n"] == pytest.approx(50.819, rel=1e-4)
+    assert answers["f2"] == pytest.approx(2756.54, rel=1e-5)

@@ -143,3 +143,35 @@ def test_a_free_end_moves_at_twice_the_waves_velocity_by_the_dalembert_solution(
     u = lambda time: rods.dalembert_displacement(L, time, c, f, lambda s: f(2 * L - s))  # noqa: E731
     dt = 1e-9
     assert (u(t + dt) - u(t - dt)) / (2 * dt) == pytest.approx(rods.free_end_velocity(v), rel=1e-6)
+
+
+def test_a_free_free_mode_shape_has_no_moment_and_no_shear_at_either_end():
+    from dynagrade.mechanics import beams
+
+    L, h = 0.3, 1e-4
+    for j in (1, 2):
+        W = lambda x: beams.free_free_mode_shape(x, L, j)  # noqa: E731
+        for end in (2 * h, L - 2 * h):  # second and third central differences near each end
+            w2 = (W(end + h) - 2 * W(end) + W(end - h)) / h**2
+            w3 = (W(end + 2 * h) - 2 * W(end + h) + 2 * W(end - h) - W(end - 2 * h)) / (2 * h**3)
+            bL = beams.beam_eigenvalues("free-free", j)[-1]
+            assert abs(w2) < 2e-2 * (bL / L) ** 2 and abs(w3) < 2e-2 * (bL / L) ** 3
+
+
+def test_the_first_free_free_mode_rests_at_0_2242_of_the_length_from_each_end():
+    from dynagrade.mechanics import beams
+
+    # the classical nodes of a xylophone bar's fundamental: 0.224 L and 0.776 L
+    nodes = beams.free_free_nodes(2.0, 1)
+    assert nodes == pytest.approx([2 * 0.22416, 2 * (1 - 0.22416)], abs=2e-5)
+    assert len(beams.free_free_nodes(2.0, 2)) == 3
+    assert beams.free_free_nodes(2.0, 2)[1] == pytest.approx(1.0, abs=1e-9)  # mode 2: middle
+
+
+def test_the_length_for_a_frequency_gives_that_frequency_back():
+    from dynagrade.mechanics import beams
+
+    EI, rhoA, omega = 12.0, 0.8, 2 * np.pi * 440
+    for support in ("free-free", "cantilever"):
+        L = beams.beam_length_for_frequency(omega, EI, rhoA, support)
+        assert beams.beam_natural_frequencies(EI, rhoA, L, support, 1)[0] == pytest.approx(omega, rel=1e-12)
