@@ -129,7 +129,7 @@ def free_free_nodes(L: Quantity, j: int) -> np.ndarray:
     from scipy.optimize import brentq
     # an even count of points: the middle, a node of the even modes, falls between two
     grid = np.linspace(0.0, L, 40 * (j + 2))
-    values = free_free_mode_shape(grid, L, j)
+    values = np.asarray(free_free_mode_shape(grid, L, j))
     return np.array([brentq(lambda x: float(free_free_mode_shape(x, L, j)), a, b, xtol=1e-15)
                      for a, b, fa, fb in zip(grid, grid[1:], values, values[1:]) if fa * fb < 0])
 
