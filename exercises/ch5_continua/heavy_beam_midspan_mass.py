@@ -6,7 +6,7 @@ import numpy as np
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.exercise.apart import answers_apart
 from dynagrade.exercise.checks import Limit, Recompute
-from dynagrade.exercise.figure import beam_support, block, describe, dimension, new_drawing
+from dynagrade.exercise.figure import block, describe, new_drawing, simply_supported_beam
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import continua, stiffness, vibrations
 
@@ -66,9 +66,7 @@ def figure(p):
     L = p.L
     drawing, axes = new_drawing(5.0, 1.9)
     t = 0.03 * L
-    block(axes, (L / 2, 0.0), L, t, color="0.75")
-    beam_support(axes, (0.0, -t / 2), 0.06 * L)
-    beam_support(axes, (L, -t / 2), 0.06 * L, roller=True)
+    simply_supported_beam(axes, L, t, f"L = {format_number(L)} m")
     block(axes, (L / 2, t / 2 + 0.04 * L), 0.08 * L, 0.08 * L, "m", color="C0")
     axes.text(L / 2, 0.11 * L, f"m = {format_number(p.m)} kg", ha="center", va="bottom",
               fontsize=10)
@@ -77,8 +75,6 @@ def figure(p):
     axes.text(0.8 * L, 0.03 * L,
               f"E = {format_number(p.E / 1e9)} GPa, ρ = {format_number(p.rho)} kg/m³",
               ha="center", va="bottom", fontsize=9)
-    dimension(axes, (0.0, -0.1 * L), (L, -0.1 * L), f"L = {format_number(L)} m", tick=0.01 * L,
-              side=-1.0)
     describe(axes, "The mass sits on the beam halfway between the supports.")
     axes.set_xlim(-0.08 * L, 1.08 * L)
     axes.set_ylim(-0.2 * L, 0.18 * L)

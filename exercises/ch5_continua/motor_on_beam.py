@@ -6,7 +6,7 @@ import numpy as np
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Options,
                                 Uniform, per_draw)
 from dynagrade.exercise.checks import Recompute
-from dynagrade.exercise.figure import beam_support, block, describe, dimension, new_drawing
+from dynagrade.exercise.figure import block, describe, new_drawing, simply_supported_beam
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import stiffness, vibrations
 
@@ -43,16 +43,12 @@ def figure(p):
     L = p.L
     drawing, axes = new_drawing(5.0, 1.9)
     t = 0.02 * L
-    block(axes, (L / 2, 0.0), L, t, color="0.6")
-    beam_support(axes, (0.0, -t / 2), 0.06 * L)
-    beam_support(axes, (L, -t / 2), 0.06 * L, roller=True)
+    simply_supported_beam(axes, L, t, f"L = {format_number(L)} m")
     block(axes, (L / 2, t / 2 + 0.05 * L), 0.14 * L, 0.1 * L, "m", color="C0")
     axes.text(L / 2, 0.13 * L, f"m = {format_number(p.m)} kg,  n = {format_number(p.n * 60 / (2 * np.pi))} rpm",
               ha="center", va="bottom", fontsize=10)
     axes.text(0.78 * L, 0.03 * L, f"E = {format_number(p.E / 1e9)} GPa,  b × h = {format_number(p.b * 1e3)} × {format_number(p.h * 1e3)} mm",
               ha="center", va="bottom", fontsize=9)
-    dimension(axes, (0.0, -0.1 * L), (L, -0.1 * L), f"L = {format_number(L)} m", tick=0.01 * L,
-              side=-1.0)
     describe(axes, "The motor sits on the beam halfway between the supports.")
     axes.set_xlim(-0.08 * L, 1.08 * L)
     axes.set_ylim(-0.2 * L, 0.2 * L)

@@ -30,7 +30,8 @@ from __future__ import annotations
 
 __all__ = ["Circle", "Ellipse", "Polygon", "Rectangle", "angle_arc", "arrow", "beam_support",
            "block", "ceiling", "damper", "describe", "dimension", "direction_words", "figure_notes",
-           "ground", "inclined_plane", "new_drawing", "pivot", "spring", "wall"]
+           "ground", "inclined_plane", "new_drawing", "pivot", "simply_supported_beam", "spring",
+           "wall"]
 
 
 # -- the figure's description in words ------------------------------------------------------
@@ -346,3 +347,14 @@ def beam_support(axes, point, size: float, roller: bool = False) -> None:
                                   edgecolor="0.1", lw=0.8))
     ground(axes, x - size, x + size, y - size, hatch=0.25 * size)
     _drawn(axes, "a roller support under the beam" if roller else "a fixed pin support under the beam")
+
+
+def simply_supported_beam(axes, length: float, thickness: float, label: str = "") -> None:
+    """A beam of ``length`` and drawn ``thickness`` from x = 0, centred on y = 0, on a pin
+    at its left end and a roller at its right one, with its length dimensioned below and
+    labelled ``label``."""
+    block(axes, (length / 2, 0.0), length, thickness, color="0.7")
+    beam_support(axes, (0.0, -thickness / 2), 0.06 * length)
+    beam_support(axes, (length, -thickness / 2), 0.06 * length, roller=True)
+    dimension(axes, (0.0, -0.1 * length), (length, -0.1 * length), label, tick=0.01 * length,
+              side=-1.0)
