@@ -69,8 +69,8 @@ EXERCISE = Exercise(
     ),
     constraints=(
         Constraint("the struck rod is at least 30 % longer than the striker", lambda p: p.L2 >= 1.3 * p.L1),
-        Constraint("the stress, the contact time and the velocity are over 10 % apart in SI and in MPa, µs, m/s",
-                   lambda p: answers_apart(solve(p), {"sigma": 1e6, "t_c": 1e-6, "v2": 1.0})),
+        Constraint("the stress, the contact time and the velocity are over 10 % apart in SI and in MPa, ms, m/s",
+                   lambda p: answers_apart(solve(p), {"sigma": 1e6, "t_c": 1e-3, "v2": 1.0})),
     ),
     statement="""
 Two slender rods of the same material ($E$ = {{ E }}, $\\rho$ = {{ rho }}) and the same
@@ -121,7 +121,7 @@ rod 2 carries away, of length $c\,t_c$, holds all of rod 1's kinetic energy.
                     Misconception("dynamic pressure rho v^2", lambda p: p.rho * p.v**2,
                                   "The stress of a wave is rho c times its particle velocity, here v/2."),
                 )),
-        Numeric("t_c", "contact time", question=2, unit="µs", points=2,
+        Numeric("t_c", "contact time", question=2, unit="ms", points=2,
                 misconceptions=(
                     Misconception("one way L1/c", lambda p: p.L1 / _c(p),
                                   "The wave has to go to rod 1's free end and back: t_c = 2 L1/c."),
