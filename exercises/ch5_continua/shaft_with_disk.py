@@ -85,8 +85,8 @@ EXERCISE = Exercise(
         Uniform("rho", 2700, 8900, step=100, unit="kg/m^3", symbol=r"\rho"),
         Uniform("d", 20, 80, step=2, unit="mm", symbol="d"),
         Uniform("L", 0.5, 3.0, step=0.1, unit="m", symbol="L"),
-        Uniform("m", 0.5, 10, step=0.1, unit="kg", symbol="m"),
-        Uniform("R", 30, 200, step=5, unit="mm", symbol="R"),
+        Uniform("m", 0.5, 5, step=0.1, unit="kg", symbol="m"),
+        Uniform("R", 30, 150, step=5, unit="mm", symbol="R"),
     ),
     constraints=(
         Constraint("the shaft's inertia is half to five times the disk's", lambda p: 0.5 <= solve(p)["ratio"] <= 5),
