@@ -28,9 +28,10 @@ Usage::
 
 from __future__ import annotations
 
-__all__ = ["Circle", "Ellipse", "Polygon", "Rectangle", "angle_arc", "arrow", "block",
-           "ceiling", "damper", "describe", "dimension", "direction_words", "figure_notes",
-           "ground", "inclined_plane", "new_drawing", "pivot", "spring", "wall"]
+__all__ = ["Circle", "Ellipse", "Polygon", "Rectangle", "angle_arc", "arrow", "beam_support",
+           "block", "ceiling", "damper", "describe", "dimension", "direction_words", "figure_notes",
+           "ground", "inclined_plane", "new_drawing", "pivot", "simply_supported_beam", "spring",
+           "wall"]
 
 
 # -- the figure's description in words ------------------------------------------------------
@@ -325,3 +326,35 @@ def inclined_plane(alpha: float, length: float = 1.0):
               f"α = {format_number(np.degrees(alpha))}°", label_radius=0.3)
     axes.set_xlim(-0.12, top[0] + 0.12)
     return figure, axes, along, normal
+
+
+# -- beam supports (chapter 5's beams and rods) ----------------------------------------------
+
+def beam_support(axes, point, size: float, roller: bool = False) -> None:
+    """A support under a beam at ``point``: a triangle of height ``size`` standing on
+    hatched ground, a fixed pin, or with ``roller=True`` a triangle on two small wheels
+    (free to slide along the beam). A clamped end is a :func:`wall`."""
+    from .shapes import Circle, Polygon
+
+    x, y = point
+    high = 0.75 * size if roller else size
+    axes.add_patch(Polygon([(x, y), (x - 0.6 * size, y - high), (x + 0.6 * size, y - high)],
+                           closed=True, facecolor="0.85", edgecolor="0.1", lw=1.0))
+    if roller:
+        r = 0.125 * size
+        for dx in (-0.3 * size, 0.3 * size):
+            axes.add_patch(Circle((x + dx, y - high - r), r, facecolor="white",
+                                  edgecolor="0.1", lw=0.8))
+    ground(axes, x - size, x + size, y - size, hatch=0.25 * size)
+    _drawn(axes, "a roller support under the beam" if roller else "a fixed pin support under the beam")
+
+
+def simply_supported_beam(axes, length: float, thickness: float, label: str = "") -> None:
+    """A beam of ``length`` and drawn ``thickness`` from x = 0, centred on y = 0, on a pin
+    at its left end and a roller at its right one, with its length dimensioned below and
+    labelled ``label``."""
+    block(axes, (length / 2, 0.0), length, thickness, color="0.7")
+    beam_support(axes, (0.0, -thickness / 2), 0.06 * length)
+    beam_support(axes, (length, -thickness / 2), 0.06 * length, roller=True)
+    dimension(axes, (0.0, -0.1 * length), (length, -0.1 * length), label, tick=0.01 * length,
+              side=-1.0)

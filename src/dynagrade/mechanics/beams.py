@@ -105,3 +105,37 @@ def cantilever_mode_shape(x: ArrayLike, L: Quantity, j: int) -> Quantity:
     s = (np.cos(bL) + np.cosh(bL)) / (np.sin(bL) + np.sinh(bL))
     x = np.asarray(x, dtype=float)
     return np.cosh(b * x) - np.cos(b * x) - s * (np.sinh(b * x) - np.sin(b * x))
+
+
+# -- issue 31, chapter 5's new exercises: a free-free bar tuned to a pitch ---------------
+
+def free_free_mode_shape(x: ArrayLike, L: Quantity, j: int) -> Quantity:
+    """Mode shape W_j(x) of the j-th flexural mode of a free-free beam (W_j(0) = 2),
+    Section 5.3.3.
+
+    W = cosh(bx) + cos(bx) - s (sinh(bx) + sin(bx)), s = (cosh bL - cos bL)/(sinh bL - sin bL),
+    which leaves both ends free of moment and shear force.
+    """
+    bL = beam_eigenvalues("free-free", j)[-1]
+    b = bL / L
+    s = (np.cosh(bL) - np.cos(bL)) / (np.sinh(bL) - np.sin(bL))
+    x = np.asarray(x, dtype=float)
+    return np.cosh(b * x) + np.cos(b * x) - s * (np.sinh(b * x) + np.sin(b * x))
+
+
+def free_free_nodes(L: Quantity, j: int) -> np.ndarray:
+    """The j + 1 nodes (points at rest) of the j-th flexural mode of a free-free beam,
+    from x = 0 to L, Section 5.3.3; mode 1 has its two at 0.2242 L from the ends."""
+    from scipy.optimize import brentq
+    # an even count of points: the middle, a node of the even modes, falls between two
+    grid = np.linspace(0.0, L, 40 * (j + 2))
+    values = np.asarray(free_free_mode_shape(grid, L, j))
+    return np.array([brentq(lambda x: float(free_free_mode_shape(x, L, j)), a, b, xtol=1e-15)
+                     for a, b, fa, fb in zip(grid, grid[1:], values, values[1:]) if fa * fb < 0])
+
+
+def beam_length_for_frequency(omega: Quantity, EI: Quantity, rhoA: Quantity, support: str,
+                              j: int = 1) -> Quantity:
+    """Length L = beta_j L (EI / (rho A))^(1/4) / sqrt(omega) whose j-th natural angular
+    frequency is omega, the inverse of beam_natural_frequencies, Section 5.3.3."""
+    return beam_eigenvalues(support, j)[-1] * np.sqrt(bending_wave_parameter(EI, rhoA) / omega)

@@ -121,3 +121,82 @@ def lumped_rod_matrices(E: Quantity, A: Quantity, rho: Quantity, L: Quantity, N:
         return (multi_dof.chain_stiffness_matrix(np.concatenate([[0.0], springs])),
                 multi_dof.lumped_mass_matrix(m_node))
     raise ValueError(f"ends must be one of {END_CONDITIONS}")
+
+
+# -- issue 31, chapter 5's new exercises: rods colliding end on, a rod loaded suddenly ---
+
+def mechanical_impedance(rho: Quantity, c: Quantity, A: Quantity) -> Quantity:
+    """Impedance Z = rho c A of a rod: the force N = Z v that a wave of particle velocity v
+    carries (N = sigma A with sigma = rho c v), Section 5.3.1."""
+    return rho * c * A
+
+
+def interface_velocity(Z_striker: Quantity, Z_struck: Quantity, v: Quantity) -> Quantity:
+    """Particle velocity v_i = v Z_1 / (Z_1 + Z_2) of the contact face while a rod of
+    impedance Z_1 moving at v strikes a rod of impedance Z_2 at rest, end on, Section 5.3.1.
+
+    The wave into the struck rod carries N = Z_2 v_i, the one into the striker
+    N = Z_1 (v - v_i); both forces are the one contact force. Equal rods: v_i = v / 2.
+    """
+    return v * Z_striker / (Z_striker + Z_struck)
+
+
+def contact_duration(L_striker: Quantity, c: Quantity) -> Quantity:
+    """Duration t_c = 2 L_1 / c of the contact of a rod of length L_1 striking, end on, a
+    rod of the same impedance and of length L_2 >= L_1 at rest, Section 5.3.1.
+
+    The compressive wave runs through the striker, reflects at its free end as a release
+    wave and, back at the contact face after 2 L_1 / c, leaves the striker at rest.
+    """
+    return 2.0 * L_striker / c
+
+
+def step_load_peak_displacement(F: Quantity, E: Quantity, A: Quantity, L: Quantity) -> Quantity:
+    """Largest displacement 2 F L / (E A) of the free end of a rod clamped at the other end
+    when a constant force F is suddenly applied there, Section 5.3.1.
+
+    The end moves at F / (rho c A) until the wave, reflected at the clamped end, returns
+    after 2 L / c: twice the static elongation F L / (E A).
+    """
+    return 2.0 * F * L / (E * A)
+
+
+def clamped_end_peak_stress(sigma: Quantity) -> Quantity:
+    """Stress 2 sigma at a clamped end when a wave of stress sigma reflects there (the
+    reflected wave has the same sign and adds to the incident one), Section 5.3.1."""
+    return 2.0 * sigma
+
+
+def tip_mass_natural_frequencies(c: Quantity, L: Quantity, m_rod: Quantity, m_tip: Quantity,
+                                 n: int) -> np.ndarray:
+    """First n natural angular frequencies omega_j = c k_j of a fixed-free rod carrying a
+    tip mass (or of a shaft carrying a disk: m_rod and m_tip its and the disk's mass moments
+    of inertia about the axis), Sections 5.3.1-5.3.2.
+
+    k_j L is the root of kL tan(kL) = m_rod / m_tip in ((j - 1) pi, (j - 1/2) pi): between
+    a clamped end (heavy tip, (j - 1) pi) and a free one (light tip, (j - 1/2) pi).
+    """
+    from scipy.optimize import brentq
+    ratio = m_rod / m_tip
+    roots = [brentq(lambda kL: float(tip_mass_wavenumber_equation(kL, ratio)),
+                    (j - 1) * np.pi + 1e-12, (j - 0.5) * np.pi, xtol=1e-14)
+             for j in range(1, n + 1)]
+    return c * np.array(roots) / L
+
+
+def torsional_impedance(rho: Quantity, c_T: Quantity, I_p: Quantity) -> Quantity:
+    """Torsional impedance rho c_T I_p of a round shaft: the torque T = rho c_T I_p Omega
+    that a torsional wave of angular velocity Omega carries, Section 5.3.2."""
+    return rho * c_T * I_p
+
+
+def torsion_shear_stress(T: Quantity, r: Quantity, I_p: Quantity) -> Quantity:
+    """Shear stress tau = T r / I_p at the radius r of a round shaft carrying the torque T,
+    Section 5.3.2."""
+    return T * r / I_p
+
+
+def free_end_velocity(v: Quantity) -> Quantity:
+    """Velocity 2 v of a free end while a wave of particle velocity v reflects there (the
+    reflected wave doubles the velocity and cancels the force), Sections 5.3.1-5.3.2."""
+    return 2.0 * v
