@@ -170,12 +170,13 @@ def test_every_exercise_has_a_solution_showing_each_parts_key_answer_at_two_seed
 #   0.950119;
 # damped-free-vibration, m = 41 kg, k = 1900 N/m, c = 144 N s/m: omega_n = 6.80746,
 #   c_cr = 558.211, zeta = 0.257967, omega_d = 6.57705, T_d = 0.95532 s, delta = 1.67763,
-#   the closing check at c = 0 omega_d = omega_n = 6.80746.
+#   the closing check at c = 0 omega_d = omega_n = 6.80746; the second damper c2 = 720 N s/m
+#   gives zeta2 = 720 / 558.211 = 1.28983 > 1, overdamped.
 
 GOLDEN_PARAMS = {
     "projectile-range": {"v0": 25.5, "alpha": 20.0, "g": 9.81},
     "ballistic-pendulum": {"m": 42.0, "M": 0.8, "v": 190.0, "g": 9.81},
-    "damped-free-vibration": {"m": 41.0, "k": 1900.0, "c": 144.0},
+    "damped-free-vibration": {"m": 41.0, "k": 1900.0, "c": 144.0, "c2": 720.0},
 }
 
 

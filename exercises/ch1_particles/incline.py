@@ -53,6 +53,11 @@ EXERCISE = Exercise(
         Constraint("the slope is steep enough that cos(alpha) matters by at least 5 %",
                    lambda p: p.mu * (1 - np.cos(p.alpha))
                    >= 0.05 * (np.sin(p.alpha) + p.mu * np.cos(p.alpha))),
+        # decelerating uniformly to rest, delta_x = v0 t_stop / 2: at v0 = 2 m/s the
+        # distance in m and the time in s are one number, and swapping the formulas
+        # scores both
+        Constraint("the distance and the time differ as numbers (v0 not 2 m/s)",
+                   lambda p: abs(p.v0 / 2 - 1) > 0.02),
     ),
     statement="""
 A block of mass $m$ = {{ m }} is pushed up a slope inclined at $\\alpha$ = {{ alpha }}
