@@ -190,3 +190,11 @@ def test_verify_reports_the_coincidence_with_its_seed_and_the_shared_answer():
     report = verify_exercise(exercise, range(60))
     assert (f"seed {seed}: parts d and t coincide: d = 0.509684 m and t = 0.509684 s, so "
             "swapping their formulas scores both") in report.failures
+
+
+def test_apart_keeps_two_numbers_more_than_two_percent_of_the_larger_apart():
+    from dynagrade.exercise import apart
+
+    # 1.02 - 1 = 0.02 is within 2 % of 1.02 (0.0204); 1.03 - 1 = 0.03 is not
+    assert not apart(1.0, 1.02) and apart(1.0, 1.03) and apart(-1.0, 1.0)
+    assert not apart(2.0, 2.0, share=0.0)

@@ -2,7 +2,7 @@
 balance (Example 1.11, eq. 1.91)."""
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
-                                Uniform)
+                                Uniform, apart)
 from dynagrade.exercise.checks import Balance, Integrated, Limit
 from dynagrade.mechanics import energy, particle
 
@@ -47,7 +47,7 @@ EXERCISE = Exercise(
         # decelerating uniformly to rest, dx = v0 t_stop / 2: at v0 = 2 m/s the distance
         # in m and the time in s are one number, and swapping the formulas scores both
         Constraint("the distance and the time differ as numbers (v0 not 2 m/s)",
-                   lambda p: abs(p.v0 / 2 - 1) > 0.02),
+                   lambda p: apart(p.v0 / 2, 1.0)),
     ),
     statement="""
 A crate of mass $m$ = {{ m }} slides over a level floor with initial speed $v_0$ = {{ v0 }}.

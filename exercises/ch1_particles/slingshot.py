@@ -3,7 +3,8 @@ eqs. 1.124-1.125)."""
 
 import numpy as np
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, apart)
 from dynagrade.exercise.checks import Integrated
 from dynagrade.exercise.figure import describe, dimension, ground, new_drawing, spring
 from dynagrade.exercise.numbers import format_number
@@ -73,6 +74,9 @@ EXERCISE = Exercise(
         Uniform("dx", 5, 40, step=1, unit="cm", symbol=r"\Delta x"),
     ),
     constraints=(
+        # two answers that agree as numbers can be swapped and score (verify's variety rule)
+        Constraint("the stretch in cm and the speed in m/s differ as numbers",
+                   lambda p: apart(100 * solve(p)["stretch"], solve(p)["v"])),
         Constraint("taking dx as the stretch is off by more than 5 %",
                    lambda p: energy.slingshot_stretch(p.dx, p.l0) < 0.95 * p.dx),
     ),
