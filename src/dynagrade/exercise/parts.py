@@ -47,7 +47,7 @@ from ..grading.tolerance import DEFAULT_RTOL, is_close, round_sig
 from .kinds import PART_KINDS, MoodleForm, NotExported, register_part_kind
 from .numbers import answer_text, format_number, points_phrase
 from .params import ParamValues
-from .units import convert, from_si, to_si, with_unit
+from .units import conversion_factor, from_si, to_si, with_unit
 
 #: how far off a near miss is: an answer 5 % too large must fail its part
 PERTURBATION = 0.05
@@ -390,10 +390,8 @@ class Numeric(Part):
         return float(values[best]), int(counts[best])
 
     def typed_as(self, value, unit):
-        try:
-            return convert(value, unit, self.unit)
-        except ValueError:  # another dimension
-            return None
+        factor = conversion_factor(unit, self.unit)
+        return None if factor is None else value * factor
 
     def typed_bare(self, value):
         return None if self.require_unit else value
