@@ -104,8 +104,9 @@ class Part(ABC):
     the statement numbers no questions).
 
     ``constant_answer`` is the reason, in a sentence, why the answer is the same in every
-    variant where that is the physics taught ("a hanging bead's lowest point is stable
-    at every spin rate"); ``dynagrade verify`` then does not ask it to vary
+    variant where that is the physics taught ("beta_1 L = 1.8751 is the first root of
+    cos(x) cosh(x) = -1 for every clamped-free beam"); ``dynagrade verify`` then does not
+    ask it to vary
     (:mod:`.variety`). Without it, an answer that scores in almost every variant fails."""
 
     name: str
