@@ -134,7 +134,9 @@ def test_the_fingerprint_is_the_sha256_of_the_file(tmp_path):
 def _exercise_modules():
     import sys
 
-    return {name for name in sys.modules if name.startswith("dynagrade_exercise_")}
+    # each is loaded in its folder's package: dynagrade_course_<folder>.dynagrade_exercise_...
+    return {name for name in sys.modules
+            if name.rpartition(".")[2].startswith("dynagrade_exercise_")}
 
 
 def test_finding_one_exercise_loads_only_its_file(tmp_path):

@@ -165,17 +165,18 @@ def test_every_exercise_has_a_solution_showing_each_parts_key_answer_at_two_seed
 # projectile-range, v0 = 25.5 m/s, alpha = 20 deg: v0 cos a = 23.9622, v0 sin a = 8.72151,
 #   t_peak = 0.889043 s, x_max = v0^2 sin 40 deg / g = 42.6068 m, h = 3.8769 m,
 #   t_flight = 1.77809 s, the closing check at alpha = 45 deg v0^2 / g = 66.2844 m;
-# ballistic-pendulum, m = 42 g, M = 0.8 kg, v = 190 m/s: m v = 7.98, V = 9.47743 m/s,
-#   h = V^2/(2g) = 457.807 cm, T1 = 758.1 J, T2 = 37.815 J, lost 720.285 J, M/(m+M) =
-#   0.950119;
+# ballistic-pendulum, m = 13 g, M = 4.1 kg, v = 540 m/s, L = 2.2 m: m v = 7.02,
+#   V = 7.02/4.113 = 1.70678 m/s, h = V^2/(2g) = 14.8477 cm (below L), T1 = 1895.4 J,
+#   T2 = 7.02^2/(2*4.113) = 5.99081 J, lost 1889.41 J, M/(m+M) = 4.1/4.113 = 0.996839;
 # damped-free-vibration, m = 41 kg, k = 1900 N/m, c = 144 N s/m: omega_n = 6.80746,
 #   c_cr = 558.211, zeta = 0.257967, omega_d = 6.57705, T_d = 0.95532 s, delta = 1.67763,
-#   the closing check at c = 0 omega_d = omega_n = 6.80746.
+#   the closing check at c = 0 omega_d = omega_n = 6.80746; the second damper c2 = 720 N s/m
+#   gives zeta2 = 720 / 558.211 = 1.28983 > 1, overdamped.
 
 GOLDEN_PARAMS = {
     "projectile-range": {"v0": 25.5, "alpha": 20.0, "g": 9.81},
-    "ballistic-pendulum": {"m": 42.0, "M": 0.8, "v": 190.0, "g": 9.81},
-    "damped-free-vibration": {"m": 41.0, "k": 1900.0, "c": 144.0},
+    "ballistic-pendulum": {"m": 13.0, "M": 4.1, "v": 540.0, "g": 9.81, "L": 2.2},
+    "damped-free-vibration": {"m": 41.0, "k": 1900.0, "c": 144.0, "c2": 720.0},
 }
 
 
@@ -248,7 +249,7 @@ def test_a_practice_sheet_ends_with_the_solution_as_comments_and_still_grades(ba
     sheet.write_text(text.replace("V = None", f"V = {V}"), encoding="utf-8")
     graded = json.loads(runner.invoke(grade_main, [str(sheet), "--json"]).output)
     statuses = {p["name"]: p["status"] for p in graded["parts"]}
-    assert statuses == {"V": "correct", "h": "not answered", "fraction_lost": "not answered",
+    assert statuses == {"V": "correct", "h": "not answered", "T_lost": "not answered",
                         "V_formula": "not answered"}
 
 

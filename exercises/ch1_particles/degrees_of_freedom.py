@@ -68,6 +68,9 @@ Here $d$ = {{ d }}.
         Options("link", "on a rigid link", question=3, options=COUNTS, points=1),
         Options("spring", "on a spring", question=4, options=COUNTS, points=1),
         Options("reaction", "cases with a reaction force", question=5, options=CASES,
-                multiple=True, points=2, numbered=True, aliases=dict(zip(SHORT, CASES))),
+                multiple=True, points=2, numbered=True, aliases=dict(zip(SHORT, CASES)),
+                constant_answer="the ground and the link are the constraints, in 2D as in 3D: "
+                                "each needs a reaction force and the free particle and the "
+                                "spring need none, which is what question 5 teaches"),
     ),
 )

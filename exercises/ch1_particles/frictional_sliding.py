@@ -1,7 +1,8 @@
 """A particle sliding to rest on a rough floor: stopping distance by the work-energy
 balance (Example 1.11, eq. 1.91)."""
 
-from dynagrade.exercise import (Constant, Exercise, Misconception, Numeric, Symbolic, Uniform)
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, apart)
 from dynagrade.exercise.checks import Balance, Integrated, Limit
 from dynagrade.mechanics import energy, particle
 
@@ -41,6 +42,12 @@ EXERCISE = Exercise(
         Uniform("v0", 1.0, 15.0, step=0.5, unit="m/s", symbol="v_0"),
         Uniform("mu", 0.1, 0.8, step=0.05, symbol=r"\mu"),
         Constant("g", 9.81, unit="m/s^2", symbol="g"),
+    ),
+    constraints=(
+        # decelerating uniformly to rest, dx = v0 t_stop / 2: at v0 = 2 m/s the distance
+        # in m and the time in s are one number, and swapping the formulas scores both
+        Constraint("the distance and the time differ as numbers (v0 not 2 m/s)",
+                   lambda p: apart(p.v0 / 2, 1.0)),
     ),
     statement="""
 A crate of mass $m$ = {{ m }} slides over a level floor with initial speed $v_0$ = {{ v0 }}.

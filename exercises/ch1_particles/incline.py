@@ -3,7 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform)
+                                Symbolic, Uniform, apart)
 from dynagrade.exercise.checks import Balance, Limit
 from dynagrade.exercise.figure import arrow, block, inclined_plane
 from dynagrade.exercise.numbers import format_number
@@ -53,6 +53,11 @@ EXERCISE = Exercise(
         Constraint("the slope is steep enough that cos(alpha) matters by at least 5 %",
                    lambda p: p.mu * (1 - np.cos(p.alpha))
                    >= 0.05 * (np.sin(p.alpha) + p.mu * np.cos(p.alpha))),
+        # decelerating uniformly to rest, delta_x = v0 t_stop / 2: at v0 = 2 m/s the
+        # distance in m and the time in s are one number, and swapping the formulas
+        # scores both
+        Constraint("the distance and the time differ as numbers (v0 not 2 m/s)",
+                   lambda p: apart(p.v0 / 2, 1.0)),
     ),
     statement="""
 A block of mass $m$ = {{ m }} is pushed up a slope inclined at $\\alpha$ = {{ alpha }}

@@ -3,7 +3,7 @@
 import numpy as np
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform)
+                                Symbolic, Uniform, apart)
 from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.exercise.figure import angle_arc, arrow, describe, ground, new_drawing
 from dynagrade.exercise.numbers import format_number
@@ -75,6 +75,9 @@ EXERCISE = Exercise(
         Constant("g", 9.81, unit="m/s^2", symbol="g"),
     ),
     constraints=(
+        # two answers that agree as numbers can be swapped and score (verify's variety rule)
+        Constraint("the speed at phi and the smallest entry speed differ",
+                   lambda p: apart(solve(p)["v_min_entry"], solve(p)["v_phi"])),
         Constraint("the car stays on the track (v0 > sqrt(5 g R))",
                    lambda p: p.v0 > 1.05 * looping.minimum_entry_speed(p.R, p.g)),
         Constraint("the angle is clear of 90 degrees, where cos(phi) vanishes",

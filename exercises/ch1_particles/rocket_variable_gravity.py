@@ -1,5 +1,9 @@
 """A body shot straight up against height-dependent gravity g R^2/(R+x)^2 (Example 1.2,
-acceleration known as a function of position, eq. 1.17)."""
+acceleration known as a function of position, eq. 1.17).
+
+The body is a planet or moon of drawn radius and surface gravity, not always the Earth,
+so that its escape speed sqrt(2 g R) differs between students (issue 31: it used to be
+11.1803 km/s for everybody)."""
 
 import numpy as np
 
@@ -37,10 +41,12 @@ EXERCISE = Exercise(
     params=(
         Uniform("v0", 3.0, 9.0, step=0.25, unit="km/s", symbol="v_0"),
         Uniform("x", 200, 3000, step=50, unit="km", symbol="x"),
-        Constant("R", 6371, unit="km", symbol="R"),
-        Constant("g", 9.81, unit="m/s^2", symbol="g"),
+        Uniform("R", 3000, 7000, step=100, unit="km", symbol="R"),
+        Uniform("g", 5.0, 12.0, step=0.1, unit="m/s^2", symbol="g"),
     ),
     constraints=(
+        Constraint("the probe comes back: v0 below 90 % of the escape speed",
+                   lambda p: p.v0 < 0.9 * kinematics.escape_speed(p.g, p.R)),
         Constraint("the probe passes the height x well below its peak",
                    lambda p: p.x < 0.9 * solve(p)["h_max"]),
         Constraint("constant gravity would give a speed at x at least 4 % off",
@@ -48,9 +54,9 @@ EXERCISE = Exercise(
                    > 0.04 * solve(p)["v_x"]),
     ),
     statement="""
-A probe leaves the Earth's surface vertically with speed $v_0$ = {{ v0 }} (engine off, no
-air). Gravity decreases with the height $x$ as $g(x) = g R^2/(R+x)^2$ with
-$g$ = {{ g }} and $R$ = {{ R }}.
+A probe leaves the surface of a planet of radius $R$ = {{ R }} vertically with speed
+$v_0$ = {{ v0 }} (engine off, no air). Gravity decreases with the height $x$ as $g(x) = g R^2/(R+x)^2$ with
+the surface gravity $g$ = {{ g }}.
 
 1. What is its speed at the height $x$ = {{ x }}?
 2. How high does it rise?
@@ -62,7 +68,7 @@ The acceleration is known as a function of the position, $\ddot x = -gR^2/(R + x
 Write $\ddot x = v\,\mathrm dv/\mathrm dx$ and integrate over $x$ (Example 1.2, eq. (1.17)):
 $\tfrac{1}{2} v^2 - \tfrac{1}{2} v_0^2 = -\int_0^x \frac{gR^2}{(R + \xi)^2}\,\mathrm d\xi
   = -\frac{gRx}{R + x}$.
-(This is the energy conservation of the probe in the field of the Earth.)
+(This is the energy conservation of the probe in the field of the planet.)
 
 1. **Speed at $x$.** $v(x) = \sqrt{v_0^2 - 2gRx/(R + x)}$; with $v_0$ = {{ v0 }},
    $g$ = {{ g }}, $R$ = {{ R }} and $x$ = {{ x }}: $v$ = {{ answers.v_x }}. (With
@@ -82,7 +88,8 @@ $\tfrac{1}{2} v^2 - \tfrac{1}{2} v_0^2 = -\int_0^x \frac{gR^2}{(R + \xi)^2}\,\ma
         # at R = 1e12 m the remaining v0^2 / (2 g R) is below 5e-6
         Limit("h_max", {"R": 1e12}, lambda p: p.v0**2 / (2 * p.g), name="uniform_gravity",
               rtol=1e-5),
-        Integrated("h_max", _climb, lambda p: (0.0, p.v0), lambda p, s: 20 * p.v0 / p.g,
+        # below 90 % of the escape speed the probe turns round well within 100 v0/g
+        Integrated("h_max", _climb, lambda p: (0.0, p.v0), lambda p, s: 100 * p.v0 / p.g,
                    lambda t, y, p: y[0], name="integrated_climb",
                    event=lambda t, y, p: y[1], direction=-1),
         Recompute("v_x", _speed_at_height, name="energy_balance"),

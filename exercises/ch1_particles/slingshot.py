@@ -3,7 +3,8 @@ eqs. 1.124-1.125)."""
 
 import numpy as np
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, apart)
 from dynagrade.exercise.checks import Integrated
 from dynagrade.exercise.figure import describe, dimension, ground, new_drawing, spring
 from dynagrade.exercise.numbers import format_number
@@ -11,40 +12,44 @@ from dynagrade.mechanics import energy
 
 
 def figure(p):
-    """The slingshot to scale in centimetres: the fixed point at height l0 above the slot's
-    floor, the particle in the slot pulled sideways by dx on the spring, and its position
-    below the fixed point (dashed) that it passes after the release (Example 1.14). The
-    slot's upper lip is drawn light, behind the spring."""
+    """The slingshot to scale in centimetres: the fixed point at height l0 above the
+    particle's centre, the particle in the slot pulled sideways by dx on the spring, and
+    its position below the fixed point (dashed) that it passes after the release
+    (Example 1.14). The spring runs from the fixed point to the particle's centre, so at
+    the dashed position its drawn length is l0, and l0 is dimensioned to that centre, on
+    the slot's centre line y = 0 (it once ran to the slot's floor, which drew the spring
+    short by the particle's radius). The slot's upper lip is drawn light, behind the
+    spring."""
     from dynagrade.exercise.figure import Circle
 
     l0, dx = 100 * p.l0, 100 * p.dx
     size = max(l0, dx)
+    radius = 0.04 * size
     drawing, axes = new_drawing(5.0, 1.4 + 2.6 * l0 / max(size, dx + 0.3 * size))
-    ground(axes, -0.35 * size, dx + 0.2 * size, hatch=size / 40)
+    ground(axes, -0.35 * size, dx + 0.2 * size, y=-radius, hatch=size / 40)
     top = (0.0, l0)
     axes.add_patch(Circle(top, 0.025 * size, facecolor="white", edgecolor="0.1", lw=1.0,
                           zorder=3))
     axes.plot([-0.06 * size, 0.06 * size], [l0 + 0.025 * size] * 2, color="0.1", lw=1.6)
-    radius = 0.04 * size
-    lip = 2.4 * radius
+    lip = 1.4 * radius
     axes.plot([-0.35 * size, dx + 0.2 * size], [lip, lip], color="0.55", lw=1.0, zorder=0)
     describe(axes, "The particle slides in a smooth horizontal slot, between its floor and "
              "its upper lip drawn in light grey.")
-    spring(axes, top, (dx, radius), coils=7, width=0.06 * size)
-    axes.add_patch(Circle((dx, radius), radius, facecolor="C0", edgecolor="0.1", lw=1.0,
+    spring(axes, top, (dx, 0.0), coils=7, width=0.06 * size)
+    axes.add_patch(Circle((dx, 0.0), radius, facecolor="C0", edgecolor="0.1", lw=1.0,
                           zorder=3))
-    axes.add_patch(Circle((0.0, radius), radius, fill=False, edgecolor="0.5", lw=0.8,
+    axes.add_patch(Circle((0.0, 0.0), radius, fill=False, edgecolor="0.5", lw=0.8,
                           ls="--"))
-    axes.text(dx + 1.6 * radius, 2.2 * radius, f"m = {format_number(p.m)} kg",
+    axes.text(dx + 1.6 * radius, 1.2 * radius, f"m = {format_number(p.m)} kg",
               ha="left", va="bottom", fontsize=10)
     axes.text(0.55 * dx + 0.08 * size, 0.5 * l0 + 0.06 * size, f"k = {format_number(p.k)} N/m",
               ha="left", va="bottom", fontsize=10)
     dimension(axes, (0.0, 0.0), top, f"l₀ = {format_number(l0)} cm", offset=0.12 * size,
               tick=0.02 * size)
-    dimension(axes, (0.0, 0.0), (dx, 0.0), f"Δx = {format_number(dx)} cm",
+    dimension(axes, (0.0, -radius), (dx, -radius), f"Δx = {format_number(dx)} cm",
               offset=-0.1 * size, tick=0.02 * size, side=-1.0)
     axes.set_xlim(-0.4 * size, dx + 0.25 * size)
-    axes.set_ylim(-0.25 * size, l0 + 0.08 * size)
+    axes.set_ylim(-0.29 * size, l0 + 0.08 * size)
     return drawing
 
 
@@ -73,6 +78,9 @@ EXERCISE = Exercise(
         Uniform("dx", 5, 40, step=1, unit="cm", symbol=r"\Delta x"),
     ),
     constraints=(
+        # two answers that agree as numbers can be swapped and score (verify's variety rule)
+        Constraint("the stretch in cm and the speed in m/s differ as numbers",
+                   lambda p: apart(100 * solve(p)["stretch"], solve(p)["v"])),
         Constraint("taking dx as the stretch is off by more than 5 %",
                    lambda p: energy.slingshot_stretch(p.dx, p.l0) < 0.95 * p.dx),
     ),

@@ -3,7 +3,8 @@ hole: conservation of angular momentum (Example 1.18, eqs. 1.151-1.155)."""
 
 import numpy as np
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform)
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, apart)
 from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.mechanics import angular_momentum as am, energy, kinematics
 
@@ -32,6 +33,9 @@ EXERCISE = Exercise(
         Uniform("omega0", 1.0, 6.0, step=0.25, unit="rad/s", symbol=r"\omega(0)"),
     ),
     constraints=(
+        # two answers that agree as numbers can be swapped and score (verify's variety rule)
+        Constraint("the new angular velocity and the work differ as numbers",
+                   lambda p: apart(solve(p)["omega1"], solve(p)["W"])),
         Constraint("the string is pulled in by at least 20 %", lambda p: p.l1 < 0.8 * p.l0),
     ),
     statement="""

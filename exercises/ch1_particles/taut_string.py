@@ -3,8 +3,8 @@ angular acceleration: speed and acceleration in polar components (Example 1.5)."
 
 import numpy as np
 
-from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic, Uniform,
-                                per_draw)
+from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Symbolic,
+                                Uniform, apart, per_draw)
 from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import kinematics
 
@@ -28,6 +28,9 @@ EXERCISE = Exercise(
         Uniform("alpha", 0.5, 20.0, step=0.5, unit="rad/s^2", symbol=r"\dot\omega"),
     ),
     constraints=(
+        # two answers that agree as numbers can be swapped and score (verify's variety rule)
+        Constraint("the speed and the tangential acceleration differ as numbers",
+                   lambda p: apart(solve(p)["v"], solve(p)["a_phi"])),
         Constraint("the angular velocity is not near 1 rad/s, where omega and omega^2 agree",
                    lambda p: abs(p.omega - 1.0) > 0.2),
         Constraint("the tangential part changes |a| by at least 5 %",

@@ -1,7 +1,7 @@
 """A chain falling onto a scale: weight plus momentum flux (Section 2.3.2)."""
 
 from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
-                                Symbolic, Uniform)
+                                Symbolic, Uniform, apart)
 from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import impact, particle, variable_mass
 
@@ -36,6 +36,9 @@ EXERCISE = Exercise(
         Constant("g", 9.81, unit="m/s^2", symbol="g"),
     ),
     constraints=(
+        # two answers that agree as numbers can be swapped and score (verify's variety rule)
+        Constraint("the force at x and the final weight differ (x not L/3)",
+                   lambda p: apart(solve(p)["F_x"], solve(p)["F_end"])),
         Constraint("the fallen length is a clear part of the chain (0.1 L < x < 0.9 L)",
                    lambda p: 0.1 * p.L < p.x < 0.9 * p.L),
     ),

@@ -3,7 +3,7 @@ in the rotating frame (Section 3.4.3)."""
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, apart
 from dynagrade.exercise.checks import Integrated, Recompute
 from dynagrade.mechanics import frames
 
@@ -44,6 +44,9 @@ EXERCISE = Exercise(
         Uniform("t", 0.2, 1.5, step=0.05, unit="s", symbol="t"),
     ),
     constraints=(
+        # two answers that agree as numbers can be swapped and score (verify's variety rule)
+        Constraint("the radial speed and the normal force differ as numbers",
+                   lambda p: apart(solve(p)["rdot_t"], solve(p)["N"])),
         Constraint("the bead is still on a 1.5 m rod at time t",
                    lambda p: frames.bead_radial_position(p.t, p.r0, 0.0, p.Omega) < 1.5),
         Constraint("the bead has moved well beyond the start (Omega t > 1.1), where r0 cosh differs "

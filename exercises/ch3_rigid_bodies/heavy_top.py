@@ -3,13 +3,21 @@ approximation and the smallest spin (Section 3.5.2)."""
 
 import numpy as np
 
-from dynagrade.exercise import Constant, Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, Numeric,
+                                Uniform, apart)
 from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.mechanics import gyro
 
 
 def _rates(p):
     return gyro.steady_precession_rates(p.m, p.g, p.l, p.I1, p.I3, p.w3, p.theta)
+
+
+def _rates_apart(p):
+    """The smallest spin and the fast precession rate differ as numbers; below the
+    smallest spin there is no steady precession (another constraint refuses it)."""
+    w_min = gyro.minimum_spin_for_steady_precession(p.m, p.g, p.l, p.I1, p.I3, p.theta)
+    return p.w3 <= w_min or apart(w_min, _rates(p).fast)
 
 
 def _fast_top(p):
@@ -57,6 +65,8 @@ EXERCISE = Exercise(
         Constant("g", 9.81, unit="m/s^2", symbol="g"),
     ),
     constraints=(
+        # two answers that agree as numbers can be swapped and score (verify's variety rule)
+        Constraint("the smallest spin and the fast precession rate differ", _rates_apart),
         Constraint("the spin is between 1.2 and 3 times the smallest for steady precession",
                    lambda p: 1.2 < p.w3 / gyro.minimum_spin_for_steady_precession(
                        p.m, p.g, p.l, p.I1, p.I3, p.theta) < 3.0),

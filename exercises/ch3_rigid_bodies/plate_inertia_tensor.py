@@ -3,7 +3,7 @@ inertia, moment about a diagonal and principal moments (Section 3.2.3)."""
 
 import numpy as np
 
-from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
+from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, apart
 from dynagrade.exercise.checks import Recompute
 from dynagrade.mechanics import inertia
 
@@ -48,6 +48,9 @@ EXERCISE = Exercise(
         Uniform("b", 0.2, 1.2, step=0.05, unit="m", symbol="b"),
     ),
     constraints=(
+        # two answers that agree as numbers can be swapped and score (verify's variety rule)
+        Constraint("the moment about the diagonal and the smallest principal moment differ",
+                   lambda p: apart(solve(p)["I_diag"], solve(p)["I_min"])),
         Constraint("the plate is clearly not square", lambda p: abs(p.a - p.b) > 0.2 * max(p.a, p.b)),
     ),
     statement=r"""

@@ -140,7 +140,9 @@ The three bodies differ only in $I_C/(mR^2)$: ½ for the cylinder, 2/5 for the s
                                   "m g sin α for the cylinder."),
                 )),
         Options("first", "first to arrive", question=5,
-                options=("cylinder", "sphere", "hoop"), points=1),
+                options=("cylinder", "sphere", "hoop"), points=1,
+                constant_answer="the body with the smallest I_C/(m R^2), the sphere, wins "
+                                "whatever m, R and alpha: that independence is the lesson"),
         Symbolic("a_cyl_formula", "acceleration of the cylinder as a formula", question=6, points=1,
                  expected="2/3*g*sin(alpha)",
                  variables=("g", "alpha"),

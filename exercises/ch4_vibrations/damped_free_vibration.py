@@ -1,5 +1,10 @@
-"""A mass-spring-damper left to itself: natural frequency, damping ratio, damped frequency
-and the damping regime (Section 4.3.2)."""
+"""A mass-spring-damper left to itself: natural frequency, damping ratio, damped frequency,
+and the damping regime a second damper gives (Section 4.3.2).
+
+The oscillator itself is kept underdamped (it has a damped frequency and a decrement to
+ask for); the regime is asked of a second damper c2, drawn on both sides of the critical
+damping, so that the class's answers differ (issue 31: it used to be "underdamped" for
+everybody)."""
 
 import numpy as np
 
@@ -12,6 +17,11 @@ from dynagrade.mechanics import vibrations
 
 def zeta(p):
     return vibrations.damping_ratio(p.c, p.k, p.m)
+
+
+def zeta2(p):
+    """The damping ratio with the second damper c2."""
+    return vibrations.damping_ratio(p.c2, p.k, p.m)
 
 
 def figure(p):
@@ -43,10 +53,10 @@ def solve(p):
     w = vibrations.natural_frequency(p.k, p.m)
     wd = vibrations.damped_frequency(w, zeta(p))
     return {"omega_n": w, "zeta": zeta(p), "omega_d": wd, "T_d": vibrations.period(wd),
-            "regime": vibrations.damping_regime(zeta(p)),
+            "regime": vibrations.damping_regime(zeta2(p)),
             "delta": vibrations.logarithmic_decrement(zeta(p)),
             # intermediate quantity of the worked solution
-            "c_cr": vibrations.critical_damping(p.k, p.m)}
+            "c_cr": vibrations.critical_damping(p.k, p.m), "zeta2": zeta2(p)}
 
 
 def _oscillator(t, y, p):
@@ -77,10 +87,13 @@ EXERCISE = Exercise(
         Uniform("m", 0.5, 50.0, step=0.5, unit="kg", symbol="m"),
         Uniform("k", 200, 20000, step=100, unit="N/m", symbol="k"),
         Uniform("c", 2, 800, step=2, unit="N*s/m", symbol="c"),
+        Uniform("c2", 20, 3000, step=10, unit="N*s/m", symbol="c_2"),
     ),
     constraints=(
         Constraint("underdamped with 0.2 <= zeta <= 0.7",
                    lambda p: 0.2 <= vibrations.damping_ratio(p.c, p.k, p.m) <= 0.7),
+        Constraint("the second damper is clearly under- or overdamped: 0.2 <= zeta2 <= 0.8 "
+                   "or 1.25 <= zeta2 <= 4", lambda p: 0.2 <= zeta2(p) <= 0.8 or 1.25 <= zeta2(p) <= 4),
     ),
     statement="""
 A mass $m$ = {{ m }} on a spring of stiffness $k$ = {{ k }} is connected to a viscous
@@ -88,7 +101,8 @@ damper with coefficient $c$ = {{ c }}. It is displaced and released.
 
 1. What are the undamped natural angular frequency $\\omega_n$ and the damping ratio $\\zeta$?
 2. What are the damped angular frequency $\\omega_d$ and the period $T_d$ of the decaying oscillation?
-3. Which regime is this: undamped, underdamped, critically damped or overdamped?
+3. The damper is exchanged for one with coefficient $c_2$ = {{ c2 }}. Which regime is the
+   oscillator in then: undamped, underdamped, critically damped or overdamped?
 4. What is the logarithmic decrement $\\delta$ between successive peaks?
 """,
     solution=r"""
@@ -103,8 +117,11 @@ $\ddot x + 2 \zeta \omega_n \dot x + \omega_n^2 x = 0$ (Section 4.3.2).
 2. For $\zeta < 1$ the solution is $x(t) = e^{-\zeta \omega_n t}(A \cos \omega_d t + B \sin \omega_d t)$
    with the damped angular frequency $\omega_d = \omega_n \sqrt{1 - \zeta^2}$ = {{ answers.omega_d }}
    and the period $T_d = 2\pi/\omega_d$ = {{ answers.T_d }}.
-3. $0 < \zeta < 1$: the motion is {{ answers.regime }}: it oscillates with an
-   amplitude that decays like $e^{-\zeta \omega_n t}$.
+3. The regime follows from the damping ratio alone. With $c_2$ = {{ c2 }} it is
+   $\zeta_2 = c_2/c_{\mathrm{cr}}$ = {{ si.zeta2 }}, {% if answers.regime == "underdamped" %}between 0 and 1:
+   the motion is **{{ answers.regime }}**, it oscillates with an amplitude that decays like
+   $e^{-\zeta_2 \omega_n t}${% else %}above 1: the motion is **{{ answers.regime }}**,
+   the mass creeps back to rest without oscillating{% endif %}.
 4. Successive peaks are one period $T_d$ apart, so their ratio is
    $e^{\zeta \omega_n T_d}$ and the logarithmic decrement is
    $\delta = \zeta \omega_n T_d = 2\pi\zeta/\sqrt{1 - \zeta^2}$ = {{ answers.delta }}.
@@ -141,7 +158,7 @@ $\ddot x + 2 \zeta \omega_n \dot x + \omega_n^2 x = 0$ (Section 4.3.2).
         Numeric("T_d", "damped period", question=2, unit="s", points=1,
                 misconceptions=(Misconception("1/omega_d", lambda p: 1 / vibrations.damped_frequency(
                     np.sqrt(p.k / p.m), zeta(p)), "T_d = 2 pi / omega_d."),)),
-        Options("regime", "damping regime", question=3,
+        Options("regime", "damping regime with the second damper", question=3,
                 options=("undamped", "underdamped", "critically damped", "overdamped"), points=1),
         Numeric("delta", "logarithmic decrement", question=4, points=1,
                 misconceptions=(Misconception("small-damping approximation 2 pi zeta", lambda p: 2 * np.pi * zeta(p),

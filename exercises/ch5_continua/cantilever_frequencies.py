@@ -92,6 +92,9 @@ the admissible $\beta$ (flexural vibration, Section 5.3.3).
     ),
     parts=(
         Numeric("beta1L", "first root beta_1 L", question=1, points=1, rtol=1e-3,
+                constant_answer="beta_1 L = 1.8751 is the first root of cos(x) cosh(x) = -1 "
+                                "for every clamped-free beam: the root, not the beam, is "
+                                "what question 1 asks",
                 misconceptions=(Misconception("pi/2", lambda p: np.pi / 2, "pi/2 is the root of cos alone; cosh shifts it to 1.875."),)),
         Numeric("f1", "first natural frequency", question=2, unit="Hz", points=2,
                 misconceptions=(

@@ -123,16 +123,35 @@ def main(ctx, folders):
 
 @main.command("list")
 @click.option("--json", "as_json", is_flag=True, help="Print a JSON array.")
+@click.option("--by-section", is_flag=True,
+              help="Count the exercises under each section of the notes (by their source).")
 @click.pass_obj
-def list_command(context, as_json):
+def list_command(context, as_json, by_section):
     """List the exercises in the bank (read from their files, which are not run)."""
     exercises = context.bank.listing()
+    if by_section:
+        _list_by_section(exercises, as_json)
+        return
     if as_json:
         click.echo(json.dumps([e.summary() for e in exercises], indent=2, ensure_ascii=False))
         return
     from .render.terminal import exercise_table
 
     exercise_table(exercises)
+
+
+def _list_by_section(exercises, as_json: bool) -> None:
+    """``list --by-section``: the exercises per section of the notes, as a table or JSON."""
+    from .exercise.sections import ENOUGH, coverage
+
+    sections, unplaced = coverage(exercises)
+    if as_json:
+        click.echo(json.dumps({"enough": ENOUGH, "sections": [c.to_json() for c in sections],
+                               "unplaced": unplaced}, indent=2, ensure_ascii=False))
+        return
+    from .render.terminal import section_table
+
+    section_table(sections, unplaced, ENOUGH)
 
 
 @main.command()

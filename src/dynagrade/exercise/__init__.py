@@ -13,12 +13,12 @@ See ``docs/authoring.md`` for the whole format.
 from ..grading.spec import Variable
 from .loader import Bank, ExerciseFileError, load_file, open_bank
 from .model import ConstraintError, Exercise, Variant
-from .params import Choice, Constant, Constraint, ParamValues, Uniform, per_draw
+from .params import Choice, Constant, Constraint, ParamValues, Uniform, apart, per_draw
 from .parts import Misconception, Numeric, Options, Symbolic, Vector
 from .seeds import exam_seed, student_seed
 
 __all__ = [
     "Exercise", "Variant", "ConstraintError", "Uniform", "Choice", "Constant", "Constraint",
-    "ParamValues", "per_draw", "Numeric", "Vector", "Symbolic", "Options", "Variable", "Misconception",
+    "ParamValues", "per_draw", "apart", "Numeric", "Vector", "Symbolic", "Options", "Variable", "Misconception",
     "Bank", "ExerciseFileError", "load_file", "open_bank", "student_seed", "exam_seed",
 ]

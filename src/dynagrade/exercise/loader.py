@@ -7,7 +7,12 @@ user's exercise with the id of a shipped one takes its place, so a course can ad
 shipped exercise by copying it; two files with one id in the same folder tree are an error.
 
 Every ``.py`` file below an exercise folder is an exercise file, except ``__init__.py``
-and any file whose name starts with ``_`` (helper modules an exercise may import). A
+and any file or folder whose name starts with ``_``: a course's own modules, such as the
+relations its keys come from (``_relations.py``, or a package ``_relations/`` with its
+tests). An exercise file imports those beside it relatively, ``from ._relations import
+f``: each folder of exercise files is loaded as a package of its own
+(:func:`folder_package`), so two courses' ``_relations`` never meet, nothing is put on
+``sys.path`` and no course module can shadow dynagrade or another library. A
 file that defines no exercise, an id that is not kebab-case, two files with one id: each
 is an :class:`ExerciseFileError` of one line naming the file and line, raised by every
 command that looks at the bank (nothing is skipped in silence). A Symbolic formula that
@@ -77,11 +82,32 @@ def search_path(extra: Iterable[str | os.PathLike] = ()) -> list[Path]:
 
 
 def exercise_files(folder: Path) -> Iterator[Path]:
-    """The exercise files below ``folder``, in a stable order."""
+    """The exercise files below ``folder``, in a stable order: no file or folder on the
+    way whose name starts with ``_`` (a course's own modules, ``__pycache__``)."""
     for path in sorted(folder.rglob("*.py")):
-        if path.name.startswith("_") or "__pycache__" in path.parts:
+        if any(part.startswith("_") for part in path.relative_to(folder).parts):
             continue
         yield path
+
+
+#: the prefix of the packages exercise files are loaded in, one per folder
+FOLDER_PACKAGE = "dynagrade_course_"
+
+
+def folder_package(folder: Path) -> str:
+    """The name of the package the exercise files of ``folder`` are loaded in, made once
+    per folder: a namespace whose one search location is ``folder``. A relative import
+    in an exercise file (``from ._relations import omega``) finds the course's module
+    beside it and loads it as ``<package>._relations``: two folders each with a
+    ``_relations`` give two modules, and ``folder`` never goes on ``sys.path``, so an
+    absolute import (``import numpy``, ``import dynagrade``) never finds a course file."""
+    name = FOLDER_PACKAGE + hashlib.sha1(str(folder).encode()).hexdigest()[:12]
+    if name not in sys.modules:
+        spec = importlib.machinery.ModuleSpec(name, None, is_package=True)
+        spec.submodule_search_locations = [str(folder)]
+        package = importlib.util.module_from_spec(spec)
+        sys.modules[name] = package
+    return name
 
 
 def load_file(path: str | os.PathLike, *, templates: bool = True) -> Exercise:
@@ -104,7 +130,8 @@ def load_file(path: str | os.PathLike, *, templates: bool = True) -> Exercise:
         raise ExerciseFileError(f"{path}: cannot read the file ({error.strerror})") from None
     fingerprint = hashlib.sha256(source).hexdigest()
     place = hashlib.sha1(str(path).encode()).hexdigest()[:12]
-    module_name = f"dynagrade_exercise_{place}_{fingerprint[:16]}"
+    package = folder_package(path.parent)
+    module_name = f"{package}.dynagrade_exercise_{place}_{fingerprint[:16]}"
     cached = sys.modules.get(module_name)
     if cached is not None:
         if templates:
@@ -121,7 +148,8 @@ def load_file(path: str | os.PathLike, *, templates: bool = True) -> Exercise:
     _require_readable_formulas(path, exercise.id, formula_problems(exercise))
     object.__setattr__(exercise, "path", str(path))
     object.__setattr__(exercise, "fingerprint", fingerprint)
-    for stale in [name for name in sys.modules if name.startswith(f"dynagrade_exercise_{place}_")]:
+    for stale in [name for name in sys.modules
+                  if name.startswith(f"{package}.dynagrade_exercise_{place}_")]:
         del sys.modules[stale]
     sys.modules[module_name] = module
     return exercise

@@ -30,7 +30,7 @@ from ..i18n import _
 import textwrap
 from abc import ABC, abstractmethod
 from dataclasses import dataclass, field, replace
-from typing import Any, Callable, ClassVar, Mapping
+from typing import Any, Callable, ClassVar, Mapping, Sequence
 
 from ..grading.kinds import GRADING_KINDS
 from ..grading.spec import (
@@ -43,11 +43,11 @@ from ..grading.spec import (
 )
 from ..errors import DefinitionError
 from ..grading.names import printed_form
-from ..grading.tolerance import DEFAULT_RTOL
+from ..grading.tolerance import DEFAULT_RTOL, is_close, round_sig
 from .kinds import PART_KINDS, MoodleForm, NotExported, register_part_kind
 from .numbers import answer_text, format_number, points_phrase
 from .params import ParamValues
-from .units import from_si, to_si, with_unit
+from .units import conversion_factor, from_si, to_si, with_unit
 
 #: how far off a near miss is: an answer 5 % too large must fail its part
 PERTURBATION = 0.05
@@ -101,13 +101,20 @@ class Misconception:
 class Part(ABC):
     """What every part has: a name (the variable on the student's sheet), a label, points,
     and the number of the statement's question it answers (``question=2``; None only when
-    the statement numbers no questions)."""
+    the statement numbers no questions).
+
+    ``constant_answer`` is the reason, in a sentence, why the answer is the same in every
+    variant where that is the physics taught ("beta_1 L = 1.8751 is the first root of
+    cos(x) cosh(x) = -1 for every clamped-free beam"); ``dynagrade verify`` then does not
+    ask it to vary
+    (:mod:`.variety`). Without it, an answer that scores in almost every variant fails."""
 
     name: str
     label: str = ""
     points: float = 1.0
     misconceptions: tuple[Misconception, ...] = ()
     question: int | None = None
+    constant_answer: str | None = None
 
     kind = "part"
     #: the settings the exam manifest stores for parts of this kind (attribute names)
@@ -152,6 +159,10 @@ class Part(ABC):
                                           self.question < 1):
             raise DefinitionError(f"part {self.name!r}: question must be a whole number "
                                   f"from 1, got {self.question!r}")
+        if self.constant_answer is not None and (not isinstance(self.constant_answer, str)
+                                                 or not self.constant_answer.strip()):
+            raise DefinitionError(f"part {self.name!r}: constant_answer= gives the reason "
+                                  "the answer is the same in every variant, as a sentence")
 
     def reference(self, solved: Mapping[str, Any]) -> Any:
         """This part's reference answer, in the part's unit, from the solver's SI output."""
@@ -266,6 +277,36 @@ class Part(ABC):
         None, as here, when they depend on the whole variant: nothing is remembered."""
         return None
 
+    def scores(self, answer, expected) -> bool:
+        """Whether ``answer``, a reference of this part (in its unit), scores against the
+        reference ``expected``: the part's tolerance applied to numbers, not to text
+        (:mod:`.variety` asks it for many pairs). Here: the two are equal."""
+        return answer == expected
+
+    def one_answer(self, references: Sequence) -> tuple[Any, int]:
+        """The reference among ``references`` (one per variant) that scores against the
+        most of them, and against how many: what one student's answer would earn across
+        a class (:mod:`.variety`)."""
+        distinct: list = []
+        for reference in references:
+            if reference not in distinct:
+                distinct.append(reference)
+        counts = [sum(self.scores(c, r) for r in references) for c in distinct]
+        best = max(range(len(distinct)), key=counts.__getitem__)
+        return distinct[best], counts[best]
+
+    def typed_as(self, value: float, unit: str | None) -> float | None:
+        """The number this part reads when a student types ``value``, a quantity worked
+        out in ``unit``, with that unit: converted where the units are of one dimension
+        (both pure numbers included), None where they are not or the part takes no
+        number (:func:`.variety.coincidences`)."""
+        return None
+
+    def typed_bare(self, value: float) -> float | None:
+        """The number this part reads when a student types ``value`` bare: ``value``
+        where the part reads a bare number in its unit, None where it does not."""
+        return None
+
 
 @dataclass(frozen=True)
 class Numeric(Part):
@@ -332,6 +373,30 @@ class Numeric(Part):
             return []
         return [(self.answer_text(expected * (1 + PERTURBATION)), "an answer 5 % too large")]
 
+    def scores(self, answer, expected) -> bool:
+        if self.sigfigs is not None:
+            return round_sig(float(answer), self.sigfigs) == round_sig(float(expected),
+                                                                       self.sigfigs)
+        return bool(is_close(float(answer), float(expected), self.rtol, self.atol))
+
+    def one_answer(self, references):
+        """:meth:`Part.one_answer` for numbers, all pairs at once (numpy)."""
+        if self.sigfigs is not None:
+            return super().one_answer(references)
+        import numpy as np
+
+        values = np.asarray(references, dtype=np.float64)
+        counts = is_close(values[:, None], values[None, :], self.rtol, self.atol).sum(axis=1)
+        best = int(np.argmax(counts))
+        return float(values[best]), int(counts[best])
+
+    def typed_as(self, value, unit):
+        factor = conversion_factor(unit, self.unit)
+        return None if factor is None else value * factor
+
+    def typed_bare(self, value):
+        return None if self.require_unit else value
+
     def spec(self, params):
         return NumericSpec(unit=self.unit, rtol=self.rtol, atol=self.atol,
                            sigfigs=self.sigfigs, misconceptions=self._known_wrong(params),
@@ -393,6 +458,33 @@ class Vector(Part):
             return []
         return [(self.answer_text(tuple(v * (1 + PERTURBATION) for v in expected)),
                  "a vector 5 % too long")]
+
+    def scores(self, answer, expected) -> bool:
+        import numpy as np
+
+        return bool(self._close(np.asarray([answer], dtype=np.float64),
+                                np.asarray([expected], dtype=np.float64))[0, 0])
+
+    def one_answer(self, references):
+        """:meth:`Part.one_answer` for vectors, all pairs at once, each component with the
+        grader's scale (:func:`~dynagrade.grading.vector.component_scale`)."""
+        import numpy as np
+
+        values = np.asarray(references, dtype=np.float64)
+        counts = self._close(values, values).sum(axis=1)
+        best = int(np.argmax(counts))
+        return tuple(float(v) for v in values[best]), int(counts[best])
+
+    def _close(self, answers, expected):
+        """Whether each row of ``answers`` scores against each row of ``expected``: a
+        matrix (answers × references)."""
+        import numpy as np
+
+        scale = np.maximum(np.abs(expected),
+                           0.01 * np.linalg.norm(expected, axis=1)[:, None])
+        close = is_close(answers[:, None, :], expected[None, :, :], self.rtol, self.atol,
+                         scale[None, :, :])
+        return close.all(axis=2)
 
     def spec(self, params):
         return VectorSpec(size=self.size, unit=self.unit, rtol=self.rtol, atol=self.atol,

@@ -68,8 +68,19 @@ def with_unit(number: str, unit: str | None) -> str:
 def convert(value: float, from_unit: str | None, to_unit: str | None) -> float:
     """``value`` in ``from_unit`` expressed in ``to_unit``; ``UnitError`` (a ``ValueError``)
     when the dimensions differ (the angle counts as a dimension of its own)."""
-    (source, source_dim), (target, target_dim) = _unit_info(from_unit), _unit_info(to_unit)
-    if not _dimensions.same(source_dim, target_dim):
+    factor = conversion_factor(from_unit, to_unit)
+    if factor is None:
         raise UnitError(f"cannot convert {from_unit or 'a bare number'} "
                          f"to {to_unit or 'a bare number'}")
-    return value * source / target
+    return value * factor
+
+
+@lru_cache(maxsize=1024)
+def conversion_factor(from_unit: str | None, to_unit: str | None) -> float | None:
+    """The factor that turns a value in ``from_unit`` into ``to_unit``; None when the
+    dimensions differ (the angle counts as a dimension of its own). Remembered: verify
+    asks it for every pair of parts in every variant."""
+    (source, source_dim), (target, target_dim) = _unit_info(from_unit), _unit_info(to_unit)
+    if not _dimensions.same(source_dim, target_dim):
+        return None
+    return source / target

@@ -20,6 +20,11 @@ on request), otherwise a note. With ``render_figure`` (the render layer's SVG wr
 handed in by the command as ``math_check`` is), every variant's figure is drawn and
 checked (:mod:`.figure_checks`): it does not fail, its SVG is well formed, and its text
 shows no reference answer.
+
+Variety (:mod:`.variety`): two parts whose numbers can be swapped and score are a problem
+of the variant (an exam redraws it); a part whose answer is one answer in more than 90 %
+of the variants checked (50 or more) fails the exercise, unless it declares the reason
+(``constant_answer=``).
 """
 
 from __future__ import annotations
@@ -39,6 +44,7 @@ from .redraws import NO_DRAW, RedrawShare
 from .solution import SolutionError, render_solution
 from .solution_check import missing_solution, solution_problems
 from .statement import referenced_names
+from .variety import coincidences, one_answer_problems
 
 
 @dataclass
@@ -67,6 +73,7 @@ def verify_exercise(exercise: Exercise, seeds: Iterable[int], require_solution: 
     if missing:
         (report.failures if require_solution else report.notes).append(missing)
     math_checked = math_check is None or missing is not None
+    drawn: list[tuple[int, dict]] = []  # (seed, answers) of every variant, for variety
     for seed in seeds:
         report.variants += 1
         try:
@@ -81,6 +88,7 @@ def verify_exercise(exercise: Exercise, seeds: Iterable[int], require_solution: 
         except Exception as error:  # an author's template failing is a finding too
             report.failures.append(f"seed {seed}: {type(error).__name__}: {error}")
             continue
+        drawn.append((seed, variant.answers))
         problems = variant_problems(exercise, variant)
         report.redraws.record(problems)
         report.failures += [f"seed {seed}: {p}" for p in problems]
@@ -93,6 +101,8 @@ def verify_exercise(exercise: Exercise, seeds: Iterable[int], require_solution: 
             math_checked = True
             report.failures += [f"seed {seed}: solution: {p}"
                                 for p in _solution_math(exercise, variant, math_check)]
+    report.failures += one_answer_problems(exercise, [seed for seed, _ in drawn],
+                                           [answers for _, answers in drawn])
     return report
 
 
@@ -130,7 +140,7 @@ def variant_problems(exercise: Exercise, variant: Variant,
     for part in exercise.parts:
         problems += own_problems(exercise, part, params, variant.answers[part.name])
         problems += part.cross_check(params, variant.answers, exercise.part)
-    return problems
+    return problems + coincidences(exercise, variant.answers)
 
 
 def part_own_problems(exercise: Exercise, part: Part, params: ParamValues,

@@ -30,6 +30,23 @@ def exercise_table(exercises) -> None:
         title=f"{len(exercises)} exercises"), nl=False)
 
 
+def section_table(sections, unplaced: Sequence[str], enough: int) -> None:
+    """``list --by-section``: each section of the notes with its count of exercises, those
+    with fewer than ``enough`` marked in words, then a line of totals."""
+    few = [c for c in sections if not c.enough]
+    click.echo(text_table(("section", "title", "exercises", ""), [
+        (c.section, c.title, str(len(c.exercises)),
+         "" if c.enough else f"fewer than {enough}") for c in sections],
+        title=f"{sum(len(c.exercises) for c in sections)} exercises in "
+              f"{len(sections)} sections"), nl=False)
+    click.echo(f"{len(sections) - len(few)} of {len(sections)} sections have {enough} "
+               f"exercises or more" + (f"; fewer than {enough}: "
+                                       + ", ".join(c.section for c in few) if few else ""))
+    if unplaced:
+        click.echo(f"{len(unplaced)} exercises name no section of the notes in their "
+                   f"source: {', '.join(unplaced)}")
+
+
 def answers_table(exercise, variant) -> None:
     from rich.table import Table
 
