@@ -11,9 +11,10 @@ See ``docs/authoring.md`` for the whole format.
 """
 
 from ..grading.spec import Variable
+from .apart import apart
 from .loader import Bank, ExerciseFileError, load_file, open_bank
 from .model import ConstraintError, Exercise, Variant
-from .params import Choice, Constant, Constraint, ParamValues, Uniform, apart, per_draw
+from .params import Choice, Constant, Constraint, ParamValues, Uniform, per_draw
 from .parts import Misconception, Numeric, Options, Symbolic, Vector
 from .seeds import exam_seed, student_seed
 

@@ -14,6 +14,21 @@ from collections.abc import Iterable, Mapping
 from itertools import combinations
 
 
+#: how far apart :func:`apart` keeps two numbers by default: twice the 1 % tolerance
+APART = 0.02
+
+
+def apart(a: float, b: float, share: float = APART) -> bool:
+    """Whether ``a`` and ``b`` differ by more than ``share`` of the larger magnitude: a
+    :class:`Constraint` that keeps two answers from coinciding, which ``dynagrade verify``
+    refuses (:mod:`.variety`); the sign counts (-1 and 1 are apart)::
+
+        Constraint("the distance and the time differ as numbers",
+                   lambda p: apart(solve(p)["dx"], solve(p)["t_stop"]))
+    """
+    return abs(a - b) > share * max(abs(a), abs(b))
+
+
 def numbers_apart(values: Iterable[float], rtol: float = 0.05) -> bool:
     """True if the magnitudes of every two of ``values`` differ by more than ``rtol`` of
     the larger one (zero and zero do not differ)."""

@@ -263,21 +263,6 @@ def symbol_domain(parameter: Parameter) -> Variable:
     return Variable(wide_low, wide_high, parameter.unit, symbol=parameter.symbol)
 
 
-#: how far apart :func:`apart` keeps two numbers by default: twice the 1 % tolerance
-APART = 0.02
-
-
-def apart(a: float, b: float, share: float = APART) -> bool:
-    """Whether ``a`` and ``b`` differ by more than ``share`` of the larger magnitude: a
-    :class:`Constraint` that keeps two answers from coinciding, which ``dynagrade verify``
-    refuses (:mod:`.variety`)::
-
-        Constraint("the distance and the time differ as numbers",
-                   lambda p: apart(solve(p)["dx"], solve(p)["t_stop"]))
-    """
-    return abs(a - b) > share * max(abs(a), abs(b))
-
-
 def per_draw(function: Callable[[ParamValues], object]) -> Callable[[ParamValues], object]:
     """Compute ``function(p)`` once per draw, however many constraints, misconceptions and
     the solver ask for it. Usage in an exercise file::
