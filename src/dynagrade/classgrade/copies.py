@@ -155,7 +155,9 @@ def detect(manifest: Manifest, records: Iterable[Answered],
                 if where not in kept or match.chance < kept[where].chance:
                     kept[where] = match
     pairs = []
-    dependence = {d.id: part_dependence(manifest, d) for d in manifest.exercises} if best else {}
+    chained = {e for kept in best.values() if len(kept) > 1 for e, _ in kept}
+    dependence = {d.id: part_dependence(manifest, d) for d in manifest.exercises
+                  if d.id in chained}
     for pair, matches in best.items():
         expected = n * (n - 1) / 2 * joint_chance(matches.values(), dependence)
         if expected <= threshold:
