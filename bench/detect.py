@@ -8,8 +8,9 @@ Usage::
 
 Each class has 200 students (two exercises, six numbers), ten copying groups (a source
 and one or two copiers; half copy the whole exam, half one exercise), six planted
-undeclared mistakes of 5 to 9 students each, and honest noise (15 % of the numbers
-wrong or empty). Prints, summed over the classes: the copied answers found (copiers of
+undeclared mistakes of 5 to 9 students each, ten honest students who misread one
+parameter of one exercise and carry it through every part, and honest noise (15 % of
+the numbers wrong or empty). Prints, summed over the classes: the copied answers found (copiers of
 the whole exam, and of one exercise), the pairs listed of two honest students (false
 pairs), the pairs listed of a copier and a near twin of the source's variant, the
 planted clusters of 5 or more recovered as the right perturbation, and the seconds the

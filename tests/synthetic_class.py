@@ -11,7 +11,15 @@ exam would. Every student then answers, and the real grader grades the answers:
 - **planted** students are honest students who, on one part, make one mistake of the
   discovery space (:data:`PLANTED`) at their own parameters; it is declared nowhere;
 - **copiers** hand in a classmate's answers (the classmate is the *source*): every number
-  of the exam, or of one exercise; a group has one source and one or two copiers.
+  of the exam, or of one exercise; a group has one source and one or two copiers;
+- **misreaders** are honest students who misread one parameter of one exercise (one or
+  two steps of its grid off) and work every number of it out right from the misread
+  value: their wrong answers are the keys of a neighbouring variant, which a classmate
+  may hold. Mistakes that carry through every part are common; without them the class
+  would only have honest mistakes that are independent from part to part, and could not
+  show a chance model that counts parts worked out from the same numbers as independent
+  coincidences (:mod:`dynagrade.classgrade.part_dependence`). They are drawn with their
+  own random numbers, so the rest of the class is the same with or without them.
 
 The truth comes along: the groups of copiers with their source, and per planted cluster
 its part, its mistake's name (as :mod:`dynagrade.classgrade.perturbations` names it) and
@@ -31,6 +39,7 @@ from dynagrade.exam.manifest import (ExamEntry, ExerciseEntry, Generator, Manife
 from dynagrade.exercise.loader import load_file
 from dynagrade.exercise.model import Exercise
 from dynagrade.exercise.numbers import answer_text
+from dynagrade.exercise.params import Uniform
 from dynagrade.exercise.scoring import grade_variant
 from dynagrade.generation.generate import exercise_parts
 
@@ -69,6 +78,8 @@ class SyntheticClass:
     clusters: list[Cluster]
     #: each student's graded results by exercise, in roster order
     results: list[dict]
+    #: the honest students who misread a parameter of one exercise
+    misreaders: list[str] = field(default_factory=list)
 
     @property
     def copying(self) -> set[str]:
@@ -81,10 +92,10 @@ def exercises() -> dict[str, Exercise]:
 
 
 def synthetic_class(students: int = 200, seed: int = 1, groups: int = 10,
-                    cluster_size: tuple[int, int] = (5, 9), noise: float = 0.15
-                    ) -> SyntheticClass:
-    """A class of ``students`` with ``groups`` copying groups and one planted cluster of
-    ``cluster_size`` students per entry of :data:`PLANTED`."""
+                    cluster_size: tuple[int, int] = (5, 9), noise: float = 0.15,
+                    misreads: int = 10) -> SyntheticClass:
+    """A class of ``students`` with ``groups`` copying groups, one planted cluster of
+    ``cluster_size`` students per entry of :data:`PLANTED` and ``misreads`` misreaders."""
     rng = random.Random(seed)
     bank = exercises()
     ids = [f"s{k:03d}" for k in range(students)]
@@ -118,11 +129,13 @@ def synthetic_class(students: int = 200, seed: int = 1, groups: int = 10,
                 answers[copier][exercise_id] = dict(answers[source][exercise_id])
         copying.append((source, *copiers))
         whole_exam.append(whole)
+    misreaders = _misread(random.Random(f"misread {seed}"), bank, variants, answers, free,
+                          misreads)
     manifest = _manifest(bank, ids, variants)
     results = {sid: {e: grade_variant(bank[e], variants[sid][e], answers[sid][e])
                      for e in bank} for sid in ids}
     return SyntheticClass(manifest, bank, from_results(results), copying, whole_exam,
-                          clusters, [results[sid] for sid in ids])
+                          clusters, [results[sid] for sid in ids], misreaders)
 
 
 def _honest(rng: random.Random, exercise: Exercise, variant, noise: float) -> dict:
@@ -141,6 +154,25 @@ def _honest(rng: random.Random, exercise: Exercise, variant, noise: float) -> di
         else:
             out[part.name] = answer_text(key, 6)
     return out
+
+
+def _misread(rng: random.Random, bank: dict[str, Exercise], variants, answers, free: list[str],
+             count: int) -> list[str]:
+    """``count`` of the ``free`` students misread one drawn parameter of one exercise by
+    one or two steps of its grid and answer every number of it from the misread value."""
+    chosen = rng.sample(free, min(count, len(free)))
+    for sid in chosen:
+        exercise = bank[rng.choice(sorted(bank))]
+        drawn = [p for p in exercise.params if isinstance(p, Uniform) and p.step]
+        param = rng.choice(drawn)
+        values = dict(variants[sid][exercise.id].params)
+        shifted = values[param.name] + rng.choice((-2, -1, 1, 2)) * (param.step or 0.0)
+        values[param.name] = min(max(shifted, param.low), param.high)
+        misread = exercise.solve_in_part_units(values)
+        answers[sid][exercise.id] = {
+            part.name: answer_text(misread[part.name], 6) if part.kind == "numeric" else None
+            for part in exercise.parts}
+    return chosen
 
 
 def _manifest(bank: dict[str, Exercise], ids: list[str], variants) -> Manifest:

@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
+from dynagrade.classgrade.answer_values import answer_value, compared, is_near, key_value
 from dynagrade.classgrade.answered import Answered, answered_csv, read_answered
 from dynagrade.classgrade.copies import COPIES_HEADER, copies_csv, detect
 from dynagrade.classgrade.discover import discover, proposal_lines
@@ -142,6 +143,80 @@ def test_a_vector_matches_only_when_every_component_lies_within_its_tolerance():
     hit = detect(manifest, _answers("[3, 4]", "[3, 4]", "[5, 9]"), threshold=1e9)
     miss = detect(manifest, _answers("[3, 4.5]", "[3, 4]", "[5, 9]"), threshold=1e9)
     assert [p.students for p in hit.pairs] == [("s0", "s1")] and miss.pairs == ()
+
+
+def _two_part_class(keys: list[tuple[float, float]], answers: tuple[float, float]
+                    ) -> tuple[Manifest, list[Answered]]:
+    """A two-part exercise (parts ``h`` and ``t``, tolerance 1 %): student k has
+    ``keys[k]``; s0 hands in ``answers`` (wrong for it), every other student its keys."""
+    parts = tuple(PartEntry(name, name, "numeric", "m", 1.0, rtol=0.01) for name in "ht")
+    students = tuple(StudentEntry(f"s{k}", "", "", (VariantEntry(
+        "ex", k, {}, {"h": h, "t": t}),)) for k, (h, t) in enumerate(keys))
+    manifest = Manifest(Generator("test", ""), ExamEntry("t", "T", "2026-01-01", "", 1.0),
+                        (ExerciseEntry("ex", "Ex", "", 1.0, {}, "", "", parts),), students)
+    records = [Answered(f"s{k}", "ex", name, Status.WRONG if k == 0 else Status.CORRECT,
+                        f"{(answers if k == 0 else key)[i]:g}")
+               for k, key in enumerate(keys) for i, name in enumerate("ht")]
+    return manifest, records
+
+
+def test_a_part_whose_keys_agree_whenever_another_part_s_do_adds_only_that_agreement():
+    # t = 2 h for every student, and s1, s2 (and s3, s4) hold the same variant. s0 hands
+    # in s1's keys (20, 40). Each part: of the others (s2..s5) only s2's key lies within
+    # 10 tolerances, c = 1, p = (1 + 1) / ((6 - 1) * 10) = 0.04. Of the 30 ordered pairs of
+    # students, 4 agree on h (s1-s2, s3-s4, both ways), the same 4 on t: pi_t = 4/30 and
+    # q(t | h) = (4 + 1) / (4 + 30/4) = 10/23. P = 0.04 * 10/23 and E = 15 P = 6/23
+    # (0.26: not listed), where the product of the parts, 15 * 0.04**2 = 0.024, would be.
+    keys = [(10.0, 20.0), (20.0, 40.0), (20.0, 40.0), (50.0, 100.0), (50.0, 100.0),
+            (80.0, 160.0)]
+    manifest, records = _two_part_class(keys, (20.0, 40.0))
+    assert detect(manifest, records).pairs == ()
+    found = {p.students: p for p in detect(manifest, records, threshold=1.0).pairs}
+    pair = found[("s0", "s1")]
+    assert [m.chance for m in pair.matches] == [pytest.approx(0.04)] * 2
+    assert pair.expected == pytest.approx(6 / 23)
+
+
+def test_parts_whose_keys_agree_no_more_often_together_than_apart_multiply():
+    # 25 students: student k has h = 10 * 1.5**(k // 5) and t = 10 * 1.5**(k % 5), so
+    # pairs agree on h within a row of five, on t within a column, never on both: of the
+    # 600 ordered pairs 100 agree on h, 100 on t, 0 on both, and q(t | h) = (0 + 1) /
+    # (100 + 600/100) = 1/106. s0 hands in s6's keys (15, 15): on each part 4 other keys
+    # lie within 10 tolerances, p = (4 + 1) / (24 * 10) = 1/48 > 1/106, so the parts
+    # multiply: P = 1/48**2 and E = 300 / 2304.
+    keys = [(10 * 1.5 ** (k // 5), 10 * 1.5 ** (k % 5)) for k in range(25)]
+    manifest, records = _two_part_class(keys, (15.0, 15.0))
+    found = {p.students: p for p in detect(manifest, records, threshold=1.0).pairs}
+    pair = found[("s0", "s6")]
+    assert [m.chance for m in pair.matches] == [pytest.approx(1 / 48)] * 2
+    assert pair.expected == pytest.approx(300 / 48 ** 2)
+
+
+def test_an_honest_student_who_misreads_a_parameter_is_paired_with_nobody(measured):
+    # A misread value carried through every part gives a neighbouring variant's keys; in
+    # the class of seed 1 a misreader's answers lie within tolerance of a classmate's
+    # keys on two parts or more of one exercise (checked here, so that the test cannot
+    # pass for want of such a student), and no pair of theirs with an honest student is
+    # listed.
+    synthetic, findings, _ = measured
+    by_key = {(r.student_id, r.exercise_id, r.part): r for r in synthetic.records}
+    keys = {(s.student_id, v.exercise): v.answers for s in synthetic.manifest.students
+            for v in s.variants}
+    entries = {(d.id, e.name): e for d in synthetic.manifest.exercises for e in d.parts
+               if compared(e)}
+
+    def on_keys(student: str, other: str) -> int:
+        return max(sum(1 for (e, part), entry in entries.items() if e == exercise
+                       and by_key[(student, e, part)].wrong
+                       and is_near(entry, answer_value(entry, by_key[(student, e, part)].answer),
+                                   key_value(entry, keys[(other, e)][part])))
+                   for exercise in {e for e, _ in entries})
+
+    students = [s.student_id for s in synthetic.manifest.students]
+    assert any(on_keys(m, t) >= 2 for m in synthetic.misreaders for t in students if t != m)
+    assert not [p.students for p in findings.copies.pairs
+                if set(p.students) & set(synthetic.misreaders)
+                and not set(p.students) & synthetic.copying]
 
 
 def test_copies_csv_has_one_inert_row_per_matching_part_with_both_keys_and_answers():

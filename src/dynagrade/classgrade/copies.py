@@ -24,7 +24,16 @@ within :data:`WIDE` times the tolerance of ``a``,
 (the density of keys around ``a``, smoothed by one key). A match on another student's
 answer takes the larger of that and the same estimate over the class's wrong answers.
 **Pair score.** The parts of one pair (both directions; per part the smallest ``p``)
-combine as independent coincidences, ``P = Π p``, and
+combine into one chance ``P``. Different exercises are drawn independently, so their
+chances multiply. The parts of one exercise come from the same parameters, so a match
+on one makes a match on another more likely (:mod:`.part_dependence`): they are chained,
+the largest factor first, each part's factor the larger of its own ``p`` and
+``q(part | a part taken before)`` measured on the class's keys,
+
+    P = Π over exercises of  p_1 · max(p_2, q(2 | 1)) · max(p_3, q(3 | 1), q(3 | 2)) ···
+
+(a part that follows from another, like a flight time from a peak height, adds nearly
+nothing; parts whose keys agree no more often together than apart multiply), and
 
     E = n (n - 1) / 2 · P
 
@@ -52,6 +61,7 @@ from ..exam.manifest import Manifest, PartEntry
 from ..exercise.numbers import answer_text
 from .answer_values import Value, answer_value, as_rows, close_to, compared, key_value
 from .answered import Answered
+from .part_dependence import PartDependence, part_dependence
 from .stats import MIN_STUDENTS
 
 #: keys closer than this many tolerances make a part no evidence
@@ -145,8 +155,11 @@ def detect(manifest: Manifest, records: Iterable[Answered],
                 if where not in kept or match.chance < kept[where].chance:
                     kept[where] = match
     pairs = []
+    chained = {e for kept in best.values() if len(kept) > 1 for e, _ in kept}
+    dependence = {d.id: part_dependence(manifest, d) for d in manifest.exercises
+                  if d.id in chained}
     for pair, matches in best.items():
-        expected = n * (n - 1) / 2 * math.prod(m.chance for m in matches.values())
+        expected = n * (n - 1) / 2 * joint_chance(matches.values(), dependence)
         if expected <= threshold:
             pairs.append(CopiedPair(pair, tuple(matches.values()), expected))
     pairs.sort(key=lambda p: (p.expected, p.students))
@@ -201,6 +214,31 @@ def _part_matches(manifest: Manifest, exercise_id: str, entry: PartEntry,
                                keys[i], keys[j], (other.answer or "") if other else "",
                                min(chance, 1.0), record.time, other.time if other else ""))
     return found
+
+
+def joint_chance(matches: Iterable[Match], dependence: Mapping[str, PartDependence]) -> float:
+    """``P`` of the module's docstring: the chained chance of each exercise's matching
+    parts (:func:`chained_chance`), the exercises multiplied."""
+    by_exercise: dict[str, list[Match]] = {}
+    for match in matches:
+        by_exercise.setdefault(match.exercise_id, []).append(match)
+    return math.prod(chained_chance(found, dependence.get(exercise_id, PartDependence()))
+                     for exercise_id, found in by_exercise.items())
+
+
+def chained_chance(matches: Iterable[Match], counts: PartDependence) -> float:
+    """The chance of one exercise's matching parts together: chained, the largest factor
+    first, each the larger of the part's own chance and ``q`` given a part taken before
+    (the larger factors first keep the estimate on the side of chance)."""
+    left, total = list(matches), 1.0
+    taken: list[Match] = []
+    while left:
+        factors = [max([m.chance, *(counts.conditional(m.part, t.part) for t in taken)])
+                   for m in left]
+        k = max(range(len(left)), key=factors.__getitem__)
+        total *= min(factors[k], 1.0)
+        taken.append(left.pop(k))
+    return total
 
 
 def clusters(pairs: Iterable[CopiedPair]) -> tuple[tuple[str, ...], ...]:
