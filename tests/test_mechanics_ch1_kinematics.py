@@ -271,3 +271,14 @@ def test_acceleration_magnitude_matches_the_cartesian_acceleration_on_a_circle()
     assert kin.acceleration_magnitude(r * phiddot, r * phidot**2) == pytest.approx(cartesian,
                                                                                     rel=1e-12)
     assert kin.acceleration_magnitude(3.0, 4.0) == pytest.approx(5.0, rel=1e-12)
+
+
+def test_the_radius_of_curvature_is_infinite_on_a_straight_stretch_and_undefined_at_rest_without_a_warning():
+    import warnings
+
+    from dynagrade.mechanics.kinematics import radius_of_curvature
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # verify turns a constraint's warning into noise
+        assert radius_of_curvature([2.0, 0.0], [3.0, 0.0]) == np.inf  # a parallel to v
+        assert np.isnan(radius_of_curvature([0.0, 0.0], [1.0, 0.0]))  # at rest

@@ -309,9 +309,10 @@ def binormal(v: ArrayLike, a: ArrayLike) -> Quantity:
 
 def radius_of_curvature(v: ArrayLike, a: ArrayLike) -> Quantity:
     """Radius of curvature of the path at a point with velocity v and acceleration a
-    (any parametrisation in time), rho = |v|^3 / |v x a|, from eq. (1.51)."""
+    (any parametrisation in time), rho = |v|^3 / |v x a|, from eq. (1.51): infinite on a
+    straight stretch (v x a = 0), undefined (nan) where the particle is at rest."""
     speed = np.linalg.norm(np.asarray(v, dtype=float), axis=-1)
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore"):
         return speed**3 / np.linalg.norm(np.cross(spatial_vector(v), spatial_vector(a)), axis=-1)
 
 
