@@ -287,6 +287,21 @@ def test_two_cart_figure_labels_a_left_arrow_with_a_speed():
                               "an arrow pointing to the right"]
 
 
+def test_no_two_cart_variant_has_an_answer_that_reads_as_a_cart_name_in_the_figure():
+    # the carts are named 1 and 2 in the figure; a key of exactly 1 m/s (seed 54 before
+    # the constraint: v_c = 1.0) made verify report the label "1" as a given-away answer
+    from dynagrade.exercise.figure_checks import answer_numbers
+
+    exercise = BANK.get("two-cart-collision")
+    for seed in range(200):
+        assert not answer_numbers(exercise, exercise.variant(seed)) & {"1", "2"}
+    variant = exercise.variant(0, {"m1": 1.0, "m2": 1.0, "v1": 3.0, "v2": -1.0, "e": 0.5},
+                               strict=False)
+    # equal masses: v_c = (3 - 1)/2 = 1 m/s, which the constraint refuses
+    assert any("cart's name" in c.description and not c.check(exercise.si(variant.params))
+               for c in exercise.constraints)
+
+
 def test_cantilever_is_not_called_steel_like_when_its_modulus_varies():
     _, variants = _variants("cantilever-spring-mass")
     assert all("steel" not in v.statement for v in variants)

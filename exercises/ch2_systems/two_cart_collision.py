@@ -86,6 +86,10 @@ EXERCISE = Exercise(
         Constraint("cart 1 catches up with cart 2", lambda p: p.v1 - p.v2 > 0.5),
         Constraint("the carts' speeds after the impact are not close to zero",
                    lambda p: min(abs(_after(p, p.e).v1), abs(_after(p, p.e).v2)) > 0.05),
+        # the figure names the carts "1" and "2": an answer printed so would read as shown
+        Constraint("no answer prints as a cart's name, 1 or 2",
+                   lambda p: not {format_number(float(v)) for v in solve(p).values()}
+                   & {"1", "2", "-1", "-2"}),
         Constraint("the elastic and plastic answers differ from the right one",
                    lambda p: _distinct(_after(p, p.e).v1, _after(p, 1.0).v1)
                    and _distinct(_after(p, p.e).v1, _after(p, 0.0).v1)
