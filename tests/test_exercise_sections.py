@@ -126,3 +126,9 @@ def test_the_readme_states_no_bank_size_that_list_does_not_print():
     size = len(open_bank().listing())
     for number in re.findall(r"(\d+) exercises\b", text):
         assert int(number) == size, f"README says {number} exercises; the bank has {size}"
+
+
+def test_the_shipped_bank_has_at_least_three_exercises_for_each_of_the_41_sections():
+    sections, unplaced = coverage(open_bank().listing())
+    assert len(sections) == 41 and unplaced == []
+    assert {c.section: len(c.exercises) for c in sections if len(c.exercises) < 3} == {}

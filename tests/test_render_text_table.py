@@ -37,3 +37,9 @@ def test_whole_words_are_kept_while_another_column_can_narrow():
 def test_words_are_broken_only_when_whole_words_cannot_fit():
     table = text_table(("id",), [("a" * 30,)], width=20)
     assert table.splitlines()[2:] == ["a" * 20, "a" * 10]
+
+
+def test_a_column_whose_header_and_cells_are_all_empty_is_drawn_without_failing():
+    # list --by-section's last column is empty once every section has enough exercises
+    lines = text_table(("section", ""), [("1.1.1", ""), ("1.1.2", "")], width=40).splitlines()
+    assert [line.rstrip() for line in lines] == ["section", "-------", "1.1.1", "1.1.2"]

@@ -49,7 +49,7 @@ def text_table(headers: Sequence[str], rows: Sequence[Sequence[str]], *,
     lines.append(_line(headers, widths))
     lines.append(_line(["-" * w for w in widths], widths))
     for row in cells:
-        wrapped = [textwrap.wrap(cell, w, break_on_hyphens=False) or [""]
+        wrapped = [textwrap.wrap(cell, max(w, 1), break_on_hyphens=False) or [""]
                    for cell, w in zip(row, widths)]
         for k in range(max(len(column) for column in wrapped)):
             lines.append(_line([column[k] if k < len(column) else "" for column in wrapped],
