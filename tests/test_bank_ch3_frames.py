@@ -6,11 +6,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from scipy.integrate import solve_ivp
 
 from dynagrade.exercise import open_bank
 from dynagrade.exercise.scoring import grade_variant
+from deferred import deferred
 from dynagrade.mechanics import rigid_impact
+
+solve_ivp = deferred("scipy.integrate", "solve_ivp")
 
 BANK = open_bank()
 
