@@ -1,0 +1,49 @@
+"""The id_token's claims (LTI 1.3 Core, section 5) and what their roles mean here.
+
+A launch's roles are IRIs of the LIS vocabulary (``http://purl.imsglobal.org/vocab/lis/
+v2/membership#Instructor``) or, as the specification still allows, their short names
+(``Instructor``). Instructors, teaching assistants and administrators are staff;
+learners are students; anyone else is neither and is refused.
+"""
+
+from __future__ import annotations
+
+LTI = "https://purl.imsglobal.org/spec/lti/claim/"
+MESSAGE_TYPE = LTI + "message_type"
+VERSION = LTI + "version"
+DEPLOYMENT_ID = LTI + "deployment_id"
+TARGET_LINK_URI = LTI + "target_link_uri"
+RESOURCE_LINK = LTI + "resource_link"
+ROLES = LTI + "roles"
+CONTEXT = LTI + "context"
+LIS = LTI + "lis"
+CUSTOM = LTI + "custom"
+
+RESOURCE_LINK_REQUEST = "LtiResourceLinkRequest"
+#: the messages a launch may carry
+LAUNCH_MESSAGES = (RESOURCE_LINK_REQUEST,)
+LTI_VERSION = "1.3.0"
+
+#: the last word of a role IRI (after ``#`` or ``/``) that makes its holder staff
+STAFF_ROLES = frozenset({"Instructor", "TeachingAssistant", "Administrator"})
+STUDENT_ROLES = frozenset({"Learner"})
+
+STAFF, STUDENT = "staff", "student"
+
+
+def role_name(role: str) -> str:
+    """The last word of a role: ``...membership/Instructor#TeachingAssistant`` ->
+    ``TeachingAssistant``, ``Learner`` -> ``Learner``."""
+    return role.rsplit("#", 1)[-1].rsplit("/", 1)[-1]
+
+
+def role_of(roles: object) -> str | None:
+    """``"staff"``, ``"student"`` or None (no role this tool admits) for a launch's
+    roles claim; staff when the holder is both."""
+    names = {role_name(r) for r in roles if isinstance(r, str)} \
+        if isinstance(roles, list) else set()
+    if names & STAFF_ROLES:
+        return STAFF
+    if names & STUDENT_ROLES:
+        return STUDENT
+    return None

@@ -1,0 +1,74 @@
+"""A launch (the id_token the platform posts to ``/lti/launch``) turned into a session.
+
+The state posted must be the state cookie of this browser and a login of this tool not
+used before and not expired; it names the platform and the nonce the id_token must
+carry (:mod:`.verify`). The roles then decide: staff get a session of their own (named
+by the token's ``name``, for the audit log); a learner gets the session of the roster
+student the platform's ``user_claim`` finds (:mod:`.roster_match`), and one the roster
+does not hold is refused with a page saying so (403). What the user opens next is the
+student or staff page of the session's handle (:mod:`.sessions`).
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+import hmac
+from dataclasses import dataclass
+from typing import Mapping
+
+import sqlalchemy as sa
+
+from ...i18n import _
+from . import claims, sessions, store
+from .refusals import LaunchRefused
+from .roster_match import claimed_value, roster_student
+from .verify import verified_claims
+
+
+@dataclass(frozen=True)
+class Launched:
+    """A started session: its id (the cookie) and who it is."""
+
+    session_id: str
+    session: store.Session
+
+
+def platform_and_nonce(engine: sa.Engine, state: str, state_cookie: str | None,
+                       now: dt.datetime) -> tuple[store.Platform, str]:
+    """The platform and nonce of the login ``state`` began in this browser (used up)."""
+    stale = LaunchRefused(_("the sign-in has expired or was begun in another browser "
+                            "window; open the activity from the course again"))
+    if not state or not state_cookie or not hmac.compare_digest(state, state_cookie):
+        raise stale
+    taken = store.take_login(engine, state, now)
+    platform = store.platform_by_id(engine, taken[1]) if taken else None
+    if taken is None or platform is None:
+        raise stale
+    return platform, taken[0]
+
+
+def launch(engine: sa.Engine, exam_id: str, students: Mapping[str, object], id_token: str,
+           state: str, state_cookie: str | None, now: dt.datetime) -> Launched:
+    """The session a launch starts; :class:`LaunchRefused` as the module says."""
+    platform, nonce = platform_and_nonce(engine, state, state_cookie, now)
+    found = verified_claims(id_token, platform, nonce)
+    role = claims.role_of(found.get(claims.ROLES))
+    if role is None:
+        raise LaunchRefused(_("your role in this course gives no access to the exam "
+                              "server"), 403, _("No access"))
+    sub = str(found["sub"])
+    if role == claims.STAFF:
+        name = found.get("name") or found.get("email") or sub
+        session = store.Session(exam_id, platform.id, role, None,
+                                f"{str(name)[:180]} (LTI)", sub)
+    else:
+        student_id = roster_student(students, found, platform.user_claim)
+        if student_id is None:
+            raise LaunchRefused(
+                _("you are not on this exam's roster (looked up by {claim}: {value}); "
+                  "ask the course staff to add you").format(
+                    claim=platform.user_claim,
+                    value=claimed_value(found, platform.user_claim) or _("none sent")),
+                403, _("Not on the roster"))
+        session = store.Session(exam_id, platform.id, role, student_id, None, sub)
+    return Launched(sessions.start(engine, session, now), session)

@@ -1,0 +1,180 @@
+"""A complete LTI 1.3 platform for the tests, on localhost in a thread of the test
+session: its own RSA key and JWKS, OIDC login initiation (``/launch`` sends the browser
+to the tool), the authorization endpoint (``/auth``: checks the tool's request, mints
+the id_token, posts it back with a self-submitting form), an OAuth2 client-credentials
+token endpoint (``/token``: the tool's client_assertion verified with the tool's JWKS),
+and AGS (line items, scores) and NRPS (memberships) endpoints, which record what the
+tool sent.
+
+Written from the specifications (LTI 1.3 Core, Security Framework, AGS 2.0, NRPS 2.0),
+as a platform would behave, not from the tool's code.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import secrets
+import threading
+import time
+from dataclasses import dataclass, field
+from urllib.parse import urlencode
+
+import jwt
+import uvicorn
+from cryptography.hazmat.primitives import serialization
+from cryptography.hazmat.primitives.asymmetric import rsa
+from starlette.applications import Starlette
+from starlette.requests import Request
+from starlette.responses import HTMLResponse, JSONResponse, RedirectResponse, Response
+from starlette.routing import Route
+
+from serve_support import free_port
+
+LTI = "https://purl.imsglobal.org/spec/lti/claim/"
+LEARNER = "http://purl.imsglobal.org/vocab/lis/v2/membership#Learner"
+INSTRUCTOR = "http://purl.imsglobal.org/vocab/lis/v2/membership#Instructor"
+CLIENT_ID = "dynagrade-test-client"
+DEPLOYMENT_ID = "deployment-1"
+
+
+def rsa_pem() -> str:
+    key = rsa.generate_private_key(public_exponent=65537, key_size=2048)
+    return key.private_bytes(serialization.Encoding.PEM, serialization.PrivateFormat.PKCS8,
+                             serialization.NoEncryption()).decode()
+
+
+def public_jwk(pem: str, kid: str) -> dict:
+    private = serialization.load_pem_private_key(pem.encode(), None)
+    jwk = json.loads(jwt.algorithms.RSAAlgorithm.to_jwk(private.public_key()))
+    return {**jwk, "kid": kid, "alg": "RS256", "use": "sig"}
+
+
+@dataclass
+class User:
+    """A platform user: their id (``sub``), name, email, ID number and roles."""
+
+    sub: str
+    name: str
+    email: str
+    sourcedid: str
+    roles: list[str]
+
+
+@dataclass
+class Platform:
+    """The platform's state; ``url`` once it runs, ``tool`` the tool's base URL."""
+
+    tool: str = ""
+    url: str = ""
+    key: str = field(default_factory=rsa_pem)
+    kid: str = "platform-key-1"
+    users: dict[str, User] = field(default_factory=dict)
+    #: every id_token the platform posted to the tool
+    issued: list[str] = field(default_factory=list)
+
+    @property
+    def issuer(self) -> str:
+        return self.url
+
+    def claims(self, user: User, nonce: str, **changes) -> dict:
+        """The claims of a resource-link launch of ``user`` (``changes`` replace any)."""
+        now = int(time.time())
+        found = {
+            "iss": self.issuer, "aud": CLIENT_ID, "sub": user.sub, "exp": now + 300,
+            "iat": now, "nonce": nonce, "name": user.name, "email": user.email,
+            LTI + "message_type": "LtiResourceLinkRequest", LTI + "version": "1.3.0",
+            LTI + "deployment_id": DEPLOYMENT_ID,
+            LTI + "target_link_uri": f"{self.tool}/lti/launch",
+            LTI + "resource_link": {"id": "link-1", "title": "Exam"},
+            LTI + "roles": user.roles,
+            LTI + "context": {"id": "course-1", "label": "DYN", "title": "Dynamics"},
+            LTI + "lis": {"person_sourcedid": user.sourcedid},
+        }
+        found.update(changes)
+        return {k: v for k, v in found.items() if v is not None}
+
+    def sign(self, claims: dict, key: str | None = None, kid: str | None = None) -> str:
+        return jwt.encode(claims, key or self.key, algorithm="RS256",
+                          headers={"kid": kid or self.kid})
+
+    def login_initiation(self, user: str) -> str:
+        """The URL a platform sends the browser to when ``user`` opens the activity."""
+        return f"{self.tool}/lti/login?" + urlencode({
+            "iss": self.issuer, "login_hint": user, "target_link_uri": f"{self.tool}/lti/launch",
+            "client_id": CLIENT_ID, "lti_deployment_id": DEPLOYMENT_ID,
+            "lti_message_hint": "link-1"})
+
+    # -- the endpoints --------------------------------------------------------------------
+
+    async def launch(self, request: Request) -> Response:
+        return RedirectResponse(self.login_initiation(request.query_params["user"]), 302)
+
+    async def jwks(self, request: Request) -> Response:
+        return JSONResponse({"keys": [public_jwk(self.key, self.kid)]})
+
+    async def auth(self, request: Request) -> Response:
+        """The authorization request (OIDC implicit flow, LTI's profile of it)."""
+        q = request.query_params
+        expected = {"scope": "openid", "response_type": "id_token",
+                    "response_mode": "form_post", "prompt": "none", "client_id": CLIENT_ID,
+                    "redirect_uri": f"{self.tool}/lti/launch"}
+        wrong = {k: q.get(k) for k, v in expected.items() if q.get(k) != v}
+        user = self.users.get(q.get("login_hint", ""))
+        if wrong or user is None or not q.get("state") or not q.get("nonce"):
+            return JSONResponse({"error": "invalid_request", "wrong": wrong}, 400)
+        token = self.sign(self.claims(user, q["nonce"]))
+        self.issued.append(token)
+        return HTMLResponse(
+            f'<!doctype html><html lang="en"><head><title>Platform</title></head><body>'
+            f'<form id="post" method="post" action="{html.escape(q["redirect_uri"])}">'
+            f'<input type="hidden" name="id_token" value="{html.escape(token)}">'
+            f'<input type="hidden" name="state" value="{html.escape(q["state"])}">'
+            f'</form><script>document.getElementById("post").submit()</script>'
+            f'</body></html>')
+
+    def app(self) -> Starlette:
+        return Starlette(routes=[
+            Route("/launch", self.launch), Route("/jwks", self.jwks), Route("/auth", self.auth)])
+
+
+@dataclass
+class Running:
+    platform: Platform
+    server: uvicorn.Server
+    thread: threading.Thread
+
+
+def start(platform: Platform) -> Running:
+    """``platform`` served on a free loopback port in a thread (until :func:`stop`)."""
+    port = free_port()
+    platform.url = f"http://127.0.0.1:{port}"
+    server = uvicorn.Server(uvicorn.Config(platform.app(), host="127.0.0.1", port=port,
+                                           log_level="warning", lifespan="off"))
+    thread = threading.Thread(target=server.run, daemon=True)
+    thread.start()
+    for _ in range(200):
+        if server.started:
+            break
+        time.sleep(0.02)
+    return Running(platform, server, thread)
+
+
+def stop(running: Running) -> None:
+    running.server.should_exit = True
+    running.thread.join(timeout=10)
+
+
+def with_users(platform: Platform) -> Platform:
+    """The test roster as platform users (serve_support.ROSTER: s1, s2 with their
+    emails), a stranger who is on no roster, and an instructor."""
+    for user in (User("u-ada", "Ada One", "ada@example.org", "s1", [LEARNER]),
+                 User("u-bo", "Bo Two", "BO@example.org", "s2", [LEARNER]),
+                 User("u-zed", "Zed Stranger", "zed@example.org", "s9", [LEARNER]),
+                 User("u-prof", "Pat Professor", "pat@example.org", "", [INSTRUCTOR])):
+        platform.users[user.sub] = user
+    return platform
+
+
+def new_state() -> str:
+    return secrets.token_urlsafe(8)

@@ -1,0 +1,77 @@
+"""An LTI 1.3 launch in Debian's Chromium (Playwright) against a real `dynagrade serve`
+and the test platform (tests/lti_platform.py): the platform sends the browser through
+login initiation, its authorization endpoint and the id_token's form post to the
+student's page, where she answers and submits; a user not on the roster reads why.
+axe-core finds nothing on either page; on SQLite and PostgreSQL."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from contextlib import contextmanager
+from pathlib import Path
+
+import pytest
+
+from lti_platform import CLIENT_ID, DEPLOYMENT_ID, Platform, start, stop, with_users
+from serve_support import (database, exam_copy, exam_dir, postgres_url,  # noqa: F401
+                           serving_process)
+from test_serve_browser import CHROMIUM
+from test_serve_student_browser import AXE, assert_accessible, chromium, right
+
+pytestmark = pytest.mark.skipif(not (CHROMIUM.exists() and AXE.exists()),
+                                reason="needs Chromium (apt-get install chromium) and axe-core "
+                                       "(npm install --prefix .cache/axe axe-core)")
+
+
+@contextmanager
+def launched(manifest: Path, tmp_path: Path, db_url: str | None):
+    """`dynagrade serve` of ``manifest`` and the test platform, registered with each
+    other by `dynagrade lti register`; yields the platform."""
+    with serving_process(manifest, tmp_path / "links.csv", db_url,
+                         instructor=False) as (base, _rows, _staff):
+        running = start(with_users(Platform(tool=base)))
+        platform = running.platform
+        try:
+            where = ["--db", db_url] if db_url else []
+            subprocess.run([sys.executable, "-m", "dynagrade.cli", "lti", "register",
+                            str(manifest), *where, "--issuer", platform.issuer,
+                            "--client-id", CLIENT_ID, "--deployment-id", DEPLOYMENT_ID,
+                            "--auth-url", f"{platform.url}/auth",
+                            "--token-url", f"{platform.url}/token",
+                            "--jwks-url", f"{platform.url}/jwks"],
+                           check=True, capture_output=True, text=True)
+            yield platform
+        finally:
+            stop(running)
+
+
+def test_a_launched_student_answers_and_submits(exam_dir, tmp_path, database):
+    from playwright.sync_api import expect
+
+    manifest = exam_copy(exam_dir, tmp_path / "hw", mode="homework", feedback="immediate")
+    with launched(manifest, tmp_path, database) as platform, chromium() as browser:
+        page = browser.new_page()
+        page.goto(f"{platform.url}/launch?user=u-ada")
+        page.wait_for_url(f"{platform.tool}/s/lti-*")
+        expect(page.locator("h1")).to_contain_text("Serve test")
+        assert "Ada One" in page.content()
+        assert_accessible(page, "launched student page")
+        page.locator("#projectile-range--x_max").fill(
+            right(manifest, "s1", "projectile-range", "x_max"))
+        page.locator("#projectile-range button[type=submit]").click()
+        expect(page.locator("#status")).to_contain_text("were saved")
+        assert_accessible(page, "launched student page after a submit")
+
+
+def test_a_user_not_on_the_roster_reads_why(exam_dir, tmp_path):
+    from playwright.sync_api import expect
+
+    manifest = exam_copy(exam_dir, tmp_path / "hw", mode="homework", feedback="immediate")
+    with launched(manifest, tmp_path, None) as platform, chromium() as browser:
+        page = browser.new_page()
+        page.goto(f"{platform.url}/launch?user=u-zed")
+        page.wait_for_url(f"{platform.tool}/lti/launch")
+        expect(page.locator("h1")).to_have_text("Not on the roster")
+        expect(page.locator("main")).to_contain_text("zed@example.org")
+        assert_accessible(page, "not on the roster")
