@@ -18,8 +18,10 @@ import secrets
 import threading
 import time
 from dataclasses import dataclass, field
+from typing import Callable
 from urllib.parse import urlencode
 
+import httpx
 import jwt
 import uvicorn
 from cryptography.hazmat.primitives import serialization
@@ -32,6 +34,11 @@ from starlette.routing import Route
 from serve_support import free_port
 
 LTI = "https://purl.imsglobal.org/spec/lti/claim/"
+AGS = "https://purl.imsglobal.org/spec/lti-ags/"
+SCORE_SCOPE = AGS + "scope/score"
+LINEITEM_SCOPE = AGS + "scope/lineitem"
+NRPS = "https://purl.imsglobal.org/spec/lti-nrps/"
+MEMBERS_SCOPE = NRPS + "scope/contextmembership.readonly"
 LEARNER = "http://purl.imsglobal.org/vocab/lis/v2/membership#Learner"
 INSTRUCTOR = "http://purl.imsglobal.org/vocab/lis/v2/membership#Instructor"
 CLIENT_ID = "dynagrade-test-client"
@@ -72,6 +79,20 @@ class Platform:
     users: dict[str, User] = field(default_factory=dict)
     #: every id_token the platform posted to the tool
     issued: list[str] = field(default_factory=list)
+    #: the line items, by their URL (their id), as the tool made them or the test did
+    line_items: dict[str, dict] = field(default_factory=dict)
+    #: every score the platform accepted: (line item URL, body)
+    scores: list[tuple[str, dict]] = field(default_factory=list)
+    #: every score request, accepted or not: (status answered, body)
+    score_requests: list[tuple[int, dict]] = field(default_factory=list)
+    #: how many score posts to refuse (503) before accepting
+    fail_scores: int = 0
+    #: the line item launches name (None: none, the tool makes its own)
+    lineitem: str | None = None
+    #: the tool's public keys (None: fetched from the tool's /lti/jwks)
+    tool_jwks: Callable[[], dict] | None = None
+    #: the access tokens given, with their scopes
+    tokens: dict[str, set[str]] = field(default_factory=dict)
 
     @property
     def issuer(self) -> str:
@@ -90,6 +111,10 @@ class Platform:
             LTI + "roles": user.roles,
             LTI + "context": {"id": "course-1", "label": "DYN", "title": "Dynamics"},
             LTI + "lis": {"person_sourcedid": user.sourcedid},
+            AGS + "claim/endpoint": {
+                "scope": [LINEITEM_SCOPE, SCORE_SCOPE, AGS + "scope/result.readonly"],
+                "lineitems": f"{self.url}/lineitems",
+                **({"lineitem": self.lineitem} if self.lineitem else {})},
         }
         found.update(changes)
         return {k: v for k, v in found.items() if v is not None}
@@ -133,9 +158,72 @@ class Platform:
             f'</form><script>document.getElementById("post").submit()</script>'
             f'</body></html>')
 
+    async def token(self, request: Request) -> Response:
+        """OAuth 2.0 client credentials, the client's proof a JWT it signed (RFC 7523)."""
+        form = await request.form()
+        if form.get("grant_type") != "client_credentials" or form.get(
+                "client_assertion_type") != "urn:ietf:params:oauth:client-assertion-type:jwt-bearer":
+            return JSONResponse({"error": "unsupported_grant_type"}, 400)
+        assertion = str(form.get("client_assertion", ""))
+        keys = self.tool_jwks() if self.tool_jwks else \
+            httpx.get(f"{self.tool}/lti/jwks", timeout=10).json()
+        try:
+            kid = jwt.get_unverified_header(assertion)["kid"]
+            jwk = next(k for k in keys["keys"] if k["kid"] == kid)
+            found = jwt.decode(assertion, jwt.PyJWK(jwk).key, algorithms=["RS256"],
+                               audience=f"{self.url}/token", issuer=CLIENT_ID,
+                               options={"require": ["exp", "iat", "jti", "sub"]})
+        except (jwt.PyJWTError, KeyError, StopIteration):
+            return JSONResponse({"error": "invalid_client"}, 401)
+        if found["sub"] != CLIENT_ID:
+            return JSONResponse({"error": "invalid_client"}, 401)
+        scopes = set(str(form.get("scope", "")).split())
+        if not scopes <= {LINEITEM_SCOPE, SCORE_SCOPE, MEMBERS_SCOPE}:
+            return JSONResponse({"error": "invalid_scope"}, 400)
+        token = secrets.token_urlsafe(16)
+        self.tokens[token] = scopes
+        return JSONResponse({"access_token": token, "token_type": "Bearer",
+                             "expires_in": 3600, "scope": " ".join(sorted(scopes))})
+
+    def _granted(self, request: Request, scope: str) -> bool:
+        given = request.headers.get("authorization", "").removeprefix("Bearer ")
+        return scope in self.tokens.get(given, set())
+
+    async def line_items_endpoint(self, request: Request) -> Response:
+        if not self._granted(request, LINEITEM_SCOPE):
+            return JSONResponse({"error": "unauthorized"}, 401)
+        if request.method == "GET":
+            link = request.query_params.get("resource_link_id")
+            return JSONResponse([i for i in self.line_items.values()
+                                 if link is None or i.get("resourceLinkId") == link],
+                                media_type="application/vnd.ims.lis.v2.lineitemcontainer+json")
+        item = await request.json()
+        item["id"] = f"{self.url}/lineitems/{len(self.line_items) + 1}"
+        self.line_items[item["id"]] = item
+        return JSONResponse(item, 201, media_type="application/vnd.ims.lis.v2.lineitem+json")
+
+    async def score_endpoint(self, request: Request) -> Response:
+        line_item = f"{self.url}/lineitems/{request.path_params['n']}"
+        if not self._granted(request, SCORE_SCOPE):
+            return JSONResponse({"error": "unauthorized"}, 401)
+        if request.headers.get("content-type") != "application/vnd.ims.lis.v1.score+json" \
+                or line_item not in self.line_items:
+            return JSONResponse({"error": "bad request"}, 400)
+        body = await request.json()
+        if self.fail_scores > 0:
+            self.fail_scores -= 1
+            self.score_requests.append((503, body))
+            return JSONResponse({"error": "busy, try later"}, 503)
+        self.score_requests.append((200, body))
+        self.scores.append((line_item, body))
+        return Response(status_code=204)
+
     def app(self) -> Starlette:
         return Starlette(routes=[
-            Route("/launch", self.launch), Route("/jwks", self.jwks), Route("/auth", self.auth)])
+            Route("/launch", self.launch), Route("/jwks", self.jwks), Route("/auth", self.auth),
+            Route("/token", self.token, methods=["POST"]),
+            Route("/lineitems", self.line_items_endpoint, methods=["GET", "POST"]),
+            Route("/lineitems/{n}/scores", self.score_endpoint, methods=["POST"])])
 
 
 @dataclass

@@ -9,74 +9,18 @@ PostgreSQL."""
 from __future__ import annotations
 
 import time
-from contextlib import contextmanager
-from urllib.parse import parse_qs, urlsplit
 
 import pytest
 
-from lti_platform import (CLIENT_ID, DEPLOYMENT_ID, Platform, rsa_pem, start, stop,
-                          with_users)
+from lti_platform import CLIENT_ID, rsa_pem
+from lti_support import TOOL, begin, launch_as, platform, post_launch, tool  # noqa: F401
 from serve_support import database, exam_copy, exam_dir, postgres_url  # noqa: F401
-
-TOOL = "https://testserver"
-
-
-@pytest.fixture(scope="module")
-def platform():
-    """The test platform, running, its users the test roster's (and two more)."""
-    running = start(with_users(Platform(tool=TOOL)))
-    yield running.platform
-    stop(running)
-
-
-@contextmanager
-def tool(manifest, db_url, platform: Platform, user_claim: str = "email"):
-    """The tool (a TestClient over HTTPS: the cookies are Secure) with ``platform``
-    registered."""
-    from fastapi.testclient import TestClient
-
-    from dynagrade.serve.app import create_app
-    from dynagrade.serve.lti import store
-
-    app = create_app(manifest, db_url, grading_workers=1)
-    store.register(app.state.server.engine, platform.issuer, CLIENT_ID, [DEPLOYMENT_ID],
-                   f"{platform.url}/auth", f"{platform.url}/token", f"{platform.url}/jwks",
-                   user_claim)
-    with TestClient(app, base_url=TOOL) as client:
-        yield client
 
 
 @pytest.fixture(scope="module")
 def manifest(exam_dir, tmp_path_factory):
     return exam_copy(exam_dir, tmp_path_factory.mktemp("lti") / "exam", mode="homework",
                      feedback="immediate")
-
-
-def begin(client, platform: Platform, user: str) -> tuple[str, str]:
-    """A login initiation of ``user``: the state and nonce the tool sent to the
-    platform's authorization URL (the state cookie is now in the client)."""
-    answer = client.get(platform.login_initiation(user), follow_redirects=False)
-    assert answer.status_code == 303, answer.text
-    location = answer.headers["location"]
-    assert location.startswith(f"{platform.url}/auth?")
-    query = {k: v[0] for k, v in parse_qs(urlsplit(location).query).items()}
-    assert query["redirect_uri"] == f"{TOOL}/lti/launch"
-    assert query["client_id"] == CLIENT_ID and query["login_hint"] == user
-    return query["state"], query["nonce"]
-
-
-def post_launch(client, token: str, state: str):
-    return client.post("/lti/launch", data={"id_token": token, "state": state},
-                       follow_redirects=False)
-
-
-def launch_as(client, platform: Platform, user: str, **changes):
-    """A launch of ``user`` whose id_token carries ``changes`` to the platform's claims
-    (a change to None leaves the claim out)."""
-    state, nonce = begin(client, platform, user)
-    claims = {**platform.claims(platform.users[user], nonce), **changes}
-    token = platform.sign({k: v for k, v in claims.items() if v is not None})
-    return post_launch(client, token, state)
 
 
 def refused(answer) -> None:

@@ -1,13 +1,15 @@
 """An LTI 1.3 launch in Debian's Chromium (Playwright) against a real `dynagrade serve`
 and the test platform (tests/lti_platform.py): the platform sends the browser through
 login initiation, its authorization endpoint and the id_token's form post to the
-student's page, where she answers and submits; a user not on the roster reads why.
+student's page, where she answers and submits, and her score reaches the platform's
+gradebook (AGS); a user not on the roster reads why.
 axe-core finds nothing on either page; on SQLite and PostgreSQL."""
 
 from __future__ import annotations
 
 import subprocess
 import sys
+import time
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -24,12 +26,21 @@ pytestmark = pytest.mark.skipif(not (CHROMIUM.exists() and AXE.exists()),
                                        "(npm install --prefix .cache/axe axe-core)")
 
 
+def part_points(manifest: Path, exercise: str, part: str) -> float:
+    """The points of one part, as the manifest gives them."""
+    from dynagrade.exam.manifest import load
+
+    entry = next(e for e in load(manifest).exercises if e.id == exercise)
+    found = entry.part(part)
+    assert found is not None
+    return float(found.points)
+
+
 @contextmanager
 def launched(manifest: Path, tmp_path: Path, db_url: str | None):
     """`dynagrade serve` of ``manifest`` and the test platform, registered with each
-    other by `dynagrade lti register`; yields the platform."""
-    with serving_process(manifest, tmp_path / "links.csv", db_url,
-                         instructor=False) as (base, _rows, _staff):
+    other by `dynagrade lti register`; yields the platform and a staff link."""
+    with serving_process(manifest, tmp_path / "links.csv", db_url) as (base, _rows, staff):
         running = start(with_users(Platform(tool=base)))
         platform = running.platform
         try:
@@ -41,7 +52,7 @@ def launched(manifest: Path, tmp_path: Path, db_url: str | None):
                             "--token-url", f"{platform.url}/token",
                             "--jwks-url", f"{platform.url}/jwks"],
                            check=True, capture_output=True, text=True)
-            yield platform
+            yield platform, staff
         finally:
             stop(running)
 
@@ -50,7 +61,7 @@ def test_a_launched_student_answers_and_submits(exam_dir, tmp_path, database):
     from playwright.sync_api import expect
 
     manifest = exam_copy(exam_dir, tmp_path / "hw", mode="homework", feedback="immediate")
-    with launched(manifest, tmp_path, database) as platform, chromium() as browser:
+    with launched(manifest, tmp_path, database) as (platform, staff), chromium() as browser:
         page = browser.new_page()
         page.goto(f"{platform.url}/launch?user=u-ada")
         page.wait_for_url(f"{platform.tool}/s/lti-*")
@@ -62,13 +73,28 @@ def test_a_launched_student_answers_and_submits(exam_dir, tmp_path, database):
         page.locator("#projectile-range button[type=submit]").click()
         expect(page.locator("#status")).to_contain_text("were saved")
         assert_accessible(page, "launched student page after a submit")
+        # the score reaches the platform's gradebook (the server sends every 5 s)
+        for _ in range(100):
+            if platform.scores:
+                break
+            time.sleep(0.2)
+        ((_line_item, score),) = platform.scores
+        assert score["userId"] == "u-ada"
+        assert (score["scoreGiven"], score["scoreMaximum"]) == \
+            (part_points(manifest, "projectile-range", "x_max"), 10.0)
+        # the staff's page of the course platform lists it, sent, with the answer
+        page.goto(f"{staff}/lti")
+        expect(page.locator("#lti-scores tbody tr")).to_have_count(1)
+        expect(page.locator("#lti-scores tbody")).to_contain_text("Ada One (s1)")
+        expect(page.locator("#lti-scores tbody")).to_contain_text("204")
+        assert_accessible(page, "the staff's page of the course platform")
 
 
 def test_a_user_not_on_the_roster_reads_why(exam_dir, tmp_path):
     from playwright.sync_api import expect
 
     manifest = exam_copy(exam_dir, tmp_path / "hw", mode="homework", feedback="immediate")
-    with launched(manifest, tmp_path, None) as platform, chromium() as browser:
+    with launched(manifest, tmp_path, None) as (platform, _staff), chromium() as browser:
         page = browser.new_page()
         page.goto(f"{platform.url}/launch?user=u-zed")
         page.wait_for_url(f"{platform.tool}/lti/launch")

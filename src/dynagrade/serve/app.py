@@ -21,6 +21,7 @@ from starlette.concurrency import run_in_threadpool
 
 from . import db, errors, headers, limits
 from .exam_data import ExamData
+from .lti import grade_sync
 from .lti.framing import PlatformOrigins
 from .policy_changes import PolicySource
 from .reload import ExamReloader
@@ -59,10 +60,12 @@ def build_app(settings: Settings, clock: Callable[[], dt.datetime] | None = None
         reloader = await run_in_threadpool(ExamReloader, server)
         server.catch_up = reloader.catch_up
         watching = asyncio.create_task(reloader.watch())
+        sending = asyncio.create_task(grade_sync.run(server))  # LTI scores, if any
         try:
             yield
         finally:
             watching.cancel()
+            sending.cancel()
             if server.pool is not None:
                 server.pool.close()
             engine.dispose()

@@ -5,7 +5,8 @@ used before and not expired; it names the platform and the nonce the id_token mu
 carry (:mod:`.verify`). The roles then decide: staff get a session of their own (named
 by the token's ``name``, for the audit log); a learner gets the session of the roster
 student the platform's ``user_claim`` finds (:mod:`.roster_match`), and one the roster
-does not hold is refused with a page saying so (403). What the user opens next is the
+does not hold is refused with a page saying so (403). A student's launch also records
+them for the grade service, with the AGS endpoint it names (:mod:`.grade_sync`). What the user opens next is the
 student or staff page of the session's handle (:mod:`.sessions`).
 """
 
@@ -19,7 +20,7 @@ from typing import Mapping
 import sqlalchemy as sa
 
 from ...i18n import _
-from . import claims, sessions, store
+from . import claims, grades_store, sessions, store
 from .refusals import LaunchRefused
 from .roster_match import claimed_value, roster_student
 from .verify import verified_claims
@@ -71,4 +72,24 @@ def launch(engine: sa.Engine, exam_id: str, students: Mapping[str, object], id_t
                     value=claimed_value(found, platform.user_claim) or _("none sent")),
                 403, _("Not on the roster"))
         session = store.Session(exam_id, platform.id, role, student_id, None, sub)
+        grades_store.put_member(engine, member(exam_id, platform.id, student_id, found), now)
     return Launched(sessions.start(engine, session, now), session)
+
+
+def member(exam_id: str, platform_id: int, student_id: str, found: dict
+           ) -> grades_store.Member:
+    """A launched student as the grade service needs them: their ``sub``, the resource
+    link, and the AGS endpoint the launch named (URLs and scopes; none without it)."""
+    link = found.get(claims.RESOURCE_LINK)
+    endpoint = found.get(claims.AGS_ENDPOINT)
+    endpoint = endpoint if isinstance(endpoint, dict) else {}
+    scopes = endpoint.get("scope")
+
+    def text(value: object) -> str | None:
+        return value if isinstance(value, str) and value else None
+
+    return grades_store.Member(
+        exam_id, platform_id, student_id, str(found["sub"]),
+        text(link.get("id")) if isinstance(link, dict) else None,
+        text(endpoint.get("lineitems")), text(endpoint.get("lineitem")),
+        tuple(s for s in scopes if isinstance(s, str)) if isinstance(scopes, list) else ())

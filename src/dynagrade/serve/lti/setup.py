@@ -11,10 +11,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from . import claims
+
 TITLE = "dynagrade"
 
-#: the services the tool asks for (LTI Advantage scopes it may be granted)
-SCOPES: tuple[str, ...] = ()
+#: the services the tool asks for (the LTI Advantage scopes it may be granted): line
+#: items and scores (AGS)
+SCOPES: tuple[str, ...] = (claims.AGS_LINEITEM_SCOPE, claims.AGS_SCORE_SCOPE)
 
 
 @dataclass(frozen=True)
