@@ -3,8 +3,8 @@ session: its own RSA key and JWKS, OIDC login initiation (``/launch`` sends the 
 to the tool), the authorization endpoint (``/auth``: checks the tool's request, mints
 the id_token, posts it back with a self-submitting form), an OAuth2 client-credentials
 token endpoint (``/token``: the tool's client_assertion verified with the tool's JWKS),
-and AGS (line items, scores) and NRPS (memberships) endpoints, which record what the
-tool sent.
+and AGS (line items, scores) and NRPS (memberships, two a page) endpoints, which record
+what the tool sent.
 
 Written from the specifications (LTI 1.3 Core, Security Framework, AGS 2.0, NRPS 2.0),
 as a platform would behave, not from the tool's code.
@@ -115,6 +115,9 @@ class Platform:
                 "scope": [LINEITEM_SCOPE, SCORE_SCOPE, AGS + "scope/result.readonly"],
                 "lineitems": f"{self.url}/lineitems",
                 **({"lineitem": self.lineitem} if self.lineitem else {})},
+            NRPS + "claim/namesroleservice": {
+                "context_memberships_url": f"{self.url}/memberships",
+                "service_versions": ["2.0"]},
         }
         found.update(changes)
         return {k: v for k, v in found.items() if v is not None}
@@ -218,12 +221,29 @@ class Platform:
         self.scores.append((line_item, body))
         return Response(status_code=204)
 
+    async def memberships(self, request: Request) -> Response:
+        """The course's members, two a page (``Link: <…>; rel="next"``)."""
+        if not self._granted(request, MEMBERS_SCOPE):
+            return JSONResponse({"error": "unauthorized"}, 401)
+        page = int(request.query_params.get("page", "0"))
+        users = list(self.users.values())
+        members = [{"user_id": u.sub, "name": u.name, "email": u.email,
+                    "lis_person_sourcedid": u.sourcedid, "roles": u.roles, "status": "Active"}
+                   for u in users[2 * page:2 * page + 2]]
+        headers = {"Link": f'<{self.url}/memberships?page={page + 1}>; rel="next"'} \
+            if 2 * page + 2 < len(users) else {}
+        return JSONResponse({"id": f"{self.url}/memberships",
+                             "context": {"id": "course-1", "label": "DYN"},
+                             "members": members}, headers=headers,
+                            media_type="application/vnd.ims.lti-nrps.v2.membershipcontainer+json")
+
     def app(self) -> Starlette:
         return Starlette(routes=[
             Route("/launch", self.launch), Route("/jwks", self.jwks), Route("/auth", self.auth),
             Route("/token", self.token, methods=["POST"]),
             Route("/lineitems", self.line_items_endpoint, methods=["GET", "POST"]),
-            Route("/lineitems/{n}/scores", self.score_endpoint, methods=["POST"])])
+            Route("/lineitems/{n}/scores", self.score_endpoint, methods=["POST"]),
+            Route("/memberships", self.memberships)])
 
 
 @dataclass

@@ -88,6 +88,9 @@ def test_a_launched_student_answers_and_submits(exam_dir, tmp_path, database):
         expect(page.locator("#lti-scores tbody")).to_contain_text("Ada One (s1)")
         expect(page.locator("#lti-scores tbody")).to_contain_text("204")
         assert_accessible(page, "the staff's page of the course platform")
+        page.get_by_role("button", name="Import the members").click()
+        expect(page.get_by_role("status")).to_contain_text("2 learners linked to the roster")
+        assert_accessible(page, "the course platform page after an import")
 
 
 def test_a_user_not_on_the_roster_reads_why(exam_dir, tmp_path):

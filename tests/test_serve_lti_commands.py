@@ -62,7 +62,8 @@ def test_show_prints_the_values_the_registration_forms_ask_for(manifest):
     assert canvas["public_jwk_url"] == f"{BASE}/lti/jwks"
     assert canvas["extensions"][0]["platform"] == "canvas.instructure.com"
     ags = "https://purl.imsglobal.org/spec/lti-ags/scope/"
-    assert set(canvas["scopes"]) == {ags + "lineitem", ags + "score"}
+    nrps = "https://purl.imsglobal.org/spec/lti-nrps/scope/contextmembership.readonly"
+    assert set(canvas["scopes"]) == {ags + "lineitem", ags + "score", nrps}
 
 
 def test_rotate_key_keeps_the_old_key_published_until_retire_old(manifest):

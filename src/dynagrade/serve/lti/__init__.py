@@ -12,6 +12,14 @@ The protocol (1EdTech LTI 1.3 Core and Security Framework), one job per module:
 - :mod:`.launch`: a verified launch turned into a session of a roster student or staff.
 - :mod:`.sessions`: the session cookie and what the pages accept in place of a link.
 - :mod:`.framing`: the platforms' origins, which alone may frame launched pages.
+- :mod:`.grades_store`: the tables of the grade and roster services.
+- :mod:`.http`, :mod:`.access`: requests to a platform's services, and their access
+  tokens (client credentials, a client assertion signed by the tool's key).
+- :mod:`.line_items`, :mod:`.scores`, :mod:`.grade_sync`: Assignment and Grade
+  Services: the exam's gradebook column, the score a student's platform should hold,
+  and the task that queues, sends and retries scores.
+- :mod:`.roster_import`: Names and Role Provisioning Services: the course's learners
+  merged with the roster.
 - :mod:`.setup`: the values a platform's registration form asks for.
 - :mod:`.commands`: ``dynagrade lti``.
 

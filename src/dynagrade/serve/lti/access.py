@@ -30,7 +30,8 @@ class NoAccess(Exception):
         self.answer = answer
 
 
-_tokens: dict[tuple[int, tuple[str, ...]], tuple[str, float]] = {}
+#: the tokens held, by (token URL, client id, scopes): (token, until when, monotonic)
+_tokens: dict[tuple[str, str, tuple[str, ...]], tuple[str, float]] = {}
 _lock = threading.Lock()
 
 
@@ -43,14 +44,14 @@ def client_assertion(engine: sa.Engine, platform: Platform) -> str:
 
 def access_token(engine: sa.Engine, platform: Platform, scopes: tuple[str, ...]) -> str:
     """A bearer token for ``scopes`` on ``platform`` (:class:`NoAccess` when refused)."""
-    key = (platform.id, tuple(sorted(scopes)))
+    key = (platform.token_url, platform.client_id, tuple(sorted(scopes)))
     with _lock:
         held = _tokens.get(key)
         if held is not None and held[1] > time.monotonic():
             return held[0]
     answer = http.post_form(platform.token_url, {
         "grant_type": "client_credentials", "client_assertion_type": ASSERTION_TYPE,
-        "client_assertion": client_assertion(engine, platform), "scope": " ".join(key[1])})
+        "client_assertion": client_assertion(engine, platform), "scope": " ".join(key[2])})
     try:
         found = answer.json() if answer.ok else {}
     except ValueError:
@@ -68,5 +69,5 @@ def access_token(engine: sa.Engine, platform: Platform, scopes: tuple[str, ...])
 def forget(platform: Platform) -> None:
     """Drop the platform's tokens (one was refused: ask for a new one next time)."""
     with _lock:
-        for key in [k for k in _tokens if k[0] == platform.id]:
+        for key in [k for k in _tokens if k[:2] == (platform.token_url, platform.client_id)]:
             del _tokens[key]

@@ -107,3 +107,41 @@ def rotate_key(manifest, db_url, retire_old):
         return
     click.echo(f"new key {keys.rotate(engine)} signs from now on; the older keys stay "
                "published until `dynagrade lti rotate-key --retire-old`")
+
+
+@lti.command()
+@_manifest
+@_db
+@click.option("-o", "--output", type=click.Path(dir_okay=False), help="Write the learners "
+              "the roster lacks here, as roster rows (student_id,name,email) to add to "
+              "roster.csv before the exam is generated again.")
+def roster(manifest, db_url, output):
+    """Import the course's members from the platform (NRPS) and merge them with the
+    roster by the registered claim: link those it holds, list the rest."""
+    from ...exam.csvcells import csv_text
+    from ...exam.manifest import load
+    from ...runs.files import write_atomic
+    from .. import db
+    from . import roster_import
+
+    engine = _engine(manifest, db_url)
+    exam = load(Path(manifest))
+    students = {s.student_id: s for s in exam.students}
+    try:
+        found = roster_import.import_roster(engine, exam.exam.id, students, db.now())
+    except roster_import.ImportFailed as error:
+        raise click.ClickException(str(error)) from None
+    click.echo(f"{len(found.linked)} learners linked to the roster ({found.new_links} new); "
+               f"{len(found.unknown)} not on the roster; {len(found.unlisted)} roster "
+               "students the platform does not list")
+    for learner in found.unknown:
+        click.echo(f"  not on the roster: {learner.name} <{learner.email}> "
+                   f"(id number {learner.sourcedid or '-'}, platform id {learner.sub})")
+    for student_id in found.unlisted:
+        click.echo(f"  not listed by the platform: {student_id}")
+    if output:
+        rows = [("student_id", "name", "email")] + [
+            (learner.sourcedid or learner.sub, learner.name, learner.email)
+            for learner in found.unknown]
+        write_atomic(output, csv_text(rows), private=True)
+        click.echo(f"wrote {len(found.unknown)} rows to {output}")

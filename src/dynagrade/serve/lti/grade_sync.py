@@ -48,11 +48,12 @@ def retry_delay(attempts: int) -> dt.timedelta:
 
 
 def wanted_scores(server: Server, now: dt.datetime) -> dict[tuple[int, str], dict]:
-    """The score each launched student's platform should hold now, where there is one
-    (students whose launch named no grade service are left out)."""
+    """The score each launched (or imported) student's platform should hold now, where
+    there is one: students of a platform that named no grade service are left out."""
     data, engine = server.data, server.engine
-    members = [m for m in grades_store.exam_members(engine, data.exam_id)
-               if (m.lineitem_url or m.lineitems_url) and m.student_id in data.students]
+    everyone = grades_store.exam_members(engine, data.exam_id)
+    served = set(endpoints(everyone))  # the platforms with a grade service to send to
+    members = [m for m in everyone if m.student_id in data.students and m.platform_id in served]
     if not members:
         return {}
     outcome = gradebook.outcome(data, db.all_answers(engine, data.exam_id),
@@ -71,6 +72,18 @@ def wanted_scores(server: Server, now: dt.datetime) -> dict[tuple[int, str], dic
     return wanted
 
 
+def endpoints(members: list[grades_store.Member]) -> dict[int, grades_store.Member]:
+    """For each platform, the newest launch that named its grade service (the line item
+    or where to make it): a student the staff imported (:mod:`.roster_import`) never
+    launched, and is sent to through another's launch."""
+    found: dict[int, grades_store.Member] = {}
+    for member in sorted(members, key=lambda m: (m.launched_at is not None,
+                                                 m.launched_at or dt.datetime.min)):
+        if member.lineitem_url or member.lineitems_url:
+            found[member.platform_id] = member
+    return found
+
+
 def queue_changes(server: Server, now: dt.datetime) -> int:
     """Queue every score that changed; how many."""
     wanted = wanted_scores(server, now)
@@ -81,15 +94,14 @@ def send_due(server: Server, now: dt.datetime) -> int:
     """Send the queued scores due at ``now``; how many the platforms accepted."""
     engine, data = server.engine, server.data
     accepted = 0
-    members = {(m.platform_id, m.student_id): m
-               for m in grades_store.exam_members(engine, data.exam_id)}
+    service = endpoints(grades_store.exam_members(engine, data.exam_id))
     max_points = sum(float(m.points) for m in data.exercises_meta.values())
     for score in grades_store.claim_due(engine, data.exam_id, now, LEASE):
         platform = store.platform_by_id(engine, score.platform_id)
-        member = members.get((score.platform_id, score.student_id))
+        member = service.get(score.platform_id)
         answer = _send(engine, platform, member, score.body, data.title, max_points) \
             if platform is not None and member is not None \
-            else http.Answer(0, "the platform or the student's launch is gone", {})
+            else http.Answer(0, "the platform or its grade service is gone", {})
         attempts = score.attempts + 1
         if answer.ok:
             state, accepted = grades_store.SENT, accepted + 1

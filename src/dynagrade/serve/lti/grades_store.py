@@ -1,10 +1,11 @@
-"""The tables of LTI Assignment and Grade Services and every statement on them
-(migration 0006).
+"""The tables of LTI Assignment and Grade Services and of Names and Role Provisioning
+Services, and every statement on them (migrations 0006 and 0007).
 
 ``lti_members``    a student launched from a platform: their ``sub`` there (the userId of
                    their scores), the resource link, and the AGS endpoint the launch
                    named (line items URL, line item URL, the scopes granted)
 ``lti_line_items`` the exam's line item (its gradebook column) on each platform
+``lti_contexts``   where each platform lists the course's members (NRPS), from a launch
 ``lti_scores``     each score for the platform, queued (``pending``), ``sent`` or given up
                    (``failed``): its JSON body, attempts, when to try next, and the
                    platform's answer (status and the start of its text)
@@ -44,6 +45,13 @@ line_items = sa.Table(
     sa.Column("lineitem_url", sa.Text, nullable=False),
 )
 
+contexts = sa.Table(
+    "lti_contexts", db.metadata,
+    sa.Column("exam_id", sa.String(200), primary_key=True),
+    sa.Column("platform_id", sa.Integer, sa.ForeignKey("lti_platforms.id"), primary_key=True),
+    sa.Column("memberships_url", sa.Text, nullable=False),
+)
+
 scores = sa.Table(
     "lti_scores", db.metadata,
     sa.Column("id", sa.Integer, primary_key=True, autoincrement=True),
@@ -78,6 +86,7 @@ class Member:
     lineitems_url: str | None
     lineitem_url: str | None
     scopes: tuple[str, ...]
+    launched_at: dt.datetime | None = None
 
 
 def put_member(engine: sa.Engine, member: Member, now: dt.datetime) -> None:
@@ -98,13 +107,48 @@ def put_member(engine: sa.Engine, member: Member, now: dt.datetime) -> None:
             _bind(connection, member.exam_id, member.platform_id, member.lineitem_url)
 
 
+def link_member(engine: sa.Engine, exam_id: str, platform_id: int, student_id: str,
+                sub: str, now: dt.datetime) -> bool:
+    """Record a student the platform lists (NRPS) unless they are recorded already (a
+    launch's record, with its grade service, stays); whether they were new."""
+    m = members.c
+    with db.writing(engine), engine.begin() as connection:
+        found = connection.execute(sa.select(m.sub).where(
+            m.exam_id == exam_id, m.platform_id == platform_id,
+            m.student_id == student_id)).first()
+        if found is None:
+            connection.execute(members.insert().values(
+                exam_id=exam_id, platform_id=platform_id, student_id=student_id, sub=sub,
+                scopes="[]", launched_at=now))
+    return found is None
+
+
+def put_memberships_url(engine: sa.Engine, exam_id: str, platform_id: int, url: str) -> None:
+    """Where the platform lists the course's members (the newest launch's word)."""
+    c = contexts.c
+    with db.writing(engine), engine.begin() as connection:
+        found = connection.execute(sa.update(contexts).where(
+            c.exam_id == exam_id, c.platform_id == platform_id).values(
+                memberships_url=url)).rowcount
+        if not found:
+            connection.execute(contexts.insert().values(
+                exam_id=exam_id, platform_id=platform_id, memberships_url=url))
+
+
+def memberships_urls(engine: sa.Engine, exam_id: str) -> dict[int, str]:
+    """Where each platform lists the course's members, by platform id."""
+    with engine.connect() as connection:
+        return {r.platform_id: r.memberships_url for r in connection.execute(
+            sa.select(contexts).where(contexts.c.exam_id == exam_id))}
+
+
 def exam_members(engine: sa.Engine, exam_id: str) -> list[Member]:
     with engine.connect() as connection:
         rows = connection.execute(sa.select(members).where(members.c.exam_id == exam_id)
                                   .order_by(members.c.student_id)).all()
     return [Member(r.exam_id, r.platform_id, r.student_id, r.sub, r.resource_link_id,
-                   r.lineitems_url, r.lineitem_url, tuple(json.loads(r.scopes)))
-            for r in rows]
+                   r.lineitems_url, r.lineitem_url, tuple(json.loads(r.scopes)),
+                   db.utc(r.launched_at)) for r in rows]
 
 
 def _bind(connection, exam_id: str, platform_id: int, url: str) -> None:

@@ -6,7 +6,8 @@ carry (:mod:`.verify`). The roles then decide: staff get a session of their own 
 by the token's ``name``, for the audit log); a learner gets the session of the roster
 student the platform's ``user_claim`` finds (:mod:`.roster_match`), and one the roster
 does not hold is refused with a page saying so (403). A student's launch also records
-them for the grade service, with the AGS endpoint it names (:mod:`.grade_sync`). What the user opens next is the
+them for the grade service, with the AGS endpoint it names (:mod:`.grade_sync`); any
+launch records where the platform lists the course's members (:mod:`.roster_import`). What the user opens next is the
 student or staff page of the session's handle (:mod:`.sessions`).
 """
 
@@ -58,6 +59,10 @@ def launch(engine: sa.Engine, exam_id: str, students: Mapping[str, object], id_t
         raise LaunchRefused(_("your role in this course gives no access to the exam "
                               "server"), 403, _("No access"))
     sub = str(found["sub"])
+    service = found.get(claims.NRPS_CLAIM)
+    if isinstance(service, dict) and isinstance(service.get("context_memberships_url"), str):
+        grades_store.put_memberships_url(engine, exam_id, platform.id,
+                                         service["context_memberships_url"])
     if role == claims.STAFF:
         name = found.get("name") or found.get("email") or sub
         session = store.Session(exam_id, platform.id, role, None,

@@ -16,8 +16,9 @@ from . import claims
 TITLE = "dynagrade"
 
 #: the services the tool asks for (the LTI Advantage scopes it may be granted): line
-#: items and scores (AGS)
-SCOPES: tuple[str, ...] = (claims.AGS_LINEITEM_SCOPE, claims.AGS_SCORE_SCOPE)
+#: items and scores (AGS), the course's members (NRPS)
+SCOPES: tuple[str, ...] = (claims.AGS_LINEITEM_SCOPE, claims.AGS_SCORE_SCOPE,
+                           claims.NRPS_SCOPE)
 
 
 @dataclass(frozen=True)
