@@ -3,8 +3,9 @@ session: its own RSA key and JWKS, OIDC login initiation (``/launch`` sends the 
 to the tool), the authorization endpoint (``/auth``: checks the tool's request, mints
 the id_token, posts it back with a self-submitting form), an OAuth2 client-credentials
 token endpoint (``/token``: the tool's client_assertion verified with the tool's JWKS),
-and AGS (line items, scores) and NRPS (memberships, two a page) endpoints, which record
-what the tool sent.
+AGS (line items, scores) and NRPS (memberships, two a page) endpoints, and the return
+URL of deep linking (``/deep-link-return``: the tool's signed answer verified), which
+record what the tool sent.
 
 Written from the specifications (LTI 1.3 Core, Security Framework, AGS 2.0, NRPS 2.0),
 as a platform would behave, not from the tool's code.
@@ -93,6 +94,8 @@ class Platform:
     tool_jwks: Callable[[], dict] | None = None
     #: the access tokens given, with their scopes
     tokens: dict[str, set[str]] = field(default_factory=dict)
+    #: the claims of every deep-linking answer the tool posted back (verified)
+    placed: list[dict] = field(default_factory=list)
 
     @property
     def issuer(self) -> str:
@@ -126,17 +129,31 @@ class Platform:
         return jwt.encode(claims, key or self.key, algorithm="RS256",
                           headers={"kid": kid or self.kid})
 
-    def login_initiation(self, user: str) -> str:
-        """The URL a platform sends the browser to when ``user`` opens the activity."""
+    def deep_linking_claims(self, user: User, nonce: str) -> dict:
+        """The claims of a deep-linking request of ``user`` (the activity chooser)."""
+        found = self.claims(user, nonce)
+        del found[LTI + "resource_link"]
+        found[LTI + "message_type"] = "LtiDeepLinkingRequest"
+        found["https://purl.imsglobal.org/spec/lti-dl/claim/deep_linking_settings"] = {
+            "deep_link_return_url": f"{self.url}/deep-link-return",
+            "accept_types": ["ltiResourceLink"], "accept_multiple": False,
+            "accept_presentation_document_targets": ["iframe", "window"],
+            "data": "platform-data-42"}
+        return found
+
+    def login_initiation(self, user: str, hint: str = "link-1") -> str:
+        """The URL a platform sends the browser to when ``user`` opens the activity
+        (``hint`` ``deep-link``: when they add one from the activity chooser)."""
         return f"{self.tool}/lti/login?" + urlencode({
             "iss": self.issuer, "login_hint": user, "target_link_uri": f"{self.tool}/lti/launch",
             "client_id": CLIENT_ID, "lti_deployment_id": DEPLOYMENT_ID,
-            "lti_message_hint": "link-1"})
+            "lti_message_hint": hint})
 
     # -- the endpoints --------------------------------------------------------------------
 
     async def launch(self, request: Request) -> Response:
-        return RedirectResponse(self.login_initiation(request.query_params["user"]), 302)
+        hint = "deep-link" if request.query_params.get("deep") else "link-1"
+        return RedirectResponse(self.login_initiation(request.query_params["user"], hint), 302)
 
     async def jwks(self, request: Request) -> Response:
         return JSONResponse({"keys": [public_jwk(self.key, self.kid)]})
@@ -151,7 +168,9 @@ class Platform:
         user = self.users.get(q.get("login_hint", ""))
         if wrong or user is None or not q.get("state") or not q.get("nonce"):
             return JSONResponse({"error": "invalid_request", "wrong": wrong}, 400)
-        token = self.sign(self.claims(user, q["nonce"]))
+        claims = self.deep_linking_claims(user, q["nonce"]) \
+            if q.get("lti_message_hint") == "deep-link" else self.claims(user, q["nonce"])
+        token = self.sign(claims)
         self.issued.append(token)
         return HTMLResponse(
             f'<!doctype html><html lang="en"><head><title>Platform</title></head><body>'
@@ -168,12 +187,8 @@ class Platform:
                 "client_assertion_type") != "urn:ietf:params:oauth:client-assertion-type:jwt-bearer":
             return JSONResponse({"error": "unsupported_grant_type"}, 400)
         assertion = str(form.get("client_assertion", ""))
-        keys = self.tool_jwks() if self.tool_jwks else \
-            httpx.get(f"{self.tool}/lti/jwks", timeout=10).json()
         try:
-            kid = jwt.get_unverified_header(assertion)["kid"]
-            jwk = next(k for k in keys["keys"] if k["kid"] == kid)
-            found = jwt.decode(assertion, jwt.PyJWK(jwk).key, algorithms=["RS256"],
+            found = jwt.decode(assertion, self.tool_key(assertion), algorithms=["RS256"],
                                audience=f"{self.url}/token", issuer=CLIENT_ID,
                                options={"require": ["exp", "iat", "jti", "sub"]})
         except (jwt.PyJWTError, KeyError, StopIteration):
@@ -187,6 +202,28 @@ class Platform:
         self.tokens[token] = scopes
         return JSONResponse({"access_token": token, "token_type": "Bearer",
                              "expires_in": 3600, "scope": " ".join(sorted(scopes))})
+
+    def tool_key(self, token: str):
+        """The tool's public key that signed ``token`` (KeyError: none of its keys)."""
+        keys = self.tool_jwks() if self.tool_jwks else \
+            httpx.get(f"{self.tool}/lti/jwks", timeout=10).json()
+        kid = jwt.get_unverified_header(token)["kid"]
+        return jwt.PyJWK(next(k for k in keys["keys"] if k["kid"] == kid)).key
+
+    async def deep_link_return(self, request: Request) -> Response:
+        """The tool's deep-linking answer: a JWT it signed, audience this platform."""
+        token = str((await request.form()).get("JWT", ""))
+        try:
+            found = jwt.decode(token, self.tool_key(token), algorithms=["RS256"],
+                               audience=self.issuer, issuer=CLIENT_ID,
+                               options={"require": ["exp", "iat", "nonce"]})
+        except (jwt.PyJWTError, KeyError, StopIteration):
+            return HTMLResponse("<p>refused</p>", 400)
+        self.placed.append(found)
+        titles = ", ".join(html.escape(i.get("title", "")) for i in found.get(
+            "https://purl.imsglobal.org/spec/lti-dl/claim/content_items", []))
+        return HTMLResponse(f'<!doctype html><html lang="en"><head><title>Placed</title>'
+                            f'</head><body><main><h1>Placed: {titles}</h1></main></body></html>')
 
     def _granted(self, request: Request, scope: str) -> bool:
         given = request.headers.get("authorization", "").removeprefix("Bearer ")
@@ -243,7 +280,8 @@ class Platform:
             Route("/token", self.token, methods=["POST"]),
             Route("/lineitems", self.line_items_endpoint, methods=["GET", "POST"]),
             Route("/lineitems/{n}/scores", self.score_endpoint, methods=["POST"]),
-            Route("/memberships", self.memberships)])
+            Route("/memberships", self.memberships),
+            Route("/deep-link-return", self.deep_link_return, methods=["POST"])])
 
 
 @dataclass

@@ -2,7 +2,8 @@
 and the test platform (tests/lti_platform.py): the platform sends the browser through
 login initiation, its authorization endpoint and the id_token's form post to the
 student's page, where she answers and submits, and her score reaches the platform's
-gradebook (AGS); a user not on the roster reads why.
+gradebook (AGS), which the staff page lists; a user not on the roster reads why; a
+teacher places a practice exercise from the activity chooser (deep linking).
 axe-core finds nothing on either page; on SQLite and PostgreSQL."""
 
 from __future__ import annotations
@@ -104,3 +105,23 @@ def test_a_user_not_on_the_roster_reads_why(exam_dir, tmp_path):
         expect(page.locator("h1")).to_have_text("Not on the roster")
         expect(page.locator("main")).to_contain_text("zed@example.org")
         assert_accessible(page, "not on the roster")
+
+
+def test_a_teacher_places_a_practice_exercise_from_the_activity_chooser(exam_dir, tmp_path):
+    from playwright.sync_api import expect
+
+    manifest = exam_copy(exam_dir, tmp_path / "pr", mode="practice", feedback="immediate")
+    with launched(manifest, tmp_path, None) as (platform, _staff), chromium() as browser:
+        page = browser.new_page()
+        page.goto(f"{platform.url}/launch?user=u-prof&deep=1")
+        page.wait_for_url(f"{platform.tool}/i/lti-*/lti/place")
+        assert_accessible(page, "what to place")
+        page.locator("input[value='exercise:sliding-up-a-slope']").check()
+        page.get_by_role("button", name="Place it").click()
+        # the signed answer goes back by itself (the page's script posts it)
+        page.wait_for_url(f"{platform.url}/deep-link-return")
+        expect(page.locator("h1")).to_contain_text("Placed:")
+        (found,) = platform.placed
+        (item,) = found["https://purl.imsglobal.org/spec/lti-dl/claim/content_items"]
+        assert item["custom"] == {"exercise": "sliding-up-a-slope"}
+        assert item["url"] == f"{platform.tool}/lti/launch"

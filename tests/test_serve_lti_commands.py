@@ -56,11 +56,15 @@ def test_show_prints_the_values_the_registration_forms_ask_for(manifest):
     assert f"  Public keyset URL: {BASE}/lti/jwks" in lines
     assert f"  Initiate login URL: {BASE}/lti/login" in lines
     assert f"  Redirection URI(s): {BASE}/lti/launch" in lines
+    assert f"  Content Selection URL (deep linking): {BASE}/lti/launch" in lines
     canvas = json.loads(out[out.index("{"):out.rindex("}") + 1])
     assert canvas["oidc_initiation_url"] == f"{BASE}/lti/login"
     assert canvas["target_link_uri"] == f"{BASE}/lti/launch"
     assert canvas["public_jwk_url"] == f"{BASE}/lti/jwks"
     assert canvas["extensions"][0]["platform"] == "canvas.instructure.com"
+    placements = canvas["extensions"][0]["settings"]["placements"]
+    assert {p["placement"] for p in placements} == {"link_selection", "assignment_selection"}
+    assert {p["message_type"] for p in placements} == {"LtiDeepLinkingRequest"}
     ags = "https://purl.imsglobal.org/spec/lti-ags/scope/"
     nrps = "https://purl.imsglobal.org/spec/lti-nrps/scope/contextmembership.readonly"
     assert set(canvas["scopes"]) == {ags + "lineitem", ags + "score", nrps}

@@ -20,6 +20,8 @@ The protocol (1EdTech LTI 1.3 Core and Security Framework), one job per module:
   and the task that queues, sends and retries scores.
 - :mod:`.roster_import`: Names and Role Provisioning Services: the course's learners
   merged with the roster.
+- :mod:`.deep_linking`: Deep Linking: a teacher's request kept, the signed answer
+  placing the exam or a practice exercise.
 - :mod:`.setup`: the values a platform's registration form asks for.
 - :mod:`.commands`: ``dynagrade lti``.
 

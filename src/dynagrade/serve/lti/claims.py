@@ -20,8 +20,10 @@ LIS = LTI + "lis"
 CUSTOM = LTI + "custom"
 
 RESOURCE_LINK_REQUEST = "LtiResourceLinkRequest"
+DEEP_LINKING_REQUEST = "LtiDeepLinkingRequest"
+DEEP_LINKING_RESPONSE = "LtiDeepLinkingResponse"
 #: the messages a launch may carry
-LAUNCH_MESSAGES = (RESOURCE_LINK_REQUEST,)
+LAUNCH_MESSAGES = (RESOURCE_LINK_REQUEST, DEEP_LINKING_REQUEST)
 LTI_VERSION = "1.3.0"
 
 #: the last word of a role IRI (after ``#`` or ``/``) that makes its holder staff
@@ -63,3 +65,10 @@ SCORE_MEDIA = "application/vnd.ims.lis.v1.score+json"
 NRPS_CLAIM = "https://purl.imsglobal.org/spec/lti-nrps/claim/namesroleservice"
 NRPS_SCOPE = "https://purl.imsglobal.org/spec/lti-nrps/scope/contextmembership.readonly"
 MEMBERSHIPS_MEDIA = "application/vnd.ims.lti-nrps.v2.membershipcontainer+json"
+
+# -- Deep Linking 2.0 ---------------------------------------------------------------------
+
+DL = "https://purl.imsglobal.org/spec/lti-dl/claim/"
+DL_SETTINGS = DL + "deep_linking_settings"
+DL_CONTENT_ITEMS = DL + "content_items"
+DL_DATA = DL + "data"

@@ -7,7 +7,9 @@ by the token's ``name``, for the audit log); a learner gets the session of the r
 student the platform's ``user_claim`` finds (:mod:`.roster_match`), and one the roster
 does not hold is refused with a page saying so (403). A student's launch also records
 them for the grade service, with the AGS endpoint it names (:mod:`.grade_sync`); any
-launch records where the platform lists the course's members (:mod:`.roster_import`). What the user opens next is the
+launch records where the platform lists the course's members (:mod:`.roster_import`).
+A deep-linking request (staff only) keeps its settings with the teacher's session for
+the page where they choose what to place (:mod:`.deep_linking`). What the user opens next is the
 student or staff page of the session's handle (:mod:`.sessions`).
 """
 
@@ -21,7 +23,7 @@ from typing import Mapping
 import sqlalchemy as sa
 
 from ...i18n import _
-from . import claims, grades_store, sessions, store
+from . import claims, deep_linking, grades_store, sessions, store
 from .refusals import LaunchRefused
 from .roster_match import claimed_value, roster_student
 from .verify import verified_claims
@@ -29,10 +31,14 @@ from .verify import verified_claims
 
 @dataclass(frozen=True)
 class Launched:
-    """A started session: its id (the cookie) and who it is."""
+    """A started session: its id (the cookie), who it is, whether it came to place
+    content (deep linking), and the exercise the resource link names (``custom``
+    ``exercise``: a practice exercise placed by deep linking)."""
 
     session_id: str
     session: store.Session
+    placing: bool = False
+    exercise: str | None = None
 
 
 def platform_and_nonce(engine: sa.Engine, state: str, state_cookie: str | None,
@@ -63,6 +69,11 @@ def launch(engine: sa.Engine, exam_id: str, students: Mapping[str, object], id_t
     if isinstance(service, dict) and isinstance(service.get("context_memberships_url"), str):
         grades_store.put_memberships_url(engine, exam_id, platform.id,
                                          service["context_memberships_url"])
+    placing = found.get(claims.MESSAGE_TYPE) == claims.DEEP_LINKING_REQUEST
+    request = deep_linking.request_of(found, platform.id) if placing else None
+    if placing and (role != claims.STAFF or request is None):
+        raise LaunchRefused(_("only the course's teachers place the exam server's content, "
+                              "as a link to it"), 403, _("No access"))
     if role == claims.STAFF:
         name = found.get("name") or found.get("email") or sub
         session = store.Session(exam_id, platform.id, role, None,
@@ -78,7 +89,13 @@ def launch(engine: sa.Engine, exam_id: str, students: Mapping[str, object], id_t
                 403, _("Not on the roster"))
         session = store.Session(exam_id, platform.id, role, student_id, None, sub)
         grades_store.put_member(engine, member(exam_id, platform.id, student_id, found), now)
-    return Launched(sessions.start(engine, session, now), session)
+    session_id = sessions.start(engine, session, now)
+    if request is not None:
+        deep_linking.keep(engine, session_id, request)
+    custom = found.get(claims.CUSTOM)
+    exercise = custom.get("exercise") if isinstance(custom, dict) else None
+    return Launched(session_id, session, placing,
+                    exercise if isinstance(exercise, str) else None)
 
 
 def member(exam_id: str, platform_id: int, student_id: str, found: dict

@@ -2,8 +2,9 @@
 
 Moodle ("Site administration → Plugins → Activity modules → External tool → Manage
 tools → configure a tool manually") asks for the tool URL, the public keyset URL, the
-initiate login URL and the redirection URI(s); Canvas (Developer Keys → LTI key) takes
-the same values, or all at once as a JSON configuration (:func:`canvas_json`).
+initiate login URL, the redirection URI(s) and (deep linking) the content selection
+URL; Canvas (Developer Keys → LTI key) takes the same values, or all at once as a JSON
+configuration (:func:`canvas_json`).
 docs/lti.md walks through both forms.
 """
 
@@ -43,13 +44,19 @@ class ToolUrls:
     def jwks_url(self) -> str:
         return f"{self.base}/lti/jwks"
 
+    @property
+    def deep_linking_url(self) -> str:
+        """Where the activity chooser's requests go (the launch URL takes both kinds)."""
+        return self.tool_url
+
     def fields(self) -> list[tuple[str, str]]:
         """(form field, value) in the order Moodle's form asks for them."""
         return [("Tool URL", self.tool_url),
                 ("Public key type", "Keyset URL"),
                 ("Public keyset URL", self.jwks_url),
                 ("Initiate login URL", self.login_url),
-                ("Redirection URI(s)", "\n".join(self.redirect_uris))]
+                ("Redirection URI(s)", "\n".join(self.redirect_uris)),
+                ("Content Selection URL (deep linking)", self.deep_linking_url)]
 
 
 def canvas_json(urls: ToolUrls, description: str) -> dict:
@@ -64,9 +71,10 @@ def canvas_json(urls: ToolUrls, description: str) -> dict:
         "extensions": [{
             "platform": "canvas.instructure.com",
             "privacy_level": "public",
-            "settings": {"placements": [{
-                "placement": "link_selection", "message_type": "LtiResourceLinkRequest",
-                "target_link_uri": urls.tool_url, "text": TITLE}]},
+            "settings": {"placements": [
+                {"placement": placement, "message_type": "LtiDeepLinkingRequest",
+                 "target_link_uri": urls.deep_linking_url, "text": TITLE}
+                for placement in ("link_selection", "assignment_selection")]},
         }],
         "custom_fields": {},
     }

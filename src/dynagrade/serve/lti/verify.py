@@ -8,8 +8,8 @@
 3. ``exp`` has not passed and ``iat`` is not in the future (one minute of leeway for
    clocks);
 4. ``nonce`` is the one this tool gave the login that the state names;
-5. the deployment is one the platform registered, the message a resource-link launch,
-   the LTI version 1.3.0.
+5. the deployment is one the platform registered, the message a resource-link launch
+   or a deep-linking request, the LTI version 1.3.0.
 
 A token failing any of these is refused (:class:`.refusals.LaunchRefused`, 401).
 """

@@ -2,7 +2,8 @@
 back) and ``/lti/jwks`` (the tool's public keys). No token: the platform's signed
 id_token, the state cookie and the stored state and nonce decide
 (:mod:`dynagrade.serve.lti`). A launch ends in a redirect to the student's or staff page
-of the new session's handle, the session's cookie set."""
+of the new session's handle, the session's cookie set (at the exercise a practice
+link names; a deep-linking request: at the teacher's page of what to place)."""
 
 from __future__ import annotations
 
@@ -94,8 +95,14 @@ async def launch_posted(request: Request, server: ServerDep, now: Now, base: Roo
     except LaunchRefused as error:
         return refused_page(server, error, base)
     handle = sessions.handle(launched.session_id)
-    where = "s" if launched.session.role == "student" else "i"
-    answer = RedirectResponse(f"{base}/{where}/{handle}", status_code=303)
+    if launched.placing:
+        where = f"i/{handle}/lti/place"
+    elif launched.session.role == "student":
+        exercise = launched.exercise if launched.exercise in data.exercises_meta else None
+        where = f"s/{handle}" + (f"#{exercise}" if exercise else "")
+    else:
+        where = f"i/{handle}"
+    answer = RedirectResponse(f"{base}/{where}", status_code=303)
     answer.set_cookie(sessions.COOKIE, launched.session_id, max_age=sessions.SESSION_SECONDS,
                       path=_cookie_path(base), secure=True, httponly=True, samesite="none")
     answer.delete_cookie(login.STATE_COOKIE, path=f"{base}/lti/", secure=True,
