@@ -234,3 +234,8 @@ def test_roles_map_to_staff_and_students():
     assert role_of(["Learner"]) == "student"
     assert role_of([lis + "membership#Mentor"]) is None
     assert role_of("Learner") is None  # not a list: no roles at all
+    # teaching elsewhere makes no one staff here; administering the system does
+    assert role_of([lis + "institution/person#Instructor",
+                    lis + "membership#Learner"]) == "student"
+    assert role_of([lis + "institution/person#Instructor"]) is None
+    assert role_of([lis + "system/person#Administrator"]) == "staff"

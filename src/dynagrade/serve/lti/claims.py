@@ -2,8 +2,11 @@
 
 A launch's roles are IRIs of the LIS vocabulary (``http://purl.imsglobal.org/vocab/lis/
 v2/membership#Instructor``) or, as the specification still allows, their short names
-(``Instructor``). Instructors, teaching assistants and administrators are staff;
-learners are students; anyone else is neither and is refused.
+(``Instructor``, a role in the course). The course's instructors and teaching
+assistants are staff, and so are administrators (of the course, the institution or the
+system); the course's learners are students; anyone else is neither and is refused.
+An institution role other than administrator says nothing about this course: a learner
+who teaches elsewhere (``institution/person#Instructor``) is a student here.
 """
 
 from __future__ import annotations
@@ -26,7 +29,8 @@ DEEP_LINKING_RESPONSE = "LtiDeepLinkingResponse"
 LAUNCH_MESSAGES = (RESOURCE_LINK_REQUEST, DEEP_LINKING_REQUEST)
 LTI_VERSION = "1.3.0"
 
-#: the last word of a role IRI (after ``#`` or ``/``) that makes its holder staff
+LIS_ROLES = "http://purl.imsglobal.org/vocab/lis/v2/"
+#: the course's roles (context roles) that make their holder staff, by their last word
 STAFF_ROLES = frozenset({"Instructor", "TeachingAssistant", "Administrator"})
 STUDENT_ROLES = frozenset({"Learner"})
 
@@ -39,16 +43,23 @@ def role_name(role: str) -> str:
     return role.rsplit("#", 1)[-1].rsplit("/", 1)[-1]
 
 
+def in_course(role: str) -> bool:
+    """Whether ``role`` is a role in the course (a membership role, or a short name)."""
+    return role.startswith(LIS_ROLES + "membership") or ("/" not in role and ":" not in role)
+
+
 def role_of(roles: object) -> str | None:
     """``"staff"``, ``"student"`` or None (no role this tool admits) for a launch's
     roles claim; staff when the holder is both."""
-    names = {role_name(r) for r in roles if isinstance(r, str)} \
-        if isinstance(roles, list) else set()
-    if names & STAFF_ROLES:
+    held = [r for r in roles if isinstance(r, str)] if isinstance(roles, list) else []
+    course = {role_name(r) for r in held if in_course(r)}
+    anywhere = {role_name(r) for r in held}
+    if course & STAFF_ROLES or "Administrator" in anywhere:
         return STAFF
-    if names & STUDENT_ROLES:
+    if course & STUDENT_ROLES:
         return STUDENT
     return None
+
 
 # -- Assignment and Grade Services (AGS 2.0) ----------------------------------------------
 

@@ -64,6 +64,9 @@ def request_of(found: dict, platform_id: int) -> Request | None:
 def keep(engine: sa.Engine, session_id: str, request: Request) -> None:
     """Keep ``request`` with the teacher's session (until it ends)."""
     with db.writing(engine), engine.begin() as connection:
+        # the requests of sessions that have ended go
+        connection.execute(deep_links.delete().where(deep_links.c.session_hash.not_in(
+            sa.select(store.sessions.c.session_hash))))
         connection.execute(deep_links.insert().values(
             session_hash=db.hash_token(session_id), platform_id=request.platform_id,
             deployment_id=request.deployment_id, return_url=request.return_url,
