@@ -155,6 +155,14 @@ class Platform:
         hint = "deep-link" if request.query_params.get("deep") else "link-1"
         return RedirectResponse(self.login_initiation(request.query_params["user"], hint), 302)
 
+    async def course(self, request: Request) -> Response:
+        """The course page: the activity in an iframe, as an LMS shows it embedded."""
+        user = html.escape(request.query_params["user"])
+        return HTMLResponse(f'<!doctype html><html lang="en"><head><title>Course</title>'
+                            f'</head><body><main><h1>Dynamics</h1><iframe title="Exam" '
+                            f'src="/launch?user={user}" width="1000" height="700"></iframe>'
+                            f'</main></body></html>')
+
     async def jwks(self, request: Request) -> Response:
         return JSONResponse({"keys": [public_jwk(self.key, self.kid)]})
 
@@ -276,7 +284,8 @@ class Platform:
 
     def app(self) -> Starlette:
         return Starlette(routes=[
-            Route("/launch", self.launch), Route("/jwks", self.jwks), Route("/auth", self.auth),
+            Route("/launch", self.launch), Route("/course", self.course),
+            Route("/jwks", self.jwks), Route("/auth", self.auth),
             Route("/token", self.token, methods=["POST"]),
             Route("/lineitems", self.line_items_endpoint, methods=["GET", "POST"]),
             Route("/lineitems/{n}/scores", self.score_endpoint, methods=["POST"]),

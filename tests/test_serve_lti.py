@@ -239,3 +239,18 @@ def test_roles_map_to_staff_and_students():
                     lis + "membership#Learner"]) == "student"
     assert role_of([lis + "institution/person#Instructor"]) is None
     assert role_of([lis + "system/person#Administrator"]) == "staff"
+
+
+def test_a_canvas_registration_lets_the_school_s_canvas_frame_launched_pages(tmp_path):
+    from dynagrade.serve import db
+    from dynagrade.serve.lti import store
+    from dynagrade.serve.lti.framing import PlatformOrigins
+
+    engine = db.connect(f"sqlite:///{tmp_path / 'framing.sqlite3'}")
+    store.register(engine, "https://canvas.instructure.com", "1000", ["d1"],
+                   "https://sso.canvaslms.com/api/lti/authorize_redirect",
+                   "https://school.instructure.com/login/oauth2/token",
+                   "https://sso.canvaslms.com/api/lti/security/jwks", "email")
+    assert PlatformOrigins(engine)() == ("https://canvas.instructure.com",
+                                         "https://school.instructure.com",
+                                         "https://sso.canvaslms.com")

@@ -125,3 +125,17 @@ def test_a_teacher_places_a_practice_exercise_from_the_activity_chooser(exam_dir
         (item,) = found["https://purl.imsglobal.org/spec/lti-dl/claim/content_items"]
         assert item["custom"] == {"exercise": "sliding-up-a-slope"}
         assert item["url"] == f"{platform.tool}/lti/launch"
+
+
+def test_a_launch_inside_the_platform_s_iframe_shows_the_student_s_page(exam_dir, tmp_path):
+    """The LMS embeds the activity: the launched page is framed by the registered
+    platform's origin (frame-ancestors), and the cookies are sent within the frame."""
+    from playwright.sync_api import expect
+
+    manifest = exam_copy(exam_dir, tmp_path / "hw", mode="homework", feedback="immediate")
+    with launched(manifest, tmp_path, None) as (platform, _staff), chromium() as browser:
+        page = browser.new_page()
+        page.goto(f"{platform.url}/course?user=u-bo")
+        frame = page.frame_locator("iframe")
+        expect(frame.locator("h1")).to_contain_text("Serve test", timeout=15000)
+        expect(frame.locator("body")).to_contain_text("Bo Two")

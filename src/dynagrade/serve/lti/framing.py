@@ -2,8 +2,10 @@
 
 An LTI tool runs in the platform's iframe, so the pages a launch leads to (the launch
 answer itself and the pages of a session's handle, ``/s/lti-…`` and ``/i/lti-…``) may be
-framed by the origins of the registered platforms (their issuer's and their login URL's),
-and by nothing else. Every other page keeps ``frame-ancestors 'none'``
+framed by the origins of the registered platforms (their issuer's, login URL's and token
+URL's) and by nothing else. The token URL counts because Canvas's issuer and login URL
+are Instructure's shared hosts, while its token URL is the school's own Canvas, the page
+that frames the tool. Every other page keeps ``frame-ancestors 'none'``
 (:mod:`dynagrade.serve.headers`). The origins are read from the database at most every
 :data:`REREAD_SECONDS`, so a platform registered by ``dynagrade lti register`` is framed
 soon without a restart.
@@ -48,7 +50,7 @@ class PlatformOrigins:
         with self._lock:
             if time.monotonic() - self._read_at > REREAD_SECONDS:
                 found = {origin(url) for p in store.all_platforms(self.engine)
-                         for url in (p.issuer, p.auth_login_url)}
+                         for url in (p.issuer, p.auth_login_url, p.token_url)}
                 self._origins = tuple(sorted(o for o in found if o))
                 self._read_at = time.monotonic()
             return self._origins

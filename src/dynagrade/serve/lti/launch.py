@@ -64,7 +64,6 @@ def launch(engine: sa.Engine, exam_id: str, students: Mapping[str, object], id_t
     if role is None:
         raise LaunchRefused(_("your role in this course gives no access to the exam "
                               "server"), 403, _("No access"))
-    sub = str(found["sub"])
     service = found.get(claims.NRPS_CLAIM)
     if isinstance(service, dict) and isinstance(service.get("context_memberships_url"), str):
         grades_store.put_memberships_url(engine, exam_id, platform.id,
@@ -74,21 +73,8 @@ def launch(engine: sa.Engine, exam_id: str, students: Mapping[str, object], id_t
     if placing and (role != claims.STAFF or request is None):
         raise LaunchRefused(_("only the course's teachers place the exam server's content, "
                               "as a link to it"), 403, _("No access"))
-    if role == claims.STAFF:
-        name = found.get("name") or found.get("email") or sub
-        session = store.Session(exam_id, platform.id, role, None,
-                                f"{str(name)[:180]} (LTI)", sub)
-    else:
-        student_id = roster_student(students, found, platform.user_claim)
-        if student_id is None:
-            raise LaunchRefused(
-                _("you are not on this exam's roster (looked up by {claim}: {value}); "
-                  "ask the course staff to add you").format(
-                    claim=platform.user_claim,
-                    value=claimed_value(found, platform.user_claim) or _("none sent")),
-                403, _("Not on the roster"))
-        session = store.Session(exam_id, platform.id, role, student_id, None, sub)
-        grades_store.put_member(engine, member(exam_id, platform.id, student_id, found), now)
+    session = staff_session(exam_id, platform, found) if role == claims.STAFF \
+        else student_session(engine, exam_id, students, platform, found, now)
     session_id = sessions.start(engine, session, now)
     if request is not None:
         deep_linking.keep(engine, session_id, request)
@@ -96,6 +82,31 @@ def launch(engine: sa.Engine, exam_id: str, students: Mapping[str, object], id_t
     exercise = custom.get("exercise") if isinstance(custom, dict) else None
     return Launched(session_id, session, placing,
                     exercise if isinstance(exercise, str) else None)
+
+
+def staff_session(exam_id: str, platform: store.Platform, found: dict) -> store.Session:
+    """A teacher's session, named for the audit log by the name the platform sends."""
+    sub = str(found["sub"])
+    name = found.get("name") or found.get("email") or sub
+    return store.Session(exam_id, platform.id, claims.STAFF, None,
+                         f"{str(name)[:180]} (LTI)", sub)
+
+
+def student_session(engine: sa.Engine, exam_id: str, students: Mapping[str, object],
+                    platform: store.Platform, found: dict, now: dt.datetime) -> store.Session:
+    """The session of the roster student the launch names (recorded for the grade
+    service); :class:`LaunchRefused` (403) for one the roster does not hold."""
+    student_id = roster_student(students, found, platform.user_claim)
+    if student_id is None:
+        raise LaunchRefused(
+            _("you are not on this exam's roster (looked up by {claim}: {value}); "
+              "ask the course staff to add you").format(
+                claim=platform.user_claim,
+                value=claimed_value(found, platform.user_claim) or _("none sent")),
+            403, _("Not on the roster"))
+    grades_store.put_member(engine, member(exam_id, platform.id, student_id, found), now)
+    return store.Session(exam_id, platform.id, claims.STUDENT, student_id, None,
+                         str(found["sub"]))
 
 
 def member(exam_id: str, platform_id: int, student_id: str, found: dict
