@@ -15,8 +15,10 @@ import pytest
 
 from serve_support import exam_copy, exam_dir, reference_answers, serve  # noqa: F401
 
-#: the routes anyone may call
-PUBLIC = {("GET", "/healthz"), ("GET", "/static/{name}")}
+#: the routes anyone may call (LTI's: the platform's signed id_token, the state and its
+#: cookie decide, tests/test_serve_lti.py)
+PUBLIC = {("GET", "/healthz"), ("GET", "/static/{name}"), ("GET", "/lti/login"),
+          ("POST", "/lti/login"), ("POST", "/lti/launch"), ("GET", "/lti/jwks")}
 OTHER_ROLE = {"student": "staff", "staff": "student"}
 #: what a route's path parameters are filled with (a student of the roster, who has
 #: answered by the time a staff route asks: the student routes come first)
@@ -233,7 +235,8 @@ def test_the_openapi_document_describes_every_response(served):
                            ("GET", "/api/v1/overrides", "Overrides"),
                            ("GET", "/api/v1/students/{student_id}", "StudentRecord"),
                            ("GET", "/api/v1/policy", "PolicyInForce"),
-                           ("PUT", "/api/v1/policy", "PolicyInForce")}
+                           ("PUT", "/api/v1/policy", "PolicyInForce"),
+                           ("GET", "/lti/jwks", "KeySet")}
     refusal = operations[("POST", "/api/v1/answers")]["responses"]
     for status in ("401", "403", "413", "422", "429", "503"):
         schema = refusal[status]["content"]["application/json"]["schema"]

@@ -703,10 +703,12 @@ def _parse_settings(exercise, settings) -> dict[str, float]:
 
 
 from .serve.commands import links as _links, policy as _policy, serve as _serve  # noqa: E402  (light: click only)
+from .serve.lti.commands import lti as _lti  # noqa: E402  (light: click only)
 
 main.add_command(_serve)
 main.add_command(_links)
 main.add_command(_policy)
+main.add_command(_lti)
 for _subcommand in main.commands.values():  # --exercises after any subcommand, too
     _subcommand.params.append(_subcommand_exercises_option())
 

@@ -21,6 +21,8 @@ from starlette.concurrency import run_in_threadpool
 
 from . import db, errors, headers, limits
 from .exam_data import ExamData
+from .lti import grade_sync
+from .lti.framing import PlatformOrigins
 from .policy_changes import PolicySource
 from .reload import ExamReloader
 from .routes import ROUTERS
@@ -47,6 +49,7 @@ def build_app(settings: Settings, clock: Callable[[], dt.datetime] | None = None
     engine = db.connect(settings.db_url or db.sqlite_url_beside(settings.manifest))
     data.policy_source = PolicySource(engine, data.exam_id, data.manifest_policy)
     server = Server(settings, data, engine, db.server_secret(engine), clock or db.now)
+    server.platform_origins = PlatformOrigins(engine)
 
     @asynccontextmanager
     async def lifespan(app: FastAPI):
@@ -57,10 +60,12 @@ def build_app(settings: Settings, clock: Callable[[], dt.datetime] | None = None
         reloader = await run_in_threadpool(ExamReloader, server)
         server.catch_up = reloader.catch_up
         watching = asyncio.create_task(reloader.watch())
+        sending = asyncio.create_task(grade_sync.run(server))  # LTI scores, if any
         try:
             yield
         finally:
             watching.cancel()
+            sending.cancel()
             if server.pool is not None:
                 server.pool.close()
             engine.dispose()

@@ -298,6 +298,13 @@ def _writing(engine: sa.Engine):
     return lock.held() if lock is not None else contextlib.nullcontext()
 
 
+def writing(engine: sa.Engine):
+    """The writer lock of ``engine`` (its SQLite file's; none on PostgreSQL), held
+    around a transaction that writes, by the modules that keep tables of their own
+    (:mod:`dynagrade.serve.lti`)."""
+    return _writing(engine)
+
+
 def _sqlite_pragmas(connection, _record) -> None:
     cursor = connection.cursor()
     cursor.execute("PRAGMA journal_mode=WAL")      # readers never block the writer

@@ -14,8 +14,11 @@ Callers. A token is either in a page's path (``/s/{token}``, ``/i/{token}``:
 ``BearerToken``). ``StudentLink``, ``StaffLink``, ``StudentBearer`` and ``StaffBearer``
 are the :class:`Caller` holding a token of that role, taken from that place, after the
 guards, in this order: the token's rate limit (429 with ``Retry-After``), an unknown or
-missing token (401), a token of the other role (403). ``StudentForm`` (``StaffForm``) is a form posted
-from a student's (a staff) page, after those and the form's CSRF field (403).
+missing token (401), a token of the other role (403). A user launched from an LMS holds
+no link: their token is the handle of their LTI session, which counts only together
+with the session's cookie (:mod:`dynagrade.serve.lti.sessions`). ``StudentForm``
+(``StaffForm``) is a form posted from a student's (a staff) page, after those and the
+form's CSRF field (403).
 """
 
 from __future__ import annotations
@@ -33,6 +36,7 @@ from ..i18n import _
 from . import db, limits
 from .exam_data import ExamData
 from .grading_pool import GradingPool
+from .lti import sessions as lti_sessions
 from .models import problem
 from .state import Server
 
@@ -130,17 +134,30 @@ class StudentCaller(Caller):
     student_id: str
 
 
-async def identify(server: Server, token: str, role: str, client: str = "") -> db.Identity:
+async def session_cookie(request: Request) -> str | None:
+    """The LTI session's cookie the request carries, if any."""
+    return request.cookies.get(lti_sessions.COOKIE)
+
+
+SessionCookie = Annotated[str | None, Depends(session_cookie)]
+
+
+async def identify(server: Server, token: str, role: str, client: str = "",
+                   cookie: str | None = None) -> db.Identity:
     """The holder of ``token``, who must have ``role``; refuses as the module says.
 
     A token seen in the last seconds is known without leaving the event loop; an unseen
-    one is looked up in the database in a thread, off the loop."""
+    one is looked up in the database in a thread, off the loop. An LTI session's handle
+    is looked up with ``cookie`` each time (it is not remembered without it)."""
     if len(token) > limits.MAX_TOKEN_CHARS:  # no token of ours: nothing to look up
         raise HTTPException(401, _("unknown link"))
     if not server.limiter.allow(limits.limiter_key(client, token)):
         raise HTTPException(429, _("too many requests; slow down"), headers={"Retry-After": "1"})
-    identity = server.identities.get(token)
-    if identity is None:
+    if lti_sessions.is_handle(token):
+        identity = await run_in_threadpool(lti_sessions.identity, server.engine,
+                                           server.data.exam_id, token, cookie,
+                                           server.clock())
+    elif (identity := server.identities.get(token)) is None:
         identity = await run_in_threadpool(db.identify, server.engine, server.data.exam_id,
                                            token)
         server.identities.put(token, identity)
@@ -151,40 +168,41 @@ async def identify(server: Server, token: str, role: str, client: str = "") -> d
     return identity
 
 
-async def _student(server: Server, token: str, client: str) -> StudentCaller:
-    identity = await identify(server, token, STUDENT, client)
+async def _student(server: Server, token: str, client: str,
+                   cookie: str | None) -> StudentCaller:
+    identity = await identify(server, token, STUDENT, client, cookie)
     if identity.student_id is None:  # a student's token always names its student
         raise HTTPException(401, _("unknown link"))
     return StudentCaller(token, STUDENT, identity.student_id)
 
 
-async def _staff(server: Server, token: str, client: str) -> Caller:
-    identity = await identify(server, token, STAFF, client)
+async def _staff(server: Server, token: str, client: str, cookie: str | None) -> Caller:
+    identity = await identify(server, token, STAFF, client, cookie)
     return Caller(token, STAFF, label=identity.label)
 
 
 async def student_by_link(server: ServerDep, token: LinkToken,
-                          client: ClientAddress) -> StudentCaller:
+                          client: ClientAddress, cookie: SessionCookie) -> StudentCaller:
     """The student whose link this page is."""
-    return await _student(server, token, client)
+    return await _student(server, token, client, cookie)
 
 
 async def staff_by_link(server: ServerDep, token: LinkToken,
-                        client: ClientAddress) -> Caller:
+                        client: ClientAddress, cookie: SessionCookie) -> Caller:
     """The staff member whose link this page is."""
-    return await _staff(server, token, client)
+    return await _staff(server, token, client, cookie)
 
 
 async def student_by_bearer(server: ServerDep, token: BearerToken,
-                            client: ClientAddress) -> StudentCaller:
+                            client: ClientAddress, cookie: SessionCookie) -> StudentCaller:
     """The student whose token the request carries."""
-    return await _student(server, token, client)
+    return await _student(server, token, client, cookie)
 
 
 async def staff_by_bearer(server: ServerDep, token: BearerToken,
-                          client: ClientAddress) -> Caller:
+                          client: ClientAddress, cookie: SessionCookie) -> Caller:
     """The staff member whose token the request carries."""
-    return await _staff(server, token, client)
+    return await _staff(server, token, client, cookie)
 
 
 StudentLink = Annotated[StudentCaller, Depends(student_by_link)]

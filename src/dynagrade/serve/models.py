@@ -548,3 +548,13 @@ class PolicyInForce(BaseModel):
                                                "feedback, counts, solutions, time_limit")
     changed: bool | None = Field(default=None, description="PUT: whether this call changed "
                                                            "the policy")
+
+
+# -- LTI ----------------------------------------------------------------------------------
+
+
+class KeySet(BaseModel):
+    """``GET /lti/jwks``: the tool's public keys (a JWK Set, RFC 7517), which platforms
+    check the tool's signatures with."""
+
+    keys: list[dict[str, str]] = Field(description="RSA public keys: kty, n, e, kid, alg, use")

@@ -72,6 +72,9 @@ class Server:
     #: loads the exam again when a regrade was applied since the last look, and says
     #: whether it did (:meth:`.reload.ExamReloader.catch_up`); set while the app runs
     catch_up: Callable[[], Awaitable[bool]] | None = None
+    #: the registered LTI platforms' origins, which alone may frame launched pages
+    #: (:class:`.lti.framing.PlatformOrigins`; none until the app sets it)
+    platform_origins: Callable[[], tuple[str, ...]] = lambda: ()
 
     def start_pool(self) -> GradingPool:
         """Start the grading processes (at the app's start)."""

@@ -12,6 +12,12 @@
 - :mod:`.exceptions`: exceptions to the policy per student, the staff page
   ``/i/{token}/exceptions`` and ``/api/v1/exceptions``.
 - :mod:`.regrade`: the staff's regrade page ``/i/{token}/regrade`` and ``/api/v1/regrades``.
+- :mod:`.lti`: LTI 1.3 login initiation, launch and the tool's public keys, ``/lti/…``
+  (no token: the platform's signed id_token decides).
+- :mod:`.lti_staff`: the staff's page of the course platform ``/i/{token}/lti`` (the
+  scores sent to its gradebook, the members imported).
+- :mod:`.lti_place`: the teacher's page of a deep-linking request
+  ``/i/{token}/lti/place``.
 
 Each route names who may call it in its signature (:mod:`dynagrade.serve.deps`);
 tests/test_serve_routes.py holds every route of every router to that.
@@ -19,9 +25,10 @@ tests/test_serve_routes.py holds every route of every router to that.
 
 from __future__ import annotations
 
-from . import (api, assets, audit, exceptions, health, regrade, staff, staff_links,
-               staff_students, student)
+from . import (api, assets, audit, exceptions, health, lti, lti_place, lti_staff, regrade,
+               staff, staff_links, staff_students, student)
 
 ROUTERS = (health.router, assets.router, student.router, staff.router, staff_students.router, api.router,
            exceptions.page_router, exceptions.api_router, staff_links.pages_router,
-           staff_links.api_router, audit.pages_router, audit.api_router, *regrade.ROUTERS)
+           staff_links.api_router, audit.pages_router, audit.api_router, *regrade.ROUTERS,
+           lti.router, lti_staff.router, lti_place.router)
