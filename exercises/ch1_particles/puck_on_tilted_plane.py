@@ -88,7 +88,7 @@ def figure(p):
     level = np.array([-up[1], up[0]])
     for k in (-2, -1, 0, 1, 2):                                  # level lines of the plane
         middle = 0.7 * k * up
-        axes.plot(*zip(middle - 2.6 * level, middle + 2.6 * level), color="0.75", lw=0.7)
+        axes.plot(*zip(middle - 2.6 * level, middle + 2.6 * level), color="0.5", lw=0.7)
     arrow(axes, (0.0, 0.0), tuple(1.3 * up), color="C2")
     axes.text(*(1.5 * up), "uphill", ha="center", va="center", fontsize=10, color="C2")
     angle_arc(axes, (0.0, 0.0), 0.45, 0.0, p.beta, "β", label_radius=0.62)
