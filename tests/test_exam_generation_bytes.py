@@ -1,13 +1,14 @@
 """Making exam generation faster must not change one byte of what it writes.
 
-A small exam (6 students x 3 exercises, figures, PDFs and worked solutions) is generated
-along two routes, one process (``jobs=1``) and two workers (``jobs=2``), each in a fresh
-process, and every file's SHA-256 is compared with ``tests/fixtures/exam_bytes.json``. That list was written by the
-generation code as it was BEFORE issue 28's speed work (commit 85b9dbd), with::
+A small exam (the exam tests' three exercises for 6 students, with figures, PDFs and
+worked solutions) is generated along two routes, one process (``jobs=1``) and two
+workers (``jobs=2``), each in a fresh process, and every file's SHA-256 is compared with
+``tests/fixtures/exam_bytes.json``. That list was written by the generation code as it
+was BEFORE issue 28's speed work (commit 85b9dbd, checked out apart), with::
 
-    PYTHONPATH=src python tests/test_exam_generation_bytes.py --write
+    PYTHONPATH=<checkout of 85b9dbd>/src python tests/test_exam_generation_bytes.py --write
 
-so it is a second route that does not share the code under test: it is never to be
+so it is a third route that does not share the code under test: it is never to be
 regenerated to make this test pass, only when an output is meant to change (and then the
 commit says why). PDFs and the manifest hold the versions of typst and numpy, so the list
 records those; with other versions installed the comparison with the list is skipped
@@ -26,31 +27,13 @@ from pathlib import Path
 
 import pytest
 
+from conftest import EXAM_TOML
 from dynagrade.exercise.loader import open_bank
 from dynagrade.generation.generate import generate_exam
 
 ROOT = Path(__file__).resolve().parent.parent
 HASHES = ROOT / "tests" / "fixtures" / "exam_bytes.json"
 SECRET = "fedcba9876543210" * 4
-EXAM = """id = "bytes-check"
-title = "Byte check: midterm"
-date = 2025-04-14
-instructions = "Time: 60 minutes. Give numbers to three significant figures."
-
-[[exercise]]
-id = "projectile-range"
-points = 6
-
-[[exercise]]
-id = "sliding-up-a-slope"
-points = 6
-
-[[exercise]]
-id = "car-in-a-looping"
-points = 8
-[exercise.set]
-g = 9.81
-"""
 #: six students; one name needs escaping in Markdown, HTML and typst
 ROSTER = ("student_id,name\n" + "s-001,Emmy Noether\ns-002,Leonhard Euler\n"
           "s-003,Sophie Germain\ns-004,\"Ada <Lovelace> & *Byron*\"\ns-005,Émilie du Châtelet\n"
@@ -65,7 +48,7 @@ def environment() -> dict[str, str]:
 def generate(folder: Path, jobs: int) -> dict[str, str]:
     """The SHA-256 of every file of the exam generated in ``folder`` with ``jobs``."""
     folder.mkdir(parents=True, exist_ok=True)
-    (folder / "exam.toml").write_text(EXAM, encoding="utf-8")
+    (folder / "exam.toml").write_text(EXAM_TOML, encoding="utf-8")
     (folder / "roster.csv").write_text(ROSTER, encoding="utf-8")
     out = folder / "out"
     generate_exam(folder / "exam.toml", folder / "roster.csv", out, bank=open_bank(),
@@ -104,7 +87,7 @@ def test_every_file_has_the_bytes_the_code_before_the_speed_work_wrote(routes):
     assert changed == []
 
 
-if __name__ == "__main__" and sys.argv[1:2] == ["--hashes"]:
+if __name__ == "__main__" and sys.argv[1:2] == ["--hashes"]:  # one route, for the test
     print(json.dumps(generate(Path(sys.argv[2]), int(sys.argv[3]))))
 elif __name__ == "__main__" and sys.argv[1:] == ["--write"]:
     import tempfile
