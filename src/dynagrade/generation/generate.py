@@ -32,7 +32,7 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Callable, Mapping
+from typing import Callable, Iterable, Mapping
 
 from .. import __name__ as _package
 from ..exercise.loader import Bank, open_bank
@@ -58,6 +58,8 @@ from ..runs.workers import Pool, default_jobs
 Progress = Callable[[str, int, int], None]
 
 _PAGE_BREAK = "\n#pagebreak(weak: true)\n"
+#: students per task handed to a worker: few enough that the two workers end together
+_CHUNK = 4
 
 
 @dataclass
@@ -101,9 +103,10 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
         report.timings["variants"] = time.perf_counter() - stage
         stage = time.perf_counter()
         key_pdf = pool.submit(_write_key_pdf, manifest) if pdf else None  # meanwhile
-        _write_key_csv(run, manifest)
-        results: list[StudentResult] = _in_roster_order(pool, student_files, chosen,
-                                                        "students", progress)
+        started_files = pool.map(student_files, chosen, chunksize=_CHUNK)  # workers start
+        _write_key_csv(run, manifest)  # while this process writes key.csv
+        results: list[StudentResult] = _collected(started_files, len(chosen), "students",
+                                                  progress)
         report.timings["students"] = time.perf_counter() - stage
         for name in STAGES:
             report.timings[f"students: {name} (worker CPU s)"] = sum(
@@ -201,11 +204,17 @@ def _in_roster_order(pool: Pool, job: Callable, items: list, stage: str,
                      progress: Progress) -> list:
     """``job(run, item)`` for every item in the pool, results in the items' order, each
     counted as done in ``stage``."""
-    results = []
-    for done, result in enumerate(pool.map(job, items, chunksize=4), 1):
-        results.append(result)
-        progress(stage, done, len(items))
-    return results
+    return _collected(pool.map(job, items, chunksize=_CHUNK), len(items), stage, progress)
+
+
+def _collected(results: Iterable, total: int, stage: str, progress: Progress) -> list:
+    """The results of a pool's map as they come, in order, each counted as done in
+    ``stage``."""
+    collected = []
+    for done, result in enumerate(results, 1):
+        collected.append(result)
+        progress(stage, done, total)
+    return collected
 
 
 def _write_key_csv(run: GenerationRun, manifest: Manifest) -> None:
