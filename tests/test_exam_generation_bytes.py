@@ -10,7 +10,9 @@ was BEFORE issue 28's speed work (commit 85b9dbd, checked out apart), with::
 
 so it is a third route that does not share the code under test: it is never to be
 regenerated to make this test pass, only when an output is meant to change (and then the
-commit says why). PDFs and the manifest hold the versions of typst and numpy, so the list
+commit says why). It was written again, the same way, by the code of 5f950a7 (the merge
+that brought this test to main) when that merge's exercises had changed the manifest's
+file hashes and the worked solutions (projectile-range's checks and closing sanity line). PDFs and the manifest hold the versions of typst and numpy, so the list
 records those; with other versions installed the comparison with the list is skipped
 (the two routes are still compared with each other).
 """
