@@ -8,9 +8,10 @@ Usage::
 Prints the wall time of each stage (choosing the variants; the students' folders, while
 a worker compiles the key's PDF; the Moodle export and printing PDFs) and, for the
 students' work, the CPU seconds the workers spent choosing and checking variants,
-drawing figures, writing sheets, compiling PDFs and on the rest; and the CPU time of this
-process and its workers (user + system) next to each total, and the load average before
-and after generating. The exercises are the first K of those in
+drawing figures, writing sheets, compiling PDFs and on the rest, and the CPU seconds of
+``key.pdf``, ``moodle.xml`` and the combined PDFs, each in the process that wrote it; and
+the CPU time of this process and its workers (user + system) next to each total, and the
+load average before and after generating. The exercises are the first K of those in
 ``examples/exam.toml`` (three of them draw figures), then of the rest of chapters 1-2 of
 the bank, each worth 10 points; the submissions
 are those of ``examples/make_submissions.py`` (correct, half-correct, empty, corrupt,
