@@ -8,8 +8,10 @@ Usage::
 Prints the wall time of each stage (choosing the variants; the students' folders, while
 a worker compiles the key's PDF; the Moodle export and printing PDFs) and, for the
 students' work, the CPU seconds the workers spent choosing and checking variants,
-drawing figures, writing sheets, compiling PDFs and on the rest; and the CPU time of this
-process and its workers (user + system) next to each total. The exercises are the first K of those in
+drawing figures, writing sheets, compiling PDFs and on the rest, and the CPU seconds of
+``key.pdf``, ``moodle.xml`` and the combined PDFs, each in the process that wrote it; and
+the CPU time of this process and its workers (user + system) next to each total, and the
+load average before and after generating. The exercises are the first K of those in
 ``examples/exam.toml`` (three of them draw figures), then of the rest of chapters 1-2 of
 the bank, each worth 10 points; the submissions
 are those of ``examples/make_submissions.py`` (correct, half-correct, empty, corrupt,
@@ -42,6 +44,12 @@ def cpu_seconds() -> float:
     """User + system CPU time of this process and of its finished child processes."""
     times = os.times()
     return times.user + times.system + times.children_user + times.children_system
+
+
+def load_average() -> str:
+    """The machine's load averages over 1, 5 and 15 minutes, as ``uptime`` prints them: a
+    time measured on a machine busy with other work is quoted with them."""
+    return "load average " + ", ".join(f"{value:.2f}" for value in os.getloadavg())
 
 
 def main(argv=None) -> None:
@@ -81,7 +89,7 @@ def main(argv=None) -> None:
         out = folder / "out"
         print(f"{args.students} students x {len(exercises)} exercises "
               f"({', '.join(e.id for e in exercises)}), {os.cpu_count()} cores, "
-              f"jobs={args.jobs or 'default'}")
+              f"jobs={args.jobs or 'default'}, {load_average()}")
 
         started, cpu = time.perf_counter(), cpu_seconds()
         report = generate_exam(exam, roster, out, bank=bank, jobs=args.jobs,
@@ -90,7 +98,8 @@ def main(argv=None) -> None:
         for stage, seconds in report.timings.items():
             print(f"  generation / {stage:<42} {seconds:7.2f} s")
         print(f"generation{' (no PDFs)' if args.no_pdf else ' including all PDFs'}: "
-              f"{generation:.2f} s, CPU {cpu:.2f} s ({report.redraws} redraws)")
+              f"{generation:.2f} s, CPU {cpu:.2f} s ({report.redraws} redraws), "
+              f"{load_average()}")
 
         make = _make_submissions_module()
         make.PLAN = tuple((kind, args.students) for kind, _ in make.PLAN)

@@ -87,10 +87,8 @@ def bank():
     return open_bank()
 
 
-@pytest.fixture(scope="session")
-def exam_toml():
-    """A three-exercise exam spec shared by the exam tests."""
-    return """\
+#: a three-exercise exam spec shared by the exam tests (three figures, one value set)
+EXAM_TOML = """\
 id = "dynamics-test-exam"
 title = "Dynamics: test exam"
 date = 2025-04-14
@@ -110,3 +108,9 @@ points = 8
 [exercise.set]
 g = 9.81
 """
+
+
+@pytest.fixture(scope="session")
+def exam_toml():
+    """:data:`EXAM_TOML`."""
+    return EXAM_TOML

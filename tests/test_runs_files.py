@@ -103,6 +103,29 @@ def test_write_atomic_replaces_a_regular_file_and_sets_the_modes(tmp_path):
     assert stat.S_IMODE(plain.stat().st_mode) == 0o600
 
 
+
+@pytest.mark.parametrize("leftover", ["file", "link"])
+def test_a_temporary_left_by_a_killed_run_of_this_process_id_is_removed_not_followed(
+        tmp_path, leftover):
+    target = tmp_path / "sheet.md"
+    temporary = tmp_path / f".sheet.md.{os.getpid()}.tmp"
+    elsewhere = tmp_path / "elsewhere.txt"
+    elsewhere.write_text("untouched")
+    if leftover == "file":
+        temporary.write_text("half-written")
+    else:
+        temporary.symlink_to(elsewhere)
+    write_atomic(target, "whole")
+    assert target.read_text() == "whole"
+    assert elsewhere.read_text() == "untouched"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["elsewhere.txt", "sheet.md"]
+
+
+def test_write_atomic_makes_missing_folders_on_the_way(tmp_path):
+    deep = tmp_path / "students" / "s-001" / "sheet.html"
+    write_atomic(deep, "<p>hi</p>")
+    assert deep.read_text() == "<p>hi</p>"
+
 def _umask() -> int:
     mask = os.umask(0)
     os.umask(mask)

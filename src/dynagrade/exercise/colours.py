@@ -13,6 +13,8 @@ Usage::
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 from ..errors import DefinitionError
 
 #: matplotlib's default colour cycle ("tab10"): what ``"C0"`` … ``"C9"`` mean
@@ -54,4 +56,17 @@ def to_rgb(colour) -> tuple[float, float, float]:
 
 def to_hex(colour) -> str:
     """``colour`` as ``#rrggbb`` (each channel rounded as matplotlib rounds it)."""
-    return "#" + "".join(f"{round(c * 255):02x}" for c in to_rgb(colour))
+    if isinstance(colour, str):
+        return _named_hex(colour)
+    return _hex(to_rgb(colour))
+
+
+@lru_cache(maxsize=256)
+def _named_hex(colour: str) -> str:
+    """:func:`to_hex` of a colour given as text, kept: a figure names a few colours over
+    and over (every line, label and arrow of every student's figure)."""
+    return _hex(to_rgb(colour))
+
+
+def _hex(rgb: tuple[float, float, float]) -> str:
+    return "#" + "".join(f"{round(c * 255):02x}" for c in rgb)

@@ -31,8 +31,9 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field, replace
+from functools import partial
 from pathlib import Path
-from typing import Callable, Mapping
+from typing import Any, Callable, Iterable, Mapping
 
 from .. import __name__ as _package
 from ..exercise.loader import Bank, open_bank
@@ -58,6 +59,8 @@ from ..runs.workers import Pool, default_jobs
 Progress = Callable[[str, int, int], None]
 
 _PAGE_BREAK = "\n#pagebreak(weak: true)\n"
+#: students per task handed to a worker: few enough that the two workers end together
+_CHUNK = 4
 
 
 @dataclass
@@ -100,19 +103,24 @@ def generate_exam(exam_path, roster_path, out_dir, bank: Bank | None = None,
         report.skew = skew_warnings(manifest)
         report.timings["variants"] = time.perf_counter() - stage
         stage = time.perf_counter()
-        key_pdf = pool.submit(_write_key_pdf, manifest) if pdf else None  # meanwhile
-        _write_key_csv(run, manifest)
-        results: list[StudentResult] = _in_roster_order(pool, student_files, chosen,
-                                                        "students", progress)
+        key_pdf = (pool.submit(partial(_cpu_timed, _write_key_pdf), manifest)
+                   if pdf else None)  # meanwhile
+        started_files = pool.map(student_files, chosen, chunksize=_CHUNK)  # workers start
+        _write_key_csv(run, manifest)  # while this process writes key.csv
+        results: list[StudentResult] = _collected(started_files, len(chosen), "students",
+                                                  progress)
         report.timings["students"] = time.perf_counter() - stage
         for name in STAGES:
             report.timings[f"students: {name} (worker CPU s)"] = sum(
                 r.timings.get(name, 0.0) for r in results)
         stage = time.perf_counter()
-        report.warnings += _write_exports(run, pool, manifest, roster, results, progress)
+        notices, export_seconds = _write_exports(run, pool, manifest, roster, results,
+                                                 progress)
+        report.warnings += notices
         if key_pdf is not None:
-            key_pdf.result()
+            export_seconds["key.pdf (worker CPU s)"] = key_pdf.result()[1]
         report.timings["moodle, combined PDFs, key.pdf"] = time.perf_counter() - stage
+        report.timings.update(export_seconds)
     dump(manifest, run.out_dir / "manifest.json")
     report.out_dir = swap_in(run.out_dir, target)
     report.timings["total"] = time.perf_counter() - started
@@ -201,11 +209,17 @@ def _in_roster_order(pool: Pool, job: Callable, items: list, stage: str,
                      progress: Progress) -> list:
     """``job(run, item)`` for every item in the pool, results in the items' order, each
     counted as done in ``stage``."""
-    results = []
-    for done, result in enumerate(pool.map(job, items, chunksize=4), 1):
-        results.append(result)
-        progress(stage, done, len(items))
-    return results
+    return _collected(pool.map(job, items, chunksize=_CHUNK), len(items), stage, progress)
+
+
+def _collected(results: Iterable, total: int, stage: str, progress: Progress) -> list:
+    """The results of a pool's map as they come, in order, each counted as done in
+    ``stage``."""
+    collected = []
+    for done, result in enumerate(results, 1):
+        collected.append(result)
+        progress(stage, done, total)
+    return collected
 
 
 def _write_key_csv(run: GenerationRun, manifest: Manifest) -> None:
@@ -216,13 +230,26 @@ def _write_key_csv(run: GenerationRun, manifest: Manifest) -> None:
 
 def _write_exports(run: GenerationRun, pool: Pool, manifest: Manifest,
                    roster: list[Student], results: list[StudentResult],
-                   progress: Progress) -> list[str]:
+                   progress: Progress) -> tuple[list[str], dict[str, float]]:
     """moodle.xml (in a worker) and, with PDFs, sheets.pdf and (with solutions)
-    solutions.pdf; returns the Moodle export's notices."""
-    moodle = pool.submit(_write_moodle, manifest)
+    solutions.pdf; returns the Moodle export's notices and the CPU seconds of each."""
+    moodle = pool.submit(partial(_cpu_timed, _write_moodle), manifest)
+    seconds = {}
     if run.pdf:
+        started = time.process_time()
         _write_printing_pdfs(run, roster, results, progress)
-    return moodle.result()
+        seconds["combined PDFs (CPU s)"] = time.process_time() - started
+    notices, seconds["moodle.xml (worker CPU s)"] = moodle.result()
+    return notices, seconds
+
+
+def _cpu_timed(job: Callable[[GenerationRun, Any], Any], run: GenerationRun,
+               item) -> tuple[Any, float]:
+    """``job(run, item)`` and the CPU seconds it took in the process that ran it: a
+    worker's seconds show in no clock of this process until the pool ends, and then only
+    summed (the report names each export's own)."""
+    started = time.process_time()
+    return job(run, item), time.process_time() - started
 
 
 def _write_moodle(run: GenerationRun, manifest: Manifest) -> list[str]:

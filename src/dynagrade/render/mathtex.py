@@ -270,6 +270,7 @@ def unknown_commands(tex: str) -> tuple[str, ...]:
 # -- MathML -------------------------------------------------------------------------------
 
 
+@lru_cache(maxsize=4096)  # the same symbols recur on every student's sheet
 def to_mathml(tex: str, display: bool = False) -> str:
     """``tex`` as a MathML Core ``<math>`` element (no scripts, no network).
 
@@ -370,6 +371,7 @@ _SPOKEN_ACCENTS = {"˙": "{} dot", "¨": "{} double dot", "→": "vector {}", "^
 _SPOKEN_POWERS = {"2": "squared", "3": "cubed"}
 
 
+@lru_cache(maxsize=4096)  # the same symbols recur on every student's sheet
 def to_speech(tex: str) -> str:
     """``tex`` read out in English words, as a screen reader would say it ("v sub 0
     squared over 2 g"); symbols it has no word for are kept."""
@@ -417,6 +419,7 @@ def _speech(node: MathNode) -> str:
 _TYPST_SPECIAL = set("\\/()[]{}_^&#$\",;:'*!@~<>=|+-.`")
 
 
+@lru_cache(maxsize=4096)  # the same symbols recur on every student's sheet
 def to_typst(tex: str) -> str:
     """``tex`` as typst math (the text between typst's ``$`` signs)."""
     return _typst(parse(tex)).strip()

@@ -60,14 +60,11 @@ def write_atomic(path: str | os.PathLike, data: bytes | str, private: bool = Fal
     ``private`` files are 0600 (and a folder made for them 0700)."""
     path = Path(path)
     refuse_unless_replaceable(path)
-    make_folder(path.parent, private)
     payload = data.encode("utf-8") if isinstance(data, str) else data
     temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     created = False
     try:
-        temporary.unlink(missing_ok=True)  # left by a killed run of this process id
-        descriptor = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW,
-                             PRIVATE_FILE if private else 0o666)
+        descriptor = _create(temporary, private)
         created = True
         with os.fdopen(descriptor, "wb") as handle:
             handle.write(payload)
@@ -81,6 +78,22 @@ def write_atomic(path: str | os.PathLike, data: bytes | str, private: bool = Fal
                                   f"({error.strerror or error})") from None
         raise
     return path
+
+
+def _create(temporary: Path, private: bool) -> int:
+    """Open ``temporary`` as a new file (never through a link). Its folder is made, and a
+    file of that name left by a killed run of this process id removed, only when the
+    first attempt finds them needed: an exam writes thousands of files, and each check
+    done in advance is a system call per file."""
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW
+    mode = PRIVATE_FILE if private else 0o666
+    try:
+        return os.open(temporary, flags, mode)
+    except FileNotFoundError:
+        make_folder(temporary.parent, private)
+    except FileExistsError:
+        temporary.unlink()
+    return os.open(temporary, flags, mode)
 
 
 def make_folder(folder: str | os.PathLike, private: bool = False) -> Path:
