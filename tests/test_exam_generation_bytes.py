@@ -12,7 +12,9 @@ so it is a third route that does not share the code under test: it is never to b
 regenerated to make this test pass, only when an output is meant to change (and then the
 commit says why). It was written again, the same way, by the code of 5f950a7 (the merge
 that brought this test to main) when that merge's exercises had changed the manifest's
-file hashes and the worked solutions (projectile-range's checks and closing sanity line). PDFs and the manifest hold the versions of typst and numpy, so the list
+file hashes and the worked solutions (projectile-range's checks and closing sanity line),
+and again for the manifest alone when issue 31 added constraints to sliding-up-a-slope and
+car-in-a-looping (their files' hashes; every other file kept its bytes). PDFs and the manifest hold the versions of typst and numpy, so the list
 records those; with other versions installed the comparison with the list is skipped
 (the two routes are still compared with each other).
 """
