@@ -145,3 +145,29 @@ def _staff_page(client) -> str:
     page = client.get(f"/i/{token}/lti")
     assert page.status_code == 200
     return page.text
+
+
+def test_the_sync_task_computes_the_gradebook_again_only_when_a_score_may_have_changed(
+        exam_dir, tmp_path, platform, monkeypatch):
+    # computing every launched student's score reads every answer of the exam: a class
+    # of a thousand cannot pay that every 5 s in every process
+    from dynagrade.serve import gradebook
+    from dynagrade.serve.lti import grade_sync
+
+    computed = []
+    outcome = gradebook.outcome
+    monkeypatch.setattr(gradebook, "outcome", lambda *a, **k: computed.append(1) or outcome(*a, **k))
+    manifest = exam_copy(exam_dir, tmp_path / "hw", mode="homework", feedback="immediate")
+    with tool(manifest, None, platform) as client:
+        server = client.app.state.server
+        gate = grade_sync.RecomputeGate()
+        launched_submit(client, platform, "u-ada", "s1", "projectile-range")
+        grade_sync.sync_once(server, gate)
+        assert len(computed) == 1 and len(platform.scores) == 1
+        grade_sync.sync_once(server, gate)  # nothing changed: not computed again
+        assert len(computed) == 1
+        launched_submit(client, platform, "u-ada", "s1", "sliding-up-a-slope")
+        grade_sync.sync_once(server, gate)  # a new submission: computed, and sent
+        assert len(computed) == 2 and len(platform.scores) == 2
+        later = server.clock() + dt.timedelta(seconds=grade_sync.RECOMPUTE_SECONDS)
+        assert gate.due(server, later)  # a close may have passed: computed again

@@ -4,7 +4,10 @@ was queued survives a restart and is sent by whichever process comes first).
 
 Every :data:`SYNC_SECONDS` the task
 
-1. computes the score each launched student's platform should hold now
+1. computes, when anything that decides a score changed (a submission, an entry of the
+   audit log: points by hand, a regrade, an exception, the policy; a launch or an
+   import; a timed start) and at least every :data:`RECOMPUTE_SECONDS` (a close passing
+   changes no row), the score each launched student's platform should hold now
    (:mod:`.scores`; the gradebook's totals and each student's rules) and queues those
    that differ from the last one queued for them: so a submit, points set by hand, a
    regrade, an exception and the close each send a score once, and nothing is sent
@@ -33,6 +36,9 @@ from .line_items import line_item_url, scores_url
 from .scores import score_body
 
 SYNC_SECONDS = 5.0
+#: the longest a process goes without computing the scores although no row changed, so
+#: that a close or a timed deadline passing sends its scores within this time
+RECOMPUTE_SECONDS = 60.0
 LEASE = dt.timedelta(seconds=60)
 FIRST_RETRY_SECONDS = 10
 LONGEST_WAIT_SECONDS = 3600
@@ -129,19 +135,42 @@ def _send(engine, platform: store.Platform, member: grades_store.Member, body: d
                          "Content-Type": claims.SCORE_MEDIA}, json.dumps(body).encode())
 
 
-def sync_once(server: Server) -> None:
-    """One round: queue what changed, send what is due."""
+class RecomputeGate:
+    """Whether a process must compute the scores again: the whole gradebook is computed
+    for it (the answers of every student), which a class of a thousand would pay every
+    :data:`SYNC_SECONDS` in every process; one cheap query (:func:`grades_store.version`)
+    says whether anything it depends on changed since the last time."""
+
+    def __init__(self) -> None:
+        self.version: tuple | None = None
+        self.computed_at: dt.datetime | None = None
+
+    def due(self, server: Server, now: dt.datetime) -> bool:
+        """Whether the scores are to be computed at ``now`` (and note that they are)."""
+        version = grades_store.version(server.engine, server.data.exam_id)
+        if version == self.version and self.computed_at is not None and \
+                (now - self.computed_at).total_seconds() < RECOMPUTE_SECONDS:
+            return False
+        self.version, self.computed_at = version, now
+        return True
+
+
+def sync_once(server: Server, gate: RecomputeGate | None = None) -> None:
+    """One round: queue what changed (computed only when ``gate`` says so, if given),
+    send what is due."""
     now = server.clock()
-    queue_changes(server, now)
+    if gate is None or gate.due(server, now):
+        queue_changes(server, now)
     send_due(server, now)
 
 
 async def run(server: Server) -> None:
     """:func:`sync_once` every :data:`SYNC_SECONDS` while the app runs; a round that
     fails (the database away) is logged and the next one tries again."""
+    gate = RecomputeGate()
     while True:
         await asyncio.sleep(SYNC_SECONDS)
         try:
-            await run_in_threadpool(sync_once, server)
+            await run_in_threadpool(sync_once, server, gate)
         except Exception:  # noqa: BLE001  (the task must outlive one bad round)
             log.exception("sending LTI scores failed; trying again in %s s", SYNC_SECONDS)

@@ -89,6 +89,24 @@ class Member:
     launched_at: dt.datetime | None = None
 
 
+def version(engine: sa.Engine, exam_id: str) -> tuple:
+    """What the scores of an exam depend on besides the clock, in one query: the newest
+    submission and audit log entry (points by hand, regrades, exceptions, policy changes
+    are logged), the launched and imported students, the timed starts. Equal versions:
+    nothing changed."""
+    s, log, m = db.submissions.c, db.audit_log.c, members.c
+    query = sa.select(
+        sa.select(sa.func.max(s.id)).where(s.exam_id == exam_id).scalar_subquery(),
+        sa.select(sa.func.max(log.id)).where(log.exam_id == exam_id).scalar_subquery(),
+        sa.select(sa.func.max(m.launched_at)).where(m.exam_id == exam_id).scalar_subquery(),
+        sa.select(sa.func.count()).select_from(members).where(
+            m.exam_id == exam_id).scalar_subquery(),
+        sa.select(sa.func.count()).select_from(db.starts).where(
+            db.starts.c.exam_id == exam_id).scalar_subquery())
+    with engine.connect() as connection:
+        return tuple(connection.execute(query).one())
+
+
 def put_member(engine: sa.Engine, member: Member, now: dt.datetime) -> None:
     """Record (or renew) a launched student, and the line item their launch named."""
     key = {"exam_id": member.exam_id, "platform_id": member.platform_id,
