@@ -156,7 +156,8 @@ def test_the_sync_task_computes_the_gradebook_again_only_when_a_score_may_have_c
 
     computed = []
     outcome = gradebook.outcome
-    monkeypatch.setattr(gradebook, "outcome", lambda *a, **k: computed.append(1) or outcome(*a, **k))
+    monkeypatch.setattr(gradebook, "outcome",
+                        lambda *a, **k: computed.append(1) or outcome(*a, **k))
     manifest = exam_copy(exam_dir, tmp_path / "hw", mode="homework", feedback="immediate")
     with tool(manifest, None, platform) as client:
         server = client.app.state.server
