@@ -108,16 +108,17 @@ def test_a_disk_on_a_heavy_shaft_vibrates_at_the_roots_of_kl_tan_kl_equal_to_the
     assert answers["f2"] == pytest.approx(1755.20, rel=1e-5)
 
 
-def test_a_suddenly_driven_shaft_needs_rho_c_ip_omega_and_its_free_end_turns_at_twice_omega():
+def test_a_suddenly_driven_shaft_needs_rho_c_ip_omega_and_its_free_end_turns_at_twice_omega_for_l_over_c():
     # c_T = sqrt(80e9 / 8000) = 3162.28 m/s; I_p = pi 0.04^4 / 32 = 2.51327e-7 m^4
     # Omega = 300 rpm = 31.4159 rad/s; T = 8000 * 3162.28 * 2.51327e-7 * 31.4159 = 199.746 N m
     # tau = rho c Omega d/2 = 8000 * 3162.28 * 31.4159 * 0.02 = 15.8953 MPa
-    # t = 10 / 3162.28 = 3.16228 ms; the free end turns at 2 * 31.4159 = 62.8319 rad/s
+    # t = 10 / 3162.28 = 3.16228 ms; the free end turns at 2 * 31.4159 = 62.8319 rad/s until
+    # the reflection is back at the motor, another 3.16228 ms: 62.8319 * 3.16228e-3 = 0.198692 rad
     answers = _answers("shaft-suddenly-driven", G=80, rho=8000, d=40, L=10.0, Omega=300)
     assert answers["T"] == pytest.approx(199.746, rel=1e-5)
     assert answers["tau"] == pytest.approx(15.8953, rel=1e-5)
     assert answers["t_end"] == pytest.approx(3.16228, rel=1e-5)
-    assert answers["Omega_end"] == pytest.approx(62.8319, rel=1e-5)
+    assert answers["phi_end"] == pytest.approx(0.198692, rel=1e-5)
 
 
 def test_a_glockenspiel_bar_for_1000_hz_is_227_mm_long_with_nodes_at_0_224_of_it():
