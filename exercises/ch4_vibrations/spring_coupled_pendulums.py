@@ -132,8 +132,8 @@ EXERCISE = Exercise(
         Constraint("the answers differ by at least 5 %", _fair),
     ),
     statement="""
-Two pendulums hang side by side from one ceiling: point masses $m_1$ = {{ m1 }} and
-$m_2$ = {{ m2 }} on massless rods of the same length $L$ = {{ L }}. A spring of stiffness
+Two pendulums hang side by side from one ceiling, pendulum 1 on the left: point masses
+$m_1$ = {{ m1 }} and $m_2$ = {{ m2 }} on massless rods of the same length $L$ = {{ L }}. A spring of stiffness
 $k$ = {{ k }} joins the rods at the distance $a$ = {{ a }} below the pivots; it is relaxed
 when both hang vertically and stays nearly horizontal; $g$ = {{ g }}. The angles
 $\\theta_1$, $\\theta_2$ from the downward vertical are both positive counter-clockwise.
