@@ -51,6 +51,12 @@ def figure(p):
     for x in (0.3 * L, 0.92 * L):
         block(axes, (x, 0.0), 0.03 * L, 0.07 * L, color="#e6d8a8")
     angle_arc(axes, (0.03 * L, 0.0), 0.045 * L, -2.0, 2.0)
+    # an arrowhead at the arc's end shows the sense of the drive
+    r, tip, before = 0.045 * L, 2.0, 1.8
+    axes.annotate("", xy=(0.03 * L + r * np.cos(tip), r * np.sin(tip)),
+                  xytext=(0.03 * L + r * np.cos(before), r * np.sin(before)),
+                  arrowprops={"arrowstyle": "-|>", "color": "0.2", "lw": 0.8,
+                              "mutation_scale": 8})
     axes.text(0.03 * L, 0.07 * L, f"Ω = {format_number(p.Omega * 60 / (2 * np.pi))} rpm",
               ha="center", va="bottom", fontsize=10)
     axes.text(0.61 * L, 0.04 * L,
