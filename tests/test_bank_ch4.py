@@ -150,6 +150,9 @@ def test_bounce_pitch_modes_of_a_trailer(bank):
     # 10000 / (60000 - 66667) = -1.5 m (at the rear spring)
     assert a["s1"] == pytest.approx(1.0, rel=1e-6)
     assert a["s2"] == pytest.approx(-1.5, rel=1e-6)
+    # the modes are M-orthogonal, m x1 x2 + J theta1 theta2 = 0: s1 s2 = -J/m = -1.5 m^2,
+    # the relation the solution's check line uses
+    assert a["s1"] * a["s2"] == pytest.approx(-1500.0 / 1000.0, rel=1e-6)
 
 
 def test_two_mass_chain_forced_between_its_resonances(bank):

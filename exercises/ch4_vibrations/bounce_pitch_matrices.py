@@ -63,9 +63,16 @@ def figure(p):
         axes.text(x + 0.15, height / 2, name, ha="left", va="center", fontsize=10)
     ground(axes, -l2 - 0.5, l1 + 0.5, hatch=0.08)
     axes.plot([0.0], [height + 0.15], "o", color="0.1", ms=4)
-    axes.text(0.1, height + 0.1, "G", ha="left", va="top", fontsize=10)
+    # inside the body, beside the dot (below it the label ran across the body's edge)
+    axes.text(0.1, height + 0.15, "G", ha="left", va="center", fontsize=10)
     arrow(axes, (0.0, height + 0.35), (0.0, height + 0.85), "x", offset=(0.12, 0.0), color="C3")
     angle_arc(axes, (0.0, height + 0.15), 0.55, 0.35, 1.2, "θ", label_radius=0.75)
+    # an arrowhead at the arc's end: theta turns counter-clockwise
+    tip, before = 1.2, 1.05
+    axes.annotate("", xy=(0.55 * np.cos(tip), height + 0.15 + 0.55 * np.sin(tip)),
+                  xytext=(0.55 * np.cos(before), height + 0.15 + 0.55 * np.sin(before)),
+                  arrowprops={"arrowstyle": "-|>", "color": "0.2", "lw": 0.8,
+                              "mutation_scale": 8})
     dimension(axes, (0.0, 0.0), (l1, 0.0), "l₁", offset=-0.3, tick=0.05, side=-1.0)
     dimension(axes, (-l2, 0.0), (0.0, 0.0), "l₂", offset=-0.3, tick=0.05, side=-1.0)
     describe(axes, "The car drives to the right: the front spring k₁ is on the right, the rear "

@@ -69,7 +69,11 @@ def figure(p):
         axes.text(x + 0.05 * span, h / 2, name, ha="left", va="center", fontsize=10)
     ground(axes, -p.l2 - 0.2 * span, p.l1 + 0.2 * span, hatch=0.03 * span)
     axes.plot([0.0], [h], "o", color="C3", ms=5)
-    axes.text(0.0, h + 0.05 * span, "G ($m$, $J_G$)", ha="center", va="bottom", fontsize=10)
+    # below the beam (above it the dimension lines' extension line runs up from G), on the
+    # side of the longer arm, clear of the springs
+    side = 1.0 if p.l1 >= p.l2 else -1.0
+    axes.text(0.02 * span * side, h - 0.04 * span, "G ($m$, $J_G$)",
+              ha="left" if side > 0 else "right", va="top", fontsize=10)
     dimension(axes, (0.0, h), (p.l1, h), "l₁", offset=0.2 * span, tick=0.02 * span)
     dimension(axes, (-p.l2, h), (0.0, h), "l₂", offset=0.2 * span, tick=0.02 * span)
     describe(axes, "The front spring k₁ is on the right, the rear spring k₂ on the left; "
@@ -125,10 +129,11 @@ $K_{2 2}$ = {{ si.K22 }} N·m.
    $s = -x/\theta$. The first row of the eigenvalue problem,
    $(K_{11} - \omega^2 m)\,x + K_{12}\,\theta = 0$, gives
    $$s = \frac{K_{12}}{K_{11} - \omega^2 m}:$$
-   $s_1$ = {{ answers.s1 }} and $s_2$ = {{ answers.s2 }}. **Check.** Where a node lies
-   far outside the wheelbase, the mode is nearly a pure bounce; a node near $G$ marks a
-   nearly pure pitch. With $K_{12} = 0$ one node would move to infinity (pure bounce), the
-   other to $G$ (pure pitch).
+   $s_1$ = {{ answers.s1 }} and $s_2$ = {{ answers.s2 }}. A node far outside the
+   wheelbase marks a nearly pure bounce, a node near $G$ a nearly pure pitch.
+   **Check.** The modes are orthogonal with respect to $\mathbf M$,
+   $m\,x_1 x_2 + J_G\,\theta_1\theta_2 = 0$, so the nodes obey $s_1 s_2 = -J_G/m$: from
+   $s_1$ alone, $s_2 = -J_G/(m s_1)$ = {{ checks.mass_orthogonality }} m.
 """,
     solve=solve,
     checks=(
@@ -136,6 +141,9 @@ $K_{2 2}$ = {{ si.K22 }} N·m.
         Recompute("f2", lambda p, s: np.sqrt(_squares(p)[1]) / (2 * np.pi), name="upper_root"),
         Recompute("s1", lambda p, s: _node(p, 0), name="first_node", rtol=1e-6),
         Recompute("s2", lambda p, s: _node(p, 1), name="second_node", rtol=1e-6),
+        # M-orthogonality of the modes: m x1 x2 + J theta1 theta2 = 0, i.e. s1 s2 = -J/m
+        Recompute("s2", lambda p, s: -p.J / (p.m * _node(p, 0)), name="mass_orthogonality",
+                  rtol=1e-6),
     ),
     figure=figure,
     figure_to_scale=True,

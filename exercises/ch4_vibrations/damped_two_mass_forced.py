@@ -110,7 +110,7 @@ EXERCISE = Exercise(
     ),
     statement="""
 A mass $m_1$ = {{ m1 }} is tied to a wall by a spring $k_1$ = {{ k1 }} and a viscous damper
-$c$ = {{ c }} side by side; a second mass $m_2$ = {{ m2 }} hangs on $m_1$ by a spring
+$c$ = {{ c }} side by side; a second mass $m_2$ = {{ m2 }} is tied to $m_1$ by a spring
 $k_2$ = {{ k2 }} (everything moves horizontally, without friction). The force
 $F_0\\cos\\Omega t$ with $F_0$ = {{ F0 }} and $f = \\Omega/2\\pi$ = {{ f }} acts on $m_1$.
 In the steady state $x_j = X_j\\cos(\\Omega t - \\varphi_j)$.

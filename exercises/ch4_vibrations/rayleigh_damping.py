@@ -6,7 +6,7 @@ import numpy as np
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Recompute
-from dynagrade.exercise.figure import block, describe, ground, new_drawing, spring
+from dynagrade.exercise.figure import arrow, block, describe, ground, new_drawing
 from dynagrade.mechanics import multi_dof, vibrations
 
 #: the first mode's amplitude is asked when it has fallen to this share
@@ -75,19 +75,23 @@ def _fair(p):
 
 
 def figure(p):
-    """Schematic: the two floors stacked on their storey springs above the ground."""
-    drawing, axes = new_drawing(2.6, 3.4)
-    ground(axes, -0.8, 0.8, hatch=0.06)
-    spring(axes, (0.0, 0.0), (0.0, 0.9), coils=5, width=0.2)
-    block(axes, (0.0, 1.1), 1.2, 0.4, "m₁")
-    spring(axes, (0.0, 1.3), (0.0, 2.2), coils=5, width=0.2)
-    block(axes, (0.0, 2.4), 1.2, 0.4, "m₂")
-    axes.text(0.2, 0.45, "k₁", ha="left", va="center", fontsize=10)
-    axes.text(0.2, 1.75, "k₂", ha="left", va="center", fontsize=10)
+    """Schematic shear frame: two floor slabs on flexible columns above the ground, the
+    storeys' stiffnesses beside their columns and the floors' horizontal sway x1, x2."""
+    drawing, axes = new_drawing(3.0, 3.4)
+    ground(axes, -0.9, 0.9, hatch=0.06)
+    for bottom, top, name in ((0.0, 0.9, "k₁"), (1.1, 2.0, "k₂")):
+        for x in (-0.5, 0.5):
+            axes.plot([x, x], [bottom, top], color="0.2", lw=2.0)
+        axes.text(0.58, (bottom + top) / 2, name, ha="left", va="center", fontsize=10)
+    block(axes, (0.0, 1.0), 1.3, 0.2, "m₁")
+    block(axes, (0.0, 2.1), 1.3, 0.2, "m₂")
+    arrow(axes, (-0.35, 1.3), (0.25, 1.3), "x₁", offset=(0.0, 0.12), color="0.3")
+    arrow(axes, (-0.35, 2.4), (0.25, 2.4), "x₂", offset=(0.0, 0.12), color="0.3")
     axes.text(0.0, 2.75, "C = αM + βK", ha="center", va="bottom", fontsize=10)
-    describe(axes, "A model of two storeys: the first floor m₁ stands on the storey spring "
-             "k₁, the roof m₂ on k₂; the floors sway horizontally, drawn here as a column.")
-    axes.set_xlim(-0.9, 0.9)
+    describe(axes, "A model of two storeys: the first floor m₁ stands on columns of storey "
+             "stiffness k₁, the roof m₂ on columns of stiffness k₂; the floors sway "
+             "horizontally, x₁ and x₂ to the right.")
+    axes.set_xlim(-1.0, 1.1)
     axes.set_ylim(-0.2, 3.1)
     return drawing
 

@@ -9,7 +9,7 @@ from dynagrade.exercise import (Constant, Constraint, Exercise, Misconception, N
                                 per_draw)
 from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Recompute
-from dynagrade.exercise.figure import angle_arc, ceiling, describe, new_drawing, spring
+from dynagrade.exercise.figure import angle_arc, ceiling, describe, dimension, new_drawing, spring
 
 
 @cache
@@ -96,13 +96,17 @@ def figure(p):
     left = (a * np.sin(shown), -a * np.cos(shown))
     spring(axes, left, (gap, -a), coils=5, width=0.08)
     axes.text(gap / 2 + 0.05, -a + 0.08, "k", ha="center", va="bottom", fontsize=10)
-    axes.text(-0.08, -a / 2, "a", ha="right", va="center", fontsize=10)
-    axes.text(gap + 0.06, -0.75 * L, "L", ha="left", va="center", fontsize=10)
-    angle_arc(axes, (0.0, 0.0), 0.3, -np.pi / 2, -np.pi / 2 + shown, "θ₁", label_radius=0.42)
+    dimension(axes, (0.0, 0.0), (0.0, -a), "a", offset=-0.2, tick=0.04, side=-1.0)
+    dimension(axes, (gap, 0.0), (gap, -L), "L", offset=0.25, tick=0.04)
+    # the angle's label beside the rod, clear of the spring's end below it
+    angle_arc(axes, (0.0, 0.0), 0.25, -np.pi / 2, -np.pi / 2 + shown)
+    label_at = shown + 0.3
+    axes.text(0.3 * np.sin(label_at), -0.3 * np.cos(label_at), "θ₁", ha="left", va="center",
+              fontsize=10)
     describe(axes, "The left pendulum is drawn swung counter-clockwise, the positive sense of "
              "both angles; the right one hangs straight down. The spring is relaxed when both hang "
              "vertically.")
-    axes.set_xlim(-0.5, gap + 0.5)
+    axes.set_xlim(-0.55, gap + 0.6)
     axes.set_ylim(-L - 0.3, 0.2)
     return drawing
 
@@ -128,8 +132,8 @@ EXERCISE = Exercise(
         Constraint("the answers differ by at least 5 %", _fair),
     ),
     statement="""
-Two pendulums hang side by side from one ceiling: point masses $m_1$ = {{ m1 }} and
-$m_2$ = {{ m2 }} on massless rods of the same length $L$ = {{ L }}. A spring of stiffness
+Two pendulums hang side by side from one ceiling, pendulum 1 on the left: point masses
+$m_1$ = {{ m1 }} and $m_2$ = {{ m2 }} on massless rods of the same length $L$ = {{ L }}. A spring of stiffness
 $k$ = {{ k }} joins the rods at the distance $a$ = {{ a }} below the pivots; it is relaxed
 when both hang vertically and stays nearly horizontal; $g$ = {{ g }}. The angles
 $\\theta_1$, $\\theta_2$ from the downward vertical are both positive counter-clockwise.
@@ -157,7 +161,7 @@ for multi-DOF vibrations, Section 4.4.1).
    $\ddot\theta_1 = -K_{11}\theta_0/M_{11} = -\bigl(\frac gL + \frac{k a^2}{m_1 L^2}\bigr)\theta_0$
    = {{ answers.theta1_ddot }} and
    $\ddot\theta_2 = -K_{2 1}\theta_0/M_{2 2} = \frac{k a^2}{m_2 L^2}\theta_0$
-   = {{ answers.theta2_ddot }}: the spring starts pulling pendulum 2 along at once.
+   = {{ answers.theta2_ddot }}: the compressed spring starts pushing pendulum 2 along at once.
    **Check.** The full nonlinear equations, taken at a tiny angle and scaled up to
    $\theta_0$, give back $\ddot\theta_2$ = {{ checks.nonlinear_second }} rad/s²; at
    $\theta_0$ itself they differ by the factor $\sin\theta_0/\theta_0$, below 1 % here.
@@ -185,12 +189,12 @@ for multi-DOF vibrations, Section 4.4.1).
         Numeric("theta1_ddot", "angular acceleration of pendulum 1", question=2, unit="rad/s^2",
                 points=1, misconceptions=(
                     Misconception("spring forgotten", lambda p: -p.g * p.theta0 / p.L,
-                                  "The stretched spring also pulls pendulum 1 back: K11 = m1 g L + k a^2."),
+                                  "The compressed spring also pushes pendulum 1 back: K11 = m1 g L + k a^2."),
                 )),
         Numeric("theta2_ddot", "angular acceleration of pendulum 2", question=2, unit="rad/s^2",
                 points=2, misconceptions=(
                     Misconception("not coupled at first", lambda p: 0.0,
-                                  "K21 theta0 acts at once: the spring is stretched by a theta0."),
+                                  "K21 theta0 acts at once: the spring is already compressed by a theta0."),
                     Misconception("m1 for m2", lambda p: p.k * p.a**2 * p.theta0 / (p.m1 * p.L**2),
                                   "Pendulum 2's equation has M22 = m2 L^2.",
                                   applies=lambda p: abs(p.m1 / p.m2 - 1) > 0.03),

@@ -81,16 +81,25 @@ def figure(p):
     s = np.linspace(np.pi, 2 * np.pi, 91)
     axes.plot(p.R * np.cos(s), p.R * np.sin(s), color="0.1", lw=2.0)
     c = (p.R - p.r) * np.array([np.sin(p.theta0), -np.cos(p.theta0)])
-    axes.add_patch(Circle(tuple(c), p.r, facecolor="C0", edgecolor="0.1"))
+    # light blue: a large cylinder reaches close to the trough's centre and may lie under
+    # the angle's label, which stays legible on it
+    axes.add_patch(Circle(tuple(c), p.r, facecolor="#a9cce8", edgecolor="0.1"))
     axes.plot([0, 0], [0, -p.R], color="0.5", lw=0.8, ls="--")
     axes.plot([0, c[0]], [0, c[1]], color="0.3", lw=0.8)
     axes.plot([0, -p.R * np.sin(np.radians(40))], [0, -p.R * np.cos(np.radians(40))],
               color="0.3", lw=0.8)
     axes.text(-0.55 * p.R * np.sin(np.radians(40)) - 0.04 * p.R,
               -0.55 * p.R * np.cos(np.radians(40)), "R", ha="right", va="center", fontsize=10)
-    axes.text(c[0] + 1.15 * p.r, c[1], "r", ha="left", va="center", fontsize=10)
-    angle_arc(axes, (0.0, 0.0), 0.3 * p.R, -np.pi / 2, -np.pi / 2 + p.theta0, "θ₀",
-              label_radius=0.4 * p.R)
+    # r on a radius pointing left (towards the trough's inside, away from its wall and
+    # from the line to the trough's centre), labelled just outside the cylinder
+    left = np.array([np.cos(np.radians(200)), np.sin(np.radians(200))])
+    axes.plot([c[0], c[0] + p.r * left[0]], [c[1], c[1] + p.r * left[1]], color="0.1", lw=0.8)
+    axes.text(c[0] + (p.r + 0.03 * p.R) * left[0], c[1] + (p.r + 0.03 * p.R) * left[1], "r",
+              ha="right", va="center", fontsize=10)
+    angle_arc(axes, (0.0, 0.0), 0.38 * p.R, -np.pi / 2, -np.pi / 2 + p.theta0)
+    middle = -np.pi / 2 + p.theta0 / 2
+    axes.text(0.5 * p.R * np.cos(middle), 0.5 * p.R * np.sin(middle), "θ₀", ha="center",
+              va="center", fontsize=10)
     describe(axes, "The cylinder is drawn at rest at the release angle, to the right of the "
              "lowest point of the trough; θ is measured at the trough's centre from the "
              "downward vertical, counter-clockwise.")

@@ -53,13 +53,15 @@ def figure(p):
     axes.plot([radius + width / 2, radius + 0.5], [left, left], color="0.5", lw=0.6, ls=":")
     axes.text(0.0, -radius - 0.1, "column length L (dashed axis)", ha="center", va="top",
               fontsize=9)
-    dimension(axes, (-radius - width / 2, height - 0.15), (-radius + width / 2, height - 0.15), "d",
-              tick=0.03)
+    # d across the left leg's open top; the leg is too narrow for the label, which stands
+    # outside it on the left
+    dimension(axes, (-radius - width / 2, height - 0.3), (-radius + width / 2, height - 0.3))
+    axes.text(-radius - width / 2 - 0.06, height - 0.3, "d", ha="right", va="center", fontsize=10)
     describe(axes, "The left surface stands h₀ higher than the right one at the release; "
              "the dashed line is the tube's axis, along which the liquid column's length L "
              "is measured.")
     axes.set_xlim(-1.0, 1.2)
-    axes.set_ylim(-0.9, height + 0.1)
+    axes.set_ylim(-0.9, height + 0.15)
     return drawing
 
 

@@ -68,6 +68,9 @@ EXERCISE = Exercise(
         Uniform("v", 0.5, 8.0, step=0.1, unit="m/s", symbol="v"),
     ),
     constraints=(
+        Constraint("a real metal (aluminium, steel, copper alloys, titanium): "
+                   "sqrt(E/rho) between 3 and 5.5 km/s",
+                   lambda p: 3e3 <= np.sqrt(p.E / p.rho) <= 5.5e3),
         Constraint("the struck rod is at least 30 % longer than the striker", lambda p: p.L2 >= 1.3 * p.L1),
         Constraint("the stress, the contact time and the velocity are over 10 % apart in SI and in MPa, ms, m/s",
                    lambda p: answers_apart(solve(p), {"sigma": 1e6, "t_c": 1e-3, "v2": 1.0})),

@@ -33,6 +33,13 @@ def solve(p):
             "omega": continua.rayleigh_frequency(_k(p), p.m, m_eff)}
 
 
+def _static_strain(p, g=9.81):
+    """Largest bending strain under the weights at rest: midspan moment m g L/4 + m_b g L/8
+    over the section modulus b h^2/6, divided by E."""
+    moment = p.m * g * p.L / 4 + _m_b(p) * g * p.L / 8
+    return moment / (p.b * p.h**2 / 6) / p.E
+
+
 def _static_shape(x, L):
     """Deflection under a midspan load, normalized to 1 at midspan (symmetric):
     psi = (3 x/L - 4 (x/L)^3) for x <= L/2 (Section 5.2)."""
@@ -95,6 +102,11 @@ EXERCISE = Exercise(
         Uniform("m", 5, 120, step=1, unit="kg", symbol="m"),
     ),
     constraints=(
+        Constraint("a real structural material (wood, concrete, aluminium, steel): "
+                   "sqrt(E/rho) between 3 and 5.5 km/s",
+                   lambda p: 3e3 <= np.sqrt(p.E / p.rho) <= 5.5e3),
+        Constraint("the beam stays elastic: the static bending strain is at most 0.05 %",
+                   lambda p: _static_strain(p) <= 5e-4),
         Constraint("the beam weighs 20 % to 300 % of the mass", lambda p: 0.2 <= _m_b(p) / p.m <= 3),
         Constraint("a fundamental frequency between 2 Hz and 100 Hz",
                    lambda p: 2 <= solve(p)["f"] <= 100),
@@ -105,7 +117,7 @@ EXERCISE = Exercise(
 A uniform beam of length $L$ = {{ L }} rests on a pin at one end and a roller at the
 other. Its rectangular section is $b$ = {{ b }} wide and $h$ = {{ h }} high (bent about the
 width); its material has $E$ = {{ E }} and density $\\rho$ = {{ rho }}. A compact mass
-$m$ = {{ m }} is fixed at midspan. Assume that the beam vibrates in the shape of its static
+$m$ = {{ m }} is fixed at midspan; the beam stays elastic. Assume that the beam vibrates in the shape of its static
 deflection under a midspan load.
 
 1. Which effective mass does the beam add at midspan?

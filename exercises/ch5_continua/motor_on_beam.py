@@ -47,7 +47,10 @@ def figure(p):
     block(axes, (L / 2, t / 2 + 0.05 * L), 0.14 * L, 0.1 * L, "m", color="C0")
     axes.text(L / 2, 0.13 * L, f"m = {format_number(p.m)} kg,  n = {format_number(p.n * 60 / (2 * np.pi))} rpm",
               ha="center", va="bottom", fontsize=10)
-    axes.text(0.78 * L, 0.03 * L, f"E = {format_number(p.E / 1e9)} GPa,  b × h = {format_number(p.b * 1e3)} × {format_number(p.h * 1e3)} mm",
+    # the beam's data on either side of the motor (one line across it ran into the block)
+    axes.text(0.22 * L, 0.03 * L, f"E = {format_number(p.E / 1e9)} GPa", ha="center",
+              va="bottom", fontsize=9)
+    axes.text(0.78 * L, 0.03 * L, f"b × h = {format_number(p.b * 1e3)} × {format_number(p.h * 1e3)} mm",
               ha="center", va="bottom", fontsize=9)
     describe(axes, "The motor sits on the beam halfway between the supports.")
     axes.set_xlim(-0.08 * L, 1.08 * L)

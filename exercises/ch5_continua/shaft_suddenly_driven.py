@@ -11,7 +11,7 @@ from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import rods, stiffness
 
 #: each part's unit as a factor of SI, for telling the answers apart
-_UNITS = {"T": 1.0, "tau": 1e6, "t_end": 1e-3, "Omega_end": 1.0}
+_UNITS = {"T": 1.0, "tau": 1e6, "t_end": 1e-3, "phi_end": 1.0}
 
 
 def _c(p):
@@ -26,7 +26,9 @@ def _I_p(p):
 def solve(p):
     T = rods.torsional_impedance(p.rho, _c(p), _I_p(p)) * p.Omega
     return {"T": T, "tau": rods.torsion_shear_stress(T, p.d / 2, _I_p(p)),
-            "t_end": rods.travel_time(p.L, _c(p)), "Omega_end": rods.free_end_velocity(p.Omega),
+            "t_end": rods.travel_time(p.L, _c(p)),
+            # the far end turns at 2 Omega from L/c_T until the reflection is back at 2 L/c_T
+            "phi_end": rods.free_end_velocity(p.Omega) * rods.travel_time(p.L, _c(p)),
             "c": _c(p), "I_p": _I_p(p)}
 
 
@@ -49,6 +51,12 @@ def figure(p):
     for x in (0.3 * L, 0.92 * L):
         block(axes, (x, 0.0), 0.03 * L, 0.07 * L, color="#e6d8a8")
     angle_arc(axes, (0.03 * L, 0.0), 0.045 * L, -2.0, 2.0)
+    # an arrowhead at the arc's end shows the sense of the drive
+    r, tip, before = 0.045 * L, 2.0, 1.8
+    axes.annotate("", xy=(0.03 * L + r * np.cos(tip), r * np.sin(tip)),
+                  xytext=(0.03 * L + r * np.cos(before), r * np.sin(before)),
+                  arrowprops={"arrowstyle": "-|>", "color": "0.2", "lw": 0.8,
+                              "mutation_scale": 8})
     axes.text(0.03 * L, 0.07 * L, f"Ω = {format_number(p.Omega * 60 / (2 * np.pi))} rpm",
               ha="center", va="bottom", fontsize=10)
     axes.text(0.61 * L, 0.04 * L,
@@ -76,6 +84,9 @@ EXERCISE = Exercise(
         Uniform("Omega", 60, 600, step=10, unit="rpm", symbol=r"\Omega"),
     ),
     constraints=(
+        Constraint("a real metal (aluminium, steel, copper alloys, titanium): "
+                   "sqrt(G/rho) between 2 and 3.4 km/s",
+                   lambda p: 2e3 <= np.sqrt(p.G / p.rho) <= 3.4e3),
         Constraint("the shaft stays elastic: tau at most 150 MPa", lambda p: solve(p)["tau"] <= 150e6),
         Constraint("the four answers are over 10 % apart in SI and in their parts' units",
                    lambda p: answers_apart(solve(p), _UNITS)),
@@ -89,7 +100,8 @@ $\\Omega$ = {{ Omega }}. The shaft stays elastic.
 1. Which torque must the motor deliver right after $t = 0$?
 2. What is the largest shear stress in the shaft before the wave reaches the far end?
 3. When does the far end start to turn?
-4. With which angular velocity does the far end then turn?
+4. Through which angle has the far end turned when the wave reflected there arrives back
+   at the motor?
 """,
     solution=r"""
 The twist angle obeys the wave equation with $c_T = \sqrt{G/\rho}$ = {{ si.c }} m/s; the
@@ -106,11 +118,17 @@ driven end sends a step wave into the shaft behind which the material turns at $
    = {{ answers.tau }}.
 3. **Arrival.** The front crosses the shaft in $t = L/c_T$ = {{ answers.t_end }} ($L$ = {{ L }}).
 4. **Free end.** A free end carries no torque: the wave is reflected with the opposite
-   twist and the same angular velocity, which adds to the incident one:
-   $\Omega_{\mathrm{end} } = 2\Omega$ = {{ answers.Omega_end }}.
+   twist and the same angular velocity, which adds to the incident one, so the far end
+   turns at $2\Omega$ from $t = L/c_T$ on. The reflected front needs another $L/c_T$ to
+   get back to the motor; by then the far end has turned through
+   $$\varphi_{\mathrm{end} } = 2\Omega\,\frac{L}{c_T}$$
+   = {{ answers.phi_end }}.
 
 **Check.** The motor's power $T\Omega$ equals $c_T$ times the wave's kinetic and strain
 energy per length, $\rho I_p\Omega^2/2 + G I_p(\Omega/c_T)^2/2$: {{ checks.power_into_the_wave }} W.
+And when the reflection reaches the motor it has cancelled the twist everywhere: the
+shaft is untwisted, so the far end stands at the motor's angle
+$\Omega\cdot 2L/c_T$ = {{ checks.driven_end_angle }} rad.
 """,
     solve=solve,
     checks=(
@@ -118,6 +136,10 @@ energy per length, $\rho I_p\Omega^2/2 + G I_p(\Omega/c_T)^2/2$: {{ checks.power
         Balance("power", lambda p, s: s["T"] * p.Omega, _energy_flux, name="power_into_the_wave"),
         # tau = G gamma with the surface shear strain gamma = (d/2) theta_x = (d/2) Omega / c_T
         Recompute("tau", lambda p, s: p.G * p.d / 2 * p.Omega / np.sqrt(p.G / p.rho), name="surface_strain"),
+        # at 2 L/c_T the reflected wave has cancelled the twist everywhere: the shaft is
+        # untwisted and the far end stands at the motor's angle Omega * 2 L/c_T
+        Recompute("phi_end", lambda p, s: p.Omega * 2 * p.L * np.sqrt(p.rho / p.G),
+                  name="driven_end_angle"),
     ),
     figure=figure,
     parts=(
@@ -136,9 +158,14 @@ energy per length, $\rho I_p\Omega^2/2 + G I_p(\Omega/c_T)^2/2$: {{ checks.power
                 misconceptions=(
                     Misconception("round trip 2L/c_T", lambda p: 2 * p.L / _c(p),
                                   "The front reaches the far end after one crossing, L/c_T."),)),
-        Numeric("Omega_end", "angular velocity of the far end", question=4, unit="rad/s", points=1,
+        Numeric("phi_end", "angle of the far end when the reflection is back at the motor",
+                question=4, unit="rad", points=1,
                 misconceptions=(
-                    Misconception("the driven speed", lambda p: p.Omega,
-                                  "At a free end the reflected wave adds its angular velocity to the incident one: 2 Omega."),)),
+                    Misconception("the driven speed", lambda p: p.Omega * p.L / _c(p),
+                                  "At a free end the reflected wave adds its angular velocity to the "
+                                  "incident one: the far end turns at 2 Omega."),
+                    Misconception("turning from t = 0", lambda p: 2 * p.Omega * 2 * p.L / _c(p),
+                                  "The far end rests until the front arrives at L/c_T; it turns at "
+                                  "2 Omega only for the reflection's return trip, L/c_T."),)),
     ),
 )

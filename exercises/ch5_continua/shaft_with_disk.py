@@ -89,6 +89,13 @@ EXERCISE = Exercise(
         Uniform("R", 30, 150, step=5, unit="mm", symbol="R"),
     ),
     constraints=(
+        Constraint("a real metal (aluminium, steel, copper alloys, titanium): "
+                   "sqrt(G/rho) between 2 and 3.4 km/s",
+                   lambda p: 2e3 <= np.sqrt(p.G / p.rho) <= 3.4e3),
+        Constraint("the disk is at least twice as wide as the shaft", lambda p: p.R >= p.d),
+        Constraint("a disk, neither a foil nor a drum: of the shaft's material its thickness "
+                   "m/(rho pi R^2) lies between R/50 and R",
+                   lambda p: p.R / 50 <= p.m / (p.rho * np.pi * p.R**2) <= p.R),
         Constraint("the shaft's inertia is half to five times the disk's", lambda p: 0.5 <= solve(p)["ratio"] <= 5),
         Constraint("the three answers are over 10 % apart",
                    lambda p: answers_apart(solve(p), {"J_s": 1.0, "f1": 1.0, "f2": 1.0})),
@@ -96,7 +103,7 @@ EXERCISE = Exercise(
     statement="""
 A metal shaft of circular section (diameter $d$ = {{ d }}, length $L$ = {{ L }},
 shear modulus $G$ = {{ G }}, density $\\rho$ = {{ rho }}) is clamped at one end. On its
-other end sits a homogeneous disk of mass $m$ = {{ m }} and radius $R$ = {{ R }}. The
+other end sits a homogeneous disk, of the same metal, of mass $m$ = {{ m }} and radius $R$ = {{ R }}. The
 shaft's own inertia is not negligible.
 
 1. What is the shaft's mass moment of inertia $J_s$ about its axis?

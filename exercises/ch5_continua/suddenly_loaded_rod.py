@@ -76,6 +76,9 @@ EXERCISE = Exercise(
         Uniform("F", 1, 60, step=0.5, unit="kN", symbol="F"),
     ),
     constraints=(
+        Constraint("a real metal (aluminium, steel, copper alloys, titanium): "
+                   "sqrt(E/rho) between 3 and 5.5 km/s",
+                   lambda p: 3e3 <= np.sqrt(p.E / p.rho) <= 5.5e3),
         Constraint("the rod stays elastic: 2 F / A at most 200 MPa",
                    lambda p: solve(p)["sigma_max"] <= 200e6),
         Constraint("the four answers are over 10 % apart in SI and in their parts' units",

@@ -74,9 +74,12 @@ def figure(p):
     t = 0.06
     drawing, axes = new_drawing(5.0, 1.7)
     block(axes, (L / 2, 0.0), L, t, color="0.7")
-    for x in (0.224 * L, 0.776 * L):
+    # the cords at a round 0.2 L, not at the nodes' 0.224 L: measured on the figure, the
+    # drawing would give the answer to part 2 away
+    node = 0.2 * L
+    for x in (node, L - node):
         axes.plot([x - 0.02, x + 0.02], [-t / 2 - 0.02, -t / 2 - 0.02], color="C1", lw=3)
-    dimension(axes, (0.0, -0.13), (0.224 * L, -0.13), "xₙ", tick=0.01, side=-1.0)
+    dimension(axes, (0.0, -0.13), (node, -0.13), "xₙ", tick=0.01, side=-1.0)
     dimension(axes, (0.0, -0.25), (L, -0.25), "L", tick=0.01, side=-1.0)
     dimension(axes, (1.04 * L, -t / 2), (1.04 * L, t / 2), f"h = {format_number(p.h * 1e3)} mm",
               tick=0.01, side=-1.0)
@@ -100,6 +103,9 @@ EXERCISE = Exercise(
         Uniform("f1", 400, 2500, step=10, unit="Hz", symbol="f_1"),
     ),
     constraints=(
+        Constraint("a real metal (aluminium, steel, copper alloys, titanium): "
+                   "sqrt(E/rho) between 3 and 5.5 km/s",
+                   lambda p: 3e3 <= np.sqrt(p.E / p.rho) <= 5.5e3),
         Constraint("a bar between 8 and 60 thicknesses long (slender, not a plate)",
                    lambda p: 8 <= solve(p)["L"] / p.h <= 60),
         Constraint("the three answers are over 10 % apart in SI and in their parts' units",
@@ -161,7 +167,7 @@ node at {{ checks.boundary_matrix_node }} m as well.
         Numeric("x_n", "distance of the nodes from the ends", question=2, unit="mm", points=2,
                 misconceptions=(
                     Misconception("quarter points", lambda p: solve(p)["L"] / 4,
-                                  "The nodes are the zeros of the free-free mode shape, at 0.224 L, not at L/4."),)),
+                                  "The nodes are the zeros of the free-free mode shape W(x), not the quarter points."),)),
         Numeric("f2", "frequency of the second mode", question=3, unit="Hz", points=2,
                 misconceptions=(
                     Misconception("harmonic 2 f1", lambda p: 2 * p.f1,
