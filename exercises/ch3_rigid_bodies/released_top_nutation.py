@@ -132,8 +132,8 @@ $g$ = {{ g }}).
    $\dot\psi = \frac{I_3\omega_3\beta}{I_1} = \frac{2 m g l}{I_3\omega_3}$ = {{ answers.psi_dot }}:
    twice the fast-top rate $m g l/(I_3\omega_3)$ = {{ si.psi_fast }} rad/s. The axis
    precesses in steps, from rest at the top of each dip to this rate at its bottom.
-3. **Kinetic energy gained.** All of it from the weight: $\Delta T = m g l(\cos\theta_0
-   - \cos\theta_{\max})$ = {{ answers.dT }}, now in the precession $\tfrac{1}{2} I_1\dot\psi^2\sin^2\theta$.
+3. **Kinetic energy gained.** All of it from the weight: $\Delta T =
+   m g l(\cos\theta_0 - \cos\theta_{\max})$ = {{ answers.dT }}, now in the precession $\tfrac{1}{2} I_1\dot\psi^2\sin^2\theta$.
 4. **Check.** Integrating the top's equation of motion in $\theta$ from the release to the
    next turning point gives $\theta_{\max}$ = {{ checks.integrated_turning_tilt }} rad.
 """,
