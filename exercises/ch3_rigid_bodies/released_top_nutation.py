@@ -60,14 +60,18 @@ def draw(p):
     body = [(0.0, 0.0), tuple(axis * 1.2 + across * 0.55), tuple(axis * 1.45 + across * 0.4),
             tuple(axis * 1.45 - across * 0.4), tuple(axis * 1.2 - across * 0.55)]
     axes.add_patch(Polygon(body, closed=True, facecolor="C1", edgecolor="0.1"))
+    # the symmetry axis through the body, so that θ₀'s arc visibly ends on it
+    axes.plot([0.0, axis[0] * 1.45], [0.0, axis[1] * 1.45], color="0.1", lw=0.8, ls="-.")
     arrow(axes, tuple(axis * 1.45), tuple(axis * 2.2), "", color="0.1")
     axes.annotate("", xy=tuple(axis * 1.9 - across * 0.3), xytext=tuple(axis * 1.9 + across * 0.3),
                   arrowprops={"arrowstyle": "-|>", "connectionstyle": "arc3,rad=-0.5",
                               "color": "C3"})
     axes.text(*(axis * 2.0 + across * 0.45), "ω₃", color="C3", ha="left", va="center",
               fontsize=10)
-    angle_arc(axes, (0.0, 0.0), 0.55, np.pi / 2 - p.theta0, np.pi / 2, "θ₀",
-              label_radius=0.75)
+    # the arc runs over the body; its label stands left of the dashed vertical, where the
+    # body is not (inside the angle it lay on the body's edge)
+    angle_arc(axes, (0.0, 0.0), 0.55, np.pi / 2 - p.theta0, np.pi / 2)
+    axes.text(-0.06, 0.6, "θ₀", ha="right", va="center", fontsize=10)
     axes.text(0.0, -0.05, "O", ha="center", va="top", fontsize=10)
     describe(axes, "The top stands on its fixed tip O with its symmetry axis tilted by θ₀ "
              "from the vertical (dashed) and spins about that axis with ω₃; it is released "
