@@ -139,6 +139,9 @@ EXERCISE = Exercise(
         Constraint("the pucks' masses differ by 30 % of the lighter one at least",
                    lambda p: max(p.mA, p.mB) >= 1.3 * min(p.mA, p.mB)),
         Constraint("the rod turns: |uB - aA| >= 0.3 m/s", lambda p: abs(p.uB - p.aA) >= 0.3),
+        Constraint("pucks on an air table: B moves at most at 3 m/s (a steep rod's cot theta "
+                   "made up to 10 m/s)",
+                   lambda p: np.hypot(p.uB, solve(p)["yB"]) <= 3.0),
         Constraint("the answers are clear of zero and differ pairwise by over 5 %", _keys_apart),
     ),
     statement=r"""

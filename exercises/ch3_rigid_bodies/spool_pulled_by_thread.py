@@ -88,7 +88,7 @@ EXERCISE = Exercise(
         Uniform("R", 0.1, 0.3, step=0.01, unit="m", symbol="R"),
         Uniform("r", 0.03, 0.24, step=0.01, unit="m", symbol="r"),
         Uniform("k", 0.05, 0.25, step=0.01, unit="m", symbol="k"),
-        Uniform("F", 2.0, 30.0, step=0.5, unit="N", symbol="F"),
+        Uniform("F", 1.0, 12.0, step=0.5, unit="N", symbol="F"),
         Constant("g", 9.81, unit="m/s^2", symbol="g"),
     ),
     constraints=(
@@ -98,6 +98,8 @@ EXERCISE = Exercise(
                    lambda p: 0.5 * p.R <= p.k <= 0.85 * p.R),
         Constraint("the friction is clearly not zero (|r R - k^2| > 0.08 R^2)",
                    lambda p: abs(p.r * p.R - p.k**2) > 0.08 * p.R**2),
+        Constraint("a pull by hand: the spool speeds up at most at 6 m/s^2 (the draws reached "
+                   "6 g)", lambda p: solve(p)["a"] <= 6.0),
         Constraint("a floor can supply the friction (mu_min < 0.6)",
                    lambda p: solve(p)["mu_min"] < 0.6),
         Constraint("the three numbers asked for are 5 % apart", _apart),
