@@ -156,8 +156,9 @@ results from the turns about the fixed axes in the opposite order: roll, pitch, 
    $\arcsin(\cos\theta\sin\varphi)$ = {{ answers.tilt }} — not simply the roll
    $\varphi$, because the pitch tipped the roll's axis first.
 
-**Check.** The accelerometer's vector keeps its length: $|R^{\mathsf T} g\,e_3|$ =
-{{ checks.reading_length }} m/s², which is $g$.
+**Check.** Questions 1 and 2 are the same rotation used both ways: the reading along the
+optical axis is $g\,e_3\cdot b_1$, $g$ times the vertical component of $b_1$ from question
+1: {{ checks.reading_along_the_optical_axis }} m/s², the first entry of question 2.
 """,
     solve=solve,
     checks=(
@@ -165,6 +166,10 @@ results from the turns about the fixed axes in the opposite order: roll, pitch, 
         Recompute("f", _reading_by_hand, name="reading_by_hand", atol=1e-12),
         Recompute("tilt", lambda p, s: np.arcsin(np.cos(p.theta) * np.sin(p.phi)),
                   name="tilt_by_hand", atol=1e-12),
+        # active and passive use agree: the reading along b1 is g e3 . b1, g times n's third
+        # entry (a length check would pass for any rotation, composed right or wrong)
+        Balance("reading along the optical axis", lambda p, s: p.g * s["n"][2],
+                lambda p, s: s["f"][0], name="reading_along_the_optical_axis"),
         # a rotation keeps lengths
         Balance("length of the reading", lambda p, s: p.g,
                 lambda p, s: np.linalg.norm(s["f"]), name="reading_length"),
