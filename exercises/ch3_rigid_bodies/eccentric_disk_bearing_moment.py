@@ -127,6 +127,10 @@ $$r_{OC} \times m\,v_C = m\,\Omega\,e\,(-h,\ 0,\ e).$$
    the balance of angular momentum (Section 3.2.2) needs
    $M_O = \dot H_O = \omega \times H_O$, of magnitude
    $\Omega\,|H_\perp| = m\,e\,h\,\Omega^2$ = {{ answers.M_O }}.
+
+**Check.** About C instead: $I_C\omega$ is constant, so the bearings' moment about O only has
+to turn the momentum, the moment of $m\,a_C = m e\Omega^2$ (towards the axis) with the lever
+arm $h$: {{ checks.moment_of_the_centripetal_force }} N·m.
 """,
     solve=solve,
     figure=figure,

@@ -125,6 +125,9 @@ $$m g\,\tfrac{L}{2}(\cos\theta_0 - \cos\theta)
    $v_C = \tfrac{L}{2}\dot\theta = \sqrt{\tfrac{3}{4} g L\cos\theta_0}$ = {{ answers.v_land }},
    less than the free fall from the height $\tfrac{L}{2}\cos\theta_0$ would give,
    $\sqrt{g L\cos\theta_0}$, because a quarter of the energy goes into the spin.
+
+**Check.** Integrating the rod's equation of motion from rest at $\theta_0$ until it leans
+at $\theta_1$ gives $\dot\theta$ = {{ checks.integrated_fall }} rad/s again.
 """,
     solve=solve,
     figure=figure,

@@ -130,6 +130,10 @@ Here $m$ = {{ m }}, $R$ = {{ R }}, $v$ = {{ v }}, $\omega$ = {{ omega }}.
    instant: no force acts in the plane of the ice, so $H_B$ is conserved.
 3. **Where it vanishes.** $H_B = 0$ for $y_B = y_0 = -\dfrac{R^2\omega}{2 v}$
    = {{ answers.y_0 }}: on that line the orbital part cancels the spin.
+
+**Check.** Without the transfer formula: summing $r_B \times m_i v_i$ over the disk cut into
+rings of mass points, each moving with $v_C + \omega \times r_{Ci}$, gives
+$H_B$ = {{ checks.sum_over_mass_points }} kg·m²/s again.
 """,
     solve=solve,
     figure=figure,

@@ -133,6 +133,10 @@ $$m a = F + f, \qquad m k^2\,\frac{a}{R} = F r - f R .$$
    needs, and friction makes up the difference.
 4. **Smallest coefficient.** The floor carries the weight, $N = m g$, and rolling needs
    $|f| \le \mu N$: $\mu_{\min} = |f|/(m g)$ = {{ answers.mu_min }}.
+
+**Check.** By power instead: the thread's end at the top of the hub moves at $v(1 + r/R)$,
+and friction at the resting contact does no work, so $F(1 + r/R) = m(1 + k^2/R^2)\,a$:
+{{ checks.power_of_the_pull }} N on each side.
 """,
     solve=solve,
     figure=figure,
