@@ -72,14 +72,15 @@ def figure(p):
     sense = 1.0 if p.u > 0 else -1.0
     arrow(axes, (d, 0.0), (d, sense * 0.4 * d), "u", offset=(0.06 * d, 0.0), color="C3")
     arrow(axes, (d, 0.0), (d + 0.3 * d, 0.0), "$e_r$", offset=(0.0, -0.06 * d), color="0.2")
-    dimension(axes, (0.0, 0.0), (d, 0.0), f"d = {format_number(d)} m", offset=-0.15 * d,
+    # d below the carousel: at -0.15 d its label lay across the carousel's rim
+    dimension(axes, (0.0, 0.0), (d, 0.0), f"d = {format_number(d)} m", offset=-0.66 * d,
               tick=0.02 * d, side=-1.0)
     describe(axes, "Seen from above: the carousel turns counter-clockwise about O; the "
                    "cyclist rides along the dashed straight line, "
                    + ("in the sense of the carousel's turn" if p.u > 0 else "against the "
                       "sense of the carousel's turn") + ", at the distance d from O.")
     axes.set_xlim(-0.7 * d, 1.45 * d)
-    axes.set_ylim(-0.7 * d, 0.9 * d)
+    axes.set_ylim(-0.85 * d, 0.9 * d)
     return drawing
 
 
