@@ -63,8 +63,10 @@ def draw(p):
     centre = axis * 1.1
     axes.add_patch(Circle(tuple(centre), 0.06, facecolor="white", edgecolor="0.1", zorder=4))
     axes.text(*(centre - across * 0.2), "C", ha="right", va="center", fontsize=10)
-    arrow(axes, tuple(centre), tuple(centre + [0.0, -0.8]), "mg", offset=(0.2, 0.0),
-          color="C3")
+    # the weight reaches down out of the body, labelled below it (on the body, red on blue,
+    # the label was hard to read and crossed the body's edge)
+    arrow(axes, tuple(centre), (centre[0], 0.1), color="C3")
+    axes.text(centre[0] + 0.08, 0.3, "mg", ha="left", va="center", fontsize=10, color="C3")
     axes.text(*(axis * 0.8 - across * 0.5), "l", ha="center", va="center", fontsize=10)
     angle_arc(axes, (0.0, 0.0), 0.5, np.pi / 2 - p.theta, np.pi / 2, "θ", label_radius=0.7)
     axes.text(0.0, -0.05, "O", ha="center", va="top", fontsize=10)
