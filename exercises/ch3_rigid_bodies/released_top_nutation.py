@@ -96,8 +96,11 @@ EXERCISE = Exercise(
         Constant("g", 9.81, unit="m/s^2", symbol="g"),
     ),
     constraints=(
-        Constraint("the moments about O belong to a top with C at l: I1 >= 1.2 m l^2 and "
-                   "I1 > I3", lambda p: p.I1 >= 1.2 * p.m * p.l**2 and p.I1 > p.I3),
+        Constraint("the moments about O belong to a top with C at l: I1 >= 1.2 m l^2, "
+                   "I1 > I3, and I3 <= 2 (I1 - m l^2), the axial moment at most the sum of "
+                   "the two transverse ones about C",
+                   lambda p: p.I1 >= 1.2 * p.m * p.l**2 and p.I1 > p.I3
+                   and p.I3 <= 2 * (p.I1 - p.m * p.l**2)),
         Constraint("the top dips noticeably but stays clear of the ground: "
                    "3 deg <= theta_max - theta0, theta_max <= 80 deg",
                    lambda p: np.radians(3) <= solve(p)["theta_max"] - p.theta0

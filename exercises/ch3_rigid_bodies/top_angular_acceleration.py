@@ -39,8 +39,10 @@ def _far_from(wrong, key, share):
 
 def _inertia_possible(p):
     """Moments about O of a body with its centre of mass on e3^B at l: I1, I2 at least
-    m l^2 above zero, and each moment at most the sum of the other two."""
-    i = sorted(_moments(p))
+    m l^2 above zero, and the principal moments about C (I1 - m l^2, I2 - m l^2, I3; the
+    parallel-axis theorem) each at most the sum of the other two. About O alone the
+    triangle rule lets I3 exceed I1 + I2 - 2 m l^2, which no body can."""
+    i = sorted((p.I1 - p.m * p.l**2, p.I2 - p.m * p.l**2, p.I3))
     return min(p.I1, p.I2) >= 1.2 * p.m * p.l**2 and i[2] <= i[0] + i[1]
 
 
