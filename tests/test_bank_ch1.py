@@ -16,7 +16,7 @@ from dynagrade.mechanics import kinematics, systems
 #: the variants worked by hand below, in the parameters' declared units
 HAND = {
     "boat-hauled-to-quay": {"h": 3.0, "u": 0.4, "x": 4.0},
-    "puck-on-tilted-plane": {"alpha": 30, "beta": 60, "x1": 1.0, "x2": 1.0, "v1": 2.0, "v2": 1.0},
+    "puck-on-tilted-plane": {"alpha": 30, "beta": 60, "x1": 1.0, "x2": -1.0, "v1": 2.0, "v2": 1.0},
     "radar-tracking-level-flight": {"h": 1000, "v": 100, "phi": 30},
     "telescoping-arm": {"r0": 0.5, "b": 0.2, "eps": 1.0, "t": 2.0},
     "helical-slide": {"R": 2.0, "H": 6.0, "v": 4.0, "at": 3.0},
@@ -97,11 +97,11 @@ def test_a_point_of_the_tilted_plane_has_the_height_its_uphill_distance_times_si
 
 def test_puck_on_tilted_plane_at_a_variant_worked_by_hand(bank):
     # alpha = 30 deg (tan = 0.577350), beta = 60 deg (cos = 0.5, sin = 0.866025)
-    # x3 = tan(a) (x1 cos b + x2 sin b) = 0.577350 * (0.5 + 0.866025) = 0.788675 m
+    # x3 = tan(a) (x1 cos b + x2 sin b) = 0.577350 * (0.5 - 0.866025) = -0.211325 m
     # v3 = tan(a) (v1 cos b + v2 sin b) = 0.577350 * (1.0 + 0.866025) = 1.077350 m/s
     # |v| = sqrt(2^2 + 1^2 + 1.077350^2) = sqrt(6.160684) = 2.482072 m/s
     key = _answers(bank, "puck-on-tilted-plane", HAND["puck-on-tilted-plane"])
-    assert key["x3"] == pytest.approx(0.788675, rel=1e-6)
+    assert key["x3"] == pytest.approx(-0.211325, rel=1e-5)
     assert key["v3"] == pytest.approx(1.077350, rel=1e-6)
     assert key["speed"] == pytest.approx(2.482072, rel=1e-6)
 

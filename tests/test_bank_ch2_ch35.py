@@ -201,17 +201,18 @@ def test_the_turning_radius_has_the_starting_radius_energy():
 # -- Section 3.5.1: kinetic energy and angular momentum of an unsymmetric top ------------
 
 def test_top_energy_and_momentum_keys_match_the_hand_calculation():
-    keys = _keys("top-energy-and-momentum", I1=1e-3, I2=5e-4, I3=4e-4, theta=40, phi=90,
+    # I1 = 8e-4 <= I2 + I3 = 9e-4: moments a real body can have about O
+    keys = _keys("top-energy-and-momentum", I1=8e-4, I2=5e-4, I3=4e-4, theta=40, phi=90,
                  psi_dot=4.0, theta_dot=2.0, phi_dot=20.0)
     # sin 40° = 0.642788, cos 40° = 0.766044, phi = 90°:
     # omega = (4 * 0.642788, -2, 4 * 0.766044 + 20) = (2.571150, -2, 23.064178) rad/s
-    # T = 1/2 (1e-3 * 6.610812 + 5e-4 * 4 + 4e-4 * 531.95628) = 0.1106967 J
-    assert keys["T"] == pytest.approx(0.1106967, rel=1e-5)
-    # H = (2.571150e-3, -1e-3, 9.225671e-3); e3 in the body frame = (0.642788, 0, 0.766044)
-    # H . e3 = 1.652714e-3 + 7.067271e-3 = 8.719985e-3 kg m^2/s
-    assert keys["H_v"] == pytest.approx(8.719985e-3, rel=1e-5)
-    # |H| = sqrt(6.610813e-6 + 1e-6 + 8.511300e-5) = 9.629320e-3 kg m^2/s
-    assert keys["H_abs"] == pytest.approx(9.629320e-3, rel=1e-5)
+    # T = 1/2 (8e-4 * 6.610815 + 5e-4 * 4 + 4e-4 * 531.95630) = 1/2 * 0.2200712 = 0.1100356 J
+    assert keys["T"] == pytest.approx(0.1100356, rel=1e-5)
+    # H = (2.056920e-3, -1e-3, 9.225671e-3); e3 in the body frame = (0.642788, 0, 0.766044)
+    # H . e3 = 1.322163e-3 + 7.067274e-3 = 8.389437e-3 kg m^2/s
+    assert keys["H_v"] == pytest.approx(8.389437e-3, rel=1e-5)
+    # |H| = sqrt(4.230921e-6 + 1e-6 + 8.511301e-5) = sqrt(9.034393e-5) = 9.504942e-3 kg m^2/s
+    assert keys["H_abs"] == pytest.approx(9.504942e-3, rel=1e-5)
 
 
 def test_the_body_components_of_the_vertical_are_the_rotations_third_row():

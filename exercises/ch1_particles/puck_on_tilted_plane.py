@@ -74,6 +74,18 @@ def _keys_apart(p) -> bool:
     return min(values[:2]) >= 0.1 and numbers_apart(values)
 
 
+def _drawn_apart(p) -> bool:
+    """The puck, drawn at its position, keeps off the figure's axes, the uphill arrow and
+    their labels: it lies 1.1 m from O and at least 30° away from e1, e2 and the uphill
+    direction."""
+    puck = np.array([p.x1, p.x2])
+    distance = float(np.hypot(*puck))
+    directions = (np.array([1.0, 0.0]), np.array([0.0, 1.0]),
+                  np.array([np.cos(p.beta), np.sin(p.beta)]))
+    return distance >= 1.1 and all(np.dot(puck, d) / distance < np.cos(np.radians(30))
+                                   for d in directions)
+
+
 def figure(p):
     """Top view (schematic): the axes e1, e2 at O, the direction of steepest ascent at the
     azimuth beta with level lines across it, the puck at (x1, x2) and its horizontal
@@ -83,7 +95,9 @@ def figure(p):
     arrow(axes, (0.0, 0.0), (0.0, 0.8), color="0.3")
     axes.text(0.95, 0.0, "e₁", ha="left", va="center", fontsize=10, color="0.3")
     axes.text(0.0, 0.95, "e₂", ha="center", va="bottom", fontsize=10, color="0.3")
-    axes.text(-0.08, -0.08, "O", ha="right", va="top", fontsize=10)
+    # O in the quadrant that neither the axes nor the uphill arrow take
+    axes.text(-0.1, 0.1 if p.beta < 0 else -0.1, "O", ha="right",
+              va="bottom" if p.beta < 0 else "top", fontsize=10)
     up = np.array([np.cos(p.beta), np.sin(p.beta)])
     level = np.array([-up[1], up[0]])
     for k in (-2, -1, 0, 1, 2):                                  # level lines of the plane
@@ -96,8 +110,14 @@ def figure(p):
     axes.add_patch(Circle(tuple(puck), 0.09, facecolor="C0", edgecolor="0.1", lw=1.0, zorder=3))
     heading = np.array([p.v1, p.v2]) / _horizontal_speed(p)
     arrow(axes, tuple(puck + 0.1 * heading), tuple(puck + 0.75 * heading), color="C3")
-    axes.text(*(puck + 1.05 * heading), "v₁e₁ + v₂e₂", ha="center", va="center", fontsize=10,
-              color="C3")
+    # the label beside the arrow's middle, on the side away from O
+    across = np.array([-heading[1], heading[0]])
+    if np.dot(across, puck) < 0:
+        across = -across
+    spot = puck + 0.45 * heading + 0.3 * across
+    axes.text(*spot, "v₁e₁ + v₂e₂", ha="left" if across[0] > 0.3 else "right"
+              if across[0] < -0.3 else "center", va="bottom" if across[1] > 0.3 else "top"
+              if across[1] < -0.3 else "center", fontsize=10, color="C3")
     describe(axes, "Seen from above: grey level lines of the tilted plane run across the "
              "green arrow from O, which points uphill at the angle beta from e1; the puck is "
              "at its measured position, its red arrow is the horizontal velocity the camera "
@@ -123,6 +143,8 @@ EXERCISE = Exercise(
     constraints=(
         Constraint("the puck moves horizontally at 0.5 m/s at least and stays 0.4 m from O",
                    lambda p: _horizontal_speed(p) >= 0.5 and np.hypot(p.x1, p.x2) >= 0.4),
+        Constraint("the figure keeps the puck clear of the axes and the uphill arrow at O "
+                   "(1.1 m from O and 30° off e1, e2 and uphill)", _drawn_apart),
         Constraint("the height and the vertical velocity are clear of zero (0.1 m, 0.1 m/s) "
                    "and the three answers differ by over 5 %", _keys_apart),
     ),

@@ -89,8 +89,8 @@ def figure(p):
     e_phi = np.array([-np.sin(phi), np.cos(phi)])
     arrow(axes, tuple(tip), tuple(tip + 0.55 * e_r), color="C3")
     arrow(axes, tuple(tip), tuple(tip + 0.55 * e_phi), color="C3")
-    axes.text(*(tip + 0.72 * e_r), "e_r", ha="center", va="center", fontsize=10, color="C3")
-    axes.text(*(tip + 0.72 * e_phi), "e_φ", ha="center", va="center", fontsize=10, color="C3")
+    axes.text(*(tip + 0.72 * e_r), "$e_r$", ha="center", va="center", fontsize=10, color="C3")
+    axes.text(*(tip + 0.72 * e_phi), "$e_\\varphi$", ha="center", va="center", fontsize=10, color="C3")
     describe(axes, "Seen from above: the arm turns counter-clockwise about O and its inner "
              "tube slides out; the red arrows at the gripper are the radial and the "
              "circumferential unit vectors.")

@@ -56,28 +56,66 @@ def figure(p):
     scale = 0.4
     drawing, axes = new_drawing(4.6, 3.8)
     r2 = p.L * np.array([np.cos(p.theta), np.sin(p.theta)])
+    v_a, u_b = scale * np.array([p.aA, p.bA]), scale * np.array([p.uB, 0.0])
+    points = np.array([[0.0, 0.0], r2, v_a, r2 + u_b])
+    low, high = points.min(axis=0) - 0.45, points.max(axis=0) + 0.45
+    # the e_x, e_y triad (0.25 long) in the corner farthest from the rod and the arrows
+    drawn = np.concatenate([np.outer(np.linspace(0, 1, 12), end - start) + start
+                            for start, end in ((np.zeros(2), r2), (np.zeros(2), v_a),
+                                               (r2, r2 + u_b))])
+    triad = max((np.array([x, y]) for x in (low[0] + 0.05, high[0] - 0.4)
+                 for y in (low[1] + 0.05, high[1] - 0.35)),
+                key=lambda corner: np.min(np.hypot(*(drawn - corner - 0.12).T)))
+    gap = float(max(high - low)) / 14          # a label's distance from what it names
     axes.plot([0.0, r2[0]], [0.0, r2[1]], color="0.3", lw=2.0)
     along = r2 / p.L
-    for point, mass, name, side in (((0.0, 0.0), p.mA, "A", -1.0), (tuple(r2), p.mB, "B", 1.0)):
-        axes.add_patch(Circle(point, 0.05 + 0.02 * mass, facecolor="C0", edgecolor="0.1", lw=1.0,
+
+    def unit(vector):
+        return np.asarray(vector, float) / max(float(np.hypot(*vector)), 1e-12)
+
+    def freest(candidates, taken):
+        """Of the candidate directions, the one farthest in angle from everything taken."""
+        return max((unit(c) for c in candidates),
+                   key=lambda c: min(np.arccos(np.clip(np.dot(c, t), -1, 1)) for t in taken))
+
+    radii = (0.05 + 0.02 * p.mA, 0.05 + 0.02 * p.mB)
+    # each velocity arrow starts at its puck's rim, so the puck does not hide it (its length
+    # stays 0.4 m of drawing per m/s), labelled beside its middle on the side away from the
+    # rod: at the tip the label could land on the other puck
+    across = unit((-v_a[1], v_a[0]))
+    if np.dot(across, along) > 0:
+        across = -across
+    start_a = radii[0] * unit(v_a)
+    arrow(axes, tuple(start_a), tuple(start_a + v_a), color="C3")
+    axes.text(*(start_a + v_a / 2 + gap * across), "$v_A$", ha="center", va="center",
+              fontsize=10, color="C3")
+    start_b = r2 + radii[1] * unit(u_b)
+    arrow(axes, tuple(start_b), tuple(start_b + u_b), color="C2")
+    axes.text(*(start_b + u_b / 2 + np.array([0.0, gap])), "$\\dot x_B$", ha="center",
+              va="center", fontsize=10, color="C2")
+    # the pucks' names where nothing else is drawn: A below its θ arc, B off the rod, its
+    # arrow and that arrow's label
+    name_a = freest(((-1.0, -1.0), (0.0, -1.0), (1.0, -1.0)),
+                    (unit(v_a), unit(v_a / 2 + gap * across), np.array([1.0, 0.0])))
+    name_b = freest(((-1.0, 1.0), (0.0, 1.0), (1.0, 1.0), (-1.0, 0.0), (1.0, 0.0)),
+                    (-along, unit(u_b), unit(u_b / 2 + np.array([0.0, gap]))))
+    for point, radius, name, direction in (((0.0, 0.0), radii[0], "A", name_a),
+                                           (r2, radii[1], "B", name_b)):
+        axes.add_patch(Circle(point, radius, facecolor="C0", edgecolor="0.1", lw=1.0,
                               zorder=3))
-        axes.text(*(np.asarray(point) + side * 0.2 * along), name, ha="center", va="center",
-                  fontsize=10)
+        axes.text(*(np.asarray(point) + (radius + gap) * direction), name, ha="center",
+                  va="center", fontsize=10)
     axes.plot([0.0, 0.35], [0.0, 0.0], color="0.5", lw=0.8, ls="-.")
     angle_arc(axes, (0.0, 0.0), 0.22, 0.0, p.theta, "θ", label_radius=0.32)
-    axes.text(*(r2 / 2 + 0.1 * np.array([-np.sin(p.theta), np.cos(p.theta)])), "L",
+    axes.text(*(r2 / 2 + gap * np.array([-np.sin(p.theta), np.cos(p.theta)])), "L",
               ha="center", va="center", fontsize=10)
-    arrow(axes, (0.0, 0.0), (scale * p.aA, scale * p.bA), "$v_A$", offset=(0.08, 0.08), color="C3")
-    arrow(axes, tuple(r2), (r2[0] + scale * p.uB, r2[1]), "$\\dot x_B$", offset=(0.0, 0.1), color="C2")
-    arrow(axes, (-0.55, -0.55), (-0.3, -0.55), color="0.3")
-    arrow(axes, (-0.55, -0.55), (-0.55, -0.3), color="0.3")
-    axes.text(-0.25, -0.55, "$e_x$", ha="left", va="center", fontsize=10, color="0.3")
-    axes.text(-0.55, -0.25, "$e_y$", ha="center", va="bottom", fontsize=10, color="0.3")
+    x0, y0 = triad
+    arrow(axes, (x0, y0), (x0 + 0.25, y0), color="0.3")
+    arrow(axes, (x0, y0), (x0, y0 + 0.25), color="0.3")
+    axes.text(x0 + 0.3, y0, "$e_x$", ha="left", va="center", fontsize=10, color="0.3")
+    axes.text(x0, y0 + 0.3, "$e_y$", ha="center", va="bottom", fontsize=10, color="0.3")
     describe(axes, "Seen from above: puck A and puck B at the ends of the rod; the red arrow "
              "is the velocity of A, the green arrow the measured e_x part of the velocity of B.")
-    points = np.array([[0.0, 0.0], r2, [scale * p.aA, scale * p.bA],
-                       [r2[0] + scale * p.uB, r2[1]], [-0.6, -0.6]])
-    low, high = points.min(axis=0) - 0.3, points.max(axis=0) + 0.3
     axes.set_xlim(low[0], high[0])
     axes.set_ylim(low[1], high[1])
     return drawing
@@ -101,6 +139,9 @@ EXERCISE = Exercise(
         Constraint("the pucks' masses differ by 30 % of the lighter one at least",
                    lambda p: max(p.mA, p.mB) >= 1.3 * min(p.mA, p.mB)),
         Constraint("the rod turns: |uB - aA| >= 0.3 m/s", lambda p: abs(p.uB - p.aA) >= 0.3),
+        Constraint("pucks on an air table: B moves at most at 3 m/s (a steep rod's cot theta "
+                   "made up to 10 m/s)",
+                   lambda p: np.hypot(p.uB, solve(p)["yB"]) <= 3.0),
         Constraint("the answers are clear of zero and differ pairwise by over 5 %", _keys_apart),
     ),
     statement=r"""

@@ -95,13 +95,17 @@ EXERCISE = Exercise(
         Uniform("m2", 40, 90, step=1, unit="kg", symbol="m_2"),
         Uniform("L1", 4.0, 10.0, step=0.1, unit="m", symbol="L_1"),
         Uniform("L2", 1.5, 3.5, step=0.1, unit="m", symbol="L_2"),
-        Uniform("omega1", 0.3, 1.5, step=0.05, unit="rad/s", symbol=r"\omega_1"),
+        Uniform("omega1", 0.2, 0.8, step=0.05, unit="rad/s", symbol=r"\omega_1"),
     ),
     constraints=(
         Constraint("the masses differ by at least 15 %, so that C is off the rope's middle",
                    lambda p: abs(p.m1 - p.m2) >= 0.15 * max(p.m1, p.m2)),
         Constraint("the skaters pull in a good part of the rope (L2 <= 0.6 L1)",
                    lambda p: p.L2 <= 0.6 * p.L1),
+        Constraint("people can do it: at most one turn a second at the end (omega2 <= 6.3 "
+                   "rad/s) and neither skater faster than 7 m/s",
+                   lambda p: solve(p)["omega2"] <= 6.3
+                   and max(p.m1, p.m2) / (p.m1 + p.m2) * p.L2 * solve(p)["omega2"] <= 7.0),
         Constraint("the three answers differ by at least 10 % in SI", _distinct),
     ),
     statement=r"""

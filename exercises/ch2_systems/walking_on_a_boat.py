@@ -2,7 +2,7 @@
 (Section 2.2.1)."""
 
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform
-from dynagrade.exercise.checks import Balance
+from dynagrade.exercise.checks import Balance, Recompute
 from dynagrade.exercise.figure import arrow, describe, dimension, new_drawing
 from dynagrade.mechanics import systems
 
@@ -85,8 +85,8 @@ $M$ = {{ M }}).
 3. **Speed of the boat.** At every instant the momenta cancel, $m v_P = M v_B$, with
    $v_P + v_B = u$ = {{ u }}. Hence $v_B = \frac{m}{m + M}\,u$ = {{ answers.v_B }}; it stops
    when the person stops.
-4. **Check.** The two displacements add up to the walk on the boat:
-   $x_P + x_B$ = {{ checks.walk_on_the_boat }} m $= d$.
+4. **Check.** The walk takes $d/u$, and the boat drifts at $v_B$ all that time:
+   $v_B\,d/u$ = {{ checks.boat_drift_over_the_walk }} m, the $x_B$ of question 1.
 """,
     solve=solve,
     checks=(
@@ -96,6 +96,8 @@ $M$ = {{ M }}).
         # the two displacements relative to the pier make up the walk relative to the boat
         Balance("walk relative to the boat", lambda p, s: p.d,
                 lambda p, s: s["x_P"] + s["x_B"], name="walk_on_the_boat"),
+        # the boat's speed of question 3 kept for the walking time d/u gives question 1's x_B
+        Recompute("x_B", lambda p, s: s["v_B"] * p.d / p.u, name="boat_drift_over_the_walk"),
         # walking at constant u takes d/u; the boat covers x_B in that time
         Balance("boat speed", lambda p, s: s["v_B"], lambda p, s: s["x_B"] * p.u / p.d,
                 name="constant_speed_walk"),

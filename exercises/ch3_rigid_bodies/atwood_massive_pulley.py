@@ -29,20 +29,23 @@ def solve(p):
 
 def figure(p):
     """Schematic: the pulley hanging from the ceiling, m1 on the left, m2 on the right."""
-    drawing, axes = new_drawing(3.2, 3.4)
+    drawing, axes = new_drawing(4.2, 3.4)
     ceiling(axes, -1.2, 1.2, 1.6, hatch=0.08)
     axes.plot([0.0, 0.0], [0.0, 1.6], color="0.1", lw=1.2)
     axes.add_patch(Circle((0.0, 0.0), 0.6, facecolor="#d9c39a", edgecolor="0.1", lw=1.2))
     axes.plot([0.0], [0.0], "o", color="0.1", ms=4)
-    axes.text(0.0, -0.1, f"M = {format_number(p.M)} kg", ha="center", va="top", fontsize=9)
-    axes.text(0.0, 0.15, f"R = {format_number(p.R)} m", ha="center", va="bottom", fontsize=9)
+    # the data beside the bodies, where no rope or edge runs through them
+    axes.text(0.7, 0.55, f"M = {format_number(p.M)} kg", ha="left", va="center", fontsize=9)
+    axes.text(0.7, 0.3, f"R = {format_number(p.R)} m", ha="left", va="center", fontsize=9)
     axes.plot([-0.6, -0.6], [0.0, -1.9], color="0.1", lw=1.0)
     axes.plot([0.6, 0.6], [0.0, -1.3], color="0.1", lw=1.0)
-    block(axes, (-0.6, -2.2), 0.7, 0.6, f"m₁ = {format_number(p.m1)} kg", color="#9ab7d3")
-    block(axes, (0.6, -1.6), 0.7, 0.6, f"m₂ = {format_number(p.m2)} kg", color="#9ab7d3")
+    block(axes, (-0.6, -2.2), 0.7, 0.6, "m₁", color="#9ab7d3")
+    block(axes, (0.6, -1.6), 0.7, 0.6, "m₂", color="#9ab7d3")
+    axes.text(-1.05, -2.2, f"m₁ = {format_number(p.m1)} kg", ha="right", va="center", fontsize=9)
+    axes.text(1.05, -1.6, f"m₂ = {format_number(p.m2)} kg", ha="left", va="center", fontsize=9)
     describe(axes, "The rope runs over the pulley; m₁ hangs on the left and m₂ on the "
                    "right. Not to scale.")
-    axes.set_xlim(-1.5, 1.5)
+    axes.set_xlim(-2.4, 2.4)
     axes.set_ylim(-2.7, 1.8)
     return drawing
 

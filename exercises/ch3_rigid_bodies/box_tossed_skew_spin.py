@@ -78,9 +78,13 @@ def figure(p):
         points = [base, base + u, base + u + w, base + w, base]
         axes.plot([q[0] for q in points], [q[1] for q in points], color="0.2", lw=1.0)
     centre = corner + (x + y + z) / 2
-    arrow(axes, tuple(centre), tuple(centre + 0.55 * x), "b₁", offset=(0.0, -0.12))
-    arrow(axes, tuple(centre), tuple(centre + 1.0 * y), "b₂", offset=(0.1, 0.0))
-    arrow(axes, tuple(centre), tuple(centre + 0.6 * z), "b₃", offset=(-0.12, 0.0))
+    # the axes' labels past their tips (b₃ reaches out of the box's top): beside the arrows
+    # they lay on the box's edges
+    for direction, length, name in ((x, 0.55, "b₁"), (y, 1.0, "b₂"), (z, 0.95, "b₃")):
+        tip = centre + length * direction
+        arrow(axes, tuple(centre), tuple(tip), color="C0")
+        axes.text(*(tip + 0.14 * direction / np.hypot(*direction)), name, ha="center",
+                  va="center", fontsize=10, color="C0")
     axes.text(*(corner + x / 2 - np.array([0.0, 0.1])), f"a = {format_number(p.a)} m",
               ha="center", va="top", fontsize=10)
     axes.text(*(corner + x + y / 2 + np.array([0.1, -0.05])), f"b = {format_number(p.b)} m",

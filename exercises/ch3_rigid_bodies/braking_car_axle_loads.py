@@ -44,14 +44,18 @@ def figure(p):
               offset=-0.3, tick=0.05, side=-1.0)
     dimension(axes, (0.0, 0.0), (front, 0.0), f"l_f = {format_number(p.l_f)} m",
               offset=-0.3, tick=0.05, side=-1.0)
-    dimension(axes, (0.0, 0.0), (0.0, p.h), f"h = {format_number(p.h)} m", offset=0.0,
-              tick=0.05, side=1.0)
-    arrow(axes, (front + 0.9, 1.6), (front + 1.5, 1.6), "v", color="C3")
+    # h ahead of the car, C's height carried over by a dashed line: beside C the label
+    # lay on the body's edge and the wheel
+    axes.plot([0.0, front + 0.95], [p.h, p.h], color="0.4", lw=0.6, ls="--")
+    dimension(axes, (front + 0.9, 0.0), (front + 0.9, p.h), f"h = {format_number(p.h)} m",
+              offset=0.0, tick=0.05, side=-1.0)
+    arrow(axes, (front + 0.9, 1.6), (front + 1.5, 1.6), "v", offset=(0.0, 0.13), color="C3")
     axes.text(rear - 0.7, 1.55, f"m = {format_number(p.m)} kg,  μ = {format_number(p.mu)}",
               ha="left", va="bottom", fontsize=10)
-    describe(axes, "The car moves to the right; its front axle is on the right. C lies on "
-                   "the vertical dimension line of h, between the axles.")
-    axes.set_xlim(rear - 1.2, front + 1.7)
+    describe(axes, "The car moves to the right; its front axle is on the right. C lies "
+                   "between the axles; a dashed line carries its height h to the dimension "
+                   "line ahead of the car.")
+    axes.set_xlim(rear - 1.2, front + 1.9)
     axes.set_ylim(-0.75, 1.9)
     return drawing
 
@@ -124,7 +128,7 @@ $\mu N_f$, $\mu N_r$ backward at the two contacts.
    = {{ answers.N_r }}. It stays positive because $\mu h < l_f$.
 
 **Check.** Without friction ($\mu \to 0$) the front axle would carry its static share
-$m g\,l_r/(l_f + l_r)$ = {{ checks.static_front_load }}; braking moves
+$m g\,l_r/(l_f + l_r)$ = {{ checks.static_front_load }} N; braking moves
 $\mu m g\,h/(l_f + l_r)$ from the rear to the front axle.
 """,
     solve=solve,

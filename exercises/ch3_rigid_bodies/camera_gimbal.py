@@ -52,15 +52,31 @@ def figure(p):
     camera's own axis at that moment (Section 3.4.1)."""
     drawing, axes = new_drawing(4.6, 3.2)
     o = (0.0, 0.0)
-    arrow(axes, o, (-0.9, -0.7), "e₁", offset=(-0.15, 0.05))
-    arrow(axes, o, (1.5, 0.0), "e₂", offset=(0.0, -0.15))
-    arrow(axes, o, (0.0, 1.4), "e₃", offset=(-0.15, 0.0))
-    angle_arc(axes, (0.0, 1.0), 0.25, -0.4 * np.pi, 1.3 * np.pi,
-              f"1. yaw ψ = {format_number(np.degrees(p.psi))}°", label_radius=0.95)
-    angle_arc(axes, (1.1, 0.0), 0.22, 0.6 * np.pi, 2.3 * np.pi,
-              f"2. pitch θ = {format_number(np.degrees(p.theta))}°", label_radius=0.75)
-    angle_arc(axes, (-0.62, -0.48), 0.2, 0.0, 1.7 * np.pi,
-              f"3. roll φ = {format_number(np.degrees(p.phi))}°", label_radius=0.7)
+    # the axes' labels past their tips: e₁'s, beside its arrow, lay on the roll's circle
+    for tip, name, ha, va in (((-0.9, -0.7), "e₁", "right", "top"), ((1.5, 0.0), "e₂", "left",
+                                                                     "center"),
+                              ((0.0, 1.4), "e₃", "center", "bottom")):
+        arrow(axes, o, tip)
+        axes.text(tip[0] + (0.05 if ha == "left" else -0.05 if ha == "right" else 0.0),
+                  tip[1] + (0.05 if va == "bottom" else -0.03 if va == "top" else 0.0),
+                  name, ha=ha, va=va, fontsize=10, color="C0")
+
+    def turn(centre, radius, start, end, label, label_radius):
+        """A turn about an axis: an arc with an arrow head at its end, counter-clockwise
+        (the right-hand rule seen from the axis' tip), and its label."""
+        angle_arc(axes, centre, radius, start, end, label, label_radius=label_radius)
+        tangent = np.array([-np.sin(end), np.cos(end)])
+        tail = np.array(centre) + radius * np.array([np.cos(end), np.sin(end)])
+        axes.annotate("", xy=tuple(tail + 0.08 * tangent), xytext=tuple(tail),
+                      arrowprops={"arrowstyle": "-|>", "color": "0.2", "lw": 0.8,
+                                  "shrinkA": 0, "shrinkB": 0})
+
+    turn((0.0, 1.0), 0.25, -0.4 * np.pi, 1.3 * np.pi,
+         f"1. yaw ψ = {format_number(np.degrees(p.psi))}°", 0.95)
+    turn((1.1, 0.0), 0.22, 0.6 * np.pi, 2.3 * np.pi,
+         f"2. pitch θ = {format_number(np.degrees(p.theta))}°", 0.75)
+    turn((-0.62, -0.48), 0.2, 0.0, 1.7 * np.pi,
+         f"3. roll φ = {format_number(np.degrees(p.phi))}°", 0.7)
     describe(axes, "Before the turns the camera's optical axis lies along e1, its second "
                    "axis along e2 and its third axis along e3. It is turned first about e3, "
                    "then about its own second axis, then about its own first (optical) axis, "
@@ -140,8 +156,9 @@ results from the turns about the fixed axes in the opposite order: roll, pitch, 
    $\arcsin(\cos\theta\sin\varphi)$ = {{ answers.tilt }} — not simply the roll
    $\varphi$, because the pitch tipped the roll's axis first.
 
-**Check.** The accelerometer's vector keeps its length: $|R^{\mathsf T} g\,e_3|$ =
-{{ checks.reading_length }} m/s², which is $g$.
+**Check.** Questions 1 and 2 are the same rotation used both ways: the reading along the
+optical axis is $g\,e_3\cdot b_1$, $g$ times the vertical component of $b_1$ from question
+1: {{ checks.reading_along_the_optical_axis }} m/s², the first entry of question 2.
 """,
     solve=solve,
     checks=(
@@ -149,6 +166,10 @@ results from the turns about the fixed axes in the opposite order: roll, pitch, 
         Recompute("f", _reading_by_hand, name="reading_by_hand", atol=1e-12),
         Recompute("tilt", lambda p, s: np.arcsin(np.cos(p.theta) * np.sin(p.phi)),
                   name="tilt_by_hand", atol=1e-12),
+        # active and passive use agree: the reading along b1 is g e3 . b1, g times n's third
+        # entry (a length check would pass for any rotation, composed right or wrong)
+        Balance("reading along the optical axis", lambda p, s: p.g * s["n"][2],
+                lambda p, s: s["f"][0], name="reading_along_the_optical_axis"),
         # a rotation keeps lengths
         Balance("length of the reading", lambda p, s: p.g,
                 lambda p, s: np.linalg.norm(s["f"]), name="reading_length"),

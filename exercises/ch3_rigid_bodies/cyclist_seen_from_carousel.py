@@ -7,7 +7,7 @@ from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Un
                                 per_draw)
 from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Recompute
-from dynagrade.exercise.figure import Circle, angle_arc, arrow, describe, dimension, new_drawing
+from dynagrade.exercise.figure import Circle, arrow, describe, dimension, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import frames, kinematics
 
@@ -61,21 +61,26 @@ def figure(p):
                           lw=1.0))
     axes.plot([0.0], [0.0], "o", color="0.1", ms=4)
     axes.text(-0.05 * d, -0.05 * d, "O", ha="right", va="top", fontsize=10)
-    angle_arc(axes, (0.0, 0.0), 0.62 * d, 0.3 * np.pi, 0.7 * np.pi,
-              f"Ω = {format_number(p.Omega)} rad/s", label_radius=0.75 * d)
+    # the turn's sense: a counter-clockwise arrow along the arc (a bare arc shows none)
+    axes.annotate("", xy=(0.62 * d * np.cos(0.7 * np.pi), 0.62 * d * np.sin(0.7 * np.pi)),
+                  xytext=(0.62 * d * np.cos(0.3 * np.pi), 0.62 * d * np.sin(0.3 * np.pi)),
+                  arrowprops={"arrowstyle": "-|>", "connectionstyle": "arc3,rad=0.25",
+                              "color": "0.2", "lw": 1.0, "shrinkA": 0, "shrinkB": 0})
+    axes.text(0.0, 0.75 * d, f"Ω = {format_number(p.Omega)} rad/s", ha="center", va="center", fontsize=10)
     axes.plot([d, d], [-0.6 * d, 0.6 * d], ls="--", color="0.5", lw=1.0)
     axes.plot([d], [0.0], "o", color="C3", ms=6)
     sense = 1.0 if p.u > 0 else -1.0
     arrow(axes, (d, 0.0), (d, sense * 0.4 * d), "u", offset=(0.06 * d, 0.0), color="C3")
     arrow(axes, (d, 0.0), (d + 0.3 * d, 0.0), "$e_r$", offset=(0.0, -0.06 * d), color="0.2")
-    dimension(axes, (0.0, 0.0), (d, 0.0), f"d = {format_number(d)} m", offset=-0.15 * d,
+    # d below the carousel: at -0.15 d its label lay across the carousel's rim
+    dimension(axes, (0.0, 0.0), (d, 0.0), f"d = {format_number(d)} m", offset=-0.66 * d,
               tick=0.02 * d, side=-1.0)
     describe(axes, "Seen from above: the carousel turns counter-clockwise about O; the "
                    "cyclist rides along the dashed straight line, "
                    + ("in the sense of the carousel's turn" if p.u > 0 else "against the "
                       "sense of the carousel's turn") + ", at the distance d from O.")
     axes.set_xlim(-0.7 * d, 1.45 * d)
-    axes.set_ylim(-0.7 * d, 0.9 * d)
+    axes.set_ylim(-0.85 * d, 0.9 * d)
     return drawing
 
 

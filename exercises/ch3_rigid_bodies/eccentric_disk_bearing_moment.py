@@ -32,6 +32,12 @@ def solve(p):
     }
 
 
+def _steel_thickness(p):
+    """The thickness a steel disk of the drawn mass and radius has: the statement calls the
+    disk thin, so a 8 kg disk of 6 cm radius (9 cm thick) is not one."""
+    return p.m / (7850.0 * np.pi * p.R**2)
+
+
 def _apart(p):
     s = solve(p)
     return numbers_apart((s["H_axial"], s["H_perp"], s["M_O"]))
@@ -39,29 +45,35 @@ def _apart(p):
 
 def figure(p):
     """The shaft (e3 up) to scale from the bearing point O, the disk seen edge-on at the
-    height h, its centre C off the axis by e."""
+    height h, its centre C off the axis by e. The labels are placed in units of the
+    figure's size s, so that they keep their room whether the disk is wide or the shaft
+    long."""
     drawing, axes = new_drawing(4.0, 3.4)
-    top = p.h + 0.3 * p.h
-    axes.plot([0.0, 0.0], [-0.1 * p.h, top], color="0.3", lw=3)
+    s = max(p.h, p.R + p.e)
+    top = p.h + 0.5 * s
+    axes.plot([0.0, 0.0], [-0.08 * s, top], color="0.3", lw=3)
     axes.plot([p.e - p.R, p.e + p.R], [p.h, p.h], color="#a0724a", lw=6)
     axes.plot([p.e], [p.h], "o", color="0.1", ms=4)
-    axes.text(p.e, p.h + 0.04 * p.h, "C", ha="center", va="bottom", fontsize=10)
+    axes.text(p.e + 0.02 * s, p.h + 0.03 * s, "C", ha="left", va="bottom", fontsize=10)
     axes.plot([0.0], [0.0], "o", color="0.1", ms=5)
-    axes.text(-0.03 * p.h, 0.0, "O", ha="right", va="center", fontsize=10)
+    axes.text(-0.04 * s, 0.0, "O", ha="right", va="center", fontsize=10)
     dimension(axes, (0.0, 0.0), (0.0, p.h), f"h = {format_number(p.h)} m",
-              offset=max(p.R, 0.15 * p.h) + 0.1 * p.h, tick=0.02 * p.h, side=-1.0)
-    dimension(axes, (0.0, p.h), (p.e, p.h), f"e = {format_number(p.e)} m", offset=-0.15 * p.h,
-              tick=0.02 * p.h, side=1.0)
+              offset=p.R - p.e + 0.3 * s, tick=0.03 * s, side=-1.0)
+    # e above the disk, its label to the left of the shaft (e is too short to hold it)
+    dimension(axes, (0.0, p.h), (p.e, p.h), offset=0.16 * s)
+    axes.text(-0.04 * s, p.h + 0.16 * s, f"e = {format_number(p.e)} m", ha="right",
+              va="center", fontsize=10)
+    # R below the disk, from C to the rim
     dimension(axes, (p.e, p.h), (p.e + p.R, p.h), f"R = {format_number(p.R)} m",
-              offset=0.12 * p.h, tick=0.02 * p.h, side=1.0)
-    angle_arc(axes, (0.0, 0.9 * top), 0.06 * p.h, -0.3 * np.pi, 1.3 * np.pi,
-              f"Ω = {format_number(p.Omega * 30 / np.pi)} rpm")
+              offset=-0.12 * s, tick=0.03 * s, side=-1.0)
+    angle_arc(axes, (0.0, top - 0.08 * s), 0.05 * s, -0.3 * np.pi, 1.3 * np.pi)
+    axes.text(0.1 * s, top - 0.08 * s, f"Ω = {format_number(p.Omega * 30 / np.pi)} rpm",
+              ha="left", va="center", fontsize=10)
     describe(axes, "Side view: the shaft is vertical (e₃ up) and turns counter-clockwise "
                    "seen from above; the disk is seen edge-on, normal to the shaft, its "
                    "centre C to the right of the axis.")
-    span = max(p.R + p.e, 0.3 * p.h)
-    axes.set_xlim(-span - 0.35 * p.h, span + 0.5 * p.h)
-    axes.set_ylim(-0.15 * p.h, top + 0.1 * p.h)
+    axes.set_xlim(-(p.R - p.e) - 0.65 * s, p.e + p.R + 0.1 * s)
+    axes.set_ylim(-0.15 * s, top + 0.05 * s)
     return drawing
 
 
@@ -75,11 +87,13 @@ EXERCISE = Exercise(
         Uniform("R", 0.05, 0.2, step=0.005, unit="m", symbol="R"),
         Uniform("e", 0.01, 0.05, step=0.001, unit="m", symbol="e"),
         Uniform("h", 0.1, 0.5, step=0.01, unit="m", symbol="h"),
-        Uniform("Omega", 300, 3000, step=10, unit="rpm", symbol=r"\Omega"),
+        Uniform("Omega", 120, 600, step=10, unit="rpm", symbol=r"\Omega"),
     ),
     constraints=(
         Constraint("the offset is a noticeable part of the disk (e > 0.15 R, e < 0.5 R)",
                    lambda p: 0.15 * p.R < p.e < 0.5 * p.R),
+        Constraint("a thin steel disk: m / (7850 kg/m^3 pi R^2) is 4 mm to 30 mm thick and "
+                   "at most R/4", lambda p: 0.004 <= _steel_thickness(p) <= min(0.03, p.R / 4)),
         Constraint("no two answers share their number (5 % apart)", _apart),
     ),
     statement=r"""
@@ -113,6 +127,10 @@ $$r_{OC} \times m\,v_C = m\,\Omega\,e\,(-h,\ 0,\ e).$$
    the balance of angular momentum (Section 3.2.2) needs
    $M_O = \dot H_O = \omega \times H_O$, of magnitude
    $\Omega\,|H_\perp| = m\,e\,h\,\Omega^2$ = {{ answers.M_O }}.
+
+**Check.** About C instead: $I_C\omega$ is constant, so the bearings' moment about O only has
+to turn the momentum, the moment of $m\,a_C = m e\Omega^2$ (towards the axis) with the lever
+arm $h$: {{ checks.moment_of_the_centripetal_force }} N·m.
 """,
     solve=solve,
     figure=figure,

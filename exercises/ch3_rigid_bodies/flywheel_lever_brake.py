@@ -7,8 +7,8 @@ import numpy as np
 from dynagrade.exercise import (Constraint, Exercise, Misconception, Numeric, Uniform,
                                 per_draw)
 from dynagrade.exercise.apart import numbers_apart
-from dynagrade.exercise.checks import Integrated
-from dynagrade.exercise.figure import (Circle, angle_arc, arrow, describe, dimension,
+from dynagrade.exercise.checks import Integrated, Recompute
+from dynagrade.exercise.figure import (Circle, arrow, describe, dimension,
                                        new_drawing, pivot)
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import inertia, rigid_kinetics
@@ -46,7 +46,11 @@ def figure(p):
     R = p.R
     axes.add_patch(Circle((0.0, 0.0), R, facecolor="#d9c39a", edgecolor="0.1", lw=1.2))
     axes.plot([0.0], [0.0], "o", color="0.1", ms=4)
-    angle_arc(axes, (0.0, 0.0), 0.55 * R, 1.2 * np.pi, 1.8 * np.pi, "ω₀")
+    # the sense of turning: a counter-clockwise arrow right of the centre
+    axes.annotate("", xy=(0.28 * R, 0.48 * R), xytext=(0.28 * R, -0.48 * R),
+                  arrowprops={"arrowstyle": "-|>", "connectionstyle": "arc3,rad=0.5",
+                              "color": "0.2", "lw": 1.0, "shrinkA": 0, "shrinkB": 0})
+    axes.text(0.12 * R, 0.0, "ω₀", ha="left", va="center", fontsize=10)
     top = R + 0.02
     pivot(axes, (-p.c, top), 0.06)
     axes.plot([-p.c, p.b - p.c], [top + 0.02, top + 0.02], color="#a0724a", lw=4)
@@ -58,11 +62,16 @@ def figure(p):
               tick=0.03, side=1.0)
     dimension(axes, (-p.c, top), (p.b - p.c, top), f"b = {format_number(p.b)} m", offset=0.7,
               tick=0.03, side=1.0)
-    dimension(axes, (0.0, 0.0), (0.0, -R), f"R = {format_number(R)} m", offset=0.0,
-              tick=0.03, side=-1.0)
+    # the radius down to the lower left, labelled outside the wheel
+    corner = (-R * np.sqrt(0.5), -R * np.sqrt(0.5))
+    axes.annotate("", xy=corner, xytext=(0.0, 0.0),
+                  arrowprops={"arrowstyle": "-|>", "color": "0.2", "lw": 0.8,
+                              "shrinkA": 0, "shrinkB": 0, "mutation_scale": 8})
+    axes.text(corner[0] - 0.03, corner[1] - 0.02, f"R = {format_number(R)} m", ha="right",
+              va="top", fontsize=10)
     describe(axes, "The wheel turns counter-clockwise; the brake shoe presses down on the top "
                    "of the wheel, directly above its centre.")
-    axes.set_xlim(-p.c - 0.3, p.b - p.c + 0.5)
+    axes.set_xlim(min(-p.c - 0.3, -0.71 * R - 0.4), p.b - p.c + 0.5)
     axes.set_ylim(-R - 0.1, top + 0.85)
     return drawing
 
@@ -123,6 +132,9 @@ $M$ of the shoe's friction. The lever is massless, so the moments on it about O 
    rad/s: $t$ = {{ answers.t }}.
 4. **Revolutions.** The angle turned is $\varphi = \omega_0^2/(2\alpha)$ = {{ si.phi }}
    rad, that is $n = \varphi/(2\pi)$ = {{ answers.n }} revolutions.
+
+**Check.** The mean speed times the time gives the same angle: $\tfrac{1}{2}\omega_0 t/(2\pi)$
+= {{ checks.mean_speed_turns }} revolutions.
 """,
     solve=solve,
     figure=figure,
@@ -132,6 +144,8 @@ $M$ of the shoe's friction. The lever is massless, so the moments on it about O 
         Integrated("t", _spin_down, lambda p: (0.0, p.omega0), lambda p, s: 2 * s["t"],
                    lambda t, y, p: t, name="integrated_stop_time",
                    event=lambda t, y, p: y[1], direction=-1),
+        # uniform deceleration: the angle is the mean speed omega0/2 times the stopping time
+        Recompute("n", lambda p, s: p.omega0 * s["t"] / 2 / (2 * np.pi), name="mean_speed_turns"),
         Integrated("n", _spin_down, lambda p: (0.0, p.omega0), lambda p, s: 2 * s["t"],
                    lambda t, y, p: y[0] / (2 * np.pi), name="integrated_turns",
                    event=lambda t, y, p: y[1], direction=-1),

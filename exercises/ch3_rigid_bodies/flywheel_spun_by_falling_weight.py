@@ -56,11 +56,13 @@ def figure(p):
     axes.plot([0.1, 1.0], [-3.1, -3.1], color="0.3", lw=0.6, ls=":")
     axes.text(-1.05, 1.05, f"J = {format_number(p.J)} kg·m²", ha="left", va="bottom",
               fontsize=9)
-    axes.text(-1.05, -1.3, f"r = {format_number(p.r)} m\nm = {format_number(p.m)} kg\n"
-              f"M_f = {format_number(p.M_f)} N·m", ha="left", va="top", fontsize=9)
+    # one label a line (a label's "\n" is not a line break in the SVG)
+    for row, text in enumerate((f"r = {format_number(p.r)} m", f"m = {format_number(p.m)} kg",
+                                f"M_f = {format_number(p.M_f)} N·m")):
+        axes.text(-1.55, -1.1 - 0.28 * row, text, ha="left", va="top", fontsize=9)
     describe(axes, "The string hangs from the right side of the drum (the small inner disk) "
                    "and carries the weight m, which drops h before the string comes off.")
-    axes.set_xlim(-1.3, 1.6)
+    axes.set_xlim(-1.6, 1.6)
     axes.set_ylim(-3.3, 1.4)
     return drawing
 
@@ -120,6 +122,9 @@ flywheel together; the bearing friction moment $M_f$ does the work $-M_f\,\Delta
    $\tfrac{1}{2} J \omega_1^2 = M_f\,\varphi_2$, so $\varphi_2 = J\omega_1^2/(2 M_f)$ and
    $n_2 = \varphi_2/(2\pi)$ = {{ answers.n2 }} revolutions. The weight's kinetic energy
    left with the weight.
+
+**Check.** Integrating $(m r^2 + J)\,\ddot\varphi = m g r - M_f$ from rest until the drum
+has paid out $h$ gives $\omega_1$ = {{ checks.integrated_spin_up }} rad/s again.
 """,
     solve=solve,
     figure=figure,

@@ -82,18 +82,26 @@ def figure(p):
     axes.add_patch(Circle((p.d, 0.0), p.r, facecolor="white", edgecolor="0.1", lw=1.0))
     axes.plot([0.0], [0.0], "o", color="0.1", ms=4)
     axes.text(-0.02 * a, 0.02 * a, "O", ha="right", va="bottom", fontsize=10)
+    axes.text(a / 2 + 0.01 * a, b / 2 + 0.01 * a, "A", ha="left", va="bottom", fontsize=10)
     dimension(axes, (-a / 2, -b / 2), (a / 2, -b / 2), f"a = {format_number(a)} m",
-              offset=-0.08 * a, tick=0.02 * a, side=-1.0)
+              offset=-0.17 * a, tick=0.02 * a, side=-1.0)
     dimension(axes, (a / 2, -b / 2), (a / 2, b / 2), f"b = {format_number(b)} m",
               offset=-0.08 * a, tick=0.02 * a, side=-1.0)
+    # d below the plate, between it and a; r led out above the plate: inside the plate
+    # their labels crossed the hole's rim
     dimension(axes, (0.0, 0.0), (p.d, 0.0), f"d = {format_number(p.d)} m",
-              offset=-0.12 * b, tick=0.02 * a, side=-1.0)
-    dimension(axes, (p.d, 0.0), (p.d + p.r * np.cos(np.pi / 4), p.r * np.sin(np.pi / 4)),
-              f"r = {format_number(p.r)} m", offset=0.0, tick=0.01 * a, side=1.0)
+              offset=-(b / 2 + 0.05 * a), tick=0.015 * a, side=-1.0)
+    rim = (p.d + p.r * np.cos(np.pi / 4), p.r * np.sin(np.pi / 4))
+    axes.annotate("", xy=rim, xytext=(p.d, 0.0),
+                  arrowprops={"arrowstyle": "-|>", "color": "0.2", "lw": 0.8,
+                              "shrinkA": 0, "shrinkB": 0, "mutation_scale": 8})
+    axes.plot([rim[0], rim[0]], [rim[1], b / 2 + 0.04 * a], color="0.4", lw=0.6)
+    axes.text(rim[0], b / 2 + 0.05 * a, f"r = {format_number(p.r)} m", ha="center",
+              va="bottom", fontsize=10)
     describe(axes, "The plate is seen from above, e₁ to the right and e₂ up; the hole's "
                    "centre lies on the e₁ axis through O.")
     axes.set_xlim(-0.62 * a, 0.75 * a)
-    axes.set_ylim(-0.5 * b - 0.2 * a, 0.5 * b + 0.08 * a)
+    axes.set_ylim(-0.5 * b - 0.26 * a, 0.5 * b + 0.12 * a)
     return drawing
 
 
@@ -163,6 +171,10 @@ the holed plate $m = m_p - m_h$ = {{ si.m }} kg.
    given by $(a/2 - x_C)^2 + (b/2)^2$:
    $$I_A = I_C + m\,\bigl[(a/2 - x_C)^2 + (b/2)^2\bigr]$$
    = {{ answers.I_A }}.
+
+**Check.** Straight to A instead: the full plate about its corner, $m_p (a^2 + b^2)/3$, less
+the hole about A, $m_h r^2/2 + m_h\bigl[(a/2 - d)^2 + (b/2)^2\bigr]$, gives
+{{ checks.about_the_corner_directly }} kg·m² as well.
 """,
     solve=solve,
     figure=figure,

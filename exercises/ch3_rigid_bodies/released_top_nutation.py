@@ -60,14 +60,18 @@ def draw(p):
     body = [(0.0, 0.0), tuple(axis * 1.2 + across * 0.55), tuple(axis * 1.45 + across * 0.4),
             tuple(axis * 1.45 - across * 0.4), tuple(axis * 1.2 - across * 0.55)]
     axes.add_patch(Polygon(body, closed=True, facecolor="C1", edgecolor="0.1"))
+    # the symmetry axis through the body, so that θ₀'s arc visibly ends on it
+    axes.plot([0.0, axis[0] * 1.45], [0.0, axis[1] * 1.45], color="0.1", lw=0.8, ls="-.")
     arrow(axes, tuple(axis * 1.45), tuple(axis * 2.2), "", color="0.1")
     axes.annotate("", xy=tuple(axis * 1.9 - across * 0.3), xytext=tuple(axis * 1.9 + across * 0.3),
                   arrowprops={"arrowstyle": "-|>", "connectionstyle": "arc3,rad=-0.5",
                               "color": "C3"})
     axes.text(*(axis * 2.0 + across * 0.45), "ω₃", color="C3", ha="left", va="center",
               fontsize=10)
-    angle_arc(axes, (0.0, 0.0), 0.55, np.pi / 2 - p.theta0, np.pi / 2, "θ₀",
-              label_radius=0.75)
+    # the arc runs over the body; its label stands left of the dashed vertical, where the
+    # body is not (inside the angle it lay on the body's edge)
+    angle_arc(axes, (0.0, 0.0), 0.55, np.pi / 2 - p.theta0, np.pi / 2)
+    axes.text(-0.06, 0.6, "θ₀", ha="right", va="center", fontsize=10)
     axes.text(0.0, -0.05, "O", ha="center", va="top", fontsize=10)
     describe(axes, "The top stands on its fixed tip O with its symmetry axis tilted by θ₀ "
              "from the vertical (dashed) and spins about that axis with ω₃; it is released "
@@ -92,8 +96,11 @@ EXERCISE = Exercise(
         Constant("g", 9.81, unit="m/s^2", symbol="g"),
     ),
     constraints=(
-        Constraint("the moments about O belong to a top with C at l: I1 >= 1.2 m l^2 and "
-                   "I1 > I3", lambda p: p.I1 >= 1.2 * p.m * p.l**2 and p.I1 > p.I3),
+        Constraint("the moments about O belong to a top with C at l: I1 >= 1.2 m l^2, "
+                   "I1 > I3, and I3 <= 2 (I1 - m l^2), the axial moment at most the sum of "
+                   "the two transverse ones about C",
+                   lambda p: p.I1 >= 1.2 * p.m * p.l**2 and p.I1 > p.I3
+                   and p.I3 <= 2 * (p.I1 - p.m * p.l**2)),
         Constraint("the top dips noticeably but stays clear of the ground: "
                    "3 deg <= theta_max - theta0, theta_max <= 80 deg",
                    lambda p: np.radians(3) <= solve(p)["theta_max"] - p.theta0
@@ -132,8 +139,8 @@ $g$ = {{ g }}).
    $\dot\psi = \frac{I_3\omega_3\beta}{I_1} = \frac{2 m g l}{I_3\omega_3}$ = {{ answers.psi_dot }}:
    twice the fast-top rate $m g l/(I_3\omega_3)$ = {{ si.psi_fast }} rad/s. The axis
    precesses in steps, from rest at the top of each dip to this rate at its bottom.
-3. **Kinetic energy gained.** All of it from the weight: $\Delta T = m g l(\cos\theta_0
-   - \cos\theta_{\max})$ = {{ answers.dT }}, now in the precession $\tfrac{1}{2} I_1\dot\psi^2\sin^2\theta$.
+3. **Kinetic energy gained.** All of it from the weight: $\Delta T =
+   m g l(\cos\theta_0 - \cos\theta_{\max})$ = {{ answers.dT }}, now in the precession $\tfrac{1}{2} I_1\dot\psi^2\sin^2\theta$.
 4. **Check.** Integrating the top's equation of motion in $\theta$ from the release to the
    next turning point gives $\theta_{\max}$ = {{ checks.integrated_turning_tilt }} rad.
 """,

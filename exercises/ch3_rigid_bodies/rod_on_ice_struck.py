@@ -127,7 +127,8 @@ $$\hat F = \frac{(1+e)\,v}{1/m + 1/M + d^2/I_C}$$
    $v_C$ = {{ answers.v_C }}.
 2. **Angular speed.** Angular impulse balance about C: $I_C\,\omega = \hat F d$, so
    $\omega$ = {{ answers.omega }}.
-3. **Puck.** $v' = v - \hat F/m$ = {{ answers.v_after }} (negative: it bounces back).
+3. **Puck.** $v' = v - \hat F/m$ = {{ answers.v_after }}{% if si.v_after.value < 0 %} (negative: it bounces back){% else %} (positive: it
+   keeps going forward, more slowly){% endif %}.
 4. **Energy lost.** With the effective mass $1/w$ of the rod in place of a particle's mass,
    the loss of a two-particle impact holds:
    $$\Delta T = \frac{1}{2}\,\frac{1 - e^2}{1/m + w}\,v^2$$

@@ -51,10 +51,13 @@ def figure(p):
     foot0, foot1 = x_c - L / 2 * np.sin(p.theta0), x_c - L / 2 * np.sin(p.theta1)
     axes.plot([foot0, foot0], [0.0, 0.35 * L], color="0.4", lw=0.6, ls=":")
     axes.plot([foot1, foot1], [0.0, 0.35 * L], color="0.4", lw=0.6, ls=":")
-    angle_arc(axes, (foot0, 0.0), 0.3 * L, np.pi / 2 - p.theta0, np.pi / 2, "θ₀")
+    # θ₀ is narrow: its label stands right of the solid rod, level with the arc's top
+    angle_arc(axes, (foot0, 0.0), 0.3 * L, np.pi / 2 - p.theta0, np.pi / 2)
+    axes.text(foot0 + 0.36 * L * np.sin(p.theta0) + 0.03 * L, 0.36 * L * np.cos(p.theta0),
+              "θ₀", ha="left", va="center", fontsize=10)
     angle_arc(axes, (foot1, 0.0), 0.22 * L, np.pi / 2 - p.theta1, np.pi / 2, "θ₁")
     dimension(axes, (foot0, 0.0), (foot0 + L * np.sin(p.theta0), L * np.cos(p.theta0)),
-              f"L = {format_number(L)} m", offset=0.08 * L, tick=0.02 * L, side=-1.0)
+              f"L = {format_number(L)} m", offset=0.08 * L, tick=0.02 * L, side=1.0)
     describe(axes, "The solid rod is the release position, leaning right from its foot on "
                    "the floor; the dashed rod is the later position at θ₁, its foot slid to "
                    "the left. Both angles are measured from the vertical.")
@@ -86,6 +89,9 @@ EXERCISE = Exercise(
         Constraint("the foot and the centre move at clearly different speeds "
                    "(theta1 at least 4 degrees from 45)",
                    lambda p: abs(p.theta1 - np.pi / 4) > np.radians(4)),
+        Constraint("the rod has clearly moved by theta1 (at least 20 degrees past theta0), "
+                   "so that the two positions and their angles stand apart in the figure",
+                   lambda p: p.theta1 - p.theta0 >= np.radians(20)),
         Constraint("no two answers share their number (5 % apart)", _apart),
     ),
     statement=r"""
@@ -119,6 +125,9 @@ $$m g\,\tfrac{L}{2}(\cos\theta_0 - \cos\theta)
    $v_C = \tfrac{L}{2}\dot\theta = \sqrt{\tfrac{3}{4} g L\cos\theta_0}$ = {{ answers.v_land }},
    less than the free fall from the height $\tfrac{L}{2}\cos\theta_0$ would give,
    $\sqrt{g L\cos\theta_0}$, because a quarter of the energy goes into the spin.
+
+**Check.** Integrating the rod's equation of motion from rest at $\theta_0$ until it leans
+at $\theta_1$ gives $\dot\theta$ = {{ checks.integrated_fall }} rad/s again.
 """,
     solve=solve,
     figure=figure,

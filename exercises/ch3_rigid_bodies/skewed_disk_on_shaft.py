@@ -47,13 +47,19 @@ def figure(p):
     axes.plot([-edge[0], edge[0]], [-edge[1], edge[1]], color="#a0724a", lw=5)
     axes.plot([-0.9 * R, 0.9 * R], [0.0, 0.0], color="0.1", lw=0.6, ls="--")
     axes.plot([0.0, 0.0], [-1.1 * R, 1.1 * R], color="0.1", lw=0.6, ls="--")
-    angle_arc(axes, (0.0, 0.0), 0.7 * R, np.pi / 2, np.pi / 2 + p.beta, "β")
-    arrow(axes, (L / 2 + 0.02, 0.0), (L / 2 + 0.12, 0.0), "e₃")
-    arrow(axes, (-L / 2, 0.0), (-L / 2, 0.1), "e₁")
+    # β is a few degrees: its label stands beside the dashed normal, on the side away from
+    # the disk's top, not inside the narrow arc
+    angle_arc(axes, (0.0, 0.0), 0.7 * R, np.pi / 2, np.pi / 2 + p.beta)
+    away = -np.sign(edge[0]) or 1.0                  # the side the disk's top leans from
+    axes.text(0.015 * away, 0.95 * R, "β", ha="left" if away > 0 else "right", va="center",
+              fontsize=10)
+    arrow(axes, (L / 2 + 0.02, 0.0), (L / 2 + 0.12, 0.0), "e₃", offset=(0.0, 0.025))
+    arrow(axes, (-L / 2, 0.0), (-L / 2, 0.1), "e₁", offset=(-0.025, 0.0))
     dimension(axes, (-L / 2, 0.0), (L / 2, 0.0), f"L = {format_number(L)} m",
               offset=-1.25 * R, tick=0.02, side=-1.0)
-    dimension(axes, (0.0, 0.0), (edge[0], edge[1]), f"R = {format_number(R)} m",
-              offset=0.05, tick=0.02, side=-1.0)
+    # R along the disk's lower half, labelled to its right, off the disk
+    dimension(axes, (0.0, 0.0), (-edge[0], -edge[1]), f"R = {format_number(R)} m",
+              offset=0.04, tick=0.015, side=1.0)
     axes.text(-L / 2, 1.2 * R, f"disk {format_number(p.m_d)} kg, shaft {format_number(p.m_s)} kg",
               ha="left", va="bottom", fontsize=10)
     describe(axes, "Side view in the plane of e₃ (along the shaft, to the right) and e₁ (up): "

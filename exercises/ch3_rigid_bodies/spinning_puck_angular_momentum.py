@@ -7,7 +7,7 @@ import numpy as np
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Recompute
-from dynagrade.exercise.figure import Circle, angle_arc, arrow, describe, dimension, new_drawing
+from dynagrade.exercise.figure import Circle, arrow, describe, dimension, new_drawing
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import inertia, rigid_kinetics
 
@@ -58,11 +58,17 @@ def figure(p):
     side = np.sign(p.y_B)
     axes.plot([-2.2, 2.2], [0.0, 0.0], color="0.5", lw=0.8, ls="--")
     axes.add_patch(Circle((0.0, 0.0), 0.35, facecolor="0.2", edgecolor="0.1", lw=1.0))
-    axes.text(0.0, -side * 0.45, "C", ha="center", va="center", fontsize=10)
-    arrow(axes, (0.45, 0.0), (1.3, 0.0), f"v = {format_number(p.v)} m/s", offset=(0.0, -side * 0.2),
+    axes.text(-0.4, side * 0.4, "C", ha="right", va="center", fontsize=10)
+    # v on B's side of the path, the spin (a counter-clockwise arrow) on the other side
+    arrow(axes, (0.45, 0.0), (1.3, 0.0), f"v = {format_number(p.v)} m/s", offset=(0.0, side * 0.2),
           color="C3")
-    angle_arc(axes, (0.0, 0.0), 0.55, -0.4 * np.pi, 0.6 * np.pi,
-              f"ω = {format_number(p.omega)} rad/s")
+    ends = ((0.4, -side * 0.4), (-0.4, -side * 0.4))
+    start, end = ends if side < 0 else ends[::-1]
+    axes.annotate("", xy=end, xytext=start,
+                  arrowprops={"arrowstyle": "-|>", "connectionstyle": "arc3,rad=0.5",
+                              "color": "0.2", "lw": 1.0, "shrinkA": 0, "shrinkB": 0})
+    axes.text(0.0, -side * 0.9, f"ω = {format_number(p.omega)} rad/s", ha="center",
+              va="center", fontsize=10)
     axes.plot([-1.5], [side * 1.0], "o", color="C2", ms=5)
     axes.text(-1.6, side * 1.0, "B", ha="right", va="center", fontsize=10)
     dimension(axes, (-1.5, 0.0), (-1.5, side * 1.0), f"|y_B| = {format_number(abs(p.y_B))} m",
@@ -124,6 +130,10 @@ Here $m$ = {{ m }}, $R$ = {{ R }}, $v$ = {{ v }}, $\omega$ = {{ omega }}.
    instant: no force acts in the plane of the ice, so $H_B$ is conserved.
 3. **Where it vanishes.** $H_B = 0$ for $y_B = y_0 = -\dfrac{R^2\omega}{2 v}$
    = {{ answers.y_0 }}: on that line the orbital part cancels the spin.
+
+**Check.** Without the transfer formula: summing $r_B \times m_i v_i$ over the disk cut into
+rings of mass points, each moving with $v_C + \omega \times r_{Ci}$, gives
+$H_B$ = {{ checks.sum_over_mass_points }} kg·m²/s again.
 """,
     solve=solve,
     figure=figure,

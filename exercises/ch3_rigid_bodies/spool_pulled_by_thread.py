@@ -47,7 +47,7 @@ def figure(p):
     """The spool to scale on the floor, the thread leaving the top of its hub."""
     drawing, axes = new_drawing(4.6, 2.6)
     R, r = p.R, p.r
-    ground(axes, -1.4 * R, 3.0 * R, 0.0, hatch=0.08 * R)
+    ground(axes, -2.3 * R, 3.0 * R, 0.0, hatch=0.08 * R)
     axes.add_patch(Circle((0.0, R), R, facecolor="#d9c39a", edgecolor="0.1", lw=1.2))
     axes.add_patch(Circle((0.0, R), r, facecolor="#a0724a", edgecolor="0.1", lw=1.0))
     axes.plot([0.0], [R], "o", color="0.1", ms=4)
@@ -56,13 +56,17 @@ def figure(p):
     arrow(axes, (2.2 * R, R + r), (2.9 * R, R + r), color="C3")
     axes.text(2.55 * R, R + r + 0.08 * R, f"F = {format_number(p.F)} N", color="C3",
               ha="center", va="bottom", fontsize=10)
-    dimension(axes, (0.0, R), (0.0, R + r), f"r = {format_number(r)} m", offset=-0.25 * R,
+    # r left of the spool, R right of it, their labels outside: inside, they crossed the
+    # rims; thin dashed lines carry C's height and the hub's top out to the dimensions
+    axes.plot([-1.35 * R, 0.0], [R + r, R + r], color="0.5", lw=0.5, ls="--")
+    axes.plot([-1.35 * R, 1.3 * R], [R, R], color="0.5", lw=0.5, ls="--")
+    dimension(axes, (-1.25 * R, R), (-1.25 * R, R + r), f"r = {format_number(r)} m",
               tick=0.04 * R, side=1.0)
-    dimension(axes, (0.0, 0.0), (0.0, R), f"R = {format_number(R)} m", offset=-1.2 * R,
-              tick=0.04 * R, side=1.0)
+    dimension(axes, (1.2 * R, 0.0), (1.2 * R, R), f"R = {format_number(R)} m",
+              tick=0.04 * R, side=-1.0)
     describe(axes, "The thread leaves the top of the hub horizontally and is pulled to the "
                    "right; the spool's rim rests on the floor.")
-    axes.set_xlim(-1.6 * R, 3.1 * R)
+    axes.set_xlim(-2.4 * R, 3.1 * R)
     axes.set_ylim(-0.15 * R, 2.3 * R)
     return drawing
 
@@ -84,7 +88,7 @@ EXERCISE = Exercise(
         Uniform("R", 0.1, 0.3, step=0.01, unit="m", symbol="R"),
         Uniform("r", 0.03, 0.24, step=0.01, unit="m", symbol="r"),
         Uniform("k", 0.05, 0.25, step=0.01, unit="m", symbol="k"),
-        Uniform("F", 2.0, 30.0, step=0.5, unit="N", symbol="F"),
+        Uniform("F", 1.0, 12.0, step=0.5, unit="N", symbol="F"),
         Constant("g", 9.81, unit="m/s^2", symbol="g"),
     ),
     constraints=(
@@ -94,6 +98,8 @@ EXERCISE = Exercise(
                    lambda p: 0.5 * p.R <= p.k <= 0.85 * p.R),
         Constraint("the friction is clearly not zero (|r R - k^2| > 0.08 R^2)",
                    lambda p: abs(p.r * p.R - p.k**2) > 0.08 * p.R**2),
+        Constraint("a pull by hand: the spool speeds up at most at 6 m/s^2 (the draws reached "
+                   "6 g)", lambda p: solve(p)["a"] <= 6.0),
         Constraint("a floor can supply the friction (mu_min < 0.6)",
                    lambda p: solve(p)["mu_min"] < 0.6),
         Constraint("the three numbers asked for are 5 % apart", _apart),
@@ -127,6 +133,10 @@ $$m a = F + f, \qquad m k^2\,\frac{a}{R} = F r - f R .$$
    needs, and friction makes up the difference.
 4. **Smallest coefficient.** The floor carries the weight, $N = m g$, and rolling needs
    $|f| \le \mu N$: $\mu_{\min} = |f|/(m g)$ = {{ answers.mu_min }}.
+
+**Check.** By power instead: the thread's end at the top of the hub moves at $v(1 + r/R)$,
+and friction at the resting contact does no work, so $F(1 + r/R) = m(1 + k^2/R^2)\,a$:
+{{ checks.power_of_the_pull }} N on each side.
 """,
     solve=solve,
     figure=figure,

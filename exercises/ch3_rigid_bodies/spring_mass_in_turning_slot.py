@@ -6,7 +6,7 @@ import numpy as np
 from dynagrade.exercise import Constraint, Exercise, Misconception, Numeric, Uniform, per_draw
 from dynagrade.exercise.apart import numbers_apart
 from dynagrade.exercise.checks import Balance, Integrated, Limit
-from dynagrade.exercise.figure import (Circle, Rectangle, angle_arc, block, describe,
+from dynagrade.exercise.figure import (Circle, Rectangle, block, describe,
                                        new_drawing, spring)
 from dynagrade.exercise.numbers import format_number
 from dynagrade.mechanics import frames
@@ -52,9 +52,13 @@ def figure(p):
     block(axes, (0.56, 0.0), 0.12, 0.1, color="C0")
     axes.text(0.25, 0.1, f"k = {format_number(p.k)} N/m", ha="center", va="bottom",
               fontsize=10)
-    axes.text(0.62, -0.1, f"m = {format_number(p.m)} kg", ha="left", va="top", fontsize=10)
-    angle_arc(axes, (0.0, 0.0), 1.12, 0.3 * np.pi, 0.6 * np.pi,
-              f"Ω = {format_number(p.Omega)} rad/s", label_radius=1.3)
+    axes.text(0.56, -0.12, f"m = {format_number(p.m)} kg", ha="center", va="top", fontsize=10)
+    # the turn's sense: a counter-clockwise arrow along the arc (a bare arc shows none)
+    axes.annotate("", xy=(1.12 * np.cos(0.6 * np.pi), 1.12 * np.sin(0.6 * np.pi)),
+                  xytext=(1.12 * np.cos(0.3 * np.pi), 1.12 * np.sin(0.3 * np.pi)),
+                  arrowprops={"arrowstyle": "-|>", "connectionstyle": "arc3,rad=0.25",
+                              "color": "0.2", "lw": 1.0, "shrinkA": 0, "shrinkB": 0})
+    axes.text(0.0, 1.3, f"Ω = {format_number(p.Omega)} rad/s", ha="center", va="center", fontsize=10)
     axes.text(-0.6, -0.55, f"l₀ = {format_number(p.l0)} m", ha="center", va="center",
               fontsize=10)
     describe(axes, "Seen from above: the disk turns counter-clockwise about its centre; the "

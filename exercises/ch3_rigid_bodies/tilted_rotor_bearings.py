@@ -71,12 +71,19 @@ def figure(p):
     for x in (-span / 2, span / 2):
         block(axes, (x, 0.0), 0.05 * span, 0.12 * span, color="0.5")
     block(axes, (0.0, 0.0), p.h, 2 * p.R, angle=p.beta, color="#9fb7d4")
-    tip = 0.45 * span * np.array([np.cos(p.beta), np.sin(p.beta)])
+    axis = np.array([np.cos(p.beta), np.sin(p.beta)])
+    tip = 0.45 * span * axis
     axes.plot([-tip[0], tip[0]], [-tip[1], tip[1]], ls="--", color="C3", lw=1.0)
-    angle_arc(axes, (0.0, 0.0), 0.3 * span, 0.0, p.beta,
-              f"β = {format_number(np.degrees(p.beta))}°", label_radius=0.36 * span)
-    arrow(axes, (0.6 * span, 0.0), (0.75 * span, 0.0),
-          f"ω = {format_number(p.omega)} rad/s", offset=(0.0, -0.08 * span))
+    # β's arc just outside the rotor, its label to the right of the arc's end, above the
+    # dashed axis and the bearing: at the arc's middle (a few degrees) it lay on the shaft
+    reach = float(np.hypot(p.h / 2, p.R)) + 0.04 * span
+    angle_arc(axes, (0.0, 0.0), reach, 0.0, p.beta)
+    axes.text(reach * axis[0], max(reach * axis[1] + 0.02 * span, 0.08 * span),
+              f"β = {format_number(np.degrees(p.beta))}°", ha="left", va="bottom",
+              fontsize=10)
+    arrow(axes, (0.6 * span, 0.0), (0.75 * span, 0.0))
+    axes.text(0.6 * span, -0.04 * span, f"ω = {format_number(p.omega)} rad/s", ha="left",
+              va="top", fontsize=10, color="C0")
     dimension(axes, (-span / 2, 0.0), (span / 2, 0.0), f"l = {format_number(span)} m",
               offset=-max(0.12 * span, 1.3 * p.R), tick=0.02 * span, side=-1.0)
     describe(axes, "The rotor, a solid cylinder, sits on the shaft at the middle between "
@@ -103,8 +110,11 @@ EXERCISE = Exercise(
     constraints=(
         Constraint("the rotor is clearly disk-like or rod-like: |3 R^2 - h^2| > 0.5 R^2",
                    lambda p: abs(3 * p.R**2 - p.h**2) > 0.5 * p.R**2),
-        Constraint("the rotor fits between the bearings: h < 0.6 l and R < 0.4 l",
-                   lambda p: p.h < 0.6 * p.l and p.R < 0.4 * p.l),
+        Constraint("the rotor fits well between the bearings: sqrt((h/2)^2 + R^2) < 0.35 l",
+                   lambda p: np.hypot(p.h / 2, p.R) < 0.35 * p.l),
+        Constraint("a solid cylinder of a real material: m / (pi R^2 h) is 1000 to 8000 "
+                   "kg/m^3 (plastic to steel)",
+                   lambda p: 1000 <= p.m / (np.pi * p.R**2 * p.h) <= 8000),
         Constraint("angle, couple and bearing force differ by over 5 %",
                    lambda p: numbers_apart([np.degrees(solve(p)["delta"]), solve(p)["M"],
                                             solve(p)["F"]])),

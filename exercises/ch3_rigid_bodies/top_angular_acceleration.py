@@ -39,8 +39,10 @@ def _far_from(wrong, key, share):
 
 def _inertia_possible(p):
     """Moments about O of a body with its centre of mass on e3^B at l: I1, I2 at least
-    m l^2 above zero, and each moment at most the sum of the other two."""
-    i = sorted(_moments(p))
+    m l^2 above zero, and the principal moments about C (I1 - m l^2, I2 - m l^2, I3; the
+    parallel-axis theorem) each at most the sum of the other two. About O alone the
+    triangle rule lets I3 exceed I1 + I2 - 2 m l^2, which no body can."""
+    i = sorted((p.I1 - p.m * p.l**2, p.I2 - p.m * p.l**2, p.I3))
     return min(p.I1, p.I2) >= 1.2 * p.m * p.l**2 and i[2] <= i[0] + i[1]
 
 
@@ -63,8 +65,10 @@ def draw(p):
     centre = axis * 1.1
     axes.add_patch(Circle(tuple(centre), 0.06, facecolor="white", edgecolor="0.1", zorder=4))
     axes.text(*(centre - across * 0.2), "C", ha="right", va="center", fontsize=10)
-    arrow(axes, tuple(centre), tuple(centre + [0.0, -0.8]), "mg", offset=(0.2, 0.0),
-          color="C3")
+    # the weight reaches down out of the body, labelled below it (on the body, red on blue,
+    # the label was hard to read and crossed the body's edge)
+    arrow(axes, tuple(centre), (centre[0], 0.1), color="C3")
+    axes.text(centre[0] + 0.08, 0.3, "mg", ha="left", va="center", fontsize=10, color="C3")
     axes.text(*(axis * 0.8 - across * 0.5), "l", ha="center", va="center", fontsize=10)
     angle_arc(axes, (0.0, 0.0), 0.5, np.pi / 2 - p.theta, np.pi / 2, "θ", label_radius=0.7)
     axes.text(0.0, -0.05, "O", ha="center", va="top", fontsize=10)

@@ -116,6 +116,9 @@ EXERCISE = Exercise(
     constraints=(
         Constraint("the body is clearly unsymmetric: I1 and I2 differ by at least 25 %",
                    lambda p: abs(p.I1 - p.I2) >= 0.25 * max(p.I1, p.I2)),
+        Constraint("the moments belong to a real body: each principal moment about O is at "
+                   "most the sum of the other two",
+                   lambda p: 2 * max(p.I1, p.I2, p.I3) <= p.I1 + p.I2 + p.I3),
         Constraint("the nutation rate is not zero", lambda p: abs(p.theta_dot) >= 0.5),
         Constraint("the three answers differ by at least 8 % in SI", _apart),
     ),

@@ -46,21 +46,30 @@ def figure(p):
     size = max(p.a, p.b)
     drawing, axes = new_drawing(4.2, 3.6)
     block(axes, (0.0, 0.0), p.a, p.b, angle=p.alpha, color="#9fb7d4")
-    arrow(axes, (0.0, 0.0), (0.85 * size, 0.0), "e₁", offset=(0.04 * size, -0.06 * size),
-          color="0.2")
-    arrow(axes, (0.0, 0.0), (0.0, 0.85 * size), "e₂", offset=(-0.06 * size, 0.04 * size),
-          color="0.2")
+    # the labels beyond the arrows' tips and off the plate's edges: beside the arrows they
+    # lay on the edges and on the b dimension
+    arrow(axes, (0.0, 0.0), (0.85 * size, 0.0), color="0.2")
+    axes.text(0.9 * size, 0.0, "e₁", ha="left", va="center", fontsize=10, color="0.2")
+    arrow(axes, (0.0, 0.0), (0.0, 0.85 * size), color="0.2")
+    axes.text(0.0, 0.9 * size, "e₂", ha="center", va="bottom", fontsize=10, color="0.2")
     along = np.array([np.cos(p.alpha), np.sin(p.alpha)])
     normal = np.array([-np.sin(p.alpha), np.cos(p.alpha)])
-    arrow(axes, (0.0, 0.0), tuple(0.65 * size * along), "b₁", offset=(0.0, 0.06 * size),
-          color="C3")
-    angle_arc(axes, (0.0, 0.0), 0.3 * size, 0.0, p.alpha,
-              f"α = {format_number(np.degrees(p.alpha))}°", label_radius=0.42 * size)
+    arrow(axes, (0.0, 0.0), tuple(0.72 * size * along), color="C3")
+    axes.text(*(0.8 * size * along), "b₁", ha="center", va="center", fontsize=10, color="C3")
+    # α's arc carries a short label inside the angle, clear of e₂ when α nears 180°
+    angle_arc(axes, (0.0, 0.0), 0.3 * size, 0.0, p.alpha)
+    middle = p.alpha / 2 if p.alpha / 2 < np.radians(75) else np.radians(65)
+    axes.text(*(0.4 * size * np.array([np.cos(middle), np.sin(middle)])), "α", ha="center",
+              va="center", fontsize=10)
     corner = -0.5 * p.a * along - 0.5 * p.b * normal
-    dimension(axes, tuple(corner), tuple(corner + p.a * along), f"a = {format_number(p.a)} m",
-              offset=-0.12 * size, tick=0.03 * size, side=-1.0)
-    dimension(axes, tuple(corner + p.a * along), tuple(corner + p.a * along + p.b * normal),
-              f"b = {format_number(p.b)} m", offset=-0.12 * size, tick=0.03 * size, side=-1.0)
+    # a along the plate's lower long edge (away from e₂ and α's arc), whichever that is
+    below = 1.0 if normal[1] > 0 else -1.0         # +1: the edge at -b/2 normal is lower
+    start = -0.5 * p.a * along - below * 0.5 * p.b * normal
+    dimension(axes, tuple(start), tuple(start + p.a * along), f"a = {format_number(p.a)} m",
+              offset=-below * 0.12 * size, tick=0.03 * size, side=-below)
+    # b at the end b₁ does not point to
+    dimension(axes, tuple(corner), tuple(corner + p.b * normal), f"b = {format_number(p.b)} m",
+              offset=0.12 * size, tick=0.03 * size, side=1.0)
     describe(axes, "Seen along e3: the plate's edge a lies along b1, turned counter-clockwise "
                    "by alpha from e1.")
     axes.set_xlim(-0.95 * size, 1.05 * size)
