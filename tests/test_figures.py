@@ -82,9 +82,16 @@ DRAWN_TO_SCALE = {
     "car-in-a-looping", "elastic-slingshot", "sliding-up-a-slope", "crank-slider-velocity",
     "rolling-wheel-rim-velocity", "rod-struck-by-particle", "dumbbell-angular-momentum",
     "pucks-centre-of-mass"}
-# issue 31, chapter 4: the trough, the block on its cylinder, the hinged bar, the trailer
-DRAWN_TO_SCALE |= {"trough-rolling-cylinder-lagrange", "block-rocking-on-cylinder",
-                   "hinged-bar-tip-mass", "bounce-pitch-modes"}
+# issue 31's exercises whose figures were reviewed as drawn to scale
+DRAWN_TO_SCALE |= {
+    "ball-rolling-off-table", "boat-hauled-to-quay", "linked-pucks",
+    "radar-tracking-level-flight", "braking-car-axle-loads", "flywheel-lever-brake",
+    "eccentric-disk-bearing-moment", "plate-with-hole-inertia", "skewed-disk-on-shaft",
+    "spool-pulled-by-thread", "rod-sliding-on-frictionless-floor", "crate-tipping-at-kerb",
+    "rod-on-ice-struck-by-puck", "car-on-turntable-track", "cyclist-seen-from-carousel",
+    "tilted-rotor-bearing-forces", "turned-plate-inertia-tensor",
+    "trough-rolling-cylinder-lagrange", "block-rocking-on-cylinder", "hinged-bar-tip-mass",
+    "bounce-pitch-modes"}
 
 
 def test_the_bank_says_which_figures_are_drawn_to_scale(bank):

@@ -103,8 +103,8 @@ def figure(p):
     for k in (-2, -1, 0, 1, 2):                                  # level lines of the plane
         middle = 0.7 * k * up
         axes.plot(*zip(middle - 2.6 * level, middle + 2.6 * level), color="0.5", lw=0.7)
-    arrow(axes, (0.0, 0.0), tuple(1.3 * up), color="C2")
-    axes.text(*(1.5 * up), "uphill", ha="center", va="center", fontsize=10, color="C2")
+    arrow(axes, (0.0, 0.0), tuple(1.3 * up), color="green")
+    axes.text(*(1.5 * up), "uphill", ha="center", va="center", fontsize=10, color="green")
     angle_arc(axes, (0.0, 0.0), 0.45, 0.0, p.beta, "β", label_radius=0.62)
     puck = np.array([p.x1, p.x2])
     axes.add_patch(Circle(tuple(puck), 0.09, facecolor="C0", edgecolor="0.1", lw=1.0, zorder=3))

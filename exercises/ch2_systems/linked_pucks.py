@@ -90,9 +90,9 @@ def figure(p):
     axes.text(*(start_a + v_a / 2 + gap * across), "$v_A$", ha="center", va="center",
               fontsize=10, color="C3")
     start_b = r2 + radii[1] * unit(u_b)
-    arrow(axes, tuple(start_b), tuple(start_b + u_b), color="C2")
+    arrow(axes, tuple(start_b), tuple(start_b + u_b), color="green")
     axes.text(*(start_b + u_b / 2 + np.array([0.0, gap])), "$\\dot x_B$", ha="center",
-              va="center", fontsize=10, color="C2")
+              va="center", fontsize=10, color="green")
     # the pucks' names where nothing else is drawn: A below its θ arc, B off the rod, its
     # arrow and that arrow's label
     name_a = freest(((-1.0, -1.0), (0.0, -1.0), (1.0, -1.0)),

@@ -33,7 +33,7 @@ def draw(p):
     axes.plot([0.7, 0.7], [0.5, 1.3], color="0.1", lw=2.0)             # the person
     axes.add_patch(Circle((0.7, 1.45), 0.15, facecolor="C1", edgecolor="0.1"))
     axes.text(0.35, 1.45, "m", ha="right", va="center", fontsize=11)
-    axes.plot([0.7 + 3.6, 0.7 + 3.6], [0.5, 1.3], color="0.6", lw=1.0, ls="--")
+    axes.plot([0.7 + 3.6, 0.7 + 3.6], [0.5, 1.3], color="0.45", lw=1.0, ls="--")
     dimension(axes, (0.7, 0.5), (4.3, 0.5), "d", offset=-1.1, tick=0.1, side=-1.0)
     arrow(axes, (1.0, 1.3), (2.6, 1.3), "u", offset=(0.0, 0.2), color="C3")
     describe(axes, "The person stands at the stern (left) of the boat and walks the "

@@ -78,7 +78,7 @@ def figure(p):
     # drawing would give the answer to part 2 away
     node = 0.2 * L
     for x in (node, L - node):
-        axes.plot([x - 0.02, x + 0.02], [-t / 2 - 0.02, -t / 2 - 0.02], color="C1", lw=3)
+        axes.plot([x - 0.02, x + 0.02], [-t / 2 - 0.02, -t / 2 - 0.02], color="C3", lw=3)
     dimension(axes, (0.0, -0.13), (node, -0.13), "xₙ", tick=0.01, side=-1.0)
     dimension(axes, (0.0, -0.25), (L, -0.25), "L", tick=0.01, side=-1.0)
     dimension(axes, (1.04 * L, -t / 2), (1.04 * L, t / 2), f"h = {format_number(p.h * 1e3)} mm",

@@ -18,6 +18,8 @@ import html
 import re
 from typing import Callable
 
+from .svg_text import plain_label
+
 __all__ = ["accessible_svg", "figure_description", "figure_labels", "prefixed_ids",
            "sentence_list", "svg_text_alternative"]
 
@@ -55,15 +57,17 @@ def sentence_list(items: list[str]) -> str:
 def figure_description(figure) -> str:
     """The description of an exercise figure: the author's sentences, then what the
     drawing helpers drew (with directions and their labels), then every other text
-    label it shows."""
+    label it shows, labels read as the figure draws them (``$e_\\varphi$`` as "eφ", as a
+    screen reader should say it, not its TeX)."""
     from ..exercise.figure import figure_notes
 
     notes = figure_notes(figure)
     sentences = [s if s.endswith(".") else s + "." for s in notes["author"]]
-    drawn = "; ".join(notes["drawn"])
+    drawn = plain_label("; ".join(notes["drawn"]))
     if drawn:
         sentences.append(f"Drawn: {drawn}.")
-    labels = [label for label in figure_labels(figure) if not _names_word(drawn, label)]
+    labels = [label for label in map(plain_label, figure_labels(figure))
+              if not _names_word(drawn, label)]
     if labels:
         sentences.append("Labels: " + "; ".join(labels) + ".")
     return " ".join(sentences) or "A figure without labels."
