@@ -9,6 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from dynagrade.grading import grade
+from dynagrade.grading.basis import examples
 from dynagrade.grading.compare import build
 from dynagrade.grading.dispatch import accepts
 from dynagrade.grading.readability import readability
@@ -87,6 +88,13 @@ def test_a_basis_vector_written_wrongly_is_refused_with_how_to_write_the_vector(
     assert verdict.error, verdict
     for word in words:
         assert word in verdict.feedback
+
+
+def test_a_vector_without_basis_vectors_is_shown_as_its_first_three_numbers_then_an_ellipsis():
+    """examples() for a part with no declared basis and neither 2 nor 3 components: the
+    bracket form numbered 1, 2, 3, and "…" only when components are left out."""
+    assert examples(4) == {"example": "(1, 2, 3, …)", "bracket": "(1, 2, 3, …)"}
+    assert examples(1) == {"example": "(1)", "bracket": "(1)"}
 
 
 def test_the_cartesian_basis_in_a_polar_part_is_refused_naming_the_polar_basis():

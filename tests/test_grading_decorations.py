@@ -42,6 +42,7 @@ FORCE = NumericSpec(unit="N")
     (NumericSpec(), 3.2e-3, "3.2 X 10^-3", "read 'X 10' as '*10'"),
     (NumericSpec(), 2 * math.pi, "2Pi", "read 'Pi' as 'pi'"),
     (NumericSpec(unit="m/s^2"), 9.81, "9,81 m/s2", "read 's2' as 's^2'"),
+    (NumericSpec(unit="m/s^2"), -9.81, "-9.81 m/s2", "read 's2' as 's^2'"),  # a sign before the number
     (NumericSpec(unit="m^2"), 0.5, "0.5 m2", "read 'm2' as 'm^2'"),
 ])
 def test_a_decorated_right_answer_is_right_and_the_feedback_says_what_was_left_out(

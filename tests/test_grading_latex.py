@@ -49,11 +49,13 @@ def tree(text, variables=VARS):
     (r"m \times g \div k", "m*g/k"),
     # braces and brackets
     (r"\left(x+1\right)^{2}", "(x+1)^2"),
+    (r"\left (x+1\right )^{2}", "(x+1)^2"),  # TeX allows a space before the bracket
     (r"\left[x+1\right]^{2}", "(x+1)^2"),
     (r"\left|x-h\right|", "abs(x-h)"),
     (r"{v_0}^2", "v0^2"),
     (r"x^{k+1}", "x^(k+1)"),
     (r"\omega_{n}t", "omega_n*t"),
+    (r"v_{0}t", "v0*t"),  # the subscript's brace ends the name: v_0 times t
     (r"F_{max}", "F_max"),
     (r"F_{max} \cdot t", "F_max*t"),
     # Greek letters, functions, accents, wrappers, spaces
@@ -105,6 +107,7 @@ def test_time_derivatives_reach_the_variable_printed_with_the_accent():
     (r"\frac{k}{m} + )", "unexpected ')'", 14),
     (r"\sqrt{\frac{k}{q}}", "unknown name 'q'", 15),
     (r"\frac{k}{}", "empty brackets", 9),
+    (r"\frac{k+}{m}", "unexpected ')'", 7),  # under the numerator's last character
 ])
 def test_latex_outside_the_subset_is_refused_at_its_command(text, fragment, position):
     with pytest.raises(AnswerError) as info:
@@ -122,6 +125,18 @@ def test_latex_keeps_the_limits_of_the_plain_syntax():
     nested = r"\sqrt{" * 400 + "x" + "}" * 400  # 2801 characters
     with pytest.raises(AnswerError, match="too long"):
         tree(nested)
+
+
+def test_a_formula_in_more_wrappers_than_the_limit_is_refused_and_at_the_limit_is_read():
+    """Each \\mathrm{...} is a group one level deeper, like a brace: ``x`` inside MAX_DEPTH
+    of them is read; inside one more it is refused, at the innermost group's content
+    (101 wrappers of 8 characters, ``\\mathrm{``: position 808; of 6, ``\\text{``: 606)."""
+    assert MAX_DEPTH == 100  # the positions are worked out for it
+    for wrapper, innermost in ((r"\mathrm{", 808), (r"\text{", 606)):
+        assert tree(wrapper * MAX_DEPTH + "x" + "}" * MAX_DEPTH) == Name("x")
+        with pytest.raises(AnswerError, match="nested too deeply") as info:
+            tree(wrapper * (MAX_DEPTH + 1) + "x" + "}" * (MAX_DEPTH + 1))
+        assert info.value.position == innermost
 
 
 def test_a_braced_subscript_keeps_a_declared_printed_spelling():

@@ -116,6 +116,31 @@ def test_nesting_beyond_the_limit_is_refused_without_recursion_error():
     assert read("(" * (MAX_DEPTH - 5) + "x" + ")" * (MAX_DEPTH - 5)) == "x"
 
 
+def _bracketed(levels):
+    """``((x)^2*y+1)^2*y+1`` for 2: each bracket adds one level of brackets and three
+    levels to the tree (a sum, a product and a power)."""
+    text = "x"
+    for _ in range(levels):
+        text = "(" + text + ")^2*y+1"
+    return text
+
+
+def test_a_tree_deeper_than_the_limit_is_refused_though_its_brackets_are_not():
+    """With k brackets the tree is 3k + 1 levels high (x at the bottom): k = 33 gives
+    100, the limit, and is read; k = 34 gives 103 and is refused as too complex,
+    although its 34 brackets are far within the limit of brackets."""
+    assert nesting_and_terms(parse_expression(_bracketed(33), ("x", "y")))[0] == 100
+    with pytest.raises(AnswerError, match="too complex \\(nested more than 100 levels\\)"):
+        parse_expression(_bracketed(34), ("x", "y"))
+
+
+def test_an_unknown_name_longer_than_30_characters_is_shown_cut_with_an_ellipsis():
+    with pytest.raises(AnswerError) as info:
+        parse_expression("distancetravelledbytheblockalongtheslope", ("v0", "g"))
+    assert info.value.message == \
+        "unknown name 'distancetravelledbytheblockalo…' (the variables are: g, v0)"
+
+
 # -- hostile answers: every one gets a clear verdict within a second ------------------------
 HOSTILE = [
     "(" * 10000 + "x" + ")" * 10000,

@@ -1,7 +1,8 @@
 """Tests that pin what mutation testing of the grader showed unpinned (issue 29): how a
 misconception's credit combines with unit credit, symmetry under a sign, which generic
 mistakes are tried for which units, the angle-exponent rule of unit conversion, the
-sign in the formula tolerance and the feedback of vector and choice parts with ``reveal``. Each
+sign in the formula tolerance, the feedback of vector and choice parts with ``reveal`` and
+of a formula in the wrong units, and the domains the exact check of formulas assumes. Each
 expected verdict and feedback line is written from docs/grading.md's rules by hand."""
 import math
 
@@ -11,10 +12,13 @@ from hypothesis import given, settings, strategies as st
 
 from dynagrade.grading import grade
 from dynagrade.grading import units
+from dynagrade.grading.nodes import BinOp, Call, Name, Num
 from dynagrade.grading.quantity import unit_info
 from dynagrade.grading.readability import readability
 from dynagrade.grading.spec import ChoiceSpec, KnownWrong, NumericSpec, SymbolicSpec, Variable, VectorSpec
+from dynagrade.grading.symbolic import _reference
 from dynagrade.grading.tolerance import point_tolerance
+from dynagrade.grading.tosympy import exactly_equal, to_sympy
 
 SETTINGS = settings(max_examples=150, deadline=None)
 
@@ -221,3 +225,51 @@ def test_a_formula_that_leaves_out_an_allowed_name_is_readable():
     assert readability(spec, "2*x").readable
     unknown = readability(spec, "2*x*q")
     assert not unknown.readable and "'q'" in unknown.message
+
+
+# --- golden feedback of a formula in the wrong units ----------------------------------------
+# h = v0²/(2g) in m. v0/2g is read as (v0/2)·g: (m/s)·(m/s²) = m²/s³; v0 alone is in m/s.
+LIFT = {"v0": Variable(1, 50, "m/s"), "g": Variable(9, 10, "m/s^2")}
+A_2G = " Note: a/2g is read as (a/2)·g; write a/(2g) if you mean to divide by 2g."
+
+
+@pytest.mark.parametrize("answer, reveal, feedback", [
+    ("v0/2g", False, "Not correct: your expression has units of m²/s³, expected m." + A_2G),
+    ("v0/2g", True, "Not correct: your expression has units of m²/s³, expected m." + A_2G
+     + " The expected answer is v0^2 / (2 * g)."),
+    ("v0", True, "Not correct: your expression has units of m/s, expected m."
+     " The expected answer is v0^2 / (2 * g)."),
+])
+def test_a_formula_in_the_wrong_units_gets_the_units_the_reading_note_and_the_reveal(
+        answer, reveal, feedback):
+    verdict = grade(SymbolicSpec(LIFT, reveal=reveal), "v0^2/(2*g)", answer)
+    assert (verdict.correct, verdict.misconception, verdict.feedback) == (False, "dimensions", feedback)
+
+
+def test_the_exact_check_sees_each_variable_s_declared_domain_in_si_units():
+    # 2 cm to 5 cm is 0.02 m to 0.05 m; a domain from 0 or across 0 is kept as declared,
+    # so neither is taken for a positive variable.
+    spec = SymbolicSpec({"h": Variable(2, 5, "cm"), "x": Variable(0, 1, "m"),
+                         "y": Variable(-2, 3)})
+    domains = _reference(spec, "h + x + y").domains
+    assert domains["h"] == pytest.approx((0.02, 0.05), rel=1e-12)
+    assert domains["x"] == (0.0, 1.0) and domains["y"] == (-2.0, 3.0)
+
+
+def test_a_variable_whose_whole_domain_is_positive_is_positive_in_the_exact_check_below_1_too():
+    # k in [0.5, 2], m in [0.2, 0.9]: both positive, so sqrt(k)/sqrt(m) is sqrt(k/m);
+    # for x in [-1, 1], sqrt(x^2) is |x|, not x.
+    k, m, x = Name("k"), Name("m"), Name("x")
+    domains = {"k": (0.5, 2.0), "m": (0.2, 0.9), "x": (-1.0, 1.0)}
+    assert to_sympy(k, domains).is_positive and to_sympy(m, domains).is_positive
+    assert to_sympy(x, domains).is_positive is None
+    assert exactly_equal(BinOp("/", Call("sqrt", (k,)), Call("sqrt", (m,))),
+                         Call("sqrt", (BinOp("/", k, m),)), domains, 5.0) is True
+
+
+def test_the_exact_check_proves_sin_squared_plus_cos_squared_is_1_and_not_2():
+    x = Name("x")
+    square = {f: BinOp("^", Call(f, (x,)), Num(2.0)) for f in ("sin", "cos")}
+    pythagoras = BinOp("+", square["sin"], square["cos"])
+    assert exactly_equal(pythagoras, Num(1.0), {"x": (-3.0, 3.0)}, 5.0) is True
+    assert exactly_equal(pythagoras, Num(2.0), {"x": (-3.0, 3.0)}, 5.0) is False
