@@ -14,7 +14,7 @@ def _moment(p):
 
 
 def _acceleration(p, moment):
-    return rigid_kinetics.atwood_acceleration(p.m1, p.m2, p.g, p.R, moment)
+    return rigid_kinetics.atwood_acceleration_with_heavy_pulley(p.m1, p.m2, p.g, p.R, moment)
 
 
 @per_draw

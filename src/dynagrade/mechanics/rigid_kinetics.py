@@ -148,8 +148,8 @@ def friction_under_horizontal_pull(F: Quantity, m: Quantity, R: Quantity,
                                                           lever_arm) - F
 
 
-def atwood_acceleration(m1: Quantity, m2: Quantity, g: Quantity, R: Quantity,
-                        moment_centre: Quantity) -> Quantity:
+def atwood_acceleration_with_heavy_pulley(m1: Quantity, m2: Quantity, g: Quantity,
+                                          R: Quantity, moment_centre: Quantity) -> Quantity:
     """Acceleration of the masses of an Atwood machine whose pulley (radius R, I_C about
     its frictionless axle) turns with the rope without slipping, m1 descending:
     a = (m1 - m2) g / (m1 + m2 + I_C / R^2). The balance of angular momentum of the
