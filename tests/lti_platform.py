@@ -19,18 +19,26 @@ import secrets
 import threading
 import time
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import TYPE_CHECKING, Callable
 from urllib.parse import urlencode
 
-import httpx
-import jwt
-import uvicorn
-from cryptography.hazmat.primitives import serialization
-from cryptography.hazmat.primitives.asymmetric import rsa
-from starlette.applications import Starlette
-from starlette.requests import Request
-from starlette.responses import HTMLResponse, JSONResponse, RedirectResponse, Response
-from starlette.routing import Route
+from deferred import deferred
+
+if TYPE_CHECKING:
+    from starlette.requests import Request
+
+# imported when the platform starts, not when the suite is collected (test_collection)
+httpx = deferred("httpx")
+jwt = deferred("jwt")
+uvicorn = deferred("uvicorn")
+serialization = deferred("cryptography.hazmat.primitives.serialization")
+rsa = deferred("cryptography.hazmat.primitives.asymmetric.rsa")
+Starlette = deferred("starlette.applications", "Starlette")
+HTMLResponse = deferred("starlette.responses", "HTMLResponse")
+JSONResponse = deferred("starlette.responses", "JSONResponse")
+RedirectResponse = deferred("starlette.responses", "RedirectResponse")
+Response = deferred("starlette.responses", "Response")
+Route = deferred("starlette.routing", "Route")
 
 from serve_support import free_port
 

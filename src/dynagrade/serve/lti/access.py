@@ -15,6 +15,7 @@ import time
 
 import sqlalchemy as sa
 
+from ...errors import DynagradeError
 from . import http, keys
 from .store import Platform
 
@@ -22,7 +23,7 @@ ASSERTION_TYPE = "urn:ietf:params:oauth:client-assertion-type:jwt-bearer"
 ASSERTION_SECONDS = 300
 
 
-class NoAccess(Exception):
+class NoAccess(DynagradeError):
     """The platform gave no token; ``answer`` is what it said."""
 
     def __init__(self, answer: http.Answer):

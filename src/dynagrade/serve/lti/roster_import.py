@@ -22,6 +22,7 @@ from typing import Mapping
 
 import sqlalchemy as sa
 
+from ...errors import DynagradeError
 from ...i18n import _
 from . import access, claims, grades_store, http, store
 from .roster_match import roster_student
@@ -30,7 +31,7 @@ from .roster_match import roster_student
 MAX_PAGES = 1000
 
 
-class ImportFailed(Exception):
+class ImportFailed(DynagradeError):
     """No members imported; the message says why. ``status``: 502 when the platform
     failed to list them, 200 when no platform has told where it lists them yet
     (nothing failed: there is nothing to import from)."""
