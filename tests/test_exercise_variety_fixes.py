@@ -59,9 +59,6 @@ def test_the_escape_speed_was_the_earths_for_everybody_and_now_follows_the_plane
 @pytest.mark.parametrize("exercise_id, part_name, answer", [
     ("degrees-of-freedom", "reaction",
      "particle sliding on a flat ground, particle on a rigid link about a fixed point"),
-    ("racing-down-incline", "first", "sphere"),
-    # cos(x) cosh(x) = -1 first at x = 1.8751 (Section 5.3.3), whatever the beam
-    ("cantilever-natural-frequencies", "beta1L", "1.8751"),
 ])
 def test_a_constant_answer_that_is_the_physics_taught_says_so_and_passes(
         exercise_id, part_name, answer):
@@ -102,3 +99,29 @@ def test_the_issues_stopping_distance_and_time_are_both_0_254842():
     answers = exercise.variant_set(1, {"v0": 2.0, "mu": 0.8}).answers
     assert answers["dx"] == pytest.approx(0.254842, abs=5e-7)
     assert answers["t_stop"] == pytest.approx(0.254842, abs=5e-7)
+
+
+def test_the_race_is_won_by_the_solid_sphere_or_by_the_cylinder_when_the_sphere_is_hollow():
+    # I_C/(m R^2): solid sphere 2/5 < cylinder 1/2 < thin shell 2/3 < hoop 1; the winner
+    # used to be the solid sphere for everybody. alpha = 30 deg, s = 4 m, g = 9.81:
+    # a = g sin(alpha)/(1 + k) = 4.905/(1 + k): cylinder 3.27, solid 3.50357, shell 2.943
+    # m/s^2; the shell's time sqrt(2 s / a) = sqrt(8 / 2.943) = 1.64874 s
+    exercise = BANK.get("racing-down-incline")
+    race = {"alpha": 30.0, "s": 4.0, "m": 1.0, "R": 0.1}
+    solid = exercise.variant(0, {**race, "hollow": 0.0}).answers
+    shell = exercise.variant(0, {**race, "hollow": 1.0}).answers
+    assert solid["first"] == "sphere" and shell["first"] == "cylinder"
+    assert shell["t_sphere"] == pytest.approx(1.64874, rel=1e-5)
+    assert solid["t_sphere"] == pytest.approx((8 / 3.50357) ** 0.5, rel=1e-5)
+    assert _rule(exercise, _variants(exercise)) == []
+    winners = [v.answers["first"] for v in _variants(exercise)]
+    assert 25 <= winners.count("cylinder") <= 75
+
+
+def test_the_cantilever_asks_its_first_wavenumber_which_follows_the_length():
+    # beta_1 L = 1.87510 for every clamped-free beam; beta_1 = 1.87510 / L: 0.937552 1/m at
+    # L = 2 m, 3.75021 1/m at L = 0.5 m. The root alone was one answer for everybody.
+    exercise = BANK.get("cantilever-natural-frequencies")
+    assert exercise.variant(0, {"L": 2.0}).answers["beta1"] == pytest.approx(0.937552, rel=1e-5)
+    assert exercise.variant(0, {"L": 0.5}).answers["beta1"] == pytest.approx(3.75021, rel=1e-5)
+    assert _rule(exercise, _variants(exercise)) == []

@@ -22,7 +22,7 @@ def _f(p, support="cantilever", n=2, EI=None):
 def solve(p):
     f = _f(p)
     roots = beams.beam_eigenvalues("cantilever", 2)
-    return {"beta1L": roots[0], "f1": f[0], "f2": f[1],
+    return {"beta1": roots[0] / p.L, "f1": f[0], "f2": f[1], "beta1L": roots[0],
             "beta2L": roots[1], "EI": _EI(p), "rhoA": _rhoA(p)}
 
 
@@ -59,8 +59,8 @@ A flat strip of width $b$ = {{ b }}, thickness $h$ = {{ h }} and length $L$ = {{
 ($E$ = {{ E }}, $\\rho$ = {{ rho }}) is clamped at one end and free at the other, and
 vibrates in bending across its thickness (Euler–Bernoulli beam).
 
-1. What is the smallest positive root $\\beta_1 L$ of the characteristic equation
-   $\\cos(\\beta L)\\cosh(\\beta L) + 1 = 0$?
+1. What is the smallest positive wavenumber $\\beta_1$ (in 1/m) that satisfies the
+   characteristic equation $\\cos(\\beta L)\\cosh(\\beta L) + 1 = 0$?
 2. What are the two lowest natural frequencies $f_1$ and $f_2$ (in Hz)?
 """,
     solution=r"""
@@ -73,8 +73,9 @@ the admissible $\beta$ (flexural vibration, Section 5.3.3).
    $W'' = W''' = 0$ (no moment, no shear force). A non-zero solution exists only if
    $$\cos(\beta L)\cosh(\beta L) + 1 = 0 .$$
    Since $\cosh$ grows fast, the higher roots approach the zeros of $\cos(\beta L)$;
-   the lowest ones must be found numerically: the first is $\beta_1 L$ = {{ answers.beta1L }}, the second
-   $\beta_2 L$ = {{ si.beta2L }}.
+   the lowest ones must be found numerically: the first root is $\beta_1 L$ =
+   {{ si.beta1L }}, the same for every clamped-free beam, the second $\beta_2 L$ =
+   {{ si.beta2L }}. With $L$ = {{ L }}, $\beta_1 = (\beta_1 L)/L$ = {{ answers.beta1 }}.
 2. **Natural frequencies.** Solving $\beta^4 = \rho A\,\omega^2/(EI)$ for $\omega$:
    $$\omega_j = \frac{(\beta_j L)^2}{L^2}\sqrt{\frac{EI}{\rho A} },\qquad f_j = \frac{\omega_j}{2\pi}.$$
    The strip bends across its thickness, so $I = b h^3/12$ and $EI$ = {{ si.EI }} N·m²;
@@ -87,15 +88,20 @@ the admissible $\beta$ (flexural vibration, Section 5.3.3).
         Balance("cos(beta1 L) + 1 / cosh(beta1 L)", lambda p, s: 0.0,
                 lambda p, s: np.cos(s["beta1L"]) + 1 / np.cosh(s["beta1L"]),
                 name="frequency_equation", atol=1e-9),
+        Recompute("beta1", lambda p, s: _root(1) / p.L, name="first_root_over_L"),
         Recompute("f1", _frequency(1), name="first_root"),
         Recompute("f2", _frequency(2), name="second_root"),
     ),
     parts=(
-        Numeric("beta1L", "first root beta_1 L", question=1, points=1, rtol=1e-3,
-                constant_answer="beta_1 L = 1.8751 is the first root of cos(x) cosh(x) = -1 "
-                                "for every clamped-free beam: the root, not the beam, is "
-                                "what question 1 asks",
-                misconceptions=(Misconception("pi/2", lambda p: np.pi / 2, "pi/2 is the root of cos alone; cosh shifts it to 1.875."),)),
+        Numeric("beta1", "first wavenumber beta_1", question=1, unit="1/m", points=1, rtol=1e-3,
+                misconceptions=(
+                    Misconception("pi/2", lambda p: np.pi / 2 / p.L,
+                                  "pi/2 is the root of cos alone; cosh shifts it to "
+                                  "beta_1 L = 1.875."),
+                    Misconception("the clamped-clamped root", lambda p: 4.7300 / p.L,
+                                  "4.730 is the first root of cos cosh = +1 (both ends "
+                                  "clamped); a free end gives cos cosh = -1."),
+                )),
         Numeric("f1", "first natural frequency", question=2, unit="Hz", points=2,
                 misconceptions=(
                     Misconception("simply supported", lambda p: _f(p, "simply supported")[0],
