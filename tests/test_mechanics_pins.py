@@ -201,3 +201,43 @@ def test_a_damped_single_mass_has_the_textbook_steady_state_amplitude_and_lag():
     X = multi_dof.steady_state_amplitudes([[100.0]], [[1.0]], [[4.0]], [10.0], 5.0)
     assert abs(X[0]) == pytest.approx(10 / math.sqrt(6025), rel=1e-12)
     assert -np.angle(X[0]) == pytest.approx(math.atan2(20, 75), rel=1e-12)
+
+
+# --- survivors of the full 160-mutant sample after issue 31 (bench/mutation.py --sample 160) ---
+
+def test_the_hoops_oscillation_frequency_is_root_k_over_m_below_and_above_the_critical_spin():
+    # R = 0.4 m, g = 9.81: g/R = 24.525 1/s^2. Below: Omega^2 = 0.36 * 24.525 = 8.829,
+    # omega = sqrt(24.525 - 8.829) = sqrt(15.696) = 3.961818 rad/s. Above, Omega = 1.7
+    # sqrt(g/R) = 8.418863: cos(theta*) = g/(R Omega^2) = 1/2.89 = 0.346021, omega = Omega
+    # sin(theta*) = 8.418863 * 0.938225 = 7.898803 rad/s (Section 4.2)
+    from dynagrade.mechanics.examples import hoop
+
+    root = math.sqrt(9.81 / 0.4)
+    assert hoop.hoop_oscillation_frequency(0.4, 0.6 * root, 9.81) == pytest.approx(3.961818, rel=1e-6)
+    assert hoop.hoop_oscillation_frequency(0.4, 1.7 * root, 9.81) == pytest.approx(7.898803, rel=1e-6)
+
+
+def test_a_wall_normal_of_any_length_is_made_a_unit_normal_first():
+    # v = (3, -4) on the floor y = 0 given as n = (0, 2): only the direction counts,
+    # v' = v - (1 + e)(v.e_n) e_n = (3, -4) - 1.5 * (-4) * (0, 1) = (3, 2) for e = 0.5
+    from dynagrade.mechanics.impact import rebound_velocity
+
+    assert rebound_velocity([3.0, -4.0], [0.0, 2.0], 0.5) == pytest.approx([3.0, 2.0])
+
+
+def test_the_angle_of_a_vector_with_itself_is_zero_where_rounding_lifts_the_cosine_above_1():
+    # for this vector u.u / (|u| |u|) rounds to 1 + 2.2e-16, whose arccos is nan unclipped
+    from dynagrade.mechanics.rotations import angle_between
+
+    u = [2.0427716074923303, 0.6467029962018469, 0.6630633723762617]
+    assert float(np.dot(u, u) / np.dot(u, u) ** 0.5 / np.dot(u, u) ** 0.5) >= 1.0
+    assert angle_between(u, u) == 0.0
+    assert angle_between([1.0, 0.0, 0.0], [-2.0, 0.0, 0.0]) == pytest.approx(math.pi)
+
+
+def test_the_clamped_pinned_characteristic_function_is_sin_minus_cos_tanh_as_documented():
+    # at beta L = pi/2: sin = 1, cos = 0, so the value is 1 (and -1 at 3 pi / 2)
+    from dynagrade.mechanics import beams
+
+    assert beams.characteristic_function(math.pi / 2, "clamped-pinned") == pytest.approx(1.0)
+    assert beams.characteristic_function(3 * math.pi / 2, "clamped-pinned") == pytest.approx(-1.0)
