@@ -459,14 +459,6 @@ def student_drafts(engine: sa.Engine, exam_id: str, student_id: str) -> list[Dra
     return [Draft(*row) for row in rows]
 
 
-def last_texts(engine: sa.Engine, exam_id: str, student_id: str,
-               exercise_id: str) -> dict[str, str]:
-    """The text of each part's latest counted answer (what the page shows when there is
-    no newer draft)."""
-    with engine.connect() as connection:
-        return _last_texts(connection, exam_id, student_id, exercise_id)
-
-
 _LAST_TEXTS = sa.select(answers.c.part, answers.c.raw).select_from(
     answers.join(submissions)).where(
     _bound(submissions.c.exam_id, submissions.c.student_id, submissions.c.exercise_id),
@@ -475,6 +467,8 @@ _LAST_TEXTS = sa.select(answers.c.part, answers.c.raw).select_from(
 
 def _last_texts(connection, exam_id: str, student_id: str, exercise_id: str
                 ) -> dict[str, str]:
+    """The text of each part's latest counted answer (what the form's submit compares
+    with, to send only the parts that changed)."""
     rows = connection.execute(_LAST_TEXTS, {
         "exam_id": exam_id, "student_id": student_id, "exercise_id": exercise_id}).all()
     return {part: raw for part, raw in rows}
@@ -567,7 +561,7 @@ class SubmitReads:
     exceptions and timed start (:func:`student_terms`), the submission already stored
     under the idempotency key (or ``None``), the exercise's last attempt and answers per
     part (:func:`part_attempts`), and, when asked for, each part's last counted text
-    (:func:`last_texts`)."""
+    (:func:`_last_texts`)."""
 
     terms: AllowanceRow | None
     started: dt.datetime | None
