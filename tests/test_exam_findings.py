@@ -48,6 +48,32 @@ def test_copied_answers_of_whole_exams_are_found_with_95_percent_recall(measured
     assert figures.answer_recall(whole=True) >= 0.95
 
 
+def test_copied_answers_of_whole_exams_and_of_single_exercises_together_are_found_with_95_percent_recall(
+        measured):
+    _, _, figures = measured
+    assert figures.copied_answers[1] >= 10
+    found, copied = sum(figures.copied_answers_found), sum(figures.copied_answers)
+    assert found / copied >= 0.95
+
+
+def test_a_misreader_whose_variant_shares_a_key_by_symmetry_is_paired_with_nobody():
+    # In the class of seed 15, misreader s136 (v0 = 9, alpha = 22) misread v0 as 8 and
+    # handed in the keys of (8, 22). The range v0^2 sin(2 alpha) / g is the same at 22 and
+    # 68 degrees, and s159 holds (8, 68): s136's x_max is s159's key to every digit. That
+    # alone once listed the pair; now the class's identical keys of different variants
+    # bound the chance, and nobody is paired with an honest student.
+    synthetic = synthetic_class(200, seed=15)
+    keys = {s.student_id: s.variant("projectile-range") for s in synthetic.manifest.students}
+    assert "s136" in synthetic.misreaders
+    assert (keys["s136"].params["alpha"], keys["s159"].params["alpha"]) == (22.0, 68.0)
+    answer = next(r.answer for r in synthetic.records
+                  if (r.student_id, r.exercise_id, r.part) == ("s136", "projectile-range", "x_max"))
+    assert float(answer) == pytest.approx(keys["s159"].answers["x_max"], abs=5e-5)
+    findings = class_findings(synthetic.manifest, synthetic.exercises, synthetic.records)
+    assert not [p.students for p in findings.copies.pairs
+                if not set(p.students) & synthetic.copying]
+
+
 def test_no_pair_of_two_honest_students_is_listed(measured):
     _, findings, figures = measured
     assert findings.copies.pairs, "the class has copiers: some pair must be listed"
@@ -350,6 +376,8 @@ def test_the_report_shows_both_sections_and_says_the_list_never_changes_a_grade(
     assert "never changes a grade" in html
     first = findings.copies.pairs[0]
     assert " and ".join(first.students) in html
+    digit_match = next(m for p in findings.copies.pairs for m in p.matches if m.every_digit)
+    assert f"{digit_match.against} of {digit_match.other}, to every digit" in html
     assert 'Misconception(&#34;g = 10&#34;' in html or 'Misconception("g = 10"' in html
 
 
