@@ -35,13 +35,15 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--classes", type=int, default=3)
     parser.add_argument("--students", type=int, default=200)
+    parser.add_argument("--digits", type=int, default=6,
+                        help="significant digits students type the numbers they work out to")
     args = parser.parse_args()
     whole = [0, 0]
     one = [0, 0]
     false = twins = clusters = recovered = 0
     seconds = 0.0
     for seed in range(1, args.classes + 1):
-        synthetic = synthetic_class(args.students, seed=seed)
+        synthetic = synthetic_class(args.students, seed=seed, digits=args.digits)
         started = time.perf_counter()
         findings = class_findings(synthetic.manifest, synthetic.exercises, synthetic.records)
         seconds += time.perf_counter() - started
@@ -58,11 +60,14 @@ def main() -> None:
               f"{m.copied_answers[0]}, one-exercise copies {m.copied_answers_found[1]}/"
               f"{m.copied_answers[1]}, false pairs {m.false_pairs}, twin pairs "
               f"{m.twin_pairs}, clusters recovered {m.clusters_recovered}/{m.clusters}")
-    print(f"{args.classes} classes of {args.students} students:")
+    print(f"{args.classes} classes of {args.students} students, numbers typed to "
+          f"{args.digits} significant digits:")
     print(f"  copied answers found, copiers of the whole exam: {whole[0]}/{whole[1]} "
           f"({100 * whole[0] / max(whole[1], 1):.1f} %)")
     print(f"  copied answers found, copiers of one exercise:   {one[0]}/{one[1]} "
           f"({100 * one[0] / max(one[1], 1):.1f} %)")
+    print(f"  copied answers found, all copiers:               {whole[0] + one[0]}/"
+          f"{whole[1] + one[1]} ({100 * (whole[0] + one[0]) / max(whole[1] + one[1], 1):.1f} %)")
     print(f"  pairs listed of two honest students: {false}; of a copier and a near twin "
           f"of the source's variant: {twins}")
     print(f"  planted clusters of 5 or more recovered as the right perturbation: "

@@ -93,15 +93,17 @@ def exercises() -> dict[str, Exercise]:
 
 def synthetic_class(students: int = 200, seed: int = 1, groups: int = 10,
                     cluster_size: tuple[int, int] = (5, 9), noise: float = 0.15,
-                    misreads: int = 10) -> SyntheticClass:
+                    misreads: int = 10, digits: int = 6) -> SyntheticClass:
     """A class of ``students`` with ``groups`` copying groups, one planted cluster of
-    ``cluster_size`` students per entry of :data:`PLANTED` and ``misreads`` misreaders."""
+    ``cluster_size`` students per entry of :data:`PLANTED` and ``misreads`` misreaders;
+    the numbers students work out are typed to ``digits`` significant digits (their own
+    wrong values to four)."""
     rng = random.Random(seed)
     bank = exercises()
     ids = [f"s{k:03d}" for k in range(students)]
     variants = {sid: {e.id: e.variant(seed * 100_000 + k * 10 + i, with_statement=False)
                       for i, e in enumerate(bank.values())} for k, sid in enumerate(ids)}
-    answers = {sid: {e: _honest(rng, bank[e], variants[sid][e], noise) for e in bank}
+    answers = {sid: {e: _honest(rng, bank[e], variants[sid][e], noise, digits) for e in bank}
                for sid in ids}
     free = ids[:]
     rng.shuffle(free)
@@ -116,7 +118,7 @@ def synthetic_class(students: int = 200, seed: int = 1, groups: int = 10,
             if wrong is None:
                 continue
             shown = bank[exercise_id].part(part).in_part_unit(wrong)
-            answers[sid][exercise_id][part] = answer_text(shown, 6)
+            answers[sid][exercise_id][part] = answer_text(shown, digits)
             cluster.students.append(sid)
         clusters.append(cluster)
     copying, whole_exam = [], []
@@ -130,7 +132,7 @@ def synthetic_class(students: int = 200, seed: int = 1, groups: int = 10,
         copying.append((source, *copiers))
         whole_exam.append(whole)
     misreaders = _misread(random.Random(f"misread {seed}"), bank, variants, answers, free,
-                          misreads)
+                          misreads, digits)
     manifest = _manifest(bank, ids, variants)
     results = {sid: {e: grade_variant(bank[e], variants[sid][e], answers[sid][e])
                      for e in bank} for sid in ids}
@@ -138,7 +140,8 @@ def synthetic_class(students: int = 200, seed: int = 1, groups: int = 10,
                           clusters, [results[sid] for sid in ids], misreaders)
 
 
-def _honest(rng: random.Random, exercise: Exercise, variant, noise: float) -> dict:
+def _honest(rng: random.Random, exercise: Exercise, variant, noise: float,
+            digits: int) -> dict:
     """An honest student's answers: right, with an own mistake now and then."""
     out: dict[str, str | None] = {}
     for part in exercise.parts:
@@ -152,12 +155,12 @@ def _honest(rng: random.Random, exercise: Exercise, variant, noise: float) -> di
         elif draw < noise:
             out[part.name] = answer_text(key * rng.uniform(0.3, 3.0), 4)
         else:
-            out[part.name] = answer_text(key, 6)
+            out[part.name] = answer_text(key, digits)
     return out
 
 
 def _misread(rng: random.Random, bank: dict[str, Exercise], variants, answers, free: list[str],
-             count: int) -> list[str]:
+             count: int, digits: int) -> list[str]:
     """``count`` of the ``free`` students misread one drawn parameter of one exercise by
     one or two steps of its grid and answer every number of it from the misread value."""
     chosen = rng.sample(free, min(count, len(free)))
@@ -170,7 +173,7 @@ def _misread(rng: random.Random, bank: dict[str, Exercise], variants, answers, f
         values[param.name] = min(max(shifted, param.low), param.high)
         misread = exercise.solve_in_part_units(values)
         answers[sid][exercise.id] = {
-            part.name: answer_text(misread[part.name], 6) if part.kind == "numeric" else None
+            part.name: answer_text(misread[part.name], digits) if part.kind == "numeric" else None
             for part in exercise.parts}
     return chosen
 
