@@ -17,6 +17,10 @@ and at most ``preview_queue`` previews, each for at most ``preview_wait`` second
 preview that waited longer is stale: the student typed on). Beyond that a request gets
 503 with ``Retry-After`` (:class:`Busy`) instead of piling up; previews are therefore
 refused first, and previews filling their lane never refuse a submit.
+
+The event loop talks to each process over its own pipe (:mod:`.grading_workers`), with no
+thread between them. A process that dies (killed, out of memory) is replaced, and the job
+it was running is run once more, by another process.
 """
 
 from __future__ import annotations
@@ -25,14 +29,12 @@ import asyncio
 import multiprocessing
 import time
 from collections import deque
-from concurrent.futures import ProcessPoolExecutor
-from concurrent.futures.process import BrokenProcessPool
-
 from typing import TYPE_CHECKING
 
 from ..errors import DynagradeError
 from ..grading.timing import ANSWER_BUDGET
 from ..i18n import language
+from .grading_workers import Worker, WorkerDied
 
 if TYPE_CHECKING:
     from .exam_data import ExamData
@@ -132,38 +134,37 @@ class Lanes:
         self.free += 1
 
 
-def _on_loop(loop: asyncio.AbstractEventLoop, call) -> None:
-    """Run ``call`` on ``loop`` from another thread (nothing once the loop is closed: the
-    server is stopping and no job waits any more)."""
-    try:
-        loop.call_soon_threadsafe(call)
-    except RuntimeError:
-        pass
-
-
 class GradingPool:
-    """``workers`` processes grading answers for one exam."""
+    """``workers`` processes grading answers for one exam (:mod:`.grading_workers`)."""
 
     def __init__(self, manifest_path: str, folders: tuple[str, ...] = (), workers: int = 2,
                  queue: int = 256, preview_queue: int = 64, preview_wait: float = 2.0):
         self._args = (str(manifest_path), tuple(folders))
-        self._workers = workers
+        self._context = _process_context()
         self._lanes = Lanes(workers, {SUBMIT: queue, PREVIEW: preview_queue})
         self._preview_wait = preview_wait
-        self._executor = self._start()
+        self._workers = [self._start() for _ in range(workers)]
+        self._closing = False
         #: the pool that took over after a reload (:meth:`retire`)
         self._successor: GradingPool | None = None
 
-    def _start(self) -> ProcessPoolExecutor:
-        return ProcessPoolExecutor(self._workers, mp_context=_process_context(),
-                                   initializer=_load, initargs=self._args)
+    def _start(self) -> Worker:
+        return Worker(self._context, _load, self._args, on_end=self._replace)
+
+    def _replace(self, ended: Worker) -> None:
+        """A process died (e.g. out of memory): a new one takes its place."""
+        if not self._closing:
+            self._workers[self._workers.index(ended)] = self._start()
 
     def warm_up(self) -> None:
-        """Start every process and load the exam now, not on the first request."""
-        futures = [self._executor.submit(_read, None, None, None, None, None)
-                   for _ in range(self._workers)]
-        for future in futures:
-            future.exception()
+        """Start every process and load the exam now, not on the first request (before
+        the pool's first job). A process that dies loading is replaced at its first job,
+        whose request then fails if the new one dies too."""
+        for worker in self._workers:
+            try:
+                worker.wait_ready()
+            except (EOFError, OSError):
+                pass
 
     async def grade(self, student_id, exercise_id, answers: dict, seed) -> list[dict] | None:
         """The graded parts, or ``None`` when grading took longer than its budget."""
@@ -184,46 +185,46 @@ class GradingPool:
         if self._successor is not None:  # retired while this job waited
             self._lanes.leave()
             return await self._successor._run(lane, seconds, function, *args)
-        loop = asyncio.get_running_loop()
         for tries in (1, 2):
+            worker = next(w for w in self._workers if not w.busy)
             try:
-                job = self._executor.submit(function, *args)
-                # the slot is free when the process is, not when the wait below gives up
-                job.add_done_callback(lambda _job: _on_loop(loop, self._lanes.leave))
-            except BrokenProcessPool:  # found broken before the job went in
-                self._lanes.leave()
-                if tries == 2:
-                    raise
+                job = worker.run(function, *args)
             except BaseException:
                 self._lanes.leave()
                 raise
-            else:
-                try:
-                    return await asyncio.wait_for(asyncio.wrap_future(job), seconds)
-                except asyncio.TimeoutError:
-                    return None
-                except BrokenProcessPool:
-                    if tries == 2:
-                        raise
-            # a process died (e.g. out of memory): a new pool, and the job queues again
-            self._executor = self._start()
+            # the slot is free when the process is, not when the wait below gives up
+            job.add_done_callback(self._free)
+            try:
+                return await asyncio.wait_for(asyncio.shield(job), seconds)
+            except asyncio.TimeoutError:
+                return None
+            except WorkerDied:
+                if tries == 2:
+                    raise
+            # the process died (and was replaced): the job queues again
             await self._lanes.enter(lane)
+
+    def _free(self, job: asyncio.Future) -> None:
+        """A job is done: its process takes the next one (its outcome, should nobody wait
+        for it any more, is taken here, so that none goes unread)."""
+        self._lanes.leave()
+        if not job.cancelled():
+            job.exception()
 
     def retire(self, successor: GradingPool) -> None:
         """Hand new jobs to ``successor`` and stop once the jobs already running here are
-        done (a reload of the exam drops no request in flight)."""
+        done (a reload of the exam drops no request in flight). Blocks: call it in a
+        thread, not on the event loop."""
         self._successor = successor
-        self._executor.shutdown(wait=True)
+        while any(worker.busy for worker in self._workers):
+            time.sleep(0.05)
+        self.close()
 
     def close(self, seconds: float = 5.0) -> None:
         """Stop the grading processes before the server process ends, so that none is
-        left running after it: waiting jobs are cancelled, a running one may finish
-        within ``seconds``, and a process still alive then is killed."""
-        processes = list((getattr(self._executor, "_processes", None) or {}).values())
-        self._executor.shutdown(wait=False, cancel_futures=True)
+        left running after it: a running job may finish within ``seconds``, and a
+        process still alive then is killed."""
+        self._closing = True
         deadline = time.monotonic() + seconds
-        for process in processes:
-            process.join(max(0.0, deadline - time.monotonic()))
-            if process.is_alive():
-                process.kill()
-                process.join(1.0)
+        for worker in self._workers:
+            worker.stop(max(0.0, deadline - time.monotonic()))
