@@ -28,7 +28,9 @@ from __future__ import annotations
 from . import (api, assets, audit, exceptions, health, lti, lti_place, lti_staff, regrade,
                staff, staff_links, staff_students, student)
 
-ROUTERS = (health.router, assets.router, student.router, staff.router, staff_students.router, api.router,
-           exceptions.page_router, exceptions.api_router, staff_links.pages_router,
-           staff_links.api_router, audit.pages_router, audit.api_router, *regrade.ROUTERS,
-           lti.router, lti_staff.router, lti_place.router)
+#: in the order a request's path is matched against them: the API and the student pages,
+#: which a class calls most, first (every router before the right one costs a match)
+ROUTERS = (api.router, student.router, health.router, assets.router, staff.router,
+           staff_students.router, exceptions.page_router, exceptions.api_router,
+           staff_links.pages_router, staff_links.api_router, audit.pages_router,
+           audit.api_router, *regrade.ROUTERS, lti.router, lti_staff.router, lti_place.router)
