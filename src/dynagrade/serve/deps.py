@@ -46,29 +46,39 @@ STUDENT, STAFF = "student", "staff"
 # -- the server's state -------------------------------------------------------------------
 
 
+# The dependencies below read the request themselves rather than depend on each other:
+# FastAPI solves every dependency of every request again, cached or not, and a class's
+# submits and previews pay for each one.
+
+
+def _server_of(request: Request) -> Server:
+    return request.app.state.server
+
+
 async def server(request: Request) -> Server:
     """This worker's server (set by ``create_app``)."""
-    return request.app.state.server
+    return _server_of(request)
 
 
 ServerDep = Annotated[Server, Depends(server)]
 
 
-async def exam_data(server: ServerDep) -> ExamData:
+async def exam_data(request: Request) -> ExamData:
     """The exam this worker serves."""
-    return server.data
+    return _server_of(request).data
 
 
-async def grading_pool(server: ServerDep) -> GradingPool:
+async def grading_pool(request: Request) -> GradingPool:
     """This worker's grading processes."""
-    if server.pool is None:  # only between create_app and the app's start
+    pool = _server_of(request).pool
+    if pool is None:  # only between create_app and the app's start
         raise RuntimeError("the grading pool starts with the app")
-    return server.pool
+    return pool
 
 
-async def now(server: ServerDep) -> dt.datetime:
+async def now(request: Request) -> dt.datetime:
     """The server's clock (the policy's opening and closing are read against it)."""
-    return server.clock()
+    return _server_of(request).clock()
 
 
 async def root_path(request: Request) -> str:
@@ -101,9 +111,13 @@ async def bearer_token(credentials: Annotated[HTTPAuthorizationCredentials | Non
 BearerToken = Annotated[str, Depends(bearer_token)]
 
 
+def _address_of(request: Request) -> str:
+    return request.client.host if request.client else ""
+
+
 async def client_address(request: Request) -> str:
     """The address the request came from (behind a trusted proxy, the one it names)."""
-    return request.client.host if request.client else ""
+    return _address_of(request)
 
 
 ClientAddress = Annotated[str, Depends(client_address)]
@@ -134,9 +148,13 @@ class StudentCaller(Caller):
     student_id: str
 
 
+def _cookie_of(request: Request) -> str | None:
+    return request.cookies.get(lti_sessions.COOKIE)
+
+
 async def session_cookie(request: Request) -> str | None:
     """The LTI session's cookie the request carries, if any."""
-    return request.cookies.get(lti_sessions.COOKIE)
+    return _cookie_of(request)
 
 
 SessionCookie = Annotated[str | None, Depends(session_cookie)]
@@ -181,28 +199,26 @@ async def _staff(server: Server, token: str, client: str, cookie: str | None) ->
     return Caller(token, STAFF, label=identity.label)
 
 
-async def student_by_link(server: ServerDep, token: LinkToken,
-                          client: ClientAddress, cookie: SessionCookie) -> StudentCaller:
+async def student_by_link(request: Request, token: LinkToken) -> StudentCaller:
     """The student whose link this page is."""
-    return await _student(server, token, client, cookie)
+    return await _student(_server_of(request), token, _address_of(request),
+                          _cookie_of(request))
 
 
-async def staff_by_link(server: ServerDep, token: LinkToken,
-                        client: ClientAddress, cookie: SessionCookie) -> Caller:
+async def staff_by_link(request: Request, token: LinkToken) -> Caller:
     """The staff member whose link this page is."""
-    return await _staff(server, token, client, cookie)
+    return await _staff(_server_of(request), token, _address_of(request), _cookie_of(request))
 
 
-async def student_by_bearer(server: ServerDep, token: BearerToken,
-                            client: ClientAddress, cookie: SessionCookie) -> StudentCaller:
+async def student_by_bearer(request: Request, token: BearerToken) -> StudentCaller:
     """The student whose token the request carries."""
-    return await _student(server, token, client, cookie)
+    return await _student(_server_of(request), token, _address_of(request),
+                          _cookie_of(request))
 
 
-async def staff_by_bearer(server: ServerDep, token: BearerToken,
-                          client: ClientAddress, cookie: SessionCookie) -> Caller:
+async def staff_by_bearer(request: Request, token: BearerToken) -> Caller:
     """The staff member whose token the request carries."""
-    return await _staff(server, token, client, cookie)
+    return await _staff(_server_of(request), token, _address_of(request), _cookie_of(request))
 
 
 StudentLink = Annotated[StudentCaller, Depends(student_by_link)]
