@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, fields
+from functools import cache
 from importlib import import_module
 from typing import Callable
 
@@ -70,9 +71,16 @@ class GradingKind:
 
     def function(self, piece: str) -> Callable:
         """The function named for ``piece`` (``"grade"``, ``"accepts"``, ``"read"``,
-        ``"build"``), imported now."""
-        module, name = getattr(self, piece).split(":")
-        return getattr(import_module(f".{module}", __package__), name)
+        ``"build"``), imported on first use."""
+        return _named(getattr(self, piece))
+
+
+@cache
+def _named(where: str) -> Callable:
+    """The function ``module:function`` of dynagrade.grading (looked up once: every
+    answer read or graded asks for one)."""
+    module, name = where.split(":")
+    return getattr(import_module(f".{module}", __package__), name)
 
 
 #: the pieces of a kind, in order (a test finds each)

@@ -159,7 +159,11 @@ def _has_top_level(tokens: list[Token], separator: str) -> bool:
     return False
 
 
+@lru_cache(maxsize=1024)
 def _parse(text: str, vocabulary: Vocabulary, *, decimal_comma: bool) -> Expr:
+    """The tree of ``text``, kept for the texts read last: the server reads an answer to
+    say how it reads and then grades it, and a tree's nodes never change. (A text that
+    cannot be read raises every time; only trees are kept.)"""
     tokens = latex.tokenize(text, max_depth=MAX_DEPTH, quantity=vocabulary.quantity,
                             decimal_comma=decimal_comma, names=vocabulary.variables,
                             spellings=vocabulary.spelled_symbols)

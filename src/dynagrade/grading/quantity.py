@@ -39,8 +39,11 @@ class Quantity:
     cycles: float = 0.0
 
 
+@lru_cache(maxsize=1024)
 def read_quantity(text: str, *, decimal_comma: bool = True) -> Quantity:
-    """Read a number with an optional unit; AnswerError when it cannot be read."""
+    """Read a number with an optional unit; AnswerError when it cannot be read. The
+    quantities of the texts read last are kept (a quantity never changes): the server
+    reads an answer to say how it reads, then grades it."""
     tree = parse_quantity(text, decimal_comma=decimal_comma)
     return quantity_from_tree(tree, text)
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 from types import MappingProxyType
 from typing import Mapping
 
@@ -147,10 +148,10 @@ class SymbolicSpec:
             variables[name] = var
         object.__setattr__(self, "variables", MappingProxyType(variables))
         try:
-            table = alias_table(variables, BUILTIN_UNITS)
+            table = _spellings(tuple(variables.items()))
         except NameClash as clash:
             raise ValueError(str(clash)) from None
-        object.__setattr__(self, "spellings", MappingProxyType(table))
+        object.__setattr__(self, "spellings", table)
         constant_in = tuple(variables) if self.up_to_constant is True else \
             tuple(self.up_to_constant or ())
         unknown = [n for n in constant_in if n not in variables]
@@ -256,3 +257,10 @@ def _check_tolerances(rtol: float, atol: float | None) -> None:
         raise ValueError(f"rtol must be >= 0, got {rtol!r}")
     if atol is not None and (not (atol >= 0.0) or atol != atol):
         raise ValueError(f"atol must be >= 0, got {atol!r}")
+
+
+@lru_cache(maxsize=512)
+def _spellings(variables: tuple[tuple[str, Variable], ...]) -> Mapping[str, str]:
+    """:func:`.names.alias_table` of ``variables`` (name, variable) with the built-in
+    units, kept: a formula part's spec is made again for every answer read or graded."""
+    return MappingProxyType(alias_table(dict(variables), BUILTIN_UNITS))
