@@ -19,7 +19,8 @@ browser keeps one), so that its own CPU, printed, stays small beside the server'
 Prints per request kind (page, preview, draft, submit, healthz) the count, p50/p95/p99
 latency and the 5xx; the server's CPU over the run (all its processes, from /proc) per
 request; then, in a short calibration with one kind of request at a time, the server's
-CPU per request of each kind. Exits non-zero when any request got a 5xx (but for previews
+CPU per request of each kind (``--rounds R``: the kinds in turn R times, the median and
+the range printed, since a shared machine's other work shows in any one round). Exits non-zero when any request got a 5xx (but for previews
 shed with 503 while the graders are busy, as the server is meant to) or no answer.
 """
 
@@ -32,6 +33,7 @@ import json
 import os
 import random
 import re
+import statistics
 import sys
 import tempfile
 import time
@@ -342,10 +344,15 @@ async def run(url: str, tokens: dict[str, str], work: dict[str, list[Work]],
           f"{100 * cpu / elapsed:.0f} % of one core); client CPU {client:.1f} s "
           f"({1000 * client / max(1, total):.2f} ms a request)")
     if args.calibrate:
-        costs = {kind: await calibrate(url, students, kind, args.calibrate, group)
-                 for kind in ("page", "preview", "draft", "submit")}
-        print("server CPU per request, one kind at a time (" + str(args.calibrate) + " each): "
-              + ", ".join(f"{kind} {ms:.1f} ms" for kind, ms in costs.items()))
+        kinds = ("page", "preview", "draft", "submit")
+        rounds: dict[str, list[float]] = {kind: [] for kind in kinds}
+        for _round in range(args.rounds):  # the kinds in turn, so that noise hits all alike
+            for kind in kinds:
+                rounds[kind].append(await calibrate(url, students, kind, args.calibrate, group))
+        print(f"server CPU per request, one kind at a time ({args.calibrate} each, median of "
+              f"{args.rounds} rounds [lowest-highest]): " + ", ".join(
+                  f"{kind} {statistics.median(ms):.1f} ms [{min(ms):.1f}-{max(ms):.1f}]"
+                  for kind, ms in rounds.items()))
     for student in students:
         student.connection.close()
     return errors
@@ -359,6 +366,9 @@ def main(argv=None) -> int:
                         help="divide think and typing times by this (1: real 10-30 s)")
     parser.add_argument("--calibrate", type=int, default=40,
                         help="requests of each kind for the CPU per kind (0: skip)")
+    parser.add_argument("--rounds", type=int, default=1,
+                        help="calibration rounds; the median is printed (a shared machine "
+                             "is noisy)")
     parser.add_argument("--seed", type=int, default=1)
     args = parser.parse_args(argv)
 
