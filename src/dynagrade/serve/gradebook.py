@@ -17,7 +17,7 @@ each part's points here are the grader's points times the attempt's factor, roun
 from __future__ import annotations
 
 from ..i18n import N_, _
-from typing import Sequence
+from typing import Iterable, Sequence
 
 from ..classgrade.grade import class_outcome
 from ..classgrade.outcome import ClassOutcome
@@ -49,13 +49,15 @@ def counted_answers(data: ExamData, stored: list[StoredAnswer]
     return chosen
 
 
-def counted_results(data: ExamData, chosen: dict[tuple[str, str, str], StoredAnswer]
+def counted_results(data: ExamData, chosen: dict[tuple[str, str, str], StoredAnswer],
+                    students: Iterable[str] | None = None
                     ) -> list[dict[str, ExerciseResult | None]]:
-    """Each roster student's results, in roster order, from their counted verdicts: an
-    exercise with no counted answer is not handed in (None); a part of a handed-in
-    exercise without one is not answered, as class grading records an empty part."""
+    """Each roster student's results (or those of ``students``), in that order, from their
+    counted verdicts: an exercise with no counted answer is not handed in (None); a part
+    of a handed-in exercise without one is not answered, as class grading records an
+    empty part."""
     graded = []
-    for student_id in data.students:
+    for student_id in data.students if students is None else students:
         results: dict[str, ExerciseResult | None] = {}
         for exercise_id in data.exercise_ids:
             entries = data.manifest_parts[exercise_id]

@@ -27,8 +27,7 @@ def results(data: ExamData, stored: list[StoredAnswer], student_id: str,
     set by hand (None: nothing counted yet); ``stored``: the student's answers,
     ``overrides``: theirs (:func:`dynagrade.serve.db.stored_overrides`)."""
     chosen = gradebook.counted_answers(data, stored)
-    row = list(data.students).index(student_id)
-    counted = gradebook.counted_results(data, chosen)[row]
+    (counted,) = gradebook.counted_results(data, chosen, [student_id])
     rounded = {exercise_id: None if result is None else result.rounded(data.rounding)
                for exercise_id, result in counted.items()}
     mine = [o for o in overrides if o.student_id == student_id]
