@@ -3,9 +3,8 @@ shows is worth to copy detection (:mod:`.copies`).
 
 ``12.3468`` stands for any value in ``12.3468 ± 0.00005``; ``12.3`` for ``12.3 ± 0.05``;
 ``1200`` for ``1200 ± 50`` (the trailing zeros of a whole number are not taken as
-digits). Copy detection (:mod:`.copies`) uses it: an answer that agrees with a
-classmate's number to every digit it shows is a narrower coincidence than one that only
-lies within the part's tolerance of it.
+digits). An answer that agrees with a classmate's number to every digit it shows is a
+narrower coincidence than one that only lies within the part's tolerance of it.
 
 The width is found with the grader's own reader, never by evaluating the text: the first
 number of the answer has its last shown digit changed by one, the changed text is read
@@ -19,7 +18,6 @@ from __future__ import annotations
 
 import math
 import re
-
 from dataclasses import dataclass
 
 import numpy as np
