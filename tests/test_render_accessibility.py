@@ -597,3 +597,41 @@ def test_the_served_student_page_declares_the_language_and_keeps_figure_ids_uniq
     assert len([s for s in _svgs(text) if 'role="img"' in s]) == 2
     ids = Counter(attrs["id"] for _, attrs in page.tags if "id" in attrs)
     assert [name for name, count in ids.items() if count > 1] == []
+
+
+# -- the report's list of copied answers ---------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def copies_report(tmp_path_factory):
+    """The report of a synthetic class of 200 with its copied answers listed: matches to
+    every digit, and one whose other student shares the source's very variant."""
+    from dynagrade.classgrade.findings import class_findings
+    from dynagrade.classgrade.outcome import ClassOutcome
+    from dynagrade.classgrade.report import report_html
+
+    from synthetic_class import synthetic_class
+
+    synthetic = synthetic_class(200, seed=2)
+    findings = class_findings(synthetic.manifest, synthetic.exercises, synthetic.records)
+    html = report_html(synthetic.manifest.exam,
+                       ClassOutcome("Synthetic", [], [], [], findings=findings))
+    path = tmp_path_factory.mktemp("copies") / "report.html"
+    path.write_text(html, encoding="utf-8")
+    return path
+
+
+def test_the_copied_answers_section_has_no_wcag_violation_and_fits_a_phone(copies_report,
+                                                                           browser):
+    text = copies_report.read_text(encoding="utf-8")
+    # the states this checks are on the page: digit matches and a shared variant
+    assert ", to every digit" in text and "holds the same variant" in text
+    result = _axe(browser, copies_report)
+    assert result["passes"], "axe ran no rule at all"
+    assert [(v["id"], [n["target"] for n in v["nodes"]][:3])
+            for v in result["violations"]] == []
+    for width in (320, 390):
+        page = _open(browser, copies_report, width=width)
+        overflow = page.evaluate("document.documentElement.scrollWidth - window.innerWidth")
+        page.close()
+        assert overflow <= 0, width
