@@ -74,10 +74,6 @@ class Worker:
                                        daemon=True)
         self.process.start()
         child.close()
-        #: the pipe's descriptor, kept: the loop's reader is removed by it even once the
-        #: connection is closed (a descriptor left registered would be taken for the
-        #: next file opened under its number)
-        self._fd = self._connection.fileno()
         #: called on the loop once the process has ended (not after :meth:`stop`)
         self._on_end = on_end
         self._loop: asyncio.AbstractEventLoop | None = None
@@ -99,15 +95,10 @@ class Worker:
         loop = asyncio.get_running_loop()
         if self._loop is None:
             self._loop = loop
-            try:
-                loop.add_reader(self._fd, self._readable)
-            except OSError:  # the pipe is gone: the job fails at once, below
-                self._loop = None
+            loop.add_reader(self._connection.fileno(), self._readable)
         assert self._job is None, "a grading process runs one job at a time"
         job = self._job = loop.create_future()
         try:
-            if self._loop is None:
-                raise OSError("no pipe to the grading process")
             self._connection.send((function, args))
         except (OSError, ValueError):  # the process is gone: the job fails at once
             self._ended()
@@ -162,8 +153,9 @@ class Worker:
 
     def _detach(self) -> None:
         if self._loop is not None and not self._loop.is_closed():
+            # the connection may be closed already (the process's end was read first)
             with contextlib.suppress(OSError, ValueError, RuntimeError):
-                self._loop.remove_reader(self._fd)
+                self._loop.remove_reader(self._connection.fileno())
         self._loop = None
         self._connection.close()
 
