@@ -236,8 +236,6 @@ def _part_matches(manifest: Manifest, exercise_id: str, entry: PartEntry,
             wide_answers[wrong] = close_to(entry, value, answer_rows, WIDE)
         on_answer &= ~on_key
         on_key[i] = on_answer[i] = False
-        if not (on_key.any() or on_answer.any()):
-            continue
         near_keys = close_to(entry, keys[i], key_rows, NEAR_KEYS)
         wide_keys = close_to(entry, value, key_rows, WIDE)
         digits = DigitAgreement.of(entry, record.answer, value, key_rows, answer_rows, wrong)
