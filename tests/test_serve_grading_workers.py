@@ -85,32 +85,3 @@ def test_the_pool_replaces_a_dead_process_and_grades_the_job_on_the_new_one(exam
     assert second is not first and second.process.pid != first.process.pid
     assert [part.readable for part in graded] == [True] * len(right)
     assert all(part.verdict.correct for part in graded)
-
-
-def test_a_job_that_kills_its_process_twice_is_not_graded_and_the_pool_grades_on(exam_dir):
-    # as for a job over its budget, the pool answers None: a submit then stores the
-    # answers with status error for the staff (test_serve_grading_budget.py), so nothing
-    # the student typed is lost, and the next student's answer is graded as usual
-    from dynagrade.exam.manifest import load
-    from dynagrade.serve.grading_pool import SUBMIT, GradingPool
-
-    manifest = exam_dir / "manifest.json"
-    student = load(manifest).students[0]
-    right = {name: repr(value) for name, value in
-             student.variant("projectile-range").answers.items() if isinstance(value, float)}
-    pool = GradingPool(str(manifest), workers=1)
-
-    async def scenario():
-        killed = await pool._run(SUBMIT, 30.0, jobs.die)
-        graded = await pool.grade(student.student_id, "projectile-range", right, None)
-        return killed, graded
-
-    try:
-        pool.warm_up()
-        first = pool._workers[0]
-        killed, graded = asyncio.run(scenario())
-    finally:
-        pool.close()
-    assert killed is None
-    assert pool._workers[0] is not first  # replaced twice over
-    assert all(part.verdict.correct for part in graded) and len(graded) == len(right)

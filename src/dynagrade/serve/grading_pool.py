@@ -20,14 +20,12 @@ refused first, and previews filling their lane never refuse a submit.
 
 The event loop talks to each process over its own pipe (:mod:`.grading_workers`), with no
 thread between them. A process that dies (killed, out of memory) is replaced, and the job
-it was running is run once more, by another process; a job that kills that one too is
-not graded, as one over its budget is not (a submit's answers are stored for the staff).
+it was running is run once more, by another process.
 """
 
 from __future__ import annotations
 
 import asyncio
-import contextlib
 import multiprocessing
 import time
 from collections import deque
@@ -163,12 +161,13 @@ class GradingPool:
         the pool's first job). A process that dies loading is replaced at its first job,
         whose request then fails if the new one dies too."""
         for worker in self._workers:
-            with contextlib.suppress(EOFError, OSError):  # died loading: replaced at its job
+            try:
                 worker.wait_ready()
+            except (EOFError, OSError):
+                pass
 
     async def grade(self, student_id, exercise_id, answers: dict, seed) -> list[dict] | None:
-        """The graded parts, or ``None`` when grading took longer than its budget or
-        killed its process twice (the submit then stores the answers for the staff)."""
+        """The graded parts, or ``None`` when grading took longer than its budget."""
         return await self._run(SUBMIT, budget(len(answers)), _grade, student_id,
                                exercise_id, answers, seed)
 
@@ -199,9 +198,10 @@ class GradingPool:
                 return await asyncio.wait_for(asyncio.shield(job), seconds)
             except asyncio.TimeoutError:
                 return None
-            except WorkerDied:  # the process died (and was replaced)
-                if tries == 2:  # the job itself kills it: not graded, like one too slow
-                    return None
+            except WorkerDied:
+                if tries == 2:
+                    raise
+            # the process died (and was replaced): the job queues again
             await self._lanes.enter(lane)
 
     def _free(self, job: asyncio.Future) -> None:

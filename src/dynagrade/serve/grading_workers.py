@@ -22,7 +22,6 @@ A process that dies (killed, out of memory) fails the job it was running with
 from __future__ import annotations
 
 import asyncio
-import contextlib
 import multiprocessing.connection
 import pickle
 import signal
@@ -107,8 +106,10 @@ class Worker:
     def stop(self, seconds: float = 5.0) -> None:
         """Ask the process to end after its job, wait up to ``seconds``, then kill it."""
         self._stopped = True
-        with contextlib.suppress(OSError, ValueError):  # already gone: nothing to ask
+        try:
             self._connection.send(_STOP)
+        except (OSError, ValueError):
+            pass
         self.process.join(seconds)
         if self.process.is_alive():
             self.process.kill()
@@ -153,9 +154,10 @@ class Worker:
 
     def _detach(self) -> None:
         if self._loop is not None and not self._loop.is_closed():
-            # the connection may be closed already (the process's end was read first)
-            with contextlib.suppress(OSError, ValueError, RuntimeError):
+            try:
                 self._loop.remove_reader(self._connection.fileno())
+            except (OSError, ValueError, RuntimeError):
+                pass
         self._loop = None
         self._connection.close()
 
